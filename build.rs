@@ -1,0 +1,807 @@
+//! Generates the GL enums and the entry-point table from the Khronos registry (`gl.xml` shipped by
+//! the `khronos_api` crate), so nothing of the API surface is typed by hand.
+//!
+//! Outputs (in `OUT_DIR`):
+//! - `enums.rs`: every GL 1.0-1.5 enum, the two extensions tilegl implements
+//!   (EXT_texture_filter_anisotropic, EXT_texture_compression_s3tc), and the ARB/EXT aliases of
+//!   core enums that legacy programs use; plus name <-> value lookup tables.
+//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point, each defaulting to
+//!   "unsupported"), the `COMMANDS` metadata table with ARB/EXT alias names, and the
+//!   `gl_forward!` macro that implements trait methods by forwarding to inherent methods behind the
+//!   one guard that enforces what is legal between `glBegin` and `glEnd`.
+//! - `capi_exports.rs`: the `extern "C"` entry points with the C signatures of `GL/gl.h`.
+//! - `foreign.rs`: `ForeignGl`, an implementation of `Gl` that calls C function pointers (the
+//!   Mesa oracle).
+
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+#[derive(Clone, Debug)]
+struct Param {
+    name: String,
+    base: String,
+    is_const: bool,
+    depth: usize,
+    len: Option<String>,
+    group: Option<String>,
+}
+
+#[derive(Clone, Debug)]
+struct Command {
+    name: String,
+    ret_base: String,
+    ret_depth: usize,
+    params: Vec<Param>,
+    alias_of: Option<String>,
+}
+
+const VERSIONS: [&str; 6] = [
+    "GL_VERSION_1_0",
+    "GL_VERSION_1_1",
+    "GL_VERSION_1_2",
+    "GL_VERSION_1_3",
+    "GL_VERSION_1_4",
+    "GL_VERSION_1_5",
+];
+const EXTENSIONS: [&str; 2] = [
+    "GL_EXT_texture_filter_anisotropic",
+    "GL_EXT_texture_compression_s3tc",
+];
+/// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see README).
+const EXTRA_EXTENSIONS: [&str; 6] = [
+    "GL_NV_texture_env_combine4",
+    "GL_ARB_texture_rectangle",
+    "GL_ATI_texture_mirror_once",
+    "GL_EXT_texture_mirror_clamp",
+    "GL_EXT_blend_equation_separate",
+    "GL_ARB_texture_swizzle",
+];
+
+const KEYWORDS: [&str; 12] = [
+    "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
+];
+
+fn parse_typed(node: roxmltree::Node) -> (String, String, bool, usize) {
+    // Returns (name, base type, const, pointer depth).
+    let mut name = String::new();
+    let mut base = String::new();
+    let mut text = String::new();
+    for child in node.children() {
+        if child.is_text() {
+            text.push_str(child.text().unwrap_or(""));
+        } else if child.has_tag_name("ptype") {
+            base = child.text().unwrap_or("").to_string();
+            text.push_str(" T ");
+        } else if child.has_tag_name("name") {
+            name = child.text().unwrap_or("").to_string();
+        }
+    }
+    if base.is_empty() {
+        base = if text.contains("void") {
+            "void".into()
+        } else {
+            text.trim().to_string()
+        };
+    }
+    if base == "GLvoid" {
+        base = "void".into();
+    }
+    let depth = text.matches('*').count();
+    let first_star = text.find('*').unwrap_or(text.len());
+    let is_const = text[..first_star].contains("const");
+    (name, base, is_const, depth)
+}
+
+fn snake(gl_name: &str) -> String {
+    let s = gl_name.strip_prefix("gl").unwrap_or(gl_name);
+    let chars: Vec<char> = s.chars().collect();
+    let mut out = String::new();
+    for (i, &c) in chars.iter().enumerate() {
+        if i > 0 {
+            let prev = chars[i - 1];
+            if c.is_ascii_uppercase() && prev.is_ascii_lowercase() {
+                out.push('_');
+            }
+            if c.is_ascii_digit() && prev.is_ascii_alphabetic() {
+                out.push('_');
+            }
+        }
+        out.push(c.to_ascii_lowercase());
+    }
+    out
+}
+
+fn ident(name: &str) -> String {
+    let mut out = String::new();
+    let chars: Vec<char> = name.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        if i > 0 && c.is_ascii_uppercase() && chars[i - 1].is_ascii_lowercase() {
+            out.push('_');
+        }
+        out.push(c.to_ascii_lowercase());
+    }
+    if KEYWORDS.contains(&out.as_str()) {
+        out.push('_');
+    }
+    out
+}
+
+fn scalar(base: &str) -> &'static str {
+    match base {
+        "GLenum" => "GLenum",
+        "GLboolean" => "GLboolean",
+        "GLbitfield" => "GLbitfield",
+        "GLbyte" => "GLbyte",
+        "GLshort" => "GLshort",
+        "GLint" => "GLint",
+        "GLsizei" => "GLsizei",
+        "GLubyte" => "GLubyte",
+        "GLushort" => "GLushort",
+        "GLuint" => "GLuint",
+        "GLfloat" => "GLfloat",
+        "GLclampf" => "GLclampf",
+        "GLdouble" => "GLdouble",
+        "GLclampd" => "GLclampd",
+        "GLintptr" => "GLintptr",
+        "GLsizeiptr" => "GLsizeiptr",
+        "void" => "u8",
+        other => panic!("unknown GL type {other}"),
+    }
+}
+
+fn literal_len(p: &Param) -> Option<usize> {
+    p.len.as_deref().and_then(|l| l.parse::<usize>().ok())
+}
+
+/// Pointers that GL keeps after the call returns (client arrays, selection and feedback buffers,
+/// index offsets into buffer objects): a safe slice cannot express them, so they travel as
+/// addresses.
+fn is_retained(cmd: &str, p: &Param) -> bool {
+    p.depth >= 2
+        || (cmd.ends_with("Pointer") && p.name == "pointer")
+        || cmd == "glInterleavedArrays"
+        || cmd == "glSelectBuffer"
+        || cmd == "glFeedbackBuffer"
+        || ((cmd == "glDrawElements" || cmd == "glDrawRangeElements") && p.name == "indices")
+}
+
+fn trait_param_type(cmd: &str, p: &Param) -> String {
+    if p.depth == 0 {
+        return scalar(&p.base).to_string();
+    }
+    if is_retained(cmd, p) {
+        return "ClientPtr".into();
+    }
+    let t = scalar(&p.base);
+    match (p.is_const, p.base == "void", literal_len(p)) {
+        (true, true, _) => "Option<&[u8]>".into(),
+        (true, false, Some(n)) => format!("&[{t}; {n}]"),
+        (true, false, None) => format!("&[{t}]"),
+        (false, true, _) => "&mut [u8]".into(),
+        (false, false, Some(n)) => format!("&mut [{t}; {n}]"),
+        (false, false, None) => format!("&mut [{t}]"),
+    }
+}
+
+fn trait_ret_type(c: &Command) -> Option<String> {
+    match (c.ret_base.as_str(), c.ret_depth) {
+        ("void", 0) => None,
+        ("GLubyte", 1) => Some("Option<String>".into()),
+        ("void", 1) => Some("ClientPtr".into()),
+        (b, 0) => Some(scalar(b).to_string()),
+        other => panic!("unhandled return type {other:?} in {}", c.name),
+    }
+}
+
+fn c_param_type(p: &Param) -> String {
+    if p.depth == 0 {
+        return scalar(&p.base).to_string();
+    }
+    if p.depth >= 2 {
+        return "*const c_void".into();
+    }
+    let t = if p.base == "void" {
+        "c_void"
+    } else {
+        scalar(&p.base)
+    };
+    if p.is_const {
+        format!("*const {t}")
+    } else {
+        format!("*mut {t}")
+    }
+}
+
+fn c_ret_type(c: &Command) -> Option<String> {
+    match (c.ret_base.as_str(), c.ret_depth) {
+        ("void", 0) => None,
+        ("GLubyte", 1) => Some("*const GLubyte".into()),
+        ("void", 1) => Some("*mut c_void".into()),
+        (b, 0) => Some(scalar(b).to_string()),
+        _ => unreachable!(),
+    }
+}
+
+fn allowed_in_begin_end(name: &str) -> bool {
+    if name.contains("Pointer") {
+        return false;
+    }
+    let prefixes = [
+        "glVertex",
+        "glColor3",
+        "glColor4",
+        "glSecondaryColor3",
+        "glIndex",
+        "glNormal3",
+        "glMaterial",
+        "glTexCoord",
+        "glMultiTexCoord",
+        "glFogCoord",
+        "glEdgeFlag",
+        "glArrayElement",
+        "glEvalCoord",
+        "glEvalPoint",
+        "glCallList",
+        "glEnd",
+    ];
+    name == "glEnd" || prefixes.iter().any(|p| name.starts_with(p)) && name != "glEndList"
+}
+
+/// The expression giving a pointer parameter's element count in the C ABI.
+fn c_len_expr(cmd: &Command, p: &Param) -> String {
+    // The registry gives `first` of glMultiDrawArrays the length COMPSIZE(count), where count
+    // is itself an array; its real length is drawcount.
+    let len = if cmd.name == "glMultiDrawArrays" && p.name == "first" {
+        "drawcount".to_string()
+    } else {
+        p.len.clone().unwrap_or_else(|| "COMPSIZE()".into())
+    };
+    if let Some(n) = literal_len(p) {
+        return n.to_string();
+    }
+    if let Some(inner) = len
+        .strip_prefix("COMPSIZE(")
+        .and_then(|s| s.strip_suffix(')'))
+    {
+        let args: Vec<String> = inner
+            .split(',')
+            .filter(|a| !a.trim().is_empty())
+            .map(|a| format!("{} as i64", ident(a.trim())))
+            .collect();
+        return format!(
+            "crate::capi::compsize::size(ctx, \"{}\", \"{}\", &[{}])",
+            cmd.name,
+            p.name,
+            args.join(", ")
+        );
+    }
+    if let Some((a, b)) = len.split_once('*') {
+        return format!("count_len({} as i64 * {})", ident(a.trim()), b.trim());
+    }
+    format!("count_len({} as i64)", ident(len.trim()))
+}
+
+fn main() {
+    println!("cargo:rerun-if-changed=build.rs");
+    let xml = std::str::from_utf8(khronos_api::GL_XML).expect("gl.xml is UTF-8");
+    let doc = roxmltree::Document::parse(xml).expect("gl.xml parses");
+    let root = doc.root_element();
+
+    // All enum values (api="gl" or unqualified).
+    let mut enum_values: HashMap<String, u64> = HashMap::new();
+    for e in root.descendants().filter(|n| n.has_tag_name("enum")) {
+        if e.parent().map(|p| p.has_tag_name("enums")) != Some(true) {
+            continue;
+        }
+        if let Some(api) = e.attribute("api") {
+            if api != "gl" {
+                continue;
+            }
+        }
+        let (Some(name), Some(value)) = (e.attribute("name"), e.attribute("value")) else {
+            continue;
+        };
+        let v = if let Some(h) = value.strip_prefix("0x") {
+            u64::from_str_radix(h.trim_end_matches(['u', 'l', 'L', 'U']), 16)
+        } else {
+            value
+                .trim_end_matches(['u', 'l', 'L', 'U'])
+                .parse::<i64>()
+                .map(|v| v as u64)
+        };
+        if let Ok(v) = v {
+            enum_values.entry(name.to_string()).or_insert(v);
+        }
+    }
+
+    // Commands.
+    let mut commands: HashMap<String, Command> = HashMap::new();
+    for c in root.descendants().filter(|n| n.has_tag_name("command")) {
+        let Some(proto) = c.children().find(|n| n.has_tag_name("proto")) else {
+            continue;
+        };
+        let (name, ret_base, _, ret_depth) = parse_typed(proto);
+        let params = c
+            .children()
+            .filter(|n| n.has_tag_name("param"))
+            .map(|p| {
+                let (pname, base, is_const, depth) = parse_typed(p);
+                Param {
+                    name: pname,
+                    base,
+                    is_const,
+                    depth,
+                    len: p.attribute("len").map(str::to_string),
+                    group: p.attribute("group").map(str::to_string),
+                }
+            })
+            .collect();
+        let alias_of = c
+            .children()
+            .find(|n| n.has_tag_name("alias"))
+            .and_then(|a| a.attribute("name"))
+            .map(str::to_string);
+        commands.insert(
+            name.clone(),
+            Command {
+                name,
+                ret_base,
+                ret_depth,
+                params,
+                alias_of,
+            },
+        );
+    }
+
+    // Features 1.0-1.5 and the chosen extensions.
+    let mut core_cmds: Vec<String> = Vec::new();
+    let mut core_enums: BTreeSet<String> = BTreeSet::new();
+    let mut ext_enums: BTreeSet<String> = BTreeSet::new();
+    for f in root.children().filter(|n| n.has_tag_name("feature")) {
+        if f.attribute("api") != Some("gl")
+            || !VERSIONS.contains(&f.attribute("name").unwrap_or(""))
+        {
+            continue;
+        }
+        for r in f.children().filter(|n| n.has_tag_name("require")) {
+            for item in r.children().filter(|n| n.is_element()) {
+                let Some(n) = item.attribute("name") else {
+                    continue;
+                };
+                if item.has_tag_name("command") && !core_cmds.iter().any(|c| c == n) {
+                    core_cmds.push(n.to_string());
+                } else if item.has_tag_name("enum") {
+                    core_enums.insert(n.to_string());
+                }
+            }
+        }
+    }
+    for x in root.descendants().filter(|n| n.has_tag_name("extension")) {
+        let name = x.attribute("name").unwrap_or("");
+        if !EXTENSIONS.contains(&name) && !EXTRA_EXTENSIONS.contains(&name) {
+            continue;
+        }
+        for e in x.descendants().filter(|n| n.has_tag_name("enum")) {
+            if let Some(n) = e.attribute("name") {
+                ext_enums.insert(n.to_string());
+            }
+        }
+    }
+    core_cmds.sort();
+
+    // ARB/EXT aliases: enums whose unsuffixed name is core with the same value.
+    let core_set: BTreeSet<&String> = core_enums.iter().collect();
+    let mut alias_enums: BTreeSet<String> = BTreeSet::new();
+    for (name, v) in &enum_values {
+        for suffix in ["_ARB", "_EXT"] {
+            if let Some(base) = name.strip_suffix(suffix) {
+                if core_set.contains(&base.to_string()) && enum_values.get(base) == Some(v) {
+                    alias_enums.insert(name.clone());
+                }
+            }
+        }
+    }
+    // Command aliases.
+    let core_cmd_set: BTreeSet<&String> = core_cmds.iter().collect();
+    let mut cmd_aliases: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for c in commands.values() {
+        if let Some(target) = &c.alias_of {
+            if core_cmd_set.contains(target) && (c.name.ends_with("ARB") || c.name.ends_with("EXT"))
+            {
+                cmd_aliases
+                    .entry(target.clone())
+                    .or_default()
+                    .push(c.name.clone());
+            }
+        }
+    }
+    for v in cmd_aliases.values_mut() {
+        v.sort();
+    }
+
+    let out = PathBuf::from(std::env::var("OUT_DIR").expect("OUT_DIR"));
+
+    // ---------------- enums.rs
+    let mut all_enums: BTreeMap<String, (u64, u8)> = BTreeMap::new(); // name -> (value, rank)
+    for n in &core_enums {
+        if let Some(v) = enum_values.get(n) {
+            all_enums.insert(n.clone(), (*v, 0));
+        }
+    }
+    for n in &ext_enums {
+        if let Some(v) = enum_values.get(n) {
+            all_enums.entry(n.clone()).or_insert((*v, 1));
+        }
+    }
+    for n in &alias_enums {
+        if let Some(v) = enum_values.get(n) {
+            all_enums.entry(n.clone()).or_insert((*v, 2));
+        }
+    }
+    let mut s = String::new();
+    writeln!(
+        s,
+        "// Generated by build.rs from the Khronos registry. Do not edit."
+    )
+    .unwrap();
+    for (n, (v, _)) in &all_enums {
+        if *v > u32::MAX as u64 {
+            continue;
+        }
+        writeln!(s, "pub const {n}: GLenum = 0x{v:X};").unwrap();
+    }
+    writeln!(
+        s,
+        "/// Every generated enum name with its value, sorted by name."
+    )
+    .unwrap();
+    writeln!(s, "pub static ENUMS_BY_NAME: &[(&str, GLenum)] = &[").unwrap();
+    for (n, (v, _)) in &all_enums {
+        if *v <= u32::MAX as u64 {
+            writeln!(s, "    (\"{n}\", 0x{v:X}),").unwrap();
+        }
+    }
+    writeln!(s, "];").unwrap();
+    std::fs::write(out.join("enums.rs"), s).expect("write enums.rs");
+
+    // ---------------- commands.rs
+    let core: Vec<&Command> = core_cmds
+        .iter()
+        .map(|n| {
+            commands
+                .get(n)
+                .unwrap_or_else(|| panic!("command {n} missing"))
+        })
+        .collect();
+    let mut s = String::new();
+    writeln!(
+        s,
+        "// Generated by build.rs from the Khronos registry. Do not edit."
+    )
+    .unwrap();
+    writeln!(
+        s,
+        "/// One method per OpenGL 1.5 entry point, named after the GL function in snake case\n\
+/// (`glTexImage2D` is `tex_image_2d`). Every method defaults to [`Gl::unsupported`], so an\n\
+/// implementation states exactly which entry points it provides.\n\
+///\n\
+/// Pointer parameters are slices (fixed-size arrays where GL fixes the length); pointers that\n\
+/// GL keeps after the call (client arrays, selection and feedback buffers) are [`ClientPtr`]s."
+    )
+    .unwrap();
+    writeln!(s, "#[allow(clippy::too_many_arguments)]").unwrap();
+    writeln!(s, "pub trait Gl {{").unwrap();
+    writeln!(
+        s,
+        "    /// Called by every entry point the implementation does not provide; should record\n    /// `GL_INVALID_OPERATION`."
+    )
+    .unwrap();
+    writeln!(s, "    fn unsupported(&mut self, name: &'static str);").unwrap();
+    let mut forward_arms = String::new();
+    for c in &core {
+        let rname = snake(&c.name);
+        let params: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p)))
+            .collect();
+        let ret = trait_ret_type(c)
+            .map(|r| format!(" -> {r}"))
+            .unwrap_or_default();
+        let names: Vec<String> = c.params.iter().map(|p| ident(&p.name)).collect();
+        writeln!(s, "    /// `{}`", c.name).unwrap();
+        writeln!(
+            s,
+            "    fn {rname}(&mut self, {}){ret} {{",
+            params.join(", ")
+        )
+        .unwrap();
+        if !names.is_empty() {
+            writeln!(s, "        let _ = ({},);", names.join(", ")).unwrap();
+        }
+        writeln!(s, "        self.unsupported(\"{}\");", c.name).unwrap();
+        if ret.is_empty() {
+            writeln!(s, "    }}").unwrap();
+        } else {
+            writeln!(s, "        Default::default()\n    }}").unwrap();
+        }
+        // Forwarding arm.
+        let guard = if allowed_in_begin_end(&c.name) {
+            String::new()
+        } else {
+            "if self.reject_inside_begin_end() { return Default::default(); } ".into()
+        };
+        writeln!(
+            forward_arms,
+            "    ({rname}) => {{ fn {rname}(&mut self, {}){ret} {{ {guard}Self::{rname}(self, {}) }} }};",
+            params.join(", "),
+            names.join(", ")
+        )
+        .unwrap();
+    }
+    writeln!(s, "}}").unwrap();
+    writeln!(
+        s,
+        "/// Implements `Gl` methods by forwarding to inherent methods of the same name, behind the\n\
+/// one guard for calls that are illegal between `glBegin` and `glEnd`.\n\
+#[doc(hidden)]\nmacro_rules! gl_forward_one {{\n{forward_arms}}}\n\
+/// Implements a list of `Gl` methods by forwarding (see `gl_forward_one`).\n\
+#[doc(hidden)]\nmacro_rules! gl_forward_all {{ ($($name:ident),* $(,)?) => {{ $( gl_forward_one!($name); )* }} }}"
+    )
+    .unwrap();
+
+    // Metadata table.
+    writeln!(
+        s,
+        "/// Metadata for every GL 1.5 entry point, sorted by name."
+    )
+    .unwrap();
+    writeln!(s, "pub static COMMANDS: &[CommandInfo] = &[").unwrap();
+    for c in &core {
+        let aliases = cmd_aliases.get(&c.name).cloned().unwrap_or_default();
+        let params: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| {
+                let ctype = if p.depth == 0 {
+                    p.base.clone()
+                } else {
+                    format!(
+                        "{}{} {}",
+                        if p.is_const { "const " } else { "" },
+                        p.base,
+                        "*".repeat(p.depth)
+                    )
+                };
+                format!(
+                    "ParamInfo {{ name: \"{}\", c_type: \"{}\", group: {:?}, len: {:?} }}",
+                    p.name, ctype, p.group, p.len
+                )
+            })
+            .collect();
+        writeln!(
+            s,
+            "    CommandInfo {{ name: \"{}\", rust_name: \"{}\", params: &[{}], returns: \"{}{}\", aliases: &[{}], allowed_in_begin_end: {} }},",
+            c.name,
+            snake(&c.name),
+            params.join(", "),
+            c.ret_base,
+            "*".repeat(c.ret_depth),
+            aliases.iter().map(|a| format!("\"{a}\"")).collect::<Vec<_>>().join(", "),
+            allowed_in_begin_end(&c.name)
+        )
+        .unwrap();
+    }
+    writeln!(s, "];").unwrap();
+    std::fs::write(out.join("commands.rs"), s).expect("write commands.rs");
+
+    // ---------------- capi_exports.rs and foreign.rs
+    let mut ex = String::new();
+    let mut fo = String::new();
+    writeln!(
+        ex,
+        "// Generated by build.rs from the Khronos registry. Do not edit."
+    )
+    .unwrap();
+    writeln!(
+        fo,
+        "// Generated by build.rs from the Khronos registry. Do not edit."
+    )
+    .unwrap();
+    writeln!(fo, "impl Gl for ForeignGl {{").unwrap();
+    writeln!(
+        fo,
+        "    fn unsupported(&mut self, name: &'static str) {{ self.missing.push(name); }}"
+    )
+    .unwrap();
+    for (idx, c) in core.iter().enumerate() {
+        let rname = snake(&c.name);
+        let c_params: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), c_param_type(p)))
+            .collect();
+        let c_types: Vec<String> = c.params.iter().map(c_param_type).collect();
+        let c_ret = c_ret_type(c)
+            .map(|r| format!(" -> {r}"))
+            .unwrap_or_default();
+        let has_ret = !c_ret.is_empty();
+        let mut conv = String::new();
+        let mut call_args = Vec::new();
+        for p in &c.params {
+            let n = ident(&p.name);
+            if p.depth == 0 {
+                call_args.push(n);
+                continue;
+            }
+            if is_retained(&c.name, p) {
+                call_args.push(format!("ClientPtr({n} as usize)"));
+                continue;
+            }
+            let len = c_len_expr(c, p);
+            let t = scalar(&p.base);
+            let e = match (p.is_const, p.base == "void", literal_len(p)) {
+                (true, true, _) => format!("let {n} = opt_slice({n} as *const u8, {len});"),
+                (true, false, Some(k)) => {
+                    format!("let Some({n}) = array_ref::<{t}, {k}>({n}) else {{ return Default::default(); }};")
+                }
+                (true, false, None) => format!("let {n} = slice({n}, {len});"),
+                (false, true, _) => format!("let {n} = slice_mut({n} as *mut u8, {len});"),
+                (false, false, Some(k)) => {
+                    format!("let Some({n}) = array_mut::<{t}, {k}>({n}) else {{ return Default::default(); }};")
+                }
+                (false, false, None) => format!("let {n} = slice_mut({n}, {len});"),
+            };
+            conv.push_str("        ");
+            conv.push_str(&e);
+            conv.push('\n');
+            call_args.push(n);
+        }
+        let ret_conv = match (c.ret_base.as_str(), c.ret_depth) {
+            ("GLubyte", 1) => ".map_or(std::ptr::null(), |s| ctx.intern_string(&s))",
+            ("void", 1) => ".0 as *mut c_void",
+            _ => "",
+        };
+        writeln!(
+            ex,
+            "/// `{}`: forwards to [`Gl::{rname}`] on the current context.",
+            c.name
+        )
+        .unwrap();
+        writeln!(ex, "///\n/// # Safety\n/// Pointer arguments follow the C API's contract: each points to as many elements as GL reads or writes.").unwrap();
+        writeln!(ex, "#[no_mangle]\n#[allow(clippy::too_many_arguments, clippy::missing_safety_doc, unused_variables)]").unwrap();
+        writeln!(
+            ex,
+            "pub unsafe extern \"C\" fn {}({}){c_ret} {{",
+            c.name,
+            c_params.join(", ")
+        )
+        .unwrap();
+        writeln!(ex, "    with_current(|ctx| {{").unwrap();
+        ex.push_str(&conv);
+        writeln!(
+            ex,
+            "        Gl::{rname}(ctx, {}){ret_conv}",
+            call_args.join(", ")
+        )
+        .unwrap();
+        writeln!(ex, "    }})").unwrap();
+        writeln!(ex, "}}").unwrap();
+        for a in cmd_aliases.get(&c.name).into_iter().flatten() {
+            let names: Vec<String> = c.params.iter().map(|p| ident(&p.name)).collect();
+            writeln!(
+                ex,
+                "/// `{a}`: the extension name of `{}`.\n///\n/// # Safety\n/// As for `{}`.",
+                c.name, c.name
+            )
+            .unwrap();
+            writeln!(
+                ex,
+                "#[no_mangle]\n#[allow(clippy::too_many_arguments, clippy::missing_safety_doc)]"
+            )
+            .unwrap();
+            writeln!(
+                ex,
+                "pub unsafe extern \"C\" fn {a}({}){c_ret} {{ {}({}) }}",
+                c_params.join(", "),
+                c.name,
+                names.join(", ")
+            )
+            .unwrap();
+        }
+
+        // Foreign forwarding.
+        let t_params: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p)))
+            .collect();
+        let t_ret = trait_ret_type(c)
+            .map(|r| format!(" -> {r}"))
+            .unwrap_or_default();
+        let f_args: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| {
+                let n = ident(&p.name);
+                if p.depth == 0 {
+                    n
+                } else if is_retained(&c.name, p) {
+                    format!("{n}.0 as *const c_void as _")
+                } else if p.is_const && p.base == "void" {
+                    format!("{n}.map_or(std::ptr::null(), |s| s.as_ptr()) as *const c_void")
+                } else if p.is_const {
+                    format!("{n}.as_ptr()")
+                } else if p.base == "void" {
+                    format!("{n}.as_mut_ptr() as *mut c_void")
+                } else {
+                    format!("{n}.as_mut_ptr()")
+                }
+            })
+            .collect();
+        let f_ret_conv = match (c.ret_base.as_str(), c.ret_depth) {
+            ("GLubyte", 1) => "; c_string(r)",
+            ("void", 1) => "; ClientPtr(r as usize)",
+            _ if has_ret => "; r",
+            _ => ";",
+        };
+        writeln!(
+            fo,
+            "    fn {rname}(&mut self, {}){t_ret} {{",
+            t_params.join(", ")
+        )
+        .unwrap();
+        writeln!(fo, "        let fp = self.fns[{idx}];").unwrap();
+        writeln!(
+            fo,
+            "        if fp.is_null() {{ self.unsupported(\"{}\"); return Default::default(); }}",
+            c.name
+        )
+        .unwrap();
+        writeln!(
+            fo,
+            "        // SAFETY: `fp` was looked up under this name, so it has the C signature of the\n        // registry; `ForeignGl::new`'s caller guarantees slices are as long as GL uses."
+        )
+        .unwrap();
+        writeln!(
+            fo,
+            "        let fp: unsafe extern \"C\" fn({}){c_ret} = unsafe {{ std::mem::transmute(fp) }};",
+            c_types.join(", ")
+        )
+        .unwrap();
+        writeln!(
+            fo,
+            "        #[allow(unused_variables)] let r = unsafe {{ fp({}) }}{f_ret_conv}",
+            f_args.join(", ")
+        )
+        .unwrap();
+        writeln!(fo, "    }}").unwrap();
+    }
+    writeln!(fo, "}}").unwrap();
+    writeln!(ex, "/// The exported GL function of this name (core or ARB/EXT alias), for `OSMesaGetProcAddress`.").unwrap();
+    writeln!(
+        ex,
+        "pub fn gl_proc_address(name: &str) -> *const c_void {{\n    match name {{"
+    )
+    .unwrap();
+    for c in &core {
+        writeln!(ex, "        \"{0}\" => {0} as *const c_void,", c.name).unwrap();
+        for a in cmd_aliases.get(&c.name).into_iter().flatten() {
+            writeln!(ex, "        \"{0}\" => {0} as *const c_void,", a).unwrap();
+        }
+    }
+    writeln!(ex, "        _ => std::ptr::null(),\n    }}\n}}").unwrap();
+    writeln!(
+        fo,
+        "/// Names looked up by `ForeignGl::new`, in `COMMANDS` order."
+    )
+    .unwrap();
+    writeln!(fo, "pub const FOREIGN_NAMES: [&str; {}] = [", core.len()).unwrap();
+    for c in &core {
+        writeln!(fo, "    \"{}\",", c.name).unwrap();
+    }
+    writeln!(fo, "];").unwrap();
+    std::fs::write(out.join("capi_exports.rs"), ex).expect("write capi_exports.rs");
+    std::fs::write(out.join("foreign.rs"), fo).expect("write foreign.rs");
+}

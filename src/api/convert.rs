@@ -1,0 +1,594 @@
+//! GLenum -> typed Rust values. This is the only module that matches raw GLenums; everything
+//! past the entry points works with these types. Each function returns `None` for an enum the
+//! call does not accept, and the caller records `GL_INVALID_ENUM`.
+
+use super::enums::*;
+use super::types::GLenum;
+
+/// The ten primitive modes of `glBegin`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PrimitiveMode {
+    Points,
+    Lines,
+    LineLoop,
+    LineStrip,
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    Quads,
+    QuadStrip,
+    Polygon,
+}
+
+pub fn primitive_mode(e: GLenum) -> Option<PrimitiveMode> {
+    use PrimitiveMode::*;
+    Some(match e {
+        GL_POINTS => Points,
+        GL_LINES => Lines,
+        GL_LINE_LOOP => LineLoop,
+        GL_LINE_STRIP => LineStrip,
+        GL_TRIANGLES => Triangles,
+        GL_TRIANGLE_STRIP => TriangleStrip,
+        GL_TRIANGLE_FAN => TriangleFan,
+        GL_QUADS => Quads,
+        GL_QUAD_STRIP => QuadStrip,
+        GL_POLYGON => Polygon,
+        _ => return None,
+    })
+}
+
+/// Comparison functions of the depth, alpha and stencil tests (and texture compare).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompareFunc {
+    Never,
+    Less,
+    Equal,
+    LessEqual,
+    Greater,
+    NotEqual,
+    GreaterEqual,
+    Always,
+}
+
+impl CompareFunc {
+    /// Applies the function as `incoming OP stored`.
+    #[inline(always)]
+    pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
+        match self {
+            CompareFunc::Never => false,
+            CompareFunc::Less => incoming < stored,
+            CompareFunc::Equal => incoming == stored,
+            CompareFunc::LessEqual => incoming <= stored,
+            CompareFunc::Greater => incoming > stored,
+            CompareFunc::NotEqual => incoming != stored,
+            CompareFunc::GreaterEqual => incoming >= stored,
+            CompareFunc::Always => true,
+        }
+    }
+
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            CompareFunc::Never => GL_NEVER,
+            CompareFunc::Less => GL_LESS,
+            CompareFunc::Equal => GL_EQUAL,
+            CompareFunc::LessEqual => GL_LEQUAL,
+            CompareFunc::Greater => GL_GREATER,
+            CompareFunc::NotEqual => GL_NOTEQUAL,
+            CompareFunc::GreaterEqual => GL_GEQUAL,
+            CompareFunc::Always => GL_ALWAYS,
+        }
+    }
+}
+
+pub fn compare_func(e: GLenum) -> Option<CompareFunc> {
+    use CompareFunc::*;
+    Some(match e {
+        GL_NEVER => Never,
+        GL_LESS => Less,
+        GL_EQUAL => Equal,
+        GL_LEQUAL => LessEqual,
+        GL_GREATER => Greater,
+        GL_NOTEQUAL => NotEqual,
+        GL_GEQUAL => GreaterEqual,
+        GL_ALWAYS => Always,
+        _ => return None,
+    })
+}
+
+/// `glMatrixMode` targets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MatrixMode {
+    ModelView,
+    Projection,
+    Texture,
+}
+
+impl MatrixMode {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            MatrixMode::ModelView => GL_MODELVIEW,
+            MatrixMode::Projection => GL_PROJECTION,
+            MatrixMode::Texture => GL_TEXTURE,
+        }
+    }
+}
+
+pub fn matrix_mode(e: GLenum) -> Option<MatrixMode> {
+    Some(match e {
+        GL_MODELVIEW => MatrixMode::ModelView,
+        GL_PROJECTION => MatrixMode::Projection,
+        GL_TEXTURE => MatrixMode::Texture,
+        _ => return None,
+    })
+}
+
+/// Which faces a setting applies to (`glCullFace`, `glPolygonMode`, `glMaterial`, ...).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Face {
+    Front,
+    Back,
+    FrontAndBack,
+}
+
+impl Face {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            Face::Front => GL_FRONT,
+            Face::Back => GL_BACK,
+            Face::FrontAndBack => GL_FRONT_AND_BACK,
+        }
+    }
+}
+
+pub fn face(e: GLenum) -> Option<Face> {
+    Some(match e {
+        GL_FRONT => Face::Front,
+        GL_BACK => Face::Back,
+        GL_FRONT_AND_BACK => Face::FrontAndBack,
+        _ => return None,
+    })
+}
+
+/// `glFrontFace`: which winding is front-facing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Winding {
+    Ccw,
+    Cw,
+}
+
+impl Winding {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            Winding::Ccw => GL_CCW,
+            Winding::Cw => GL_CW,
+        }
+    }
+}
+
+pub fn winding(e: GLenum) -> Option<Winding> {
+    Some(match e {
+        GL_CCW => Winding::Ccw,
+        GL_CW => Winding::Cw,
+        _ => return None,
+    })
+}
+
+/// `glShadeModel`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ShadeModel {
+    Flat,
+    Smooth,
+}
+
+impl ShadeModel {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            ShadeModel::Flat => GL_FLAT,
+            ShadeModel::Smooth => GL_SMOOTH,
+        }
+    }
+}
+
+pub fn shade_model(e: GLenum) -> Option<ShadeModel> {
+    Some(match e {
+        GL_FLAT => ShadeModel::Flat,
+        GL_SMOOTH => ShadeModel::Smooth,
+        _ => return None,
+    })
+}
+
+/// Capabilities of `glEnable`/`glDisable`/`glIsEnabled` that tilegl implements.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Capability {
+    DepthTest,
+    CullFace,
+    ScissorTest,
+    ClipPlane(usize),
+    Dither,
+    Normalize,
+    RescaleNormal,
+}
+
+pub fn capability(e: GLenum) -> Option<Capability> {
+    Some(match e {
+        GL_DEPTH_TEST => Capability::DepthTest,
+        GL_CULL_FACE => Capability::CullFace,
+        GL_SCISSOR_TEST => Capability::ScissorTest,
+        GL_DITHER => Capability::Dither,
+        GL_NORMALIZE => Capability::Normalize,
+        GL_RESCALE_NORMAL => Capability::RescaleNormal,
+        e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
+            Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
+        }
+        _ => return None,
+    })
+}
+
+/// `glHint` targets and modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HintTarget {
+    PerspectiveCorrection,
+    PointSmooth,
+    LineSmooth,
+    PolygonSmooth,
+    Fog,
+    GenerateMipmap,
+    TextureCompression,
+}
+
+pub fn hint_target(e: GLenum) -> Option<HintTarget> {
+    use HintTarget::*;
+    Some(match e {
+        GL_PERSPECTIVE_CORRECTION_HINT => PerspectiveCorrection,
+        GL_POINT_SMOOTH_HINT => PointSmooth,
+        GL_LINE_SMOOTH_HINT => LineSmooth,
+        GL_POLYGON_SMOOTH_HINT => PolygonSmooth,
+        GL_FOG_HINT => Fog,
+        GL_GENERATE_MIPMAP_HINT => GenerateMipmap,
+        GL_TEXTURE_COMPRESSION_HINT => TextureCompression,
+        _ => return None,
+    })
+}
+
+pub fn hint_mode(e: GLenum) -> Option<GLenum> {
+    matches!(e, GL_FASTEST | GL_NICEST | GL_DONT_CARE).then_some(e)
+}
+
+/// `glGetString` names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StringName {
+    Vendor,
+    Renderer,
+    Version,
+    Extensions,
+}
+
+pub fn string_name(e: GLenum) -> Option<StringName> {
+    Some(match e {
+        GL_VENDOR => StringName::Vendor,
+        GL_RENDERER => StringName::Renderer,
+        GL_VERSION => StringName::Version,
+        GL_EXTENSIONS => StringName::Extensions,
+        _ => return None,
+    })
+}
+
+/// Pixel formats accepted by `glReadPixels` so far.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelFormat {
+    Red,
+    Green,
+    Blue,
+    Alpha,
+    Rgb,
+    Rgba,
+    Bgr,
+    Bgra,
+    Luminance,
+    LuminanceAlpha,
+    DepthComponent,
+    StencilIndex,
+}
+
+impl PixelFormat {
+    pub fn components(self) -> usize {
+        use PixelFormat::*;
+        match self {
+            Red | Green | Blue | Alpha | Luminance | DepthComponent | StencilIndex => 1,
+            LuminanceAlpha => 2,
+            Rgb | Bgr => 3,
+            Rgba | Bgra => 4,
+        }
+    }
+}
+
+pub fn pixel_format(e: GLenum) -> Option<PixelFormat> {
+    use PixelFormat::*;
+    Some(match e {
+        GL_RED => Red,
+        GL_GREEN => Green,
+        GL_BLUE => Blue,
+        GL_ALPHA => Alpha,
+        GL_RGB => Rgb,
+        GL_RGBA => Rgba,
+        GL_BGR => Bgr,
+        GL_BGRA => Bgra,
+        GL_LUMINANCE => Luminance,
+        GL_LUMINANCE_ALPHA => LuminanceAlpha,
+        GL_DEPTH_COMPONENT => DepthComponent,
+        GL_STENCIL_INDEX => StencilIndex,
+        _ => return None,
+    })
+}
+
+/// Component types of pixel transfers (the unpacked ones; packed types come with texturing).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelType {
+    UnsignedByte,
+    Byte,
+    UnsignedShort,
+    Short,
+    UnsignedInt,
+    Int,
+    Float,
+}
+
+impl PixelType {
+    pub fn size(self) -> usize {
+        use PixelType::*;
+        match self {
+            UnsignedByte | Byte => 1,
+            UnsignedShort | Short => 2,
+            UnsignedInt | Int | Float => 4,
+        }
+    }
+}
+
+pub fn pixel_type(e: GLenum) -> Option<PixelType> {
+    use PixelType::*;
+    Some(match e {
+        GL_UNSIGNED_BYTE => UnsignedByte,
+        GL_BYTE => Byte,
+        GL_UNSIGNED_SHORT => UnsignedShort,
+        GL_SHORT => Short,
+        GL_UNSIGNED_INT => UnsignedInt,
+        GL_INT => Int,
+        GL_FLOAT => Float,
+        _ => return None,
+    })
+}
+
+/// True for the packed pixel types of GL 1.2 (valid enums that `glReadPixels` does not take yet).
+pub fn is_packed_pixel_type(e: GLenum) -> bool {
+    matches!(
+        e,
+        GL_UNSIGNED_BYTE_3_3_2
+            | GL_UNSIGNED_BYTE_2_3_3_REV
+            | GL_UNSIGNED_SHORT_5_6_5
+            | GL_UNSIGNED_SHORT_5_6_5_REV
+            | GL_UNSIGNED_SHORT_4_4_4_4
+            | GL_UNSIGNED_SHORT_4_4_4_4_REV
+            | GL_UNSIGNED_SHORT_5_5_5_1
+            | GL_UNSIGNED_SHORT_1_5_5_5_REV
+            | GL_UNSIGNED_INT_8_8_8_8
+            | GL_UNSIGNED_INT_8_8_8_8_REV
+            | GL_UNSIGNED_INT_10_10_10_2
+            | GL_UNSIGNED_INT_2_10_10_10_REV
+            | GL_BITMAP
+    )
+}
+
+/// `glPixelStore` parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelStoreParam {
+    Alignment { pack: bool },
+    RowLength { pack: bool },
+    SkipPixels { pack: bool },
+    SkipRows { pack: bool },
+    SkipImages { pack: bool },
+    ImageHeight { pack: bool },
+    SwapBytes { pack: bool },
+    LsbFirst { pack: bool },
+}
+
+pub fn pixel_store_param(e: GLenum) -> Option<PixelStoreParam> {
+    use PixelStoreParam::*;
+    Some(match e {
+        GL_PACK_ALIGNMENT => Alignment { pack: true },
+        GL_UNPACK_ALIGNMENT => Alignment { pack: false },
+        GL_PACK_ROW_LENGTH => RowLength { pack: true },
+        GL_UNPACK_ROW_LENGTH => RowLength { pack: false },
+        GL_PACK_SKIP_PIXELS => SkipPixels { pack: true },
+        GL_UNPACK_SKIP_PIXELS => SkipPixels { pack: false },
+        GL_PACK_SKIP_ROWS => SkipRows { pack: true },
+        GL_UNPACK_SKIP_ROWS => SkipRows { pack: false },
+        GL_PACK_SKIP_IMAGES => SkipImages { pack: true },
+        GL_UNPACK_SKIP_IMAGES => SkipImages { pack: false },
+        GL_PACK_IMAGE_HEIGHT => ImageHeight { pack: true },
+        GL_UNPACK_IMAGE_HEIGHT => ImageHeight { pack: false },
+        GL_PACK_SWAP_BYTES => SwapBytes { pack: true },
+        GL_UNPACK_SWAP_BYTES => SwapBytes { pack: false },
+        GL_PACK_LSB_FIRST => LsbFirst { pack: true },
+        GL_UNPACK_LSB_FIRST => LsbFirst { pack: false },
+        _ => return None,
+    })
+}
+
+/// Buffers cleared by `glClear`, from its bit mask. `None` when undefined bits are set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct ClearMask {
+    pub color: bool,
+    pub depth: bool,
+    pub stencil: bool,
+    pub accum: bool,
+}
+
+pub fn clear_mask(mask: u32) -> Option<ClearMask> {
+    let known =
+        GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+    if mask & !known != 0 {
+        return None;
+    }
+    Some(ClearMask {
+        color: mask & GL_COLOR_BUFFER_BIT != 0,
+        depth: mask & GL_DEPTH_BUFFER_BIT != 0,
+        stencil: mask & GL_STENCIL_BUFFER_BIT != 0,
+        accum: mask & GL_ACCUM_BUFFER_BIT != 0,
+    })
+}
+
+/// State readable with `glGet*` so far.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Query {
+    Enabled(Capability),
+    Viewport,
+    DepthRange,
+    ModelviewMatrix,
+    ProjectionMatrix,
+    TextureMatrix,
+    TransposeModelviewMatrix,
+    TransposeProjectionMatrix,
+    TransposeTextureMatrix,
+    ModelviewStackDepth,
+    ProjectionStackDepth,
+    TextureStackDepth,
+    MaxModelviewStackDepth,
+    MaxProjectionStackDepth,
+    MaxTextureStackDepth,
+    MaxViewportDims,
+    MaxClipPlanes,
+    MaxTextureUnits,
+    ColorClearValue,
+    DepthClearValue,
+    StencilClearValue,
+    DepthFunc,
+    DepthWritemask,
+    ColorWritemask,
+    StencilWritemask,
+    ScissorBox,
+    CullFaceMode,
+    FrontFace,
+    ShadeModel,
+    MatrixMode,
+    CurrentColor,
+    CurrentSecondaryColor,
+    CurrentNormal,
+    CurrentTextureCoords,
+    CurrentFogCoord,
+    EdgeFlag,
+    RedBits,
+    GreenBits,
+    BlueBits,
+    AlphaBits,
+    DepthBits,
+    StencilBits,
+    AccumRedBits,
+    AccumGreenBits,
+    AccumBlueBits,
+    AccumAlphaBits,
+    IndexBits,
+    SubpixelBits,
+    AuxBuffers,
+    Hint(HintTarget),
+    PixelStore(PixelStoreParam),
+    Doublebuffer,
+    Stereo,
+    RgbaMode,
+    IndexMode,
+    PointSize,
+    PointSizeRange,
+    PointSizeGranularity,
+    LineWidth,
+    LineWidthRange,
+    LineWidthGranularity,
+    ActiveTexture,
+    ClientActiveTexture,
+    MaxAttribStackDepth,
+    SampleBuffers,
+    Samples,
+}
+
+/// The `glGet*` query for `pname`.
+pub fn query(e: GLenum) -> Option<Query> {
+    use Query::*;
+    if let Some(cap) = capability(e) {
+        return Some(Enabled(cap));
+    }
+    if let Some(h) = hint_target(e) {
+        return Some(Hint(h));
+    }
+    if let Some(p) = pixel_store_param(e) {
+        return Some(PixelStore(p));
+    }
+    Some(match e {
+        GL_VIEWPORT => Viewport,
+        GL_DEPTH_RANGE => DepthRange,
+        GL_MODELVIEW_MATRIX => ModelviewMatrix,
+        GL_PROJECTION_MATRIX => ProjectionMatrix,
+        GL_TEXTURE_MATRIX => TextureMatrix,
+        GL_TRANSPOSE_MODELVIEW_MATRIX => TransposeModelviewMatrix,
+        GL_TRANSPOSE_PROJECTION_MATRIX => TransposeProjectionMatrix,
+        GL_TRANSPOSE_TEXTURE_MATRIX => TransposeTextureMatrix,
+        GL_MODELVIEW_STACK_DEPTH => ModelviewStackDepth,
+        GL_PROJECTION_STACK_DEPTH => ProjectionStackDepth,
+        GL_TEXTURE_STACK_DEPTH => TextureStackDepth,
+        GL_MAX_MODELVIEW_STACK_DEPTH => MaxModelviewStackDepth,
+        GL_MAX_PROJECTION_STACK_DEPTH => MaxProjectionStackDepth,
+        GL_MAX_TEXTURE_STACK_DEPTH => MaxTextureStackDepth,
+        GL_MAX_VIEWPORT_DIMS => MaxViewportDims,
+        GL_MAX_CLIP_PLANES => MaxClipPlanes,
+        GL_MAX_TEXTURE_UNITS => MaxTextureUnits,
+        GL_COLOR_CLEAR_VALUE => ColorClearValue,
+        GL_DEPTH_CLEAR_VALUE => DepthClearValue,
+        GL_STENCIL_CLEAR_VALUE => StencilClearValue,
+        GL_DEPTH_FUNC => DepthFunc,
+        GL_DEPTH_WRITEMASK => DepthWritemask,
+        GL_COLOR_WRITEMASK => ColorWritemask,
+        GL_STENCIL_WRITEMASK => StencilWritemask,
+        GL_SCISSOR_BOX => ScissorBox,
+        GL_CULL_FACE_MODE => CullFaceMode,
+        GL_FRONT_FACE => FrontFace,
+        GL_SHADE_MODEL => ShadeModel,
+        GL_MATRIX_MODE => MatrixMode,
+        GL_CURRENT_COLOR => CurrentColor,
+        GL_CURRENT_SECONDARY_COLOR => CurrentSecondaryColor,
+        GL_CURRENT_NORMAL => CurrentNormal,
+        GL_CURRENT_TEXTURE_COORDS => CurrentTextureCoords,
+        GL_CURRENT_FOG_COORD => CurrentFogCoord,
+        GL_EDGE_FLAG => EdgeFlag,
+        GL_RED_BITS => RedBits,
+        GL_GREEN_BITS => GreenBits,
+        GL_BLUE_BITS => BlueBits,
+        GL_ALPHA_BITS => AlphaBits,
+        GL_DEPTH_BITS => DepthBits,
+        GL_STENCIL_BITS => StencilBits,
+        GL_ACCUM_RED_BITS => AccumRedBits,
+        GL_ACCUM_GREEN_BITS => AccumGreenBits,
+        GL_ACCUM_BLUE_BITS => AccumBlueBits,
+        GL_ACCUM_ALPHA_BITS => AccumAlphaBits,
+        GL_INDEX_BITS => IndexBits,
+        GL_SUBPIXEL_BITS => SubpixelBits,
+        GL_AUX_BUFFERS => AuxBuffers,
+        GL_DOUBLEBUFFER => Doublebuffer,
+        GL_STEREO => Stereo,
+        GL_RGBA_MODE => RgbaMode,
+        GL_INDEX_MODE => IndexMode,
+        GL_POINT_SIZE => PointSize,
+        GL_POINT_SIZE_RANGE => PointSizeRange,
+        GL_POINT_SIZE_GRANULARITY => PointSizeGranularity,
+        GL_LINE_WIDTH => LineWidth,
+        GL_LINE_WIDTH_RANGE => LineWidthRange,
+        GL_LINE_WIDTH_GRANULARITY => LineWidthGranularity,
+        GL_ACTIVE_TEXTURE => ActiveTexture,
+        GL_CLIENT_ACTIVE_TEXTURE => ClientActiveTexture,
+        GL_MAX_ATTRIB_STACK_DEPTH => MaxAttribStackDepth,
+        GL_SAMPLE_BUFFERS => SampleBuffers,
+        GL_SAMPLES => Samples,
+        _ => return None,
+    })
+}
+
+/// The GLenum of a texture unit index.
+pub fn texture_unit_enum(unit: usize) -> GLenum {
+    GL_TEXTURE0 + unit as GLenum
+}

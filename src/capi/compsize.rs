@@ -1,0 +1,58 @@
+//! Element counts of C pointer parameters whose length the registry gives as
+//! `COMPSIZE(...)`: the number of elements GL reads or writes, computed from the other
+//! arguments and the context's state. Entry points tilegl does not implement yet get 0 (they
+//! record an error without touching memory).
+
+use crate::api::enums::*;
+use crate::state::Context;
+
+/// Element count of parameter `param` of `command` given the COMPSIZE arguments `args`.
+pub fn size(ctx: &Context, command: &str, param: &str, args: &[i64]) -> usize {
+    let _ = param;
+    let arg = |i: usize| args.get(i).copied().unwrap_or(0);
+    match command {
+        "glGetBooleanv" | "glGetIntegerv" | "glGetFloatv" | "glGetDoublev" => {
+            ctx.query_count(arg(0) as u32)
+        }
+        "glReadPixels" => ctx.pack_size(arg(0) as u32, arg(1) as u32, arg(2) as i32, arg(3) as i32),
+        "glPolygonStipple" | "glGetPolygonStipple" => 128,
+        "glCallLists" => {
+            let n = arg(0).clamp(0, i32::MAX as i64) as usize;
+            n * match arg(1) as u32 {
+                GL_BYTE | GL_UNSIGNED_BYTE | GL_2_BYTES | GL_3_BYTES | GL_4_BYTES => {
+                    match arg(1) as u32 {
+                        GL_2_BYTES => 2,
+                        GL_3_BYTES => 3,
+                        GL_4_BYTES => 4,
+                        _ => 1,
+                    }
+                }
+                GL_SHORT | GL_UNSIGNED_SHORT => 2,
+                GL_INT | GL_UNSIGNED_INT | GL_FLOAT => 4,
+                _ => 0,
+            }
+        }
+        _ if args.len() == 1 => pname_count(arg(0) as u32),
+        _ => 0,
+    }
+}
+
+/// Values taken or returned for a `pname` of the `gl*v` state calls.
+pub fn pname_count(pname: u32) -> usize {
+    match pname {
+        GL_AMBIENT
+        | GL_DIFFUSE
+        | GL_SPECULAR
+        | GL_EMISSION
+        | GL_AMBIENT_AND_DIFFUSE
+        | GL_POSITION
+        | GL_FOG_COLOR
+        | GL_TEXTURE_ENV_COLOR
+        | GL_TEXTURE_BORDER_COLOR
+        | GL_EYE_PLANE
+        | GL_OBJECT_PLANE
+        | GL_LIGHT_MODEL_AMBIENT => 4,
+        GL_SPOT_DIRECTION | GL_COLOR_INDEXES | GL_POINT_DISTANCE_ATTENUATION => 3,
+        _ => 1,
+    }
+}

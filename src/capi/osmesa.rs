@@ -1,0 +1,408 @@
+//! The OSMesa context API with OSMesa's semantics: the caller's buffer is the colour buffer
+//! (tilegl renders into its tiles and copies into the buffer at each flush point: `glFlush`,
+//! `glFinish` and `OSMesaGetColorBuffer`), rows bottom-up unless `OSMESA_Y_UP` is 0.
+
+#![allow(non_snake_case)]
+
+use std::cell::Cell;
+use std::ffi::{c_char, c_void, CStr};
+
+use crate::api::enums::*;
+use crate::api::*;
+use crate::framebuffer::FramebufferConfig;
+use crate::state::{Context, ContextConfig};
+
+pub const OSMESA_COLOR_INDEX: GLenum = GL_COLOR_INDEX;
+pub const OSMESA_RGBA: GLenum = GL_RGBA;
+pub const OSMESA_BGRA: GLenum = 0x1;
+pub const OSMESA_ARGB: GLenum = 0x2;
+pub const OSMESA_RGB: GLenum = GL_RGB;
+pub const OSMESA_BGR: GLenum = 0x4;
+pub const OSMESA_RGB_565: GLenum = 0x5;
+pub const OSMESA_ROW_LENGTH: GLint = 0x10;
+pub const OSMESA_Y_UP: GLint = 0x11;
+pub const OSMESA_WIDTH: GLint = 0x20;
+pub const OSMESA_HEIGHT: GLint = 0x21;
+pub const OSMESA_FORMAT: GLint = 0x22;
+pub const OSMESA_TYPE: GLint = 0x23;
+pub const OSMESA_MAX_WIDTH: GLint = 0x24;
+pub const OSMESA_MAX_HEIGHT: GLint = 0x25;
+
+/// An OSMesa context: a tilegl context plus the caller's colour buffer.
+pub struct OsMesaContext {
+    pub gl: Context,
+    format: GLenum,
+    buffer: *mut u8,
+    width: i32,
+    height: i32,
+    row_length: i32,
+    y_up: bool,
+    /// Depth values handed out by `OSMesaGetDepthBuffer` (a copy, refreshed on each call).
+    depth_copy: Vec<u32>,
+}
+
+thread_local! {
+    static CURRENT: Cell<*mut OsMesaContext> = const { Cell::new(std::ptr::null_mut()) };
+}
+
+/// Runs `f` on the current context of this thread, if any.
+pub(crate) fn with_current_context<R>(f: impl FnOnce(&mut OsMesaContext) -> R) -> Option<R> {
+    let p = CURRENT.with(|c| c.get());
+    // SAFETY: CURRENT holds either null or a pointer from OSMesaCreateContextExt that has not
+    // been destroyed (OSMesaDestroyContext clears it), used only on this thread.
+    unsafe { p.as_mut() }.map(f)
+}
+
+fn bytes_per_pixel(format: GLenum) -> Option<usize> {
+    match format {
+        OSMESA_RGBA | OSMESA_BGRA | OSMESA_ARGB => Some(4),
+        OSMESA_RGB | OSMESA_BGR => Some(3),
+        _ => None,
+    }
+}
+
+fn to_format(format: GLenum, c: [u8; 4], out: &mut [u8]) {
+    let [r, g, b, a] = c;
+    match format {
+        OSMESA_RGBA => out.copy_from_slice(&[r, g, b, a]),
+        OSMESA_BGRA => out.copy_from_slice(&[b, g, r, a]),
+        OSMESA_ARGB => out.copy_from_slice(&[a, r, g, b]),
+        OSMESA_RGB => out.copy_from_slice(&[r, g, b]),
+        OSMESA_BGR => out.copy_from_slice(&[b, g, r]),
+        _ => {}
+    }
+}
+
+fn from_format(format: GLenum, p: &[u8]) -> [u8; 4] {
+    match format {
+        OSMESA_RGBA => [p[0], p[1], p[2], p[3]],
+        OSMESA_BGRA => [p[2], p[1], p[0], p[3]],
+        OSMESA_ARGB => [p[1], p[2], p[3], p[0]],
+        OSMESA_RGB => [p[0], p[1], p[2], 255],
+        OSMESA_BGR => [p[2], p[1], p[0], 255],
+        _ => [0; 4],
+    }
+}
+
+impl OsMesaContext {
+    fn row_offset(&self, y: i32) -> usize {
+        let row = if self.y_up { y } else { self.height - 1 - y };
+        let bpp = bytes_per_pixel(self.format).unwrap_or(4);
+        row as usize * self.row_length.max(self.width) as usize * bpp
+    }
+
+    fn buffer_len(&self) -> usize {
+        let bpp = bytes_per_pixel(self.format).unwrap_or(4);
+        self.row_length.max(self.width) as usize * self.height.max(0) as usize * bpp
+    }
+
+    /// Copies the finished colour buffer into the caller's buffer.
+    pub(crate) fn present(&mut self) {
+        if self.buffer.is_null() {
+            return;
+        }
+        let bpp = bytes_per_pixel(self.format).unwrap_or(4);
+        let len = self.buffer_len();
+        // SAFETY: OSMesaMakeCurrent's caller promised a buffer of at least
+        // row_length x height pixels of this format, alive while the context uses it.
+        let out = unsafe { std::slice::from_raw_parts_mut(self.buffer, len) };
+        let (w, h) = (self.width, self.height);
+        let format = self.format;
+        let offsets: Vec<usize> = (0..h).map(|y| self.row_offset(y)).collect();
+        let fb = self.gl.framebuffer();
+        for y in 0..h {
+            for x in 0..w {
+                let o = offsets[y as usize] + x as usize * bpp;
+                to_format(
+                    format,
+                    fb.color_at(x, y).unwrap_or_default(),
+                    &mut out[o..o + bpp],
+                );
+            }
+        }
+    }
+
+    /// Loads the caller's buffer into the colour buffer (OSMesa renders on top of it).
+    fn adopt(&mut self) {
+        let bpp = bytes_per_pixel(self.format).unwrap_or(4);
+        let len = self.buffer_len();
+        // SAFETY: as in `present`.
+        let src = unsafe { std::slice::from_raw_parts(self.buffer, len) };
+        let offsets: Vec<usize> = (0..self.height).map(|y| self.row_offset(y)).collect();
+        let (w, h, format) = (self.width, self.height, self.format);
+        let fb = self.gl.framebuffer_mut();
+        for y in 0..h {
+            for x in 0..w {
+                let o = offsets[y as usize] + x as usize * bpp;
+                fb.set_color(x, y, from_format(format, &src[o..o + bpp]));
+            }
+        }
+    }
+}
+
+/// `OSMesaCreateContext`: 24-bit depth, 8-bit stencil, no accumulation buffer.
+#[no_mangle]
+pub extern "C" fn OSMesaCreateContext(
+    format: GLenum,
+    sharelist: *mut OsMesaContext,
+) -> *mut OsMesaContext {
+    OSMesaCreateContextExt(format, 24, 8, 0, sharelist)
+}
+
+/// `OSMesaCreateContextExt`. Sharing display lists and textures between contexts is not
+/// supported: a non-null `sharelist` returns null.
+#[no_mangle]
+pub extern "C" fn OSMesaCreateContextExt(
+    format: GLenum,
+    depth_bits: GLint,
+    stencil_bits: GLint,
+    accum_bits: GLint,
+    sharelist: *mut OsMesaContext,
+) -> *mut OsMesaContext {
+    if !sharelist.is_null() || bytes_per_pixel(format).is_none() {
+        return std::ptr::null_mut();
+    }
+    let depth_bits = match depth_bits {
+        d if d <= 0 => 0,
+        d if d <= 16 => 16,
+        d if d <= 24 => 24,
+        _ => 32,
+    };
+    let config = ContextConfig {
+        width: 0,
+        height: 0,
+        framebuffer: FramebufferConfig {
+            depth_bits,
+            stencil_bits: if stencil_bits > 0 { 8 } else { 0 },
+            accum_bits: if accum_bits > 0 { 16 } else { 0 },
+        },
+        threads: 0,
+    };
+    Box::into_raw(Box::new(OsMesaContext {
+        gl: Context::with_config(config),
+        format,
+        buffer: std::ptr::null_mut(),
+        width: 0,
+        height: 0,
+        row_length: 0,
+        y_up: true,
+        depth_copy: Vec::new(),
+    }))
+}
+
+/// `OSMesaMakeCurrent`: binds `buffer` (`width` x `height` pixels of the context's format,
+/// `GL_UNSIGNED_BYTE`) as the colour buffer. The viewport is set to the buffer on first use.
+///
+/// # Safety
+/// `ctx` must come from `OSMesaCreateContext*` and not be destroyed; `buffer` must hold
+/// `width * height` pixels and stay valid while the context is current.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaMakeCurrent(
+    ctx: *mut OsMesaContext,
+    buffer: *mut c_void,
+    type_: GLenum,
+    width: GLsizei,
+    height: GLsizei,
+) -> GLboolean {
+    if ctx.is_null() {
+        CURRENT.with(|c| c.set(std::ptr::null_mut()));
+        return GL_TRUE as GLboolean;
+    }
+    if buffer.is_null()
+        || type_ != GL_UNSIGNED_BYTE
+        || width < 1
+        || height < 1
+        || width > 8192
+        || height > 8192
+    {
+        return GL_FALSE as GLboolean;
+    }
+    // SAFETY: the caller passes a live context from OSMesaCreateContext*.
+    let c = unsafe { &mut *ctx };
+    let first = c.width == 0;
+    c.buffer = buffer as *mut u8;
+    c.width = width;
+    c.height = height;
+    if c.row_length < width {
+        c.row_length = width;
+    }
+    c.gl.resize(width, height);
+    if first {
+        c.gl.viewport(0, 0, width, height);
+        c.gl.scissor(0, 0, width, height);
+    }
+    c.adopt();
+    CURRENT.with(|cur| cur.set(ctx));
+    GL_TRUE as GLboolean
+}
+
+/// `OSMesaGetCurrentContext`.
+#[no_mangle]
+pub extern "C" fn OSMesaGetCurrentContext() -> *mut OsMesaContext {
+    CURRENT.with(|c| c.get())
+}
+
+/// `OSMesaDestroyContext`.
+///
+/// # Safety
+/// `ctx` must come from `OSMesaCreateContext*` and not be used afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaDestroyContext(ctx: *mut OsMesaContext) {
+    if ctx.is_null() {
+        return;
+    }
+    CURRENT.with(|c| {
+        if c.get() == ctx {
+            c.set(std::ptr::null_mut());
+        }
+    });
+    // SAFETY: ctx came from Box::into_raw in OSMesaCreateContextExt and is destroyed once.
+    drop(unsafe { Box::from_raw(ctx) });
+}
+
+/// `OSMesaPixelStore`: `OSMESA_ROW_LENGTH` and `OSMESA_Y_UP` of the current context.
+#[no_mangle]
+pub extern "C" fn OSMesaPixelStore(pname: GLint, value: GLint) {
+    with_current_context(|c| match pname {
+        OSMESA_ROW_LENGTH if value >= 0 => c.row_length = value.max(c.width),
+        OSMESA_Y_UP => c.y_up = value != 0,
+        _ => {}
+    });
+}
+
+/// `OSMesaGetIntegerv`.
+///
+/// # Safety
+/// `value` must point to a writable `GLint`.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetIntegerv(pname: GLint, value: *mut GLint) {
+    if value.is_null() {
+        return;
+    }
+    let v = match pname {
+        OSMESA_MAX_WIDTH | OSMESA_MAX_HEIGHT => Some(8192),
+        _ => with_current_context(|c| match pname {
+            OSMESA_WIDTH => Some(c.width),
+            OSMESA_HEIGHT => Some(c.height),
+            OSMESA_FORMAT => Some(c.format as GLint),
+            OSMESA_TYPE => Some(GL_UNSIGNED_BYTE as GLint),
+            OSMESA_ROW_LENGTH => Some(c.row_length),
+            OSMESA_Y_UP => Some(c.y_up as GLint),
+            _ => None,
+        })
+        .flatten(),
+    };
+    if let Some(v) = v {
+        // SAFETY: checked non-null; the caller provides a GLint.
+        unsafe { *value = v };
+    }
+}
+
+/// `OSMesaGetColorBuffer`: finishes rendering into the caller's buffer and describes it.
+///
+/// # Safety
+/// Output pointers must be writable (null ones are skipped).
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetColorBuffer(
+    ctx: *mut OsMesaContext,
+    width: *mut GLint,
+    height: *mut GLint,
+    format: *mut GLint,
+    buffer: *mut *mut c_void,
+) -> GLboolean {
+    // SAFETY: a live context from OSMesaCreateContext*, or null.
+    let Some(c) = (unsafe { ctx.as_mut() }) else {
+        return GL_FALSE as GLboolean;
+    };
+    if c.buffer.is_null() {
+        return GL_FALSE as GLboolean;
+    }
+    c.present();
+    // SAFETY: each pointer is checked for null and points to caller-owned storage.
+    unsafe {
+        if let Some(w) = width.as_mut() {
+            *w = c.width;
+        }
+        if let Some(h) = height.as_mut() {
+            *h = c.height;
+        }
+        if let Some(f) = format.as_mut() {
+            *f = c.format as GLint;
+        }
+        if let Some(b) = buffer.as_mut() {
+            *b = c.buffer as *mut c_void;
+        }
+    }
+    GL_TRUE as GLboolean
+}
+
+/// `OSMesaGetDepthBuffer`: a copy of the depth buffer as 32-bit values (bottom row first),
+/// valid until the next call.
+///
+/// # Safety
+/// Output pointers must be writable (null ones are skipped).
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetDepthBuffer(
+    ctx: *mut OsMesaContext,
+    width: *mut GLint,
+    height: *mut GLint,
+    bytes_per_value: *mut GLint,
+    buffer: *mut *mut c_void,
+) -> GLboolean {
+    // SAFETY: a live context from OSMesaCreateContext*, or null.
+    let Some(c) = (unsafe { ctx.as_mut() }) else {
+        return GL_FALSE as GLboolean;
+    };
+    let (w, h) = (c.width, c.height);
+    if c.gl.framebuffer().config.depth_bits == 0 || w == 0 {
+        return GL_FALSE as GLboolean;
+    }
+    let fb = c.gl.framebuffer();
+    let copy: Vec<u32> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| fb.depth_at(x, y).unwrap_or(0))
+        .collect();
+    c.depth_copy = copy;
+    // SAFETY: each pointer is checked for null and points to caller-owned storage.
+    unsafe {
+        if let Some(p) = width.as_mut() {
+            *p = w;
+        }
+        if let Some(p) = height.as_mut() {
+            *p = h;
+        }
+        if let Some(p) = bytes_per_value.as_mut() {
+            *p = 4;
+        }
+        if let Some(p) = buffer.as_mut() {
+            *p = c.depth_copy.as_mut_ptr() as *mut c_void;
+        }
+    }
+    GL_TRUE as GLboolean
+}
+
+/// `OSMesaGetProcAddress`: any exported GL or OSMesa function by name.
+///
+/// # Safety
+/// `name` must be a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn OSMesaGetProcAddress(name: *const c_char) -> *const c_void {
+    if name.is_null() {
+        return std::ptr::null();
+    }
+    // SAFETY: the caller passes a NUL-terminated string.
+    let name = unsafe { CStr::from_ptr(name) }.to_string_lossy();
+    match name.as_ref() {
+        "OSMesaCreateContext" => OSMesaCreateContext as *const c_void,
+        "OSMesaCreateContextExt" => OSMesaCreateContextExt as *const c_void,
+        "OSMesaMakeCurrent" => OSMesaMakeCurrent as *const c_void,
+        "OSMesaGetCurrentContext" => OSMesaGetCurrentContext as *const c_void,
+        "OSMesaDestroyContext" => OSMesaDestroyContext as *const c_void,
+        "OSMesaPixelStore" => OSMesaPixelStore as *const c_void,
+        "OSMesaGetIntegerv" => OSMesaGetIntegerv as *const c_void,
+        "OSMesaGetColorBuffer" => OSMesaGetColorBuffer as *const c_void,
+        "OSMesaGetDepthBuffer" => OSMesaGetDepthBuffer as *const c_void,
+        "OSMesaGetProcAddress" => OSMesaGetProcAddress as *const c_void,
+        other => super::exports::gl_proc_address(other),
+    }
+}

@@ -1,0 +1,149 @@
+//! Span functions: shade the covered pixels `x0..x1` of one row of a tile. The general path
+//! reads the key at run time; specialised paths are the same code monomorphised on the key,
+//! so a disabled stage is compiled out instead of skipped by a branch.
+
+use crate::api::convert::CompareFunc;
+use crate::framebuffer::Tile;
+use crate::raster::setup::Plane;
+use crate::state::DrawState;
+
+/// The interpolants of one primitive for the fragment stage.
+#[derive(Clone, Copy, Debug)]
+pub struct Interpolants<'a> {
+    /// Window z in [0, 1].
+    pub z: Plane,
+    /// 1/w_clip, for perspective correction.
+    pub inv_w: Plane,
+    /// Attribute planes: attribute/w when `perspective`, else the attribute itself.
+    pub attrs: &'a [Plane],
+    pub perspective: bool,
+}
+
+/// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
+pub type SpanFn = fn(&DrawState, &mut Tile, i32, i32, i32, &Interpolants);
+
+/// Converts window z to a stored depth value (round to nearest, clamped).
+#[inline(always)]
+pub fn depth_to_fixed(z: f64, depth_max: u32) -> u32 {
+    let v = z * depth_max as f64 + 0.5;
+    if v >= depth_max as f64 {
+        depth_max
+    } else if v > 0.0 {
+        v as u32
+    } else {
+        0
+    }
+}
+
+/// Converts a colour component to 8 bits (section 2.14.9: round to nearest after clamping).
+#[inline(always)]
+pub fn color_to_u8(c: f32) -> u8 {
+    let v = c * 255.0 + 0.5;
+    if v >= 255.0 {
+        255
+    } else if v > 0.0 {
+        v as u8
+    } else {
+        0
+    }
+}
+
+/// Depth handling chosen at compile time: `DYNAMIC` reads the key, others are fixed.
+pub mod depth_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const NONE: u8 = 1;
+    pub const LESS_WRITE: u8 = 2;
+    pub const LEQUAL_WRITE: u8 = 3;
+}
+
+#[inline(always)]
+fn shade<const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants,
+) {
+    let key = &ds.key;
+    let yc = y as f64 + 0.5;
+    let row = tile.index(x0, y);
+    let n = (x1 - x0) as usize;
+    let xc0 = x0 as f64 + 0.5;
+    let mut z = it.z.at(xc0, yc);
+    let dz = it.z.a;
+    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
+    let dinv_w = it.inv_w.a as f32;
+    let mut attr = [0f32; 4];
+    let mut dattr = [0f32; 4];
+    for c in 0..4 {
+        attr[c] = it.attrs[c].at(xc0, yc) as f32;
+        dattr[c] = it.attrs[c].a as f32;
+    }
+    for i in 0..n {
+        let idx = row + i;
+        let depth = depth_to_fixed(z, ds.depth_max);
+        let pass = match DEPTH {
+            depth_mode::NONE => true,
+            depth_mode::LESS_WRITE => depth < tile.depth[idx],
+            depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
+            _ => match key.depth_func {
+                None => true,
+                Some(CompareFunc::Always) => true,
+                Some(f) => f.test(depth, tile.depth[idx]),
+            },
+        };
+        if pass {
+            let write_depth = match DEPTH {
+                depth_mode::NONE => false,
+                depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
+                _ => key.depth_write,
+            };
+            if write_depth {
+                tile.depth[idx] = depth;
+            }
+            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+            let rgba = [
+                color_to_u8(attr[0] * w),
+                color_to_u8(attr[1] * w),
+                color_to_u8(attr[2] * w),
+                color_to_u8(attr[3] * w),
+            ];
+            if FULL_MASK {
+                tile.color[idx] = rgba;
+            } else {
+                let dst = &mut tile.color[idx];
+                for c in 0..4 {
+                    if key.color_mask[c] {
+                        dst[c] = rgba[c];
+                    }
+                }
+            }
+        }
+        z += dz;
+        inv_w += dinv_w;
+        for c in 0..4 {
+            attr[c] += dattr[c];
+        }
+    }
+}
+
+/// The general path: every decision read from the key at run time.
+pub fn span_general(ds: &DrawState, tile: &mut Tile, y: i32, x0: i32, x1: i32, it: &Interpolants) {
+    shade::<{ depth_mode::DYNAMIC }, false>(ds, tile, y, x0, x1, it)
+}
+
+/// A specialised path: depth mode and full colour mask fixed at compile time.
+pub fn span_specialised<const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants,
+) {
+    shade::<DEPTH, FULL_MASK>(ds, tile, y, x0, x1, it)
+}
+
+/// Draws nothing (a key whose fragments change no buffer).
+pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}

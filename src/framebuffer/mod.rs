@@ -1,0 +1,161 @@
+//! Tiled framebuffer storage: colour (RGBA8), depth and stencil, each split into square tiles so
+//! that worker threads own disjoint memory while shading (no locks, no `unsafe`).
+//!
+//! Coordinates are GL window coordinates: (0, 0) is the lower-left pixel.
+
+pub mod image;
+pub mod pixels;
+
+/// Side of a square tile in pixels.
+pub const TILE: usize = 64;
+/// Pixels per tile.
+pub const TILE_PIXELS: usize = TILE * TILE;
+
+/// One tile of every buffer.
+#[derive(Clone, Debug)]
+pub struct Tile {
+    /// Window x of the tile's lower-left pixel.
+    pub x0: i32,
+    /// Window y of the tile's lower-left pixel.
+    pub y0: i32,
+    /// RGBA8 pixels, bytes in R, G, B, A order; row-major from the bottom row.
+    pub color: Vec<[u8; 4]>,
+    /// Depth values as unsigned integers in `0..=depth_max`.
+    pub depth: Vec<u32>,
+    /// Stencil values.
+    pub stencil: Vec<u8>,
+}
+
+impl Tile {
+    /// Index of window pixel (x, y) within the tile; the pixel must lie in it.
+    #[inline(always)]
+    pub fn index(&self, x: i32, y: i32) -> usize {
+        (y - self.y0) as usize * TILE + (x - self.x0) as usize
+    }
+}
+
+/// Which buffers a framebuffer has and their depths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FramebufferConfig {
+    /// Depth bits: 0, 16, 24 or 32.
+    pub depth_bits: u32,
+    /// Stencil bits: 0 or 8.
+    pub stencil_bits: u32,
+    /// Accumulation bits per channel (0 or 16); storage arrives with the accumulation issue.
+    pub accum_bits: u32,
+}
+
+impl Default for FramebufferConfig {
+    fn default() -> Self {
+        FramebufferConfig {
+            depth_bits: 24,
+            stencil_bits: 8,
+            accum_bits: 0,
+        }
+    }
+}
+
+/// The tiled colour/depth/stencil buffers of one context.
+#[derive(Clone, Debug)]
+pub struct Framebuffer {
+    pub width: i32,
+    pub height: i32,
+    pub tiles_x: usize,
+    pub tiles_y: usize,
+    pub tiles: Vec<Tile>,
+    pub config: FramebufferConfig,
+}
+
+impl Framebuffer {
+    /// A framebuffer of `width` x `height` pixels (each at least 0), cleared to zero colour,
+    /// maximum depth and zero stencil.
+    pub fn new(width: i32, height: i32, config: FramebufferConfig) -> Framebuffer {
+        let width = width.max(0);
+        let height = height.max(0);
+        let tiles_x = (width as usize).div_ceil(TILE);
+        let tiles_y = (height as usize).div_ceil(TILE);
+        let depth_max = depth_max(config.depth_bits);
+        let mut tiles = Vec::with_capacity(tiles_x * tiles_y);
+        for ty in 0..tiles_y {
+            for tx in 0..tiles_x {
+                tiles.push(Tile {
+                    x0: (tx * TILE) as i32,
+                    y0: (ty * TILE) as i32,
+                    color: vec![[0; 4]; TILE_PIXELS],
+                    depth: vec![depth_max; TILE_PIXELS],
+                    stencil: vec![0; TILE_PIXELS],
+                });
+            }
+        }
+        Framebuffer {
+            width,
+            height,
+            tiles_x,
+            tiles_y,
+            tiles,
+            config,
+        }
+    }
+
+    /// The largest stored depth value.
+    pub fn depth_max(&self) -> u32 {
+        depth_max(self.config.depth_bits)
+    }
+
+    #[inline]
+    fn locate(&self, x: i32, y: i32) -> Option<(usize, usize)> {
+        if x < 0 || y < 0 || x >= self.width || y >= self.height {
+            return None;
+        }
+        let (x, y) = (x as usize, y as usize);
+        Some((
+            (y / TILE) * self.tiles_x + x / TILE,
+            (y % TILE) * TILE + x % TILE,
+        ))
+    }
+
+    /// Colour of window pixel (x, y), or `None` outside the framebuffer.
+    pub fn color_at(&self, x: i32, y: i32) -> Option<[u8; 4]> {
+        self.locate(x, y).map(|(t, i)| self.tiles[t].color[i])
+    }
+
+    /// Depth of window pixel (x, y) as stored.
+    pub fn depth_at(&self, x: i32, y: i32) -> Option<u32> {
+        self.locate(x, y).map(|(t, i)| self.tiles[t].depth[i])
+    }
+
+    /// Stencil of window pixel (x, y).
+    pub fn stencil_at(&self, x: i32, y: i32) -> Option<u8> {
+        self.locate(x, y).map(|(t, i)| self.tiles[t].stencil[i])
+    }
+
+    /// Overwrites the colour of window pixel (x, y) (used by the C ABI to adopt a caller's buffer).
+    pub fn set_color(&mut self, x: i32, y: i32, rgba: [u8; 4]) {
+        if let Some((t, i)) = self.locate(x, y) {
+            self.tiles[t].color[i] = rgba;
+        }
+    }
+
+    /// The colour buffer as tightly packed RGBA8 rows, bottom row first.
+    pub fn color_rows_bottom_up(&self) -> Vec<u8> {
+        let mut out = vec![0u8; self.width as usize * self.height as usize * 4];
+        for y in 0..self.height {
+            for x in 0..self.width {
+                let c = self.color_at(x, y).unwrap_or_default();
+                let o = (y as usize * self.width as usize + x as usize) * 4;
+                out[o..o + 4].copy_from_slice(&c);
+            }
+        }
+        out
+    }
+}
+
+/// The largest depth value for a depth buffer of `bits` bits (0 bits behaves like 24 for
+/// storage; the depth test is skipped without a depth buffer).
+pub fn depth_max(bits: u32) -> u32 {
+    match bits {
+        0 => 0x00FF_FFFF,
+        32.. => u32::MAX,
+        b => (1u32 << b) - 1,
+    }
+}

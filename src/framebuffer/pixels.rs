@@ -1,0 +1,260 @@
+//! `glClear` recording and `glReadPixels`.
+
+use crate::api::convert::{self, ClearMask, PixelFormat, PixelType};
+use crate::api::enums::*;
+use crate::api::*;
+use crate::fragment::span::{color_to_u8, depth_to_fixed};
+use crate::raster::scene::{ClearCommand, Command};
+use crate::raster::setup::Rect;
+use crate::state::Context;
+
+impl Context {
+    /// Records a clear of the buffers in `mask`, limited by the scissor box and the write masks
+    /// (section 4.2.3). Dithering does not apply to tilegl's 8-bit channels.
+    pub(crate) fn record_clear(&mut self, mask: ClearMask) {
+        let fb = Rect {
+            x0: 0,
+            y0: 0,
+            x1: self.framebuffer.width,
+            y1: self.framebuffer.height,
+        };
+        let ops = &self.fragment_ops;
+        let rect = if ops.scissor_enabled {
+            let s = ops.scissor;
+            fb.intersect(&Rect {
+                x0: s.x,
+                y0: s.y,
+                x1: s.x.saturating_add(s.width),
+                y1: s.y.saturating_add(s.height),
+            })
+        } else {
+            fb
+        };
+        let cfg = self.framebuffer.config;
+        let color = (mask.color && ops.color_mask != [false; 4])
+            .then(|| (self.clear_values.color.map(color_to_u8), ops.color_mask));
+        let depth = (mask.depth && ops.depth_mask && cfg.depth_bits > 0)
+            .then(|| depth_to_fixed(self.clear_values.depth, self.framebuffer.depth_max()));
+        let stencil_bits_mask = if cfg.stencil_bits >= 8 {
+            0xFF
+        } else {
+            (1u32 << cfg.stencil_bits) - 1
+        };
+        let stencil = (mask.stencil && cfg.stencil_bits > 0).then(|| {
+            (
+                (self.clear_values.stencil as u32 & stencil_bits_mask) as u8,
+                (ops.stencil_writemask & stencil_bits_mask) as u8,
+            )
+        });
+        if color.is_none() && depth.is_none() && stencil.is_none() {
+            return;
+        }
+        if self.scene.is_full() {
+            self.flush_scene();
+        }
+        self.scene.bin(
+            Command::Clear(ClearCommand {
+                rect,
+                color,
+                depth,
+                stencil,
+            }),
+            rect,
+        );
+    }
+
+    /// Bytes `glReadPixels` writes for a `width` x `height` rectangle under the pack state, or 0
+    /// when the arguments are invalid (the call then records the error and writes nothing).
+    pub(crate) fn pack_size(
+        &self,
+        format: GLenum,
+        type_: GLenum,
+        width: i32,
+        height: i32,
+    ) -> usize {
+        let (Some(f), Some(t)) = (convert::pixel_format(format), convert::pixel_type(type_)) else {
+            return 0;
+        };
+        if width <= 0 || height <= 0 {
+            return 0;
+        }
+        self.pack
+            .image_bytes(
+                width as usize,
+                height as usize,
+                1,
+                f.components() * t.size(),
+                t.size(),
+            )
+            .unwrap_or(0)
+    }
+
+    pub fn read_pixels(
+        &mut self,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &mut [u8],
+    ) {
+        let Some(f) = convert::pixel_format(format) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        let Some(t) = convert::pixel_type(type_) else {
+            // Packed types are valid enums that tilegl does not pack yet.
+            self.record_error(if convert::is_packed_pixel_type(type_) {
+                GL_INVALID_OPERATION
+            } else {
+                GL_INVALID_ENUM
+            });
+            return;
+        };
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let cfg = self.framebuffer.config;
+        if (f == PixelFormat::DepthComponent && cfg.depth_bits == 0)
+            || (f == PixelFormat::StencilIndex && cfg.stencil_bits == 0)
+        {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let bpp = f.components() * t.size();
+        let Some(needed) = self
+            .pack
+            .image_bytes(width as usize, height as usize, 1, bpp, t.size())
+        else {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        if pixels.len() < needed {
+            // The Rust API's equivalent of a too-small client buffer.
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.flush_scene();
+        let row_stride = self
+            .pack
+            .row_stride(width as usize, bpp, t.size())
+            .unwrap_or(0);
+        let start = self.pack.skip_rows.max(0) as usize * row_stride
+            + self.pack.skip_pixels.max(0) as usize * bpp;
+        let depth_max = self.framebuffer.depth_max() as f64;
+        let swap = self.pack.swap_bytes;
+        for row in 0..height {
+            for col in 0..width {
+                let (wx, wy) = (x.saturating_add(col), y.saturating_add(row));
+                let fb = &self.framebuffer;
+                // Pixels outside the window are undefined; tilegl leaves the destination as is.
+                let Some(rgba) = fb.color_at(wx, wy) else {
+                    continue;
+                };
+                let c = rgba.map(|v| v as f64 / 255.0);
+                let lum = (c[0] + c[1] + c[2]).min(1.0);
+                let comps: [f64; 4];
+                let values: &[f64] = match f {
+                    PixelFormat::Red => &c[0..1],
+                    PixelFormat::Green => &c[1..2],
+                    PixelFormat::Blue => &c[2..3],
+                    PixelFormat::Alpha => &c[3..4],
+                    PixelFormat::Rgb => &c[0..3],
+                    PixelFormat::Rgba => &c,
+                    PixelFormat::Bgr => {
+                        comps = [c[2], c[1], c[0], 0.0];
+                        &comps[..3]
+                    }
+                    PixelFormat::Bgra => {
+                        comps = [c[2], c[1], c[0], c[3]];
+                        &comps
+                    }
+                    PixelFormat::Luminance => {
+                        comps = [lum, 0.0, 0.0, 0.0];
+                        &comps[..1]
+                    }
+                    PixelFormat::LuminanceAlpha => {
+                        comps = [lum, c[3], 0.0, 0.0];
+                        &comps[..2]
+                    }
+                    PixelFormat::DepthComponent => {
+                        comps = [
+                            fb.depth_at(wx, wy).unwrap_or(0) as f64 / depth_max,
+                            0.0,
+                            0.0,
+                            0.0,
+                        ];
+                        &comps[..1]
+                    }
+                    PixelFormat::StencilIndex => {
+                        comps = [fb.stencil_at(wx, wy).unwrap_or(0) as f64, 0.0, 0.0, 0.0];
+                        &comps[..1]
+                    }
+                };
+                let o = start + row as usize * row_stride + col as usize * bpp;
+                let index = f == PixelFormat::StencilIndex;
+                for (k, &v) in values.iter().enumerate() {
+                    let at = o + k * t.size();
+                    write_component(&mut pixels[at..at + t.size()], t, v, index, swap);
+                }
+            }
+        }
+    }
+}
+
+/// Converts one component for packing (table 4.7 inverses; indices are integers).
+fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool) {
+    let mut bytes: Vec<u8> = match t {
+        PixelType::UnsignedByte => {
+            vec![if index {
+                v as u8
+            } else {
+                (v * 255.0).round() as u8
+            }]
+        }
+        PixelType::Byte => vec![if index {
+            v as i8 as u8
+        } else {
+            ((v * 255.0 - 1.0) / 2.0).round() as i8 as u8
+        }],
+        PixelType::UnsignedShort => {
+            let x = if index {
+                v as u16
+            } else {
+                (v * 65535.0).round() as u16
+            };
+            x.to_ne_bytes().to_vec()
+        }
+        PixelType::Short => {
+            let x = if index {
+                v as i16
+            } else {
+                ((v * 65535.0 - 1.0) / 2.0).round() as i16
+            };
+            x.to_ne_bytes().to_vec()
+        }
+        PixelType::UnsignedInt => {
+            let x = if index {
+                v as u32
+            } else {
+                (v * 4294967295.0).round() as u32
+            };
+            x.to_ne_bytes().to_vec()
+        }
+        PixelType::Int => {
+            let x = if index {
+                v as i32
+            } else {
+                ((v * 4294967295.0 - 1.0) / 2.0).round() as i32
+            };
+            x.to_ne_bytes().to_vec()
+        }
+        PixelType::Float => (v as f32).to_ne_bytes().to_vec(),
+    };
+    if swap {
+        bytes.reverse();
+    }
+    out.copy_from_slice(&bytes);
+}

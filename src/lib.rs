@@ -1,0 +1,39 @@
+//! tilegl: an OpenGL 1.5 fixed-function driver emulated by a tile-based, multi-threaded
+//! software rasterizer.
+//!
+//! A draw flows through the modules in pipeline order: [`api`] (entry points, enum conversion,
+//! errors) -> [`state`] (the state machine and the frozen per-draw snapshot) -> [`vertex`]
+//! (transform) -> [`primitive`] (assembly, clipping, culling, viewport) -> [`raster`] (setup,
+//! binning into tiles, parallel tile shading) -> [`fragment`] (specialised span functions) ->
+//! [`framebuffer`] (tiled buffers, clears, pixel reads).
+//!
+//! ```
+//! use tilegl::{Context, Gl, enums::*};
+//! let mut gl = Context::new(64, 64);
+//! gl.clear_color(0.0, 0.0, 1.0, 1.0);
+//! gl.clear(GL_COLOR_BUFFER_BIT);
+//! gl.begin(GL_TRIANGLES);
+//! gl.color_3f(1.0, 0.0, 0.0);
+//! gl.vertex_2f(-1.0, -1.0);
+//! gl.vertex_2f(1.0, -1.0);
+//! gl.vertex_2f(0.0, 1.0);
+//! gl.end();
+//! let mut px = [0u8; 4];
+//! gl.read_pixels(32, 16, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+//! assert_eq!(px, [255, 0, 0, 255]);
+//! ```
+
+#[macro_use]
+pub mod api;
+pub mod capi;
+pub mod fragment;
+pub mod framebuffer;
+pub mod primitive;
+pub mod raster;
+pub mod state;
+pub mod vertex;
+
+pub use api::enums;
+pub use api::{ClientPtr, Gl};
+pub use framebuffer::{Framebuffer, FramebufferConfig};
+pub use state::{Context, ContextConfig};

@@ -1,0 +1,10 @@
+//! The tile-based rasterizer: setup turns window-space primitives into edge functions and
+//! attribute planes, binning records them per screen tile, and at a flush point the tiles are
+//! shaded in parallel, each replaying its commands in submission order.
+
+pub mod line;
+pub mod point;
+pub mod scene;
+pub mod schedule;
+pub mod setup;
+pub mod tri;

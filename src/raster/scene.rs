@@ -1,0 +1,135 @@
+//! The deferred scene: commands recorded since the last flush, each binned into the screen
+//! tiles it touches. Every command refers to the `DrawState` frozen at its draw.
+
+use std::sync::Arc;
+
+use super::setup::{Edge, Plane, Rect};
+use crate::framebuffer::{Framebuffer, TILE};
+use crate::state::DrawState;
+
+/// A clear of part of the framebuffer.
+#[derive(Clone, Copy, Debug)]
+pub struct ClearCommand {
+    pub rect: Rect,
+    /// Colour and per-channel write mask.
+    pub color: Option<([u8; 4], [bool; 4])>,
+    pub depth: Option<u32>,
+    /// Value and write mask.
+    pub stencil: Option<(u8, u8)>,
+}
+
+/// A set-up triangle.
+#[derive(Clone, Copy, Debug)]
+pub struct TriangleCommand {
+    pub state: u32,
+    pub edges: [Edge; 3],
+    /// Pixels that may be covered (already inside the draw rectangle).
+    pub bbox: Rect,
+    pub z: Plane,
+    pub inv_w: Plane,
+    /// Offset of the attribute planes in `Scene::planes`.
+    pub attrs: u32,
+    pub perspective: bool,
+}
+
+/// One fragment of a point or line, with its attributes as constant planes.
+#[derive(Clone, Copy, Debug)]
+pub struct PixelCommand {
+    pub state: u32,
+    pub x: i32,
+    pub y: i32,
+    pub z: f64,
+    pub attrs: u32,
+}
+
+/// Work recorded for the tiles.
+#[derive(Clone, Copy, Debug)]
+pub enum Command {
+    Clear(ClearCommand),
+    Triangle(TriangleCommand),
+    Pixel(PixelCommand),
+}
+
+/// Commands recorded since the last flush, per-tile bins, and what they reference.
+#[derive(Debug, Default)]
+pub struct Scene {
+    pub commands: Vec<Command>,
+    pub bins: Vec<Vec<u32>>,
+    pub states: Vec<Arc<DrawState>>,
+    pub planes: Vec<Plane>,
+    tiles_x: usize,
+    tiles_y: usize,
+}
+
+/// Recorded commands that force a flush: bounds the scene's memory (each command costs at most a
+/// few hundred bytes plus its planes).
+pub const MAX_COMMANDS: usize = 1 << 20;
+/// Attribute planes that force a flush.
+pub const MAX_PLANES: usize = 1 << 23;
+
+impl Scene {
+    pub fn new(fb: &Framebuffer) -> Scene {
+        Scene {
+            bins: vec![Vec::new(); fb.tiles_x * fb.tiles_y],
+            tiles_x: fb.tiles_x,
+            tiles_y: fb.tiles_y,
+            ..Scene::default()
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.commands.is_empty()
+    }
+
+    /// True when the scene should be flushed before more is recorded.
+    pub fn is_full(&self) -> bool {
+        self.commands.len() >= MAX_COMMANDS || self.planes.len() >= MAX_PLANES
+    }
+
+    /// Index of `ds` in the state table (reused when it is the last one added).
+    pub fn add_state(&mut self, ds: &Arc<DrawState>) -> u32 {
+        if let Some(last) = self.states.last() {
+            if Arc::ptr_eq(last, ds) {
+                return (self.states.len() - 1) as u32;
+            }
+        }
+        self.states.push(ds.clone());
+        (self.states.len() - 1) as u32
+    }
+
+    /// Stores attribute planes and returns their offset.
+    pub fn add_planes(&mut self, planes: &[Plane]) -> u32 {
+        let offset = self.planes.len() as u32;
+        self.planes.extend_from_slice(planes);
+        offset
+    }
+
+    /// Records `cmd` in every tile that `rect` touches.
+    pub fn bin(&mut self, cmd: Command, rect: Rect) {
+        if rect.is_empty() {
+            return;
+        }
+        let index = self.commands.len() as u32;
+        self.commands.push(cmd);
+        let t = TILE as i32;
+        let tx0 = (rect.x0.max(0) / t) as usize;
+        let ty0 = (rect.y0.max(0) / t) as usize;
+        let tx1 = (((rect.x1 - 1).max(0) / t) as usize).min(self.tiles_x.saturating_sub(1));
+        let ty1 = (((rect.y1 - 1).max(0) / t) as usize).min(self.tiles_y.saturating_sub(1));
+        for ty in ty0..=ty1 {
+            for tx in tx0..=tx1 {
+                self.bins[ty * self.tiles_x + tx].push(index);
+            }
+        }
+    }
+
+    /// Forgets all recorded work (after it has been executed).
+    pub fn reset(&mut self) {
+        self.commands.clear();
+        for b in &mut self.bins {
+            b.clear();
+        }
+        self.states.clear();
+        self.planes.clear();
+    }
+}

@@ -1,0 +1,96 @@
+//! Flush points: shade every tile in parallel, each replaying its bin in submission order. The
+//! result does not depend on the number of threads or the order tiles are picked.
+
+use rayon::prelude::*;
+
+use super::scene::{ClearCommand, Command, Scene};
+use super::setup::Plane;
+use super::tri::raster_triangle;
+use crate::fragment::span::Interpolants;
+use crate::framebuffer::Tile;
+use crate::state::Context;
+
+impl Context {
+    /// Executes all recorded work. Called at every flush point (`glFinish`, `glFlush`,
+    /// `glReadPixels`, framebuffer access, scene memory cap).
+    pub(crate) fn flush_scene(&mut self) {
+        if self.scene.is_empty() {
+            return;
+        }
+        let scene = &self.scene;
+        let tiles = &mut self.framebuffer.tiles;
+        match &self.pool {
+            Some(pool) => pool.install(|| shade_all(scene, tiles)),
+            None => shade_all(scene, tiles),
+        }
+        self.scene.reset();
+    }
+}
+
+fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
+    tiles
+        .par_iter_mut()
+        .zip(scene.bins.par_iter())
+        .filter(|(_, bin)| !bin.is_empty())
+        .for_each(|(tile, bin)| shade_tile(scene, bin, tile));
+}
+
+fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
+    for &ci in bin {
+        match &scene.commands[ci as usize] {
+            Command::Clear(c) => clear_tile(c, tile),
+            Command::Triangle(t) => {
+                let ds = &scene.states[t.state as usize];
+                let planes = &scene.planes[t.attrs as usize..t.attrs as usize + ds.attr_count];
+                raster_triangle(t, ds, planes, tile);
+            }
+            Command::Pixel(p) => {
+                let ds = &scene.states[p.state as usize];
+                let attrs = &scene.planes[p.attrs as usize..p.attrs as usize + ds.attr_count];
+                let it = Interpolants {
+                    z: Plane::constant(p.z),
+                    inv_w: Plane::constant(1.0),
+                    attrs,
+                    perspective: false,
+                };
+                (ds.span)(ds, tile, p.y, p.x, p.x + 1, &it);
+            }
+        }
+    }
+}
+
+fn clear_tile(c: &ClearCommand, tile: &mut Tile) {
+    let t = crate::framebuffer::TILE as i32;
+    let x0 = c.rect.x0.max(tile.x0);
+    let x1 = c.rect.x1.min(tile.x0 + t);
+    let y0 = c.rect.y0.max(tile.y0);
+    let y1 = c.rect.y1.min(tile.y0 + t);
+    if x0 >= x1 || y0 >= y1 {
+        return;
+    }
+    for y in y0..y1 {
+        let row = tile.index(x0, y);
+        let n = (x1 - x0) as usize;
+        if let Some((rgba, mask)) = c.color {
+            for px in &mut tile.color[row..row + n] {
+                if mask == [true; 4] {
+                    *px = rgba;
+                } else {
+                    for ch in 0..4 {
+                        if mask[ch] {
+                            px[ch] = rgba[ch];
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(d) = c.depth {
+            tile.depth[row..row + n].fill(d);
+        }
+        if let Some((s, m)) = c.stencil {
+            for v in &mut tile.stencil[row..row + n] {
+                *v = (*v & !m) | (s & m);
+            }
+        }
+    }
+}

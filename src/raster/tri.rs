@@ -1,0 +1,125 @@
+//! Triangle traversal within one tile: for each row, the covered interval is solved from the
+//! three edge functions directly (triangles are convex), then handed to the span function.
+
+use super::scene::TriangleCommand;
+use super::setup::{Plane, SUBPIXEL};
+use crate::fragment::span::Interpolants;
+use crate::framebuffer::{Tile, TILE};
+use crate::state::DrawState;
+
+pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], tile: &mut Tile) {
+    let tile_size = TILE as i32;
+    let x_lo = t.bbox.x0.max(tile.x0);
+    let x_hi = t.bbox.x1.min(tile.x0 + tile_size);
+    let y_lo = t.bbox.y0.max(tile.y0);
+    let y_hi = t.bbox.y1.min(tile.y0 + tile_size);
+    if x_lo >= x_hi || y_lo >= y_hi {
+        return;
+    }
+    let it = Interpolants {
+        z: t.z,
+        inv_w: t.inv_w,
+        attrs,
+        perspective: t.perspective,
+    };
+    let half = SUBPIXEL / 2;
+    'rows: for y in y_lo..y_hi {
+        let py = y as i64 * SUBPIXEL + half;
+        let mut lo = x_lo as i64;
+        let mut hi = x_hi as i64; // exclusive
+        for e in &t.edges {
+            // E(x) = step * x + base, with px = x * SUBPIXEL + half.
+            let base = e.b * py + e.c + e.a * half;
+            let step = e.a * SUBPIXEL;
+            let need = e.bias - base; // inside when step * x >= need
+            if step > 0 {
+                lo = lo.max(need.div_euclid(step) + i64::from(need.rem_euclid(step) != 0));
+            } else if step < 0 {
+                // -|step| * x >= need  <=>  x <= -need / |step|
+                hi = hi.min((-need).div_euclid(-step) + 1);
+            } else if need > 0 {
+                continue 'rows;
+            }
+        }
+        if lo < hi {
+            (ds.span)(ds, tile, y, lo as i32, hi as i32, &it);
+        }
+    }
+}
+
+use super::scene::{Command, Scene};
+use super::setup::{centre_range, Edge, Rect};
+use crate::primitive::viewport::WindowVertex;
+use crate::state::snapshot::MAX_ATTRS;
+
+/// Sets up one triangle (any winding; facing was decided before) and bins it.
+pub fn bin_triangle(
+    ds: &DrawState,
+    state: u32,
+    v: [&WindowVertex; 3],
+    attrs: [&[f32]; 3],
+    scene: &mut Scene,
+) {
+    let (mut v, mut attrs) = (v, attrs);
+    let area2 = (v[1].xy[0] - v[0].xy[0]) * (v[2].xy[1] - v[0].xy[1])
+        - (v[2].xy[0] - v[0].xy[0]) * (v[1].xy[1] - v[0].xy[1]);
+    if area2 == 0 {
+        return;
+    }
+    if area2 < 0 {
+        v.swap(1, 2);
+        attrs.swap(1, 2);
+    }
+    let edges = [
+        Edge::new(v[0].xy, v[1].xy),
+        Edge::new(v[1].xy, v[2].xy),
+        Edge::new(v[2].xy, v[0].xy),
+    ];
+    let xs = v.map(|p| p.xy[0]);
+    let ys = v.map(|p| p.xy[1]);
+    let (x0, x1) = centre_range(
+        *xs.iter().min().unwrap_or(&0),
+        *xs.iter().max().unwrap_or(&0),
+    );
+    let (y0, y1) = centre_range(
+        *ys.iter().min().unwrap_or(&0),
+        *ys.iter().max().unwrap_or(&0),
+    );
+    let bbox = Rect { x0, y0, x1, y1 }.intersect(&ds.draw_rect);
+    if bbox.is_empty() {
+        return;
+    }
+    let s = SUBPIXEL as f64;
+    let p = v.map(|w| [w.xy[0] as f64 / s, w.xy[1] as f64 / s]);
+    let inv_det = (s * s) / area2.unsigned_abs() as f64;
+    let z = Plane::through(p, v.map(|w| w.z), inv_det);
+    let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
+    let n = ds.attr_count.min(MAX_ATTRS);
+    let mut planes = [Plane::default(); MAX_ATTRS];
+    let perspective = !ds.flat;
+    for (i, plane) in planes.iter_mut().enumerate().take(n) {
+        *plane = if perspective {
+            Plane::through(
+                p,
+                [0, 1, 2].map(|k| attrs[k][i] as f64 * v[k].inv_w),
+                inv_det,
+            )
+        } else {
+            // Flat shading: every vertex already carries the provoking vertex's values.
+            Plane::constant(attrs[0][i] as f64)
+        };
+    }
+    let offset = scene.add_planes(&planes[..n]);
+    scene.bin(
+        Command::Triangle(TriangleCommand {
+            state,
+            edges,
+            bbox,
+            z,
+            inv_w,
+            attrs: offset,
+            perspective,
+        }),
+        bbox,
+    );
+}

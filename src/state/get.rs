@@ -1,0 +1,268 @@
+//! `glGet{Boolean,Integer,Float,Double}v` with the type conversions of section 6.1.2.
+
+use super::tables::limits;
+use super::Context;
+use crate::api::convert::{self, PixelStoreParam, Query};
+use crate::api::enums::*;
+use crate::api::*;
+use glam::Mat4;
+
+/// A state value in its natural type, before conversion to the requested one.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StateValue {
+    Bools(Vec<bool>),
+    Ints(Vec<i64>),
+    Enum(GLenum),
+    Floats(Vec<f64>),
+    /// Colours, normals, depth range and clear depth: integer queries map [-1, 1] onto the
+    /// full integer range (table 4.9) instead of rounding.
+    Normalized(Vec<f64>),
+}
+
+impl StateValue {
+    pub fn len(&self) -> usize {
+        match self {
+            StateValue::Bools(v) => v.len(),
+            StateValue::Ints(v) => v.len(),
+            StateValue::Enum(_) => 1,
+            StateValue::Floats(v) | StateValue::Normalized(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    fn as_f64(&self) -> Vec<f64> {
+        match self {
+            StateValue::Bools(v) => v.iter().map(|&b| b as i32 as f64).collect(),
+            StateValue::Ints(v) => v.iter().map(|&i| i as f64).collect(),
+            StateValue::Enum(e) => vec![*e as f64],
+            StateValue::Floats(v) | StateValue::Normalized(v) => v.clone(),
+        }
+    }
+
+    fn as_bool(&self) -> Vec<bool> {
+        match self {
+            StateValue::Bools(v) => v.clone(),
+            StateValue::Ints(v) => v.iter().map(|&i| i != 0).collect(),
+            StateValue::Enum(e) => vec![*e != 0],
+            StateValue::Floats(v) | StateValue::Normalized(v) => {
+                v.iter().map(|&f| f != 0.0).collect()
+            }
+        }
+    }
+
+    fn as_i32(&self) -> Vec<i32> {
+        match self {
+            StateValue::Bools(v) => v.iter().map(|&b| b as i32).collect(),
+            StateValue::Ints(v) => v
+                .iter()
+                .map(|&i| i.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+                .collect(),
+            StateValue::Enum(e) => vec![*e as i32],
+            StateValue::Floats(v) => v.iter().map(|&f| round_to_i32(f)).collect(),
+            StateValue::Normalized(v) => v
+                .iter()
+                .map(|&f| round_to_i32((4294967295.0 * f.clamp(-1.0, 1.0) - 1.0) / 2.0))
+                .collect(),
+        }
+    }
+}
+
+fn round_to_i32(f: f64) -> i32 {
+    if f.is_nan() {
+        0
+    } else {
+        f.round().clamp(i32::MIN as f64, i32::MAX as f64) as i32
+    }
+}
+
+fn matrix(m: &Mat4) -> StateValue {
+    StateValue::Floats(m.to_cols_array().iter().map(|&v| v as f64).collect())
+}
+
+impl Context {
+    /// The value of a query in its natural type.
+    pub fn state_value(&self, q: Query) -> StateValue {
+        use StateValue::*;
+        let t = &self.transform;
+        let ops = &self.fragment_ops;
+        let cfg = self.framebuffer.config;
+        let top = |s: &Vec<Mat4>| *s.last().unwrap_or(&Mat4::IDENTITY);
+        let unit = self.active_texture;
+        let bool1 = |b: bool| Bools(vec![b]);
+        let int1 = |i: i64| Ints(vec![i]);
+        match q {
+            Query::Enabled(cap) => bool1(self.capability_enabled(cap)),
+            Query::Viewport => {
+                let v = t.viewport;
+                Ints(vec![
+                    v.x as i64,
+                    v.y as i64,
+                    v.width as i64,
+                    v.height as i64,
+                ])
+            }
+            Query::DepthRange => Normalized(t.depth_range.to_vec()),
+            Query::ModelviewMatrix => matrix(&top(&t.modelview)),
+            Query::ProjectionMatrix => matrix(&top(&t.projection)),
+            Query::TextureMatrix => matrix(&top(&t.texture[unit])),
+            Query::TransposeModelviewMatrix => matrix(&top(&t.modelview).transpose()),
+            Query::TransposeProjectionMatrix => matrix(&top(&t.projection).transpose()),
+            Query::TransposeTextureMatrix => matrix(&top(&t.texture[unit]).transpose()),
+            Query::ModelviewStackDepth => int1(t.modelview.len() as i64),
+            Query::ProjectionStackDepth => int1(t.projection.len() as i64),
+            Query::TextureStackDepth => int1(t.texture[unit].len() as i64),
+            Query::MaxModelviewStackDepth => int1(limits::MAX_MODELVIEW_STACK_DEPTH as i64),
+            Query::MaxProjectionStackDepth => int1(limits::MAX_PROJECTION_STACK_DEPTH as i64),
+            Query::MaxTextureStackDepth => int1(limits::MAX_TEXTURE_STACK_DEPTH as i64),
+            Query::MaxViewportDims => Ints(vec![limits::MAX_VIEWPORT_DIM as i64; 2]),
+            Query::MaxClipPlanes => int1(limits::MAX_CLIP_PLANES as i64),
+            Query::MaxTextureUnits => int1(limits::MAX_TEXTURE_UNITS as i64),
+            Query::ColorClearValue => {
+                Normalized(self.clear_values.color.iter().map(|&c| c as f64).collect())
+            }
+            Query::DepthClearValue => Normalized(vec![self.clear_values.depth]),
+            Query::StencilClearValue => int1(self.clear_values.stencil as i64),
+            Query::DepthFunc => Enum(ops.depth_func.to_gl()),
+            Query::DepthWritemask => bool1(ops.depth_mask),
+            Query::ColorWritemask => Bools(ops.color_mask.to_vec()),
+            Query::StencilWritemask => int1(ops.stencil_writemask as i32 as i64),
+            Query::ScissorBox => {
+                let s = ops.scissor;
+                Ints(vec![
+                    s.x as i64,
+                    s.y as i64,
+                    s.width as i64,
+                    s.height as i64,
+                ])
+            }
+            Query::CullFaceMode => Enum(self.raster.cull_face.to_gl()),
+            Query::FrontFace => Enum(self.raster.front_face.to_gl()),
+            Query::ShadeModel => Enum(self.raster.shade_model.to_gl()),
+            Query::MatrixMode => Enum(t.mode.to_gl()),
+            Query::CurrentColor => {
+                Normalized(self.current.color.to_array().map(|v| v as f64).to_vec())
+            }
+            Query::CurrentSecondaryColor => Normalized(
+                self.current
+                    .secondary_color
+                    .to_array()
+                    .map(|v| v as f64)
+                    .to_vec(),
+            ),
+            Query::CurrentNormal => {
+                Normalized(self.current.normal.to_array().map(|v| v as f64).to_vec())
+            }
+            Query::CurrentTextureCoords => Floats(
+                self.current.texcoords[unit]
+                    .to_array()
+                    .map(|v| v as f64)
+                    .to_vec(),
+            ),
+            Query::CurrentFogCoord => Floats(vec![self.current.fog_coord as f64]),
+            Query::EdgeFlag => bool1(self.current.edge_flag),
+            Query::RedBits | Query::GreenBits | Query::BlueBits | Query::AlphaBits => int1(8),
+            Query::DepthBits => int1(cfg.depth_bits as i64),
+            Query::StencilBits => int1(cfg.stencil_bits as i64),
+            Query::AccumRedBits
+            | Query::AccumGreenBits
+            | Query::AccumBlueBits
+            | Query::AccumAlphaBits => int1(cfg.accum_bits as i64),
+            Query::IndexBits => int1(0),
+            Query::SubpixelBits => int1(limits::SUBPIXEL_BITS as i64),
+            Query::AuxBuffers => int1(0),
+            Query::Hint(h) => {
+                use crate::api::convert::HintTarget::*;
+                let hs = &self.hints;
+                Enum(match h {
+                    PerspectiveCorrection => hs.perspective_correction,
+                    PointSmooth => hs.point_smooth,
+                    LineSmooth => hs.line_smooth,
+                    PolygonSmooth => hs.polygon_smooth,
+                    Fog => hs.fog,
+                    GenerateMipmap => hs.generate_mipmap,
+                    TextureCompression => hs.texture_compression,
+                })
+            }
+            Query::PixelStore(p) => {
+                use PixelStoreParam::*;
+                let s = |pack: bool| if pack { &self.pack } else { &self.unpack };
+                match p {
+                    Alignment { pack } => int1(s(pack).alignment as i64),
+                    RowLength { pack } => int1(s(pack).row_length as i64),
+                    SkipPixels { pack } => int1(s(pack).skip_pixels as i64),
+                    SkipRows { pack } => int1(s(pack).skip_rows as i64),
+                    SkipImages { pack } => int1(s(pack).skip_images as i64),
+                    ImageHeight { pack } => int1(s(pack).image_height as i64),
+                    SwapBytes { pack } => bool1(s(pack).swap_bytes),
+                    LsbFirst { pack } => bool1(s(pack).lsb_first),
+                }
+            }
+            Query::Doublebuffer | Query::Stereo | Query::IndexMode => bool1(false),
+            Query::RgbaMode => bool1(true),
+            Query::PointSize => Floats(vec![self.raster.point_size as f64]),
+            Query::PointSizeRange => Floats(limits::POINT_SIZE_RANGE.map(|v| v as f64).to_vec()),
+            Query::PointSizeGranularity | Query::LineWidthGranularity => Floats(vec![0.125]),
+            Query::LineWidth => Floats(vec![self.raster.line_width as f64]),
+            Query::LineWidthRange => Floats(limits::LINE_WIDTH_RANGE.map(|v| v as f64).to_vec()),
+            Query::ActiveTexture | Query::ClientActiveTexture => {
+                Enum(convert::texture_unit_enum(unit))
+            }
+            Query::MaxAttribStackDepth => int1(limits::MAX_ATTRIB_STACK_DEPTH as i64),
+            Query::SampleBuffers | Query::Samples => int1(0),
+        }
+    }
+
+    /// Number of values `glGet*v(pname)` writes (1 for unknown names, so callers of the C ABI
+    /// are never asked for more than one element before the error is recorded).
+    pub fn query_count(&self, pname: GLenum) -> usize {
+        convert::query(pname).map_or(1, |q| self.state_value(q).len().max(1))
+    }
+
+    fn query_checked(&mut self, pname: GLenum, out_len: usize) -> Option<StateValue> {
+        let Some(q) = convert::query(pname) else {
+            self.record_error(GL_INVALID_ENUM);
+            return None;
+        };
+        let v = self.state_value(q);
+        if out_len < v.len() {
+            self.record_error(GL_INVALID_VALUE);
+            return None;
+        }
+        Some(v)
+    }
+
+    pub fn get_booleanv(&mut self, pname: GLenum, data: &mut [GLboolean]) {
+        if let Some(v) = self.query_checked(pname, data.len()) {
+            for (d, b) in data.iter_mut().zip(v.as_bool()) {
+                *d = b as GLboolean;
+            }
+        }
+    }
+
+    pub fn get_integerv(&mut self, pname: GLenum, data: &mut [GLint]) {
+        if let Some(v) = self.query_checked(pname, data.len()) {
+            for (d, i) in data.iter_mut().zip(v.as_i32()) {
+                *d = i;
+            }
+        }
+    }
+
+    pub fn get_floatv(&mut self, pname: GLenum, data: &mut [GLfloat]) {
+        if let Some(v) = self.query_checked(pname, data.len()) {
+            for (d, f) in data.iter_mut().zip(v.as_f64()) {
+                *d = f as f32;
+            }
+        }
+    }
+
+    pub fn get_doublev(&mut self, pname: GLenum, data: &mut [GLdouble]) {
+        if let Some(v) = self.query_checked(pname, data.len()) {
+            for (d, f) in data.iter_mut().zip(v.as_f64()) {
+                *d = f;
+            }
+        }
+    }
+}

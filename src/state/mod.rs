@@ -1,0 +1,637 @@
+//! `Context`: all GL state as plain data, the entry points that set it, and the one place that
+//! turns it into the immutable per-draw snapshot.
+
+pub mod get;
+pub mod matrices;
+pub mod snapshot;
+pub mod tables;
+
+use std::collections::HashMap;
+use std::ffi::CString;
+use std::sync::Arc;
+
+use crate::api::convert::{self, Capability, HintTarget, PixelStoreParam, StringName};
+use crate::api::enums::*;
+use crate::api::error::ErrorFlag;
+use crate::api::*;
+use crate::framebuffer::{Framebuffer, FramebufferConfig};
+use crate::raster::scene::Scene;
+use crate::vertex::immediate::ImmediateBatch;
+use tables::*;
+
+pub use snapshot::DrawState;
+
+/// Options of a new context.
+#[derive(Clone, Copy, Debug)]
+pub struct ContextConfig {
+    pub width: i32,
+    pub height: i32,
+    pub framebuffer: FramebufferConfig,
+    /// Worker threads for tile shading; 0 means one per core.
+    pub threads: usize,
+}
+
+impl Default for ContextConfig {
+    fn default() -> Self {
+        ContextConfig {
+            width: 256,
+            height: 256,
+            framebuffer: FramebufferConfig::default(),
+            threads: 0,
+        }
+    }
+}
+
+/// A GL context: the state machine, its framebuffer and the deferred scene of binned work.
+pub struct Context {
+    pub(crate) error: ErrorFlag,
+    pub(crate) transform: TransformState,
+    pub(crate) raster: RasterState,
+    pub(crate) fragment_ops: FragmentOpsState,
+    pub(crate) clear_values: ClearValues,
+    pub(crate) current: CurrentValues,
+    pub(crate) hints: Hints,
+    pub(crate) pack: PixelStore,
+    pub(crate) unpack: PixelStore,
+    /// The `glBegin`/`glEnd` batch being recorded, if inside one.
+    pub(crate) immediate: Option<ImmediateBatch>,
+    /// An emptied vertex buffer kept for the next `glBegin`.
+    pub(crate) spare_vertices: Vec<crate::vertex::immediate::ImmVertex>,
+    /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
+    pub(crate) active_texture: usize,
+    pub(crate) framebuffer: Framebuffer,
+    pub(crate) scene: Scene,
+    /// The snapshot for the next draw; `None` after any state change that affects drawing.
+    pub(crate) draw_state: Option<Arc<DrawState>>,
+    pub(crate) pool: Option<rayon::ThreadPool>,
+    /// Strings handed out through the C ABI (`glGetString`), kept alive with the context.
+    strings: HashMap<String, CString>,
+    /// Set by `glFlush`/`glFinish`: the front end should show the finished picture.
+    present_requested: bool,
+    /// Forces the general fragment path (used by the fast-path twin tests).
+    pub(crate) force_general_path: bool,
+}
+
+impl Context {
+    /// A context with a `width` x `height` framebuffer and default buffers (RGBA8, 24-bit
+    /// depth, 8-bit stencil). The viewport and scissor box start as the whole framebuffer.
+    pub fn new(width: i32, height: i32) -> Context {
+        Context::with_config(ContextConfig {
+            width,
+            height,
+            ..ContextConfig::default()
+        })
+    }
+
+    /// A context with explicit buffer configuration and thread count.
+    pub fn with_config(config: ContextConfig) -> Context {
+        let width = config.width.clamp(0, limits::MAX_VIEWPORT_DIM);
+        let height = config.height.clamp(0, limits::MAX_VIEWPORT_DIM);
+        let mut transform = TransformState::default();
+        transform.viewport = Viewport {
+            x: 0,
+            y: 0,
+            width,
+            height,
+        };
+        let fragment_ops = FragmentOpsState {
+            scissor: transform.viewport,
+            ..FragmentOpsState::default()
+        };
+        let pool = if config.threads > 0 {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(config.threads)
+                .build()
+                .ok()
+        } else {
+            None
+        };
+        let framebuffer = Framebuffer::new(width, height, config.framebuffer);
+        let scene = Scene::new(&framebuffer);
+        Context {
+            error: ErrorFlag::default(),
+            transform,
+            raster: RasterState::default(),
+            fragment_ops,
+            clear_values: ClearValues::default(),
+            current: CurrentValues::default(),
+            hints: Hints::default(),
+            pack: PixelStore::default(),
+            unpack: PixelStore::default(),
+            immediate: None,
+            spare_vertices: Vec::new(),
+            active_texture: 0,
+            framebuffer,
+            scene,
+            draw_state: None,
+            pool,
+            strings: HashMap::new(),
+            present_requested: false,
+            force_general_path: false,
+        }
+    }
+
+    /// Resizes the framebuffer (contents become undefined; tilegl clears them). Used by the C
+    /// ABI when `OSMesaMakeCurrent` binds a buffer of another size. Flushes pending work first.
+    pub fn resize(&mut self, width: i32, height: i32) {
+        self.flush_scene();
+        let width = width.clamp(0, limits::MAX_VIEWPORT_DIM);
+        let height = height.clamp(0, limits::MAX_VIEWPORT_DIM);
+        if width == self.framebuffer.width && height == self.framebuffer.height {
+            return;
+        }
+        self.framebuffer = Framebuffer::new(width, height, self.framebuffer.config);
+        self.scene = Scene::new(&self.framebuffer);
+        self.draw_state = None;
+    }
+
+    /// Width and height of the framebuffer.
+    pub fn size(&self) -> (i32, i32) {
+        (self.framebuffer.width, self.framebuffer.height)
+    }
+
+    /// The framebuffer after finishing all pending rendering.
+    pub fn framebuffer(&mut self) -> &Framebuffer {
+        self.flush_scene();
+        &self.framebuffer
+    }
+
+    /// Mutable framebuffer access after finishing pending rendering (the C ABI adopts caller
+    /// buffers through it).
+    pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
+        self.flush_scene();
+        &mut self.framebuffer
+    }
+
+    /// True once after each `glFlush`/`glFinish`: the caller (the C ABI) copies the finished
+    /// picture to where the application expects it.
+    pub fn take_present_request(&mut self) -> bool {
+        std::mem::take(&mut self.present_requested)
+    }
+
+    /// Makes every draw take the general fragment path instead of a specialised one (for
+    /// testing that both agree).
+    pub fn set_force_general_path(&mut self, on: bool) {
+        self.force_general_path = on;
+        self.draw_state = None;
+    }
+
+    /// Records a GL error (the first one sticks until `glGetError`).
+    pub(crate) fn record_error(&mut self, error: GLenum) {
+        self.error.record(error);
+    }
+
+    /// The guard for calls illegal between `glBegin` and `glEnd`: records
+    /// `GL_INVALID_OPERATION` and returns true when inside.
+    pub(crate) fn reject_inside_begin_end(&mut self) -> bool {
+        if self.immediate.is_some() {
+            self.record_error(GL_INVALID_OPERATION);
+            true
+        } else {
+            false
+        }
+    }
+
+    /// Marks drawing state changed: the next draw builds a new snapshot.
+    #[inline]
+    pub(crate) fn invalidate(&mut self) {
+        self.draw_state = None;
+    }
+
+    /// Keeps `s` alive with the context and returns a C string pointer to it.
+    pub(crate) fn intern_string(&mut self, s: &str) -> *const GLubyte {
+        let entry = self
+            .strings
+            .entry(s.to_string())
+            .or_insert_with(|| CString::new(s.replace('\0', "")).unwrap_or_default());
+        entry.as_ptr() as *const GLubyte
+    }
+
+    // ----- entry points: errors, strings, flush
+
+    pub fn get_error(&mut self) -> GLenum {
+        self.error.take()
+    }
+
+    pub fn get_string(&mut self, name: GLenum) -> Option<String> {
+        let Some(name) = convert::string_name(name) else {
+            self.record_error(GL_INVALID_ENUM);
+            return None;
+        };
+        Some(
+            match name {
+                StringName::Vendor => "tilegl",
+                StringName::Renderer => "tilegl tile-based software rasterizer",
+                StringName::Version => "1.5 tilegl 0.1",
+                // Only what works end to end is listed.
+                StringName::Extensions => "",
+            }
+            .to_string(),
+        )
+    }
+
+    pub fn flush(&mut self) {
+        self.flush_scene();
+        self.present();
+    }
+
+    pub fn finish(&mut self) {
+        self.flush_scene();
+        self.present();
+    }
+
+    fn present(&mut self) {
+        self.present_requested = true;
+    }
+
+    pub fn hint(&mut self, target: GLenum, mode: GLenum) {
+        let (Some(target), Some(mode)) = (convert::hint_target(target), convert::hint_mode(mode))
+        else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        let h = &mut self.hints;
+        *match target {
+            HintTarget::PerspectiveCorrection => &mut h.perspective_correction,
+            HintTarget::PointSmooth => &mut h.point_smooth,
+            HintTarget::LineSmooth => &mut h.line_smooth,
+            HintTarget::PolygonSmooth => &mut h.polygon_smooth,
+            HintTarget::Fog => &mut h.fog,
+            HintTarget::GenerateMipmap => &mut h.generate_mipmap,
+            HintTarget::TextureCompression => &mut h.texture_compression,
+        } = mode;
+    }
+
+    // ----- enables
+
+    fn set_capability(&mut self, cap: GLenum, on: bool) {
+        let Some(cap) = convert::capability(cap) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        match cap {
+            Capability::DepthTest => self.fragment_ops.depth_test = on,
+            Capability::CullFace => self.raster.cull_enabled = on,
+            Capability::ScissorTest => self.fragment_ops.scissor_enabled = on,
+            Capability::ClipPlane(i) => self.transform.clip_plane_enabled[i] = on,
+            Capability::Dither => self.fragment_ops.dither = on,
+            Capability::Normalize => self.transform.normalize = on,
+            Capability::RescaleNormal => self.transform.rescale_normal = on,
+        }
+        self.invalidate();
+    }
+
+    pub fn enable(&mut self, cap: GLenum) {
+        self.set_capability(cap, true);
+    }
+
+    pub fn disable(&mut self, cap: GLenum) {
+        self.set_capability(cap, false);
+    }
+
+    pub fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
+        let Some(cap) = convert::capability(cap) else {
+            self.record_error(GL_INVALID_ENUM);
+            return GL_FALSE as GLboolean;
+        };
+        self.capability_enabled(cap) as GLboolean
+    }
+
+    pub(crate) fn capability_enabled(&self, cap: Capability) -> bool {
+        match cap {
+            Capability::DepthTest => self.fragment_ops.depth_test,
+            Capability::CullFace => self.raster.cull_enabled,
+            Capability::ScissorTest => self.fragment_ops.scissor_enabled,
+            Capability::ClipPlane(i) => self.transform.clip_plane_enabled[i],
+            Capability::Dither => self.fragment_ops.dither,
+            Capability::Normalize => self.transform.normalize,
+            Capability::RescaleNormal => self.transform.rescale_normal,
+        }
+    }
+
+    // ----- rasterization state
+
+    pub fn cull_face(&mut self, mode: GLenum) {
+        let Some(face) = convert::face(mode) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.raster.cull_face = face;
+        self.invalidate();
+    }
+
+    pub fn front_face(&mut self, mode: GLenum) {
+        let Some(w) = convert::winding(mode) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.raster.front_face = w;
+        self.invalidate();
+    }
+
+    pub fn shade_model(&mut self, mode: GLenum) {
+        let Some(m) = convert::shade_model(mode) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.raster.shade_model = m;
+        self.invalidate();
+    }
+
+    // ----- per-fragment operations and framebuffer control
+
+    pub fn depth_func(&mut self, func: GLenum) {
+        let Some(f) = convert::compare_func(func) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.fragment_ops.depth_func = f;
+        self.invalidate();
+    }
+
+    pub fn depth_mask(&mut self, flag: GLboolean) {
+        self.fragment_ops.depth_mask = flag != 0;
+        self.invalidate();
+    }
+
+    pub fn color_mask(&mut self, r: GLboolean, g: GLboolean, b: GLboolean, a: GLboolean) {
+        self.fragment_ops.color_mask = [r != 0, g != 0, b != 0, a != 0];
+        self.invalidate();
+    }
+
+    pub fn stencil_mask(&mut self, mask: GLuint) {
+        self.fragment_ops.stencil_writemask = mask;
+        self.invalidate();
+    }
+
+    pub fn scissor(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.fragment_ops.scissor = Viewport {
+            x,
+            y,
+            width,
+            height,
+        };
+        self.invalidate();
+    }
+
+    pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
+        self.clear_values.color = [r, g, b, a].map(|c| clamp01(c as f64) as f32);
+    }
+
+    pub fn clear_depth(&mut self, depth: GLclampd) {
+        self.clear_values.depth = clamp01(depth);
+    }
+
+    pub fn clear_stencil(&mut self, s: GLint) {
+        self.clear_values.stencil = s;
+    }
+
+    pub fn clear(&mut self, mask: GLbitfield) {
+        let Some(mask) = convert::clear_mask(mask) else {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        self.record_clear(mask);
+    }
+
+    pub fn pixel_storei(&mut self, pname: GLenum, param: GLint) {
+        let Some(p) = convert::pixel_store_param(pname) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        use PixelStoreParam::*;
+        let (pack, value_ok) = match p {
+            Alignment { pack } => (pack, matches!(param, 1 | 2 | 4 | 8)),
+            RowLength { pack }
+            | SkipPixels { pack }
+            | SkipRows { pack }
+            | SkipImages { pack }
+            | ImageHeight { pack } => (pack, param >= 0),
+            SwapBytes { pack } | LsbFirst { pack } => (pack, true),
+        };
+        if !value_ok {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let s = if pack {
+            &mut self.pack
+        } else {
+            &mut self.unpack
+        };
+        match p {
+            Alignment { .. } => s.alignment = param,
+            RowLength { .. } => s.row_length = param,
+            SkipPixels { .. } => s.skip_pixels = param,
+            SkipRows { .. } => s.skip_rows = param,
+            SkipImages { .. } => s.skip_images = param,
+            ImageHeight { .. } => s.image_height = param,
+            SwapBytes { .. } => s.swap_bytes = param != 0,
+            LsbFirst { .. } => s.lsb_first = param != 0,
+        }
+    }
+
+    pub fn pixel_storef(&mut self, pname: GLenum, param: GLfloat) {
+        // Section 3.6.1: a float value is rounded to the nearest integer (booleans: non-zero).
+        let v = if param.is_finite() {
+            param.round().clamp(i32::MIN as f32, i32::MAX as f32) as i32
+        } else {
+            -1
+        };
+        self.pixel_storei(pname, v);
+    }
+}
+
+/// Clamps to [0, 1]; NaN becomes 0.
+pub(crate) fn clamp01(v: f64) -> f64 {
+    if v >= 1.0 {
+        1.0
+    } else if v > 0.0 {
+        v
+    } else {
+        0.0
+    }
+}
+
+impl Gl for Context {
+    fn unsupported(&mut self, name: &'static str) {
+        let _ = name;
+        self.record_error(GL_INVALID_OPERATION);
+    }
+
+    fn get_error(&mut self) -> GLenum {
+        // glGetError itself is illegal inside glBegin/glEnd and then returns 0.
+        if self.reject_inside_begin_end() {
+            return 0;
+        }
+        Context::get_error(self)
+    }
+
+    gl_forward_all!(
+        get_string,
+        flush,
+        finish,
+        hint,
+        enable,
+        disable,
+        is_enabled,
+        cull_face,
+        front_face,
+        shade_model,
+        depth_func,
+        depth_mask,
+        color_mask,
+        stencil_mask,
+        scissor,
+        clear_color,
+        clear_depth,
+        clear_stencil,
+        clear,
+        pixel_storei,
+        pixel_storef,
+        // matrices
+        matrix_mode,
+        load_identity,
+        load_matrixf,
+        load_matrixd,
+        mult_matrixf,
+        mult_matrixd,
+        load_transpose_matrixf,
+        load_transpose_matrixd,
+        mult_transpose_matrixf,
+        mult_transpose_matrixd,
+        rotatef,
+        rotated,
+        translatef,
+        translated,
+        scalef,
+        scaled,
+        frustum,
+        ortho,
+        push_matrix,
+        pop_matrix,
+        viewport,
+        depth_range,
+        clip_plane,
+        get_clip_plane,
+        // queries
+        get_booleanv,
+        get_integerv,
+        get_floatv,
+        get_doublev,
+        // pixels
+        read_pixels,
+        // immediate mode
+        begin,
+        end,
+        vertex_2d,
+        vertex_2dv,
+        vertex_2f,
+        vertex_2fv,
+        vertex_2i,
+        vertex_2iv,
+        vertex_2s,
+        vertex_2sv,
+        vertex_3d,
+        vertex_3dv,
+        vertex_3f,
+        vertex_3fv,
+        vertex_3i,
+        vertex_3iv,
+        vertex_3s,
+        vertex_3sv,
+        vertex_4d,
+        vertex_4dv,
+        vertex_4f,
+        vertex_4fv,
+        vertex_4i,
+        vertex_4iv,
+        vertex_4s,
+        vertex_4sv,
+        color_3b,
+        color_3bv,
+        color_3d,
+        color_3dv,
+        color_3f,
+        color_3fv,
+        color_3i,
+        color_3iv,
+        color_3s,
+        color_3sv,
+        color_3ub,
+        color_3ubv,
+        color_3ui,
+        color_3uiv,
+        color_3us,
+        color_3usv,
+        color_4b,
+        color_4bv,
+        color_4d,
+        color_4dv,
+        color_4f,
+        color_4fv,
+        color_4i,
+        color_4iv,
+        color_4s,
+        color_4sv,
+        color_4ub,
+        color_4ubv,
+        color_4ui,
+        color_4uiv,
+        color_4us,
+        color_4usv,
+        normal_3b,
+        normal_3bv,
+        normal_3d,
+        normal_3dv,
+        normal_3f,
+        normal_3fv,
+        normal_3i,
+        normal_3iv,
+        normal_3s,
+        normal_3sv,
+        tex_coord_1d,
+        tex_coord_1dv,
+        tex_coord_1f,
+        tex_coord_1fv,
+        tex_coord_1i,
+        tex_coord_1iv,
+        tex_coord_1s,
+        tex_coord_1sv,
+        tex_coord_2d,
+        tex_coord_2dv,
+        tex_coord_2f,
+        tex_coord_2fv,
+        tex_coord_2i,
+        tex_coord_2iv,
+        tex_coord_2s,
+        tex_coord_2sv,
+        tex_coord_3d,
+        tex_coord_3dv,
+        tex_coord_3f,
+        tex_coord_3fv,
+        tex_coord_3i,
+        tex_coord_3iv,
+        tex_coord_3s,
+        tex_coord_3sv,
+        tex_coord_4d,
+        tex_coord_4dv,
+        tex_coord_4f,
+        tex_coord_4fv,
+        tex_coord_4i,
+        tex_coord_4iv,
+        tex_coord_4s,
+        tex_coord_4sv,
+        rectd,
+        rectdv,
+        rectf,
+        rectfv,
+        recti,
+        rectiv,
+        rects,
+        rectsv
+    );
+}

@@ -1,0 +1,110 @@
+//! Builds the immutable `DrawState`: everything one draw needs, frozen at the draw, so that
+//! deferred tile shading never sees a later state change. This is the one owner of "what a
+//! draw needs".
+
+use std::sync::Arc;
+
+use glam::{DVec4, Mat4};
+
+use super::Context;
+use crate::api::convert::{Face, ShadeModel, Winding};
+use crate::fragment::cache::select_span;
+use crate::fragment::key::FragmentKey;
+use crate::fragment::span::SpanFn;
+use crate::raster::setup::Rect;
+
+/// Number of interpolated attributes carried per vertex today: the primary colour (RGBA).
+/// Later stages (texture coordinates, secondary colour, fog) extend the list.
+pub const COLOR_ATTRS: usize = 4;
+/// The most attributes a vertex can carry.
+pub const MAX_ATTRS: usize = 4 + 4 + 4 * super::tables::limits::MAX_TEXTURE_UNITS + 1;
+
+/// The frozen state of one draw.
+#[derive(Clone, Debug)]
+pub struct DrawState {
+    /// Projection x modelview.
+    pub mvp: Mat4,
+    pub modelview: Mat4,
+    /// Enabled user clip planes, in eye coordinates.
+    pub clip_planes: Vec<DVec4>,
+    /// Viewport mapping: window = ndc * scale + offset, per axis (z uses the depth range).
+    pub viewport_scale: [f64; 3],
+    pub viewport_offset: [f64; 3],
+    /// The viewport rectangle intersected with the framebuffer: nothing outside is drawn.
+    pub viewport_rect: Rect,
+    /// Pixels that may be written: viewport, scissor (when enabled) and framebuffer bounds.
+    pub draw_rect: Rect,
+    pub cull: Option<Face>,
+    pub front_face: Winding,
+    pub flat: bool,
+    /// Interpolated attributes per vertex.
+    pub attr_count: usize,
+    pub depth_max: u32,
+    pub key: FragmentKey,
+    /// The fragment function chosen for `key`.
+    pub span: SpanFn,
+}
+
+impl Context {
+    /// The snapshot for the next draw, rebuilt only after a state change.
+    pub(crate) fn snapshot(&mut self) -> Arc<DrawState> {
+        if let Some(ds) = &self.draw_state {
+            return ds.clone();
+        }
+        let t = &self.transform;
+        let modelview = *t.modelview.last().unwrap_or(&Mat4::IDENTITY);
+        let projection = *t.projection.last().unwrap_or(&Mat4::IDENTITY);
+        let clip_planes = (0..t.clip_planes.len())
+            .filter(|&i| t.clip_plane_enabled[i])
+            .map(|i| t.clip_planes[i])
+            .collect();
+        let vp = t.viewport;
+        let [n, f] = t.depth_range;
+        let fb = Rect {
+            x0: 0,
+            y0: 0,
+            x1: self.framebuffer.width,
+            y1: self.framebuffer.height,
+        };
+        let viewport_rect = fb.intersect(&Rect {
+            x0: vp.x,
+            y0: vp.y,
+            x1: vp.x.saturating_add(vp.width),
+            y1: vp.y.saturating_add(vp.height),
+        });
+        let ops = &self.fragment_ops;
+        let mut draw_rect = viewport_rect;
+        if ops.scissor_enabled {
+            let s = ops.scissor;
+            draw_rect = draw_rect.intersect(&Rect {
+                x0: s.x,
+                y0: s.y,
+                x1: s.x.saturating_add(s.width),
+                y1: s.y.saturating_add(s.height),
+            });
+        }
+        let key = FragmentKey::from_state(ops, self.framebuffer.config.depth_bits > 0);
+        let ds = Arc::new(DrawState {
+            mvp: projection * modelview,
+            modelview,
+            clip_planes,
+            viewport_scale: [vp.width as f64 / 2.0, vp.height as f64 / 2.0, (f - n) / 2.0],
+            viewport_offset: [
+                vp.x as f64 + vp.width as f64 / 2.0,
+                vp.y as f64 + vp.height as f64 / 2.0,
+                (n + f) / 2.0,
+            ],
+            viewport_rect,
+            draw_rect,
+            cull: self.raster.cull_enabled.then_some(self.raster.cull_face),
+            front_face: self.raster.front_face,
+            flat: self.raster.shade_model == ShadeModel::Flat,
+            attr_count: COLOR_ATTRS,
+            depth_max: self.framebuffer.depth_max(),
+            key,
+            span: select_span(&key, self.force_general_path),
+        });
+        self.draw_state = Some(ds.clone());
+        ds
+    }
+}

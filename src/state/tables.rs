@@ -1,0 +1,273 @@
+//! GL state as plain data, grouped like the specification's state tables (OpenGL 1.5, section
+//! 6.2), with the defaults those tables give.
+
+use crate::api::convert::{CompareFunc, Face, MatrixMode, ShadeModel, Winding};
+use crate::api::enums::GL_DONT_CARE;
+use crate::api::GLenum;
+use glam::{DVec4, Mat4, Vec3, Vec4};
+
+/// Implementation limits reported by `glGet`.
+pub mod limits {
+    pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
+    pub const MAX_PROJECTION_STACK_DEPTH: usize = 4;
+    pub const MAX_TEXTURE_STACK_DEPTH: usize = 4;
+    pub const MAX_CLIP_PLANES: usize = 6;
+    pub const MAX_TEXTURE_UNITS: usize = 8;
+    /// Largest viewport and framebuffer side.
+    pub const MAX_VIEWPORT_DIM: i32 = 8192;
+    /// Sub-pixel precision of window coordinates: 8 bits (1/256 pixel). With 64-bit edge
+    /// functions no product overflows for any coordinate inside `MAX_VIEWPORT_DIM` plus the
+    /// largest viewport offset.
+    pub const SUBPIXEL_BITS: i32 = 8;
+    pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
+    pub const POINT_SIZE_RANGE: [f32; 2] = [1.0, 1.0];
+    pub const LINE_WIDTH_RANGE: [f32; 2] = [1.0, 1.0];
+}
+
+/// Table 6.6 / 6.7: transformation state.
+#[derive(Clone, Debug)]
+pub struct TransformState {
+    pub mode: MatrixMode,
+    pub modelview: Vec<Mat4>,
+    pub projection: Vec<Mat4>,
+    /// One stack per texture unit.
+    pub texture: Vec<Vec<Mat4>>,
+    pub viewport: Viewport,
+    pub depth_range: [f64; 2],
+    /// User clip planes in eye coordinates (transformed at `glClipPlane` time).
+    pub clip_planes: [DVec4; limits::MAX_CLIP_PLANES],
+    pub clip_plane_enabled: [bool; limits::MAX_CLIP_PLANES],
+    pub normalize: bool,
+    pub rescale_normal: bool,
+}
+
+impl Default for TransformState {
+    fn default() -> Self {
+        TransformState {
+            mode: MatrixMode::ModelView,
+            modelview: vec![Mat4::IDENTITY],
+            projection: vec![Mat4::IDENTITY],
+            texture: vec![vec![Mat4::IDENTITY]; limits::MAX_TEXTURE_UNITS],
+            viewport: Viewport::default(),
+            depth_range: [0.0, 1.0],
+            clip_planes: [DVec4::ZERO; limits::MAX_CLIP_PLANES],
+            clip_plane_enabled: [false; limits::MAX_CLIP_PLANES],
+            normalize: false,
+            rescale_normal: false,
+        }
+    }
+}
+
+/// `glViewport` rectangle (lower-left corner, size).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Viewport {
+    pub x: i32,
+    pub y: i32,
+    pub width: i32,
+    pub height: i32,
+}
+
+/// Table 6.8 (rasterization of polygons) and related state.
+#[derive(Clone, Copy, Debug)]
+pub struct RasterState {
+    pub cull_enabled: bool,
+    pub cull_face: Face,
+    pub front_face: Winding,
+    pub shade_model: ShadeModel,
+    pub point_size: f32,
+    pub line_width: f32,
+}
+
+impl Default for RasterState {
+    fn default() -> Self {
+        RasterState {
+            cull_enabled: false,
+            cull_face: Face::Back,
+            front_face: Winding::Ccw,
+            shade_model: ShadeModel::Smooth,
+            point_size: 1.0,
+            line_width: 1.0,
+        }
+    }
+}
+
+/// Tables 6.19-6.21: per-fragment operations and framebuffer control.
+#[derive(Clone, Copy, Debug)]
+pub struct FragmentOpsState {
+    pub scissor_enabled: bool,
+    pub scissor: Viewport,
+    pub depth_test: bool,
+    pub depth_func: CompareFunc,
+    pub depth_mask: bool,
+    pub color_mask: [bool; 4],
+    pub dither: bool,
+    pub stencil_writemask: u32,
+}
+
+impl Default for FragmentOpsState {
+    fn default() -> Self {
+        FragmentOpsState {
+            scissor_enabled: false,
+            scissor: Viewport::default(),
+            depth_test: false,
+            depth_func: CompareFunc::Less,
+            depth_mask: true,
+            color_mask: [true; 4],
+            dither: true,
+            stencil_writemask: !0,
+        }
+    }
+}
+
+/// Clear values (table 6.21).
+#[derive(Clone, Copy, Debug)]
+pub struct ClearValues {
+    pub color: [f32; 4],
+    pub depth: f64,
+    pub stencil: i32,
+}
+
+impl Default for ClearValues {
+    fn default() -> Self {
+        ClearValues {
+            color: [0.0; 4],
+            depth: 1.0,
+            stencil: 0,
+        }
+    }
+}
+
+/// Table 6.5: current values.
+#[derive(Clone, Copy, Debug)]
+pub struct CurrentValues {
+    pub color: Vec4,
+    pub secondary_color: Vec4,
+    pub normal: Vec3,
+    pub texcoords: [Vec4; limits::MAX_TEXTURE_UNITS],
+    pub fog_coord: f32,
+    pub edge_flag: bool,
+    pub index: f32,
+}
+
+impl Default for CurrentValues {
+    fn default() -> Self {
+        CurrentValues {
+            color: Vec4::ONE,
+            secondary_color: Vec4::new(0.0, 0.0, 0.0, 1.0),
+            normal: Vec3::Z,
+            texcoords: [Vec4::new(0.0, 0.0, 0.0, 1.0); limits::MAX_TEXTURE_UNITS],
+            fog_coord: 0.0,
+            edge_flag: true,
+            index: 1.0,
+        }
+    }
+}
+
+/// Table 6.30: hints.
+#[derive(Clone, Copy, Debug)]
+pub struct Hints {
+    pub perspective_correction: GLenum,
+    pub point_smooth: GLenum,
+    pub line_smooth: GLenum,
+    pub polygon_smooth: GLenum,
+    pub fog: GLenum,
+    pub generate_mipmap: GLenum,
+    pub texture_compression: GLenum,
+}
+
+impl Default for Hints {
+    fn default() -> Self {
+        Hints {
+            perspective_correction: GL_DONT_CARE,
+            point_smooth: GL_DONT_CARE,
+            line_smooth: GL_DONT_CARE,
+            polygon_smooth: GL_DONT_CARE,
+            fog: GL_DONT_CARE,
+            generate_mipmap: GL_DONT_CARE,
+            texture_compression: GL_DONT_CARE,
+        }
+    }
+}
+
+/// Table 6.17: pixel storage modes of one direction (pack or unpack).
+#[derive(Clone, Copy, Debug)]
+pub struct PixelStore {
+    pub alignment: i32,
+    pub row_length: i32,
+    pub skip_pixels: i32,
+    pub skip_rows: i32,
+    pub skip_images: i32,
+    pub image_height: i32,
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+}
+
+impl Default for PixelStore {
+    fn default() -> Self {
+        PixelStore {
+            alignment: 4,
+            row_length: 0,
+            skip_pixels: 0,
+            skip_rows: 0,
+            skip_images: 0,
+            image_height: 0,
+            swap_bytes: false,
+            lsb_first: false,
+        }
+    }
+}
+
+impl PixelStore {
+    /// Bytes spanned by an image of `width` x `height` x `depth` pixels of `bytes_per_pixel`
+    /// (components times component size) under these storage modes, counting skips (section
+    /// 3.6.4). Returns `None` on overflow.
+    pub fn image_bytes(
+        &self,
+        width: usize,
+        height: usize,
+        depth: usize,
+        bytes_per_pixel: usize,
+        component_size: usize,
+    ) -> Option<usize> {
+        if width == 0 || height == 0 || depth == 0 {
+            return Some(0);
+        }
+        let row = self.row_stride(width, bytes_per_pixel, component_size)?;
+        let rows_per_image = if self.image_height > 0 {
+            self.image_height as usize
+        } else {
+            height
+        };
+        let image = row.checked_mul(rows_per_image)?;
+        let first = image
+            .checked_mul(self.skip_images.max(0) as usize)?
+            .checked_add(row.checked_mul(self.skip_rows.max(0) as usize)?)?
+            .checked_add((self.skip_pixels.max(0) as usize).checked_mul(bytes_per_pixel)?)?;
+        let last_row_end = width.checked_mul(bytes_per_pixel)?;
+        first
+            .checked_add(image.checked_mul(depth - 1)?)?
+            .checked_add(row.checked_mul(height - 1)?)?
+            .checked_add(last_row_end)
+    }
+
+    /// Distance in bytes between the starts of two rows.
+    pub fn row_stride(
+        &self,
+        width: usize,
+        bytes_per_pixel: usize,
+        component_size: usize,
+    ) -> Option<usize> {
+        let pixels = if self.row_length > 0 {
+            self.row_length as usize
+        } else {
+            width
+        };
+        let raw = pixels.checked_mul(bytes_per_pixel)?;
+        let align = self.alignment.max(1) as usize;
+        if component_size >= align {
+            Some(raw)
+        } else {
+            Some(raw.div_ceil(align) * align)
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! The vertex stage and the front end of a draw: transform the batch, assemble, clip, map to
+//! the window, cull, and hand primitives to setup and binning.
+
+pub mod immediate;
+pub mod transform;
+
+use crate::api::convert::PrimitiveMode;
+use crate::primitive::assemble::{assemble, Primitive};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
+use crate::primitive::cull::{is_culled, is_front, signed_area2};
+use crate::primitive::viewport::to_window;
+use crate::raster::{line, point, tri};
+use crate::state::snapshot::COLOR_ATTRS;
+use crate::state::Context;
+use immediate::ImmVertex;
+
+impl Context {
+    /// Draws a batch of vertices of one primitive mode.
+    pub(crate) fn draw_vertices(&mut self, mode: PrimitiveMode, verts: &[ImmVertex]) {
+        if verts.is_empty() {
+            return;
+        }
+        let ds = self.snapshot();
+        if ds.draw_rect.is_empty() || ds.key.writes_nothing() {
+            return;
+        }
+        let clip: Vec<ClipVertex> = verts.iter().map(|v| transform::to_clip(&ds, v)).collect();
+        let n_attrs = ds.attr_count;
+        let user = &ds.clip_planes;
+        let mut poly = Vec::with_capacity(8);
+        let mut scratch = Vec::with_capacity(8);
+        for prim in assemble(mode, clip.len()) {
+            if self.scene.is_full() {
+                self.flush_scene();
+            }
+            let state = self.scene.add_state(&ds);
+            match prim {
+                Primitive::Point(i) => {
+                    if point_visible(&clip[i], user) {
+                        let w = to_window(&ds, &clip[i]);
+                        point::bin_point(
+                            &ds,
+                            state,
+                            &w,
+                            &clip[i].attrs[..n_attrs],
+                            &mut self.scene,
+                        );
+                    }
+                }
+                Primitive::Line { v, provoking } => {
+                    let (mut a, mut b) = (clip[v[0]], clip[v[1]]);
+                    if ds.flat {
+                        let c = clip[provoking].attrs;
+                        a.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
+                        b.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
+                    }
+                    if let Some((a, b)) = clip_line(&a, &b, user, n_attrs) {
+                        let wa = to_window(&ds, &a);
+                        let wb = to_window(&ds, &b);
+                        line::bin_line(
+                            &ds,
+                            state,
+                            [&wa, &wb],
+                            [&a.attrs[..n_attrs], &b.attrs[..n_attrs]],
+                            &mut self.scene,
+                        );
+                    }
+                }
+                Primitive::Triangle { v, provoking } => {
+                    poly.clear();
+                    poly.extend(v.iter().map(|&i| clip[i]));
+                    if ds.flat {
+                        let c = clip[provoking].attrs;
+                        for p in poly.iter_mut() {
+                            p.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
+                        }
+                    }
+                    if !clip_polygon(&mut poly, &mut scratch, user, n_attrs) {
+                        continue;
+                    }
+                    let win: Vec<_> = poly.iter().map(|p| to_window(&ds, p)).collect();
+                    let xy: Vec<[i64; 2]> = win.iter().map(|w| w.xy).collect();
+                    let area = signed_area2(&xy);
+                    if area == 0 {
+                        continue;
+                    }
+                    if is_culled(ds.cull, is_front(area, ds.front_face)) {
+                        continue;
+                    }
+                    for k in 1..poly.len() - 1 {
+                        tri::bin_triangle(
+                            &ds,
+                            state,
+                            [&win[0], &win[k], &win[k + 1]],
+                            [
+                                &poly[0].attrs[..n_attrs],
+                                &poly[k].attrs[..n_attrs],
+                                &poly[k + 1].attrs[..n_attrs],
+                            ],
+                            &mut self.scene,
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
