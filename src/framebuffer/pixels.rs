@@ -89,7 +89,7 @@ impl Context {
             .unwrap_or(0)
     }
 
-    pub fn read_pixels(
+    pub(crate) fn read_pixels(
         &mut self,
         x: GLint,
         y: GLint,

@@ -234,7 +234,7 @@ impl Context {
         Some(v)
     }
 
-    pub fn get_booleanv(&mut self, pname: GLenum, data: &mut [GLboolean]) {
+    pub(crate) fn get_booleanv(&mut self, pname: GLenum, data: &mut [GLboolean]) {
         if let Some(v) = self.query_checked(pname, data.len()) {
             for (d, b) in data.iter_mut().zip(v.as_bool()) {
                 *d = b as GLboolean;
@@ -242,7 +242,7 @@ impl Context {
         }
     }
 
-    pub fn get_integerv(&mut self, pname: GLenum, data: &mut [GLint]) {
+    pub(crate) fn get_integerv(&mut self, pname: GLenum, data: &mut [GLint]) {
         if let Some(v) = self.query_checked(pname, data.len()) {
             for (d, i) in data.iter_mut().zip(v.as_i32()) {
                 *d = i;
@@ -250,7 +250,7 @@ impl Context {
         }
     }
 
-    pub fn get_floatv(&mut self, pname: GLenum, data: &mut [GLfloat]) {
+    pub(crate) fn get_floatv(&mut self, pname: GLenum, data: &mut [GLfloat]) {
         if let Some(v) = self.query_checked(pname, data.len()) {
             for (d, f) in data.iter_mut().zip(v.as_f64()) {
                 *d = f as f32;
@@ -258,7 +258,7 @@ impl Context {
         }
     }
 
-    pub fn get_doublev(&mut self, pname: GLenum, data: &mut [GLdouble]) {
+    pub(crate) fn get_doublev(&mut self, pname: GLenum, data: &mut [GLdouble]) {
         if let Some(v) = self.query_checked(pname, data.len()) {
             for (d, f) in data.iter_mut().zip(v.as_f64()) {
                 *d = f;

@@ -53,7 +53,7 @@ impl Context {
         self.set_top(t * m);
     }
 
-    pub fn matrix_mode(&mut self, mode: GLenum) {
+    pub(crate) fn matrix_mode(&mut self, mode: GLenum) {
         let Some(m) = convert::matrix_mode(mode) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -61,43 +61,43 @@ impl Context {
         self.transform.mode = m;
     }
 
-    pub fn load_identity(&mut self) {
+    pub(crate) fn load_identity(&mut self) {
         self.set_top(Mat4::IDENTITY);
     }
 
-    pub fn load_matrixf(&mut self, m: &[GLfloat; 16]) {
+    pub(crate) fn load_matrixf(&mut self, m: &[GLfloat; 16]) {
         self.set_top(Mat4::from_cols_array(m));
     }
 
-    pub fn load_matrixd(&mut self, m: &[GLdouble; 16]) {
+    pub(crate) fn load_matrixd(&mut self, m: &[GLdouble; 16]) {
         self.set_top(DMat4::from_cols_array(m).as_mat4());
     }
 
-    pub fn mult_matrixf(&mut self, m: &[GLfloat; 16]) {
+    pub(crate) fn mult_matrixf(&mut self, m: &[GLfloat; 16]) {
         self.multiply_top(Mat4::from_cols_array(m));
     }
 
-    pub fn mult_matrixd(&mut self, m: &[GLdouble; 16]) {
+    pub(crate) fn mult_matrixd(&mut self, m: &[GLdouble; 16]) {
         self.multiply_top(DMat4::from_cols_array(m).as_mat4());
     }
 
-    pub fn load_transpose_matrixf(&mut self, m: &[GLfloat; 16]) {
+    pub(crate) fn load_transpose_matrixf(&mut self, m: &[GLfloat; 16]) {
         self.set_top(Mat4::from_cols_array(m).transpose());
     }
 
-    pub fn load_transpose_matrixd(&mut self, m: &[GLdouble; 16]) {
+    pub(crate) fn load_transpose_matrixd(&mut self, m: &[GLdouble; 16]) {
         self.set_top(DMat4::from_cols_array(m).transpose().as_mat4());
     }
 
-    pub fn mult_transpose_matrixf(&mut self, m: &[GLfloat; 16]) {
+    pub(crate) fn mult_transpose_matrixf(&mut self, m: &[GLfloat; 16]) {
         self.multiply_top(Mat4::from_cols_array(m).transpose());
     }
 
-    pub fn mult_transpose_matrixd(&mut self, m: &[GLdouble; 16]) {
+    pub(crate) fn mult_transpose_matrixd(&mut self, m: &[GLdouble; 16]) {
         self.multiply_top(DMat4::from_cols_array(m).transpose().as_mat4());
     }
 
-    pub fn rotatef(&mut self, angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
+    pub(crate) fn rotatef(&mut self, angle: GLfloat, x: GLfloat, y: GLfloat, z: GLfloat) {
         let axis = Vec3::new(x, y, z);
         let len = axis.length();
         // A (near) zero axis leaves the matrix unchanged rather than producing NaNs.
@@ -107,27 +107,35 @@ impl Context {
         self.multiply_top(Mat4::from_axis_angle(axis / len, angle.to_radians()));
     }
 
-    pub fn rotated(&mut self, angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) {
+    pub(crate) fn rotated(&mut self, angle: GLdouble, x: GLdouble, y: GLdouble, z: GLdouble) {
         self.rotatef(angle as f32, x as f32, y as f32, z as f32);
     }
 
-    pub fn translatef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+    pub(crate) fn translatef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
         self.multiply_top(Mat4::from_translation(Vec3::new(x, y, z)));
     }
 
-    pub fn translated(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+    pub(crate) fn translated(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
         self.translatef(x as f32, y as f32, z as f32);
     }
 
-    pub fn scalef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+    pub(crate) fn scalef(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
         self.multiply_top(Mat4::from_scale(Vec3::new(x, y, z)));
     }
 
-    pub fn scaled(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+    pub(crate) fn scaled(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
         self.scalef(x as f32, y as f32, z as f32);
     }
 
-    pub fn frustum(&mut self, l: GLdouble, r: GLdouble, b: GLdouble, t: GLdouble, n: f64, f: f64) {
+    pub(crate) fn frustum(
+        &mut self,
+        l: GLdouble,
+        r: GLdouble,
+        b: GLdouble,
+        t: GLdouble,
+        n: f64,
+        f: f64,
+    ) {
         if n <= 0.0 || f <= 0.0 || l == r || b == t || n == f {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -147,7 +155,15 @@ impl Context {
         self.multiply_top(m.as_mat4());
     }
 
-    pub fn ortho(&mut self, l: GLdouble, r: GLdouble, b: GLdouble, t: GLdouble, n: f64, f: f64) {
+    pub(crate) fn ortho(
+        &mut self,
+        l: GLdouble,
+        r: GLdouble,
+        b: GLdouble,
+        t: GLdouble,
+        n: f64,
+        f: f64,
+    ) {
         if l == r || b == t || n == f {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -166,7 +182,7 @@ impl Context {
         self.multiply_top(m.as_mat4());
     }
 
-    pub fn push_matrix(&mut self) {
+    pub(crate) fn push_matrix(&mut self) {
         let (stack, max) = self.current_stack();
         if stack.len() >= max {
             self.record_error(GL_STACK_OVERFLOW);
@@ -176,7 +192,7 @@ impl Context {
         stack.push(top);
     }
 
-    pub fn pop_matrix(&mut self) {
+    pub(crate) fn pop_matrix(&mut self) {
         let (stack, _) = self.current_stack();
         if stack.len() <= 1 {
             self.record_error(GL_STACK_UNDERFLOW);
@@ -186,7 +202,7 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn viewport(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+    pub(crate) fn viewport(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -200,12 +216,12 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn depth_range(&mut self, near: GLclampd, far: GLclampd) {
+    pub(crate) fn depth_range(&mut self, near: GLclampd, far: GLclampd) {
         self.transform.depth_range = [super::clamp01(near), super::clamp01(far)];
         self.invalidate();
     }
 
-    pub fn clip_plane(&mut self, plane: GLenum, equation: &[GLdouble; 4]) {
+    pub(crate) fn clip_plane(&mut self, plane: GLenum, equation: &[GLdouble; 4]) {
         let i = plane.wrapping_sub(GL_CLIP_PLANE0) as usize;
         if i >= limits::MAX_CLIP_PLANES {
             self.record_error(GL_INVALID_ENUM);
@@ -219,7 +235,7 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn get_clip_plane(&mut self, plane: GLenum, equation: &mut [GLdouble; 4]) {
+    pub(crate) fn get_clip_plane(&mut self, plane: GLenum, equation: &mut [GLdouble; 4]) {
         let i = plane.wrapping_sub(GL_CLIP_PLANE0) as usize;
         if i >= limits::MAX_CLIP_PLANES {
             self.record_error(GL_INVALID_ENUM);

@@ -209,11 +209,11 @@ impl Context {
 
     // ----- entry points: errors, strings, flush
 
-    pub fn get_error(&mut self) -> GLenum {
+    pub(crate) fn get_error(&mut self) -> GLenum {
         self.error.take()
     }
 
-    pub fn get_string(&mut self, name: GLenum) -> Option<String> {
+    pub(crate) fn get_string(&mut self, name: GLenum) -> Option<String> {
         let Some(name) = convert::string_name(name) else {
             self.record_error(GL_INVALID_ENUM);
             return None;
@@ -230,12 +230,12 @@ impl Context {
         )
     }
 
-    pub fn flush(&mut self) {
+    pub(crate) fn flush(&mut self) {
         self.flush_scene();
         self.present();
     }
 
-    pub fn finish(&mut self) {
+    pub(crate) fn finish(&mut self) {
         self.flush_scene();
         self.present();
     }
@@ -244,7 +244,7 @@ impl Context {
         self.present_requested = true;
     }
 
-    pub fn hint(&mut self, target: GLenum, mode: GLenum) {
+    pub(crate) fn hint(&mut self, target: GLenum, mode: GLenum) {
         let (Some(target), Some(mode)) = (convert::hint_target(target), convert::hint_mode(mode))
         else {
             self.record_error(GL_INVALID_ENUM);
@@ -281,15 +281,15 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn enable(&mut self, cap: GLenum) {
+    pub(crate) fn enable(&mut self, cap: GLenum) {
         self.set_capability(cap, true);
     }
 
-    pub fn disable(&mut self, cap: GLenum) {
+    pub(crate) fn disable(&mut self, cap: GLenum) {
         self.set_capability(cap, false);
     }
 
-    pub fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
+    pub(crate) fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
         let Some(cap) = convert::capability(cap) else {
             self.record_error(GL_INVALID_ENUM);
             return GL_FALSE as GLboolean;
@@ -311,7 +311,7 @@ impl Context {
 
     // ----- rasterization state
 
-    pub fn cull_face(&mut self, mode: GLenum) {
+    pub(crate) fn cull_face(&mut self, mode: GLenum) {
         let Some(face) = convert::face(mode) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -320,7 +320,7 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn front_face(&mut self, mode: GLenum) {
+    pub(crate) fn front_face(&mut self, mode: GLenum) {
         let Some(w) = convert::winding(mode) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -329,7 +329,7 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn shade_model(&mut self, mode: GLenum) {
+    pub(crate) fn shade_model(&mut self, mode: GLenum) {
         let Some(m) = convert::shade_model(mode) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -340,7 +340,7 @@ impl Context {
 
     // ----- per-fragment operations and framebuffer control
 
-    pub fn depth_func(&mut self, func: GLenum) {
+    pub(crate) fn depth_func(&mut self, func: GLenum) {
         let Some(f) = convert::compare_func(func) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -349,22 +349,22 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn depth_mask(&mut self, flag: GLboolean) {
+    pub(crate) fn depth_mask(&mut self, flag: GLboolean) {
         self.fragment_ops.depth_mask = flag != 0;
         self.invalidate();
     }
 
-    pub fn color_mask(&mut self, r: GLboolean, g: GLboolean, b: GLboolean, a: GLboolean) {
+    pub(crate) fn color_mask(&mut self, r: GLboolean, g: GLboolean, b: GLboolean, a: GLboolean) {
         self.fragment_ops.color_mask = [r != 0, g != 0, b != 0, a != 0];
         self.invalidate();
     }
 
-    pub fn stencil_mask(&mut self, mask: GLuint) {
+    pub(crate) fn stencil_mask(&mut self, mask: GLuint) {
         self.fragment_ops.stencil_writemask = mask;
         self.invalidate();
     }
 
-    pub fn scissor(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+    pub(crate) fn scissor(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -378,19 +378,19 @@ impl Context {
         self.invalidate();
     }
 
-    pub fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
+    pub(crate) fn clear_color(&mut self, r: GLclampf, g: GLclampf, b: GLclampf, a: GLclampf) {
         self.clear_values.color = [r, g, b, a].map(|c| clamp01(c as f64) as f32);
     }
 
-    pub fn clear_depth(&mut self, depth: GLclampd) {
+    pub(crate) fn clear_depth(&mut self, depth: GLclampd) {
         self.clear_values.depth = clamp01(depth);
     }
 
-    pub fn clear_stencil(&mut self, s: GLint) {
+    pub(crate) fn clear_stencil(&mut self, s: GLint) {
         self.clear_values.stencil = s;
     }
 
-    pub fn clear(&mut self, mask: GLbitfield) {
+    pub(crate) fn clear(&mut self, mask: GLbitfield) {
         let Some(mask) = convert::clear_mask(mask) else {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -398,7 +398,7 @@ impl Context {
         self.record_clear(mask);
     }
 
-    pub fn pixel_storei(&mut self, pname: GLenum, param: GLint) {
+    pub(crate) fn pixel_storei(&mut self, pname: GLenum, param: GLint) {
         let Some(p) = convert::pixel_store_param(pname) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -434,7 +434,7 @@ impl Context {
         }
     }
 
-    pub fn pixel_storef(&mut self, pname: GLenum, param: GLfloat) {
+    pub(crate) fn pixel_storef(&mut self, pname: GLenum, param: GLfloat) {
         // Section 3.6.1: a float value is rounded to the nearest integer (booleans: non-zero).
         let v = if param.is_finite() {
             param.round().clamp(i32::MIN as f32, i32::MAX as f32) as i32

@@ -49,7 +49,7 @@ pub(crate) fn norm_i32(c: i32) -> f32 {
 }
 
 impl Context {
-    pub fn begin(&mut self, mode: GLenum) {
+    pub(crate) fn begin(&mut self, mode: GLenum) {
         let Some(mode) = convert::primitive_mode(mode) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -60,7 +60,7 @@ impl Context {
         });
     }
 
-    pub fn end(&mut self) {
+    pub(crate) fn end(&mut self) {
         let Some(batch) = self.immediate.take() else {
             self.record_error(GL_INVALID_OPERATION);
             return;
@@ -106,58 +106,58 @@ impl Context {
         self.vertex4(Vec4::new(x1, y2, 0.0, 1.0));
         self.end();
     }
-    pub fn vertex_2d(&mut self, x: GLdouble, y: GLdouble) {
+    pub(crate) fn vertex_2d(&mut self, x: GLdouble, y: GLdouble) {
         self.vertex4(Vec4::new(x as f32, y as f32, 0.0, 1.0));
     }
-    pub fn vertex_2dv(&mut self, v: &[GLdouble; 2]) {
+    pub(crate) fn vertex_2dv(&mut self, v: &[GLdouble; 2]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
     }
-    pub fn vertex_2f(&mut self, x: GLfloat, y: GLfloat) {
+    pub(crate) fn vertex_2f(&mut self, x: GLfloat, y: GLfloat) {
         self.vertex4(Vec4::new(x as f32, y as f32, 0.0, 1.0));
     }
-    pub fn vertex_2fv(&mut self, v: &[GLfloat; 2]) {
+    pub(crate) fn vertex_2fv(&mut self, v: &[GLfloat; 2]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
     }
-    pub fn vertex_2i(&mut self, x: GLint, y: GLint) {
+    pub(crate) fn vertex_2i(&mut self, x: GLint, y: GLint) {
         self.vertex4(Vec4::new(x as f32, y as f32, 0.0, 1.0));
     }
-    pub fn vertex_2iv(&mut self, v: &[GLint; 2]) {
+    pub(crate) fn vertex_2iv(&mut self, v: &[GLint; 2]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
     }
-    pub fn vertex_2s(&mut self, x: GLshort, y: GLshort) {
+    pub(crate) fn vertex_2s(&mut self, x: GLshort, y: GLshort) {
         self.vertex4(Vec4::new(x as f32, y as f32, 0.0, 1.0));
     }
-    pub fn vertex_2sv(&mut self, v: &[GLshort; 2]) {
+    pub(crate) fn vertex_2sv(&mut self, v: &[GLshort; 2]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
     }
-    pub fn vertex_3d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
+    pub(crate) fn vertex_3d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, 1.0));
     }
-    pub fn vertex_3dv(&mut self, v: &[GLdouble; 3]) {
+    pub(crate) fn vertex_3dv(&mut self, v: &[GLdouble; 3]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0));
     }
-    pub fn vertex_3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
+    pub(crate) fn vertex_3f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, 1.0));
     }
-    pub fn vertex_3fv(&mut self, v: &[GLfloat; 3]) {
+    pub(crate) fn vertex_3fv(&mut self, v: &[GLfloat; 3]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0));
     }
-    pub fn vertex_3i(&mut self, x: GLint, y: GLint, z: GLint) {
+    pub(crate) fn vertex_3i(&mut self, x: GLint, y: GLint, z: GLint) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, 1.0));
     }
-    pub fn vertex_3iv(&mut self, v: &[GLint; 3]) {
+    pub(crate) fn vertex_3iv(&mut self, v: &[GLint; 3]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0));
     }
-    pub fn vertex_3s(&mut self, x: GLshort, y: GLshort, z: GLshort) {
+    pub(crate) fn vertex_3s(&mut self, x: GLshort, y: GLshort, z: GLshort) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, 1.0));
     }
-    pub fn vertex_3sv(&mut self, v: &[GLshort; 3]) {
+    pub(crate) fn vertex_3sv(&mut self, v: &[GLshort; 3]) {
         self.vertex4(Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0));
     }
-    pub fn vertex_4d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
+    pub(crate) fn vertex_4d(&mut self, x: GLdouble, y: GLdouble, z: GLdouble, w: GLdouble) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, w as f32));
     }
-    pub fn vertex_4dv(&mut self, v: &[GLdouble; 4]) {
+    pub(crate) fn vertex_4dv(&mut self, v: &[GLdouble; 4]) {
         self.vertex4(Vec4::new(
             v[0] as f32,
             v[1] as f32,
@@ -165,10 +165,10 @@ impl Context {
             v[3] as f32,
         ));
     }
-    pub fn vertex_4f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
+    pub(crate) fn vertex_4f(&mut self, x: GLfloat, y: GLfloat, z: GLfloat, w: GLfloat) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, w as f32));
     }
-    pub fn vertex_4fv(&mut self, v: &[GLfloat; 4]) {
+    pub(crate) fn vertex_4fv(&mut self, v: &[GLfloat; 4]) {
         self.vertex4(Vec4::new(
             v[0] as f32,
             v[1] as f32,
@@ -176,10 +176,10 @@ impl Context {
             v[3] as f32,
         ));
     }
-    pub fn vertex_4i(&mut self, x: GLint, y: GLint, z: GLint, w: GLint) {
+    pub(crate) fn vertex_4i(&mut self, x: GLint, y: GLint, z: GLint, w: GLint) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, w as f32));
     }
-    pub fn vertex_4iv(&mut self, v: &[GLint; 4]) {
+    pub(crate) fn vertex_4iv(&mut self, v: &[GLint; 4]) {
         self.vertex4(Vec4::new(
             v[0] as f32,
             v[1] as f32,
@@ -187,10 +187,10 @@ impl Context {
             v[3] as f32,
         ));
     }
-    pub fn vertex_4s(&mut self, x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
+    pub(crate) fn vertex_4s(&mut self, x: GLshort, y: GLshort, z: GLshort, w: GLshort) {
         self.vertex4(Vec4::new(x as f32, y as f32, z as f32, w as f32));
     }
-    pub fn vertex_4sv(&mut self, v: &[GLshort; 4]) {
+    pub(crate) fn vertex_4sv(&mut self, v: &[GLshort; 4]) {
         self.vertex4(Vec4::new(
             v[0] as f32,
             v[1] as f32,
@@ -198,13 +198,13 @@ impl Context {
             v[3] as f32,
         ));
     }
-    pub fn color_3b(&mut self, red: GLbyte, green: GLbyte, blue: GLbyte) {
+    pub(crate) fn color_3b(&mut self, red: GLbyte, green: GLbyte, blue: GLbyte) {
         self.set_color(Vec4::new(norm_i8(red), norm_i8(green), norm_i8(blue), 1.0));
     }
-    pub fn color_3bv(&mut self, v: &[GLbyte; 3]) {
+    pub(crate) fn color_3bv(&mut self, v: &[GLbyte; 3]) {
         self.set_color(Vec4::new(norm_i8(v[0]), norm_i8(v[1]), norm_i8(v[2]), 1.0));
     }
-    pub fn color_3d(&mut self, red: GLdouble, green: GLdouble, blue: GLdouble) {
+    pub(crate) fn color_3d(&mut self, red: GLdouble, green: GLdouble, blue: GLdouble) {
         self.set_color(Vec4::new(
             (|v: f64| v as f32)(red),
             (|v: f64| v as f32)(green),
@@ -212,7 +212,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3dv(&mut self, v: &[GLdouble; 3]) {
+    pub(crate) fn color_3dv(&mut self, v: &[GLdouble; 3]) {
         self.set_color(Vec4::new(
             (|v: f64| v as f32)(v[0]),
             (|v: f64| v as f32)(v[1]),
@@ -220,7 +220,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3f(&mut self, red: GLfloat, green: GLfloat, blue: GLfloat) {
+    pub(crate) fn color_3f(&mut self, red: GLfloat, green: GLfloat, blue: GLfloat) {
         self.set_color(Vec4::new(
             (|v: f32| v)(red),
             (|v: f32| v)(green),
@@ -228,7 +228,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3fv(&mut self, v: &[GLfloat; 3]) {
+    pub(crate) fn color_3fv(&mut self, v: &[GLfloat; 3]) {
         self.set_color(Vec4::new(
             (|v: f32| v)(v[0]),
             (|v: f32| v)(v[1]),
@@ -236,7 +236,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3i(&mut self, red: GLint, green: GLint, blue: GLint) {
+    pub(crate) fn color_3i(&mut self, red: GLint, green: GLint, blue: GLint) {
         self.set_color(Vec4::new(
             norm_i32(red),
             norm_i32(green),
@@ -244,7 +244,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3iv(&mut self, v: &[GLint; 3]) {
+    pub(crate) fn color_3iv(&mut self, v: &[GLint; 3]) {
         self.set_color(Vec4::new(
             norm_i32(v[0]),
             norm_i32(v[1]),
@@ -252,7 +252,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3s(&mut self, red: GLshort, green: GLshort, blue: GLshort) {
+    pub(crate) fn color_3s(&mut self, red: GLshort, green: GLshort, blue: GLshort) {
         self.set_color(Vec4::new(
             norm_i16(red),
             norm_i16(green),
@@ -260,7 +260,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3sv(&mut self, v: &[GLshort; 3]) {
+    pub(crate) fn color_3sv(&mut self, v: &[GLshort; 3]) {
         self.set_color(Vec4::new(
             norm_i16(v[0]),
             norm_i16(v[1]),
@@ -268,13 +268,13 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3ub(&mut self, red: GLubyte, green: GLubyte, blue: GLubyte) {
+    pub(crate) fn color_3ub(&mut self, red: GLubyte, green: GLubyte, blue: GLubyte) {
         self.set_color(Vec4::new(norm_u8(red), norm_u8(green), norm_u8(blue), 1.0));
     }
-    pub fn color_3ubv(&mut self, v: &[GLubyte; 3]) {
+    pub(crate) fn color_3ubv(&mut self, v: &[GLubyte; 3]) {
         self.set_color(Vec4::new(norm_u8(v[0]), norm_u8(v[1]), norm_u8(v[2]), 1.0));
     }
-    pub fn color_3ui(&mut self, red: GLuint, green: GLuint, blue: GLuint) {
+    pub(crate) fn color_3ui(&mut self, red: GLuint, green: GLuint, blue: GLuint) {
         self.set_color(Vec4::new(
             norm_u32(red),
             norm_u32(green),
@@ -282,7 +282,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3uiv(&mut self, v: &[GLuint; 3]) {
+    pub(crate) fn color_3uiv(&mut self, v: &[GLuint; 3]) {
         self.set_color(Vec4::new(
             norm_u32(v[0]),
             norm_u32(v[1]),
@@ -290,7 +290,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3us(&mut self, red: GLushort, green: GLushort, blue: GLushort) {
+    pub(crate) fn color_3us(&mut self, red: GLushort, green: GLushort, blue: GLushort) {
         self.set_color(Vec4::new(
             norm_u16(red),
             norm_u16(green),
@@ -298,7 +298,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_3usv(&mut self, v: &[GLushort; 3]) {
+    pub(crate) fn color_3usv(&mut self, v: &[GLushort; 3]) {
         self.set_color(Vec4::new(
             norm_u16(v[0]),
             norm_u16(v[1]),
@@ -306,7 +306,7 @@ impl Context {
             1.0,
         ));
     }
-    pub fn color_4b(&mut self, red: GLbyte, green: GLbyte, blue: GLbyte, alpha: GLbyte) {
+    pub(crate) fn color_4b(&mut self, red: GLbyte, green: GLbyte, blue: GLbyte, alpha: GLbyte) {
         self.set_color(Vec4::new(
             norm_i8(red),
             norm_i8(green),
@@ -314,7 +314,7 @@ impl Context {
             norm_i8(alpha),
         ));
     }
-    pub fn color_4bv(&mut self, v: &[GLbyte; 4]) {
+    pub(crate) fn color_4bv(&mut self, v: &[GLbyte; 4]) {
         self.set_color(Vec4::new(
             norm_i8(v[0]),
             norm_i8(v[1]),
@@ -322,7 +322,13 @@ impl Context {
             norm_i8(v[3]),
         ));
     }
-    pub fn color_4d(&mut self, red: GLdouble, green: GLdouble, blue: GLdouble, alpha: GLdouble) {
+    pub(crate) fn color_4d(
+        &mut self,
+        red: GLdouble,
+        green: GLdouble,
+        blue: GLdouble,
+        alpha: GLdouble,
+    ) {
         self.set_color(Vec4::new(
             (|v: f64| v as f32)(red),
             (|v: f64| v as f32)(green),
@@ -330,7 +336,7 @@ impl Context {
             (|v: f64| v as f32)(alpha),
         ));
     }
-    pub fn color_4dv(&mut self, v: &[GLdouble; 4]) {
+    pub(crate) fn color_4dv(&mut self, v: &[GLdouble; 4]) {
         self.set_color(Vec4::new(
             (|v: f64| v as f32)(v[0]),
             (|v: f64| v as f32)(v[1]),
@@ -338,7 +344,7 @@ impl Context {
             (|v: f64| v as f32)(v[3]),
         ));
     }
-    pub fn color_4f(&mut self, red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) {
+    pub(crate) fn color_4f(&mut self, red: GLfloat, green: GLfloat, blue: GLfloat, alpha: GLfloat) {
         self.set_color(Vec4::new(
             (|v: f32| v)(red),
             (|v: f32| v)(green),
@@ -346,7 +352,7 @@ impl Context {
             (|v: f32| v)(alpha),
         ));
     }
-    pub fn color_4fv(&mut self, v: &[GLfloat; 4]) {
+    pub(crate) fn color_4fv(&mut self, v: &[GLfloat; 4]) {
         self.set_color(Vec4::new(
             (|v: f32| v)(v[0]),
             (|v: f32| v)(v[1]),
@@ -354,7 +360,7 @@ impl Context {
             (|v: f32| v)(v[3]),
         ));
     }
-    pub fn color_4i(&mut self, red: GLint, green: GLint, blue: GLint, alpha: GLint) {
+    pub(crate) fn color_4i(&mut self, red: GLint, green: GLint, blue: GLint, alpha: GLint) {
         self.set_color(Vec4::new(
             norm_i32(red),
             norm_i32(green),
@@ -362,7 +368,7 @@ impl Context {
             norm_i32(alpha),
         ));
     }
-    pub fn color_4iv(&mut self, v: &[GLint; 4]) {
+    pub(crate) fn color_4iv(&mut self, v: &[GLint; 4]) {
         self.set_color(Vec4::new(
             norm_i32(v[0]),
             norm_i32(v[1]),
@@ -370,7 +376,7 @@ impl Context {
             norm_i32(v[3]),
         ));
     }
-    pub fn color_4s(&mut self, red: GLshort, green: GLshort, blue: GLshort, alpha: GLshort) {
+    pub(crate) fn color_4s(&mut self, red: GLshort, green: GLshort, blue: GLshort, alpha: GLshort) {
         self.set_color(Vec4::new(
             norm_i16(red),
             norm_i16(green),
@@ -378,7 +384,7 @@ impl Context {
             norm_i16(alpha),
         ));
     }
-    pub fn color_4sv(&mut self, v: &[GLshort; 4]) {
+    pub(crate) fn color_4sv(&mut self, v: &[GLshort; 4]) {
         self.set_color(Vec4::new(
             norm_i16(v[0]),
             norm_i16(v[1]),
@@ -386,7 +392,13 @@ impl Context {
             norm_i16(v[3]),
         ));
     }
-    pub fn color_4ub(&mut self, red: GLubyte, green: GLubyte, blue: GLubyte, alpha: GLubyte) {
+    pub(crate) fn color_4ub(
+        &mut self,
+        red: GLubyte,
+        green: GLubyte,
+        blue: GLubyte,
+        alpha: GLubyte,
+    ) {
         self.set_color(Vec4::new(
             norm_u8(red),
             norm_u8(green),
@@ -394,7 +406,7 @@ impl Context {
             norm_u8(alpha),
         ));
     }
-    pub fn color_4ubv(&mut self, v: &[GLubyte; 4]) {
+    pub(crate) fn color_4ubv(&mut self, v: &[GLubyte; 4]) {
         self.set_color(Vec4::new(
             norm_u8(v[0]),
             norm_u8(v[1]),
@@ -402,7 +414,7 @@ impl Context {
             norm_u8(v[3]),
         ));
     }
-    pub fn color_4ui(&mut self, red: GLuint, green: GLuint, blue: GLuint, alpha: GLuint) {
+    pub(crate) fn color_4ui(&mut self, red: GLuint, green: GLuint, blue: GLuint, alpha: GLuint) {
         self.set_color(Vec4::new(
             norm_u32(red),
             norm_u32(green),
@@ -410,7 +422,7 @@ impl Context {
             norm_u32(alpha),
         ));
     }
-    pub fn color_4uiv(&mut self, v: &[GLuint; 4]) {
+    pub(crate) fn color_4uiv(&mut self, v: &[GLuint; 4]) {
         self.set_color(Vec4::new(
             norm_u32(v[0]),
             norm_u32(v[1]),
@@ -418,7 +430,13 @@ impl Context {
             norm_u32(v[3]),
         ));
     }
-    pub fn color_4us(&mut self, red: GLushort, green: GLushort, blue: GLushort, alpha: GLushort) {
+    pub(crate) fn color_4us(
+        &mut self,
+        red: GLushort,
+        green: GLushort,
+        blue: GLushort,
+        alpha: GLushort,
+    ) {
         self.set_color(Vec4::new(
             norm_u16(red),
             norm_u16(green),
@@ -426,7 +444,7 @@ impl Context {
             norm_u16(alpha),
         ));
     }
-    pub fn color_4usv(&mut self, v: &[GLushort; 4]) {
+    pub(crate) fn color_4usv(&mut self, v: &[GLushort; 4]) {
         self.set_color(Vec4::new(
             norm_u16(v[0]),
             norm_u16(v[1]),
@@ -434,162 +452,162 @@ impl Context {
             norm_u16(v[3]),
         ));
     }
-    pub fn normal_3b(&mut self, nx: GLbyte, ny: GLbyte, nz: GLbyte) {
+    pub(crate) fn normal_3b(&mut self, nx: GLbyte, ny: GLbyte, nz: GLbyte) {
         self.current.normal = Vec3::new(norm_i8(nx), norm_i8(ny), norm_i8(nz));
     }
-    pub fn normal_3bv(&mut self, v: &[GLbyte; 3]) {
+    pub(crate) fn normal_3bv(&mut self, v: &[GLbyte; 3]) {
         self.current.normal = Vec3::new(norm_i8(v[0]), norm_i8(v[1]), norm_i8(v[2]));
     }
-    pub fn normal_3d(&mut self, nx: GLdouble, ny: GLdouble, nz: GLdouble) {
+    pub(crate) fn normal_3d(&mut self, nx: GLdouble, ny: GLdouble, nz: GLdouble) {
         self.current.normal = Vec3::new(
             (|v: f64| v as f32)(nx),
             (|v: f64| v as f32)(ny),
             (|v: f64| v as f32)(nz),
         );
     }
-    pub fn normal_3dv(&mut self, v: &[GLdouble; 3]) {
+    pub(crate) fn normal_3dv(&mut self, v: &[GLdouble; 3]) {
         self.current.normal = Vec3::new(
             (|v: f64| v as f32)(v[0]),
             (|v: f64| v as f32)(v[1]),
             (|v: f64| v as f32)(v[2]),
         );
     }
-    pub fn normal_3f(&mut self, nx: GLfloat, ny: GLfloat, nz: GLfloat) {
+    pub(crate) fn normal_3f(&mut self, nx: GLfloat, ny: GLfloat, nz: GLfloat) {
         self.current.normal = Vec3::new((|v: f32| v)(nx), (|v: f32| v)(ny), (|v: f32| v)(nz));
     }
-    pub fn normal_3fv(&mut self, v: &[GLfloat; 3]) {
+    pub(crate) fn normal_3fv(&mut self, v: &[GLfloat; 3]) {
         self.current.normal = Vec3::new((|v: f32| v)(v[0]), (|v: f32| v)(v[1]), (|v: f32| v)(v[2]));
     }
-    pub fn normal_3i(&mut self, nx: GLint, ny: GLint, nz: GLint) {
+    pub(crate) fn normal_3i(&mut self, nx: GLint, ny: GLint, nz: GLint) {
         self.current.normal = Vec3::new(norm_i32(nx), norm_i32(ny), norm_i32(nz));
     }
-    pub fn normal_3iv(&mut self, v: &[GLint; 3]) {
+    pub(crate) fn normal_3iv(&mut self, v: &[GLint; 3]) {
         self.current.normal = Vec3::new(norm_i32(v[0]), norm_i32(v[1]), norm_i32(v[2]));
     }
-    pub fn normal_3s(&mut self, nx: GLshort, ny: GLshort, nz: GLshort) {
+    pub(crate) fn normal_3s(&mut self, nx: GLshort, ny: GLshort, nz: GLshort) {
         self.current.normal = Vec3::new(norm_i16(nx), norm_i16(ny), norm_i16(nz));
     }
-    pub fn normal_3sv(&mut self, v: &[GLshort; 3]) {
+    pub(crate) fn normal_3sv(&mut self, v: &[GLshort; 3]) {
         self.current.normal = Vec3::new(norm_i16(v[0]), norm_i16(v[1]), norm_i16(v[2]));
     }
-    pub fn tex_coord_1d(&mut self, s: GLdouble) {
+    pub(crate) fn tex_coord_1d(&mut self, s: GLdouble) {
         self.current.texcoords[0] = Vec4::new(s as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1dv(&mut self, v: &[GLdouble; 1]) {
+    pub(crate) fn tex_coord_1dv(&mut self, v: &[GLdouble; 1]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1f(&mut self, s: GLfloat) {
+    pub(crate) fn tex_coord_1f(&mut self, s: GLfloat) {
         self.current.texcoords[0] = Vec4::new(s as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1fv(&mut self, v: &[GLfloat; 1]) {
+    pub(crate) fn tex_coord_1fv(&mut self, v: &[GLfloat; 1]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1i(&mut self, s: GLint) {
+    pub(crate) fn tex_coord_1i(&mut self, s: GLint) {
         self.current.texcoords[0] = Vec4::new(s as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1iv(&mut self, v: &[GLint; 1]) {
+    pub(crate) fn tex_coord_1iv(&mut self, v: &[GLint; 1]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1s(&mut self, s: GLshort) {
+    pub(crate) fn tex_coord_1s(&mut self, s: GLshort) {
         self.current.texcoords[0] = Vec4::new(s as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_1sv(&mut self, v: &[GLshort; 1]) {
+    pub(crate) fn tex_coord_1sv(&mut self, v: &[GLshort; 1]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, 0.0, 0.0, 1.0);
     }
-    pub fn tex_coord_2d(&mut self, s: GLdouble, t: GLdouble) {
+    pub(crate) fn tex_coord_2d(&mut self, s: GLdouble, t: GLdouble) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2dv(&mut self, v: &[GLdouble; 2]) {
+    pub(crate) fn tex_coord_2dv(&mut self, v: &[GLdouble; 2]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2f(&mut self, s: GLfloat, t: GLfloat) {
+    pub(crate) fn tex_coord_2f(&mut self, s: GLfloat, t: GLfloat) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2fv(&mut self, v: &[GLfloat; 2]) {
+    pub(crate) fn tex_coord_2fv(&mut self, v: &[GLfloat; 2]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2i(&mut self, s: GLint, t: GLint) {
+    pub(crate) fn tex_coord_2i(&mut self, s: GLint, t: GLint) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2iv(&mut self, v: &[GLint; 2]) {
+    pub(crate) fn tex_coord_2iv(&mut self, v: &[GLint; 2]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2s(&mut self, s: GLshort, t: GLshort) {
+    pub(crate) fn tex_coord_2s(&mut self, s: GLshort, t: GLshort) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_2sv(&mut self, v: &[GLshort; 2]) {
+    pub(crate) fn tex_coord_2sv(&mut self, v: &[GLshort; 2]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0);
     }
-    pub fn tex_coord_3d(&mut self, s: GLdouble, t: GLdouble, r: GLdouble) {
+    pub(crate) fn tex_coord_3d(&mut self, s: GLdouble, t: GLdouble, r: GLdouble) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, 1.0);
     }
-    pub fn tex_coord_3dv(&mut self, v: &[GLdouble; 3]) {
+    pub(crate) fn tex_coord_3dv(&mut self, v: &[GLdouble; 3]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0);
     }
-    pub fn tex_coord_3f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat) {
+    pub(crate) fn tex_coord_3f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, 1.0);
     }
-    pub fn tex_coord_3fv(&mut self, v: &[GLfloat; 3]) {
+    pub(crate) fn tex_coord_3fv(&mut self, v: &[GLfloat; 3]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0);
     }
-    pub fn tex_coord_3i(&mut self, s: GLint, t: GLint, r: GLint) {
+    pub(crate) fn tex_coord_3i(&mut self, s: GLint, t: GLint, r: GLint) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, 1.0);
     }
-    pub fn tex_coord_3iv(&mut self, v: &[GLint; 3]) {
+    pub(crate) fn tex_coord_3iv(&mut self, v: &[GLint; 3]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0);
     }
-    pub fn tex_coord_3s(&mut self, s: GLshort, t: GLshort, r: GLshort) {
+    pub(crate) fn tex_coord_3s(&mut self, s: GLshort, t: GLshort, r: GLshort) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, 1.0);
     }
-    pub fn tex_coord_3sv(&mut self, v: &[GLshort; 3]) {
+    pub(crate) fn tex_coord_3sv(&mut self, v: &[GLshort; 3]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0);
     }
-    pub fn tex_coord_4d(&mut self, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
+    pub(crate) fn tex_coord_4d(&mut self, s: GLdouble, t: GLdouble, r: GLdouble, q: GLdouble) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, q as f32);
     }
-    pub fn tex_coord_4dv(&mut self, v: &[GLdouble; 4]) {
+    pub(crate) fn tex_coord_4dv(&mut self, v: &[GLdouble; 4]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32);
     }
-    pub fn tex_coord_4f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
+    pub(crate) fn tex_coord_4f(&mut self, s: GLfloat, t: GLfloat, r: GLfloat, q: GLfloat) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, q as f32);
     }
-    pub fn tex_coord_4fv(&mut self, v: &[GLfloat; 4]) {
+    pub(crate) fn tex_coord_4fv(&mut self, v: &[GLfloat; 4]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32);
     }
-    pub fn tex_coord_4i(&mut self, s: GLint, t: GLint, r: GLint, q: GLint) {
+    pub(crate) fn tex_coord_4i(&mut self, s: GLint, t: GLint, r: GLint, q: GLint) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, q as f32);
     }
-    pub fn tex_coord_4iv(&mut self, v: &[GLint; 4]) {
+    pub(crate) fn tex_coord_4iv(&mut self, v: &[GLint; 4]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32);
     }
-    pub fn tex_coord_4s(&mut self, s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
+    pub(crate) fn tex_coord_4s(&mut self, s: GLshort, t: GLshort, r: GLshort, q: GLshort) {
         self.current.texcoords[0] = Vec4::new(s as f32, t as f32, r as f32, q as f32);
     }
-    pub fn tex_coord_4sv(&mut self, v: &[GLshort; 4]) {
+    pub(crate) fn tex_coord_4sv(&mut self, v: &[GLshort; 4]) {
         self.current.texcoords[0] = Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32);
     }
-    pub fn rectd(&mut self, x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
+    pub(crate) fn rectd(&mut self, x1: GLdouble, y1: GLdouble, x2: GLdouble, y2: GLdouble) {
         self.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
     }
-    pub fn rectdv(&mut self, v1: &[GLdouble; 2], v2: &[GLdouble; 2]) {
+    pub(crate) fn rectdv(&mut self, v1: &[GLdouble; 2], v2: &[GLdouble; 2]) {
         self.rect(v1[0] as f32, v1[1] as f32, v2[0] as f32, v2[1] as f32);
     }
-    pub fn rectf(&mut self, x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
+    pub(crate) fn rectf(&mut self, x1: GLfloat, y1: GLfloat, x2: GLfloat, y2: GLfloat) {
         self.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
     }
-    pub fn rectfv(&mut self, v1: &[GLfloat; 2], v2: &[GLfloat; 2]) {
+    pub(crate) fn rectfv(&mut self, v1: &[GLfloat; 2], v2: &[GLfloat; 2]) {
         self.rect(v1[0] as f32, v1[1] as f32, v2[0] as f32, v2[1] as f32);
     }
-    pub fn recti(&mut self, x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
+    pub(crate) fn recti(&mut self, x1: GLint, y1: GLint, x2: GLint, y2: GLint) {
         self.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
     }
-    pub fn rectiv(&mut self, v1: &[GLint; 2], v2: &[GLint; 2]) {
+    pub(crate) fn rectiv(&mut self, v1: &[GLint; 2], v2: &[GLint; 2]) {
         self.rect(v1[0] as f32, v1[1] as f32, v2[0] as f32, v2[1] as f32);
     }
-    pub fn rects(&mut self, x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
+    pub(crate) fn rects(&mut self, x1: GLshort, y1: GLshort, x2: GLshort, y2: GLshort) {
         self.rect(x1 as f32, y1 as f32, x2 as f32, y2 as f32);
     }
-    pub fn rectsv(&mut self, v1: &[GLshort; 2], v2: &[GLshort; 2]) {
+    pub(crate) fn rectsv(&mut self, v1: &[GLshort; 2], v2: &[GLshort; 2]) {
         self.rect(v1[0] as f32, v1[1] as f32, v2[0] as f32, v2[1] as f32);
     }
 }

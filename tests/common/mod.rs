@@ -1,0 +1,71 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use tilegl::enums::*;
+use tilegl::{Context, Gl};
+
+/// Reads the whole colour buffer as RGBA8, bottom row first.
+pub fn read_rgba(gl: &mut Context) -> Vec<[u8; 4]> {
+    let (w, h) = gl.size();
+    let mut buf = vec![0u8; (w * h * 4) as usize];
+    gl.read_pixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, &mut buf);
+    buf.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect()
+}
+
+/// One pixel.
+pub fn pixel(gl: &mut Context, x: i32, y: i32) -> [u8; 4] {
+    let mut p = [0u8; 4];
+    gl.read_pixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut p);
+    p
+}
+
+/// Sets up a projection in which object coordinates are window coordinates.
+pub fn window_ortho(gl: &mut Context) {
+    let (w, h) = gl.size();
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, w as f64, 0.0, h as f64, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+}
+
+/// A small deterministic PRNG (xorshift64*), so tests need no extra crates.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        let u = (self.next_u64() >> 40) as f32 / (1u64 << 24) as f32;
+        lo + (hi - lo) * u
+    }
+}
+
+/// Every value of every `glGet` state, as doubles: a fingerprint of the queryable state.
+pub fn state_fingerprint(gl: &mut Context) -> Vec<(GLenum, Vec<f64>)> {
+    assert_eq!(
+        gl.get_error(),
+        GL_NO_ERROR,
+        "fingerprint taken with an error pending"
+    );
+    let mut out = Vec::new();
+    for &(_, value) in tilegl::enums::ENUMS_BY_NAME {
+        let n = gl.query_count(value);
+        let mut v = vec![0f64; n.max(16)];
+        gl.get_doublev(value, &mut v);
+        if gl.get_error() == GL_NO_ERROR {
+            v.truncate(n);
+            out.push((value, v));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out.dedup_by(|a, b| a.0 == b.0);
+    out
+}
+
+use tilegl::api::GLenum;

@@ -1,0 +1,328 @@
+//! Table-driven error semantics (OpenGL 1.5 section 2.5 and each call's error rules): every
+//! erroneous call records the specified error and changes no other state.
+
+mod common;
+
+use common::state_fingerprint;
+use tilegl::api::GLenum;
+use tilegl::enums::*;
+use tilegl::{Context, Gl};
+
+type Call = fn(&mut Context);
+
+/// (description, set-up, erroneous call, expected error)
+fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
+    fn none(_: &mut Context) {}
+    vec![
+        (
+            "enable bad cap",
+            none,
+            |g| g.enable(GL_TEXTURE_ENV),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "disable bad cap",
+            none,
+            |g| g.disable(0xFFFF),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "isEnabled bad cap",
+            none,
+            |g| {
+                g.is_enabled(GL_VERSION);
+            },
+            GL_INVALID_ENUM,
+        ),
+        (
+            "depthFunc bad",
+            none,
+            |g| g.depth_func(GL_ZERO),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "cullFace bad",
+            none,
+            |g| g.cull_face(GL_LEFT),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "frontFace bad",
+            none,
+            |g| g.front_face(GL_FRONT),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "shadeModel bad",
+            none,
+            |g| g.shade_model(GL_LINE),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "matrixMode bad",
+            none,
+            |g| g.matrix_mode(GL_COLOR),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "hint bad target",
+            none,
+            |g| g.hint(GL_FASTEST, GL_NICEST),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "hint bad mode",
+            none,
+            |g| g.hint(GL_FOG_HINT, GL_FOG),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "getString bad",
+            none,
+            |g| {
+                g.get_string(GL_RENDER);
+            },
+            GL_INVALID_ENUM,
+        ),
+        (
+            "pixelStore bad pname",
+            none,
+            |g| g.pixel_storei(GL_PACK_SWAP_BYTES + 100, 1),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "pixelStore alignment 3",
+            none,
+            |g| g.pixel_storei(GL_PACK_ALIGNMENT, 3),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "pixelStore negative row length",
+            none,
+            |g| g.pixel_storei(GL_UNPACK_ROW_LENGTH, -1),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "pixelStoref alignment 0",
+            none,
+            |g| g.pixel_storef(GL_UNPACK_ALIGNMENT, 0.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "scissor negative",
+            none,
+            |g| g.scissor(0, 0, -1, 4),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "viewport negative",
+            none,
+            |g| g.viewport(0, 0, 4, -1),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "clear bad bits",
+            none,
+            |g| g.clear(GL_COLOR_BUFFER_BIT | 0x1),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "frustum near 0",
+            none,
+            |g| g.frustum(-1.0, 1.0, -1.0, 1.0, 0.0, 10.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "frustum far negative",
+            none,
+            |g| g.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, -1.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "frustum left == right",
+            none,
+            |g| g.frustum(1.0, 1.0, -1.0, 1.0, 1.0, 10.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "frustum near == far",
+            none,
+            |g| g.frustum(-1.0, 1.0, -1.0, 1.0, 2.0, 2.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "ortho bottom == top",
+            none,
+            |g| g.ortho(-1.0, 1.0, 2.0, 2.0, -1.0, 1.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "ortho near == far",
+            none,
+            |g| g.ortho(-1.0, 1.0, -1.0, 1.0, 1.0, 1.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "clipPlane bad",
+            none,
+            |g| g.clip_plane(GL_CLIP_PLANE0 + 6, &[1.0; 4]),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "getClipPlane bad",
+            none,
+            |g| g.get_clip_plane(GL_LIGHT0, &mut [0.0; 4]),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "popMatrix at depth 1",
+            none,
+            |g| g.pop_matrix(),
+            GL_STACK_UNDERFLOW,
+        ),
+        (
+            "pushMatrix projection overflow",
+            |g| {
+                g.matrix_mode(GL_PROJECTION);
+                let mut depth = [0i32];
+                g.get_integerv(GL_MAX_PROJECTION_STACK_DEPTH, &mut depth);
+                for _ in 1..depth[0] {
+                    g.push_matrix();
+                }
+            },
+            |g| g.push_matrix(),
+            GL_STACK_OVERFLOW,
+        ),
+        (
+            "pushMatrix modelview overflow",
+            |g| {
+                for _ in 1..32 {
+                    g.push_matrix();
+                }
+            },
+            |g| g.push_matrix(),
+            GL_STACK_OVERFLOW,
+        ),
+        (
+            "begin bad mode",
+            none,
+            |g| g.begin(GL_POLYGON + 1),
+            GL_INVALID_ENUM,
+        ),
+        ("end without begin", none, |g| g.end(), GL_INVALID_OPERATION),
+        (
+            "readPixels bad format",
+            none,
+            |g| g.read_pixels(0, 0, 1, 1, GL_RGBA8, GL_UNSIGNED_BYTE, &mut [0; 16]),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "readPixels bad type",
+            none,
+            |g| g.read_pixels(0, 0, 1, 1, GL_RGBA, GL_RGBA, &mut [0; 16]),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "readPixels negative width",
+            none,
+            |g| g.read_pixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut [0; 16]),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "readPixels short slice",
+            none,
+            |g| g.read_pixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, &mut [0; 15]),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "getIntegerv bad",
+            none,
+            |g| g.get_integerv(GL_RGBA, &mut [0; 16]),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "getFloatv short slice",
+            none,
+            |g| g.get_floatv(GL_MODELVIEW_MATRIX, &mut [0.0; 4]),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "unimplemented entry point",
+            none,
+            |g| g.line_stipple(2, 0xF0F0),
+            GL_INVALID_OPERATION,
+        ),
+    ]
+}
+
+#[test]
+fn every_error_is_recorded_and_changes_nothing() {
+    for (name, setup, call, expected) in cases() {
+        let mut gl = Context::new(8, 8);
+        setup(&mut gl);
+        assert_eq!(
+            gl.get_error(),
+            GL_NO_ERROR,
+            "{name}: set-up raised an error"
+        );
+        let before = state_fingerprint(&mut gl);
+        call(&mut gl);
+        assert_eq!(gl.get_error(), expected, "{name}");
+        assert_eq!(
+            gl.get_error(),
+            GL_NO_ERROR,
+            "{name}: error flag not cleared by glGetError"
+        );
+        let after = state_fingerprint(&mut gl);
+        assert_eq!(before, after, "{name}: state changed by an erroneous call");
+    }
+}
+
+#[test]
+fn calls_inside_begin_end_are_rejected_without_effect() {
+    let inside: Vec<(&str, Call)> = vec![
+        ("enable", |g| g.enable(GL_DEPTH_TEST)),
+        ("depthFunc", |g| g.depth_func(GL_ALWAYS)),
+        ("matrixMode", |g| g.matrix_mode(GL_PROJECTION)),
+        ("loadIdentity", |g| g.translatef(1.0, 2.0, 3.0)),
+        ("viewport", |g| g.viewport(1, 1, 2, 2)),
+        ("clear", |g| g.clear(GL_COLOR_BUFFER_BIT)),
+        ("begin", |g| g.begin(GL_POINTS)),
+        ("getIntegerv", |g| g.get_integerv(GL_VIEWPORT, &mut [0; 4])),
+        ("rect", |g| g.rectf(0.0, 0.0, 1.0, 1.0)),
+        ("unimplemented", |g| g.blend_func(GL_ONE, GL_ONE)),
+    ];
+    for (name, call) in inside {
+        let mut gl = Context::new(8, 8);
+        let before = state_fingerprint(&mut gl);
+        gl.begin(GL_TRIANGLES);
+        call(&mut gl);
+        // glGetError itself is an error inside glBegin/glEnd and returns 0.
+        assert_eq!(gl.get_error(), 0, "{name}");
+        gl.end();
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION, "{name}");
+        assert_eq!(state_fingerprint(&mut gl), before, "{name}: state changed");
+    }
+}
+
+#[test]
+fn vertex_calls_are_legal_inside_begin_end() {
+    let mut gl = Context::new(8, 8);
+    gl.begin(GL_TRIANGLES);
+    gl.color_4ub(1, 2, 3, 4);
+    gl.normal_3f(0.0, 1.0, 0.0);
+    gl.tex_coord_2f(0.5, 0.5);
+    gl.vertex_2f(0.0, 0.0);
+    gl.end();
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn first_error_sticks_until_read() {
+    let mut gl = Context::new(8, 8);
+    gl.enable(0xFFFF); // INVALID_ENUM
+    gl.viewport(0, 0, -1, -1); // INVALID_VALUE, dropped
+    gl.pop_matrix(); // STACK_UNDERFLOW, dropped
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
