@@ -34,6 +34,7 @@ pub mod state;
 pub mod vertex;
 
 pub use api::enums;
-pub use api::{ClientPtr, Gl};
+pub use api::types::*;
+pub use api::Gl;
 pub use framebuffer::{Framebuffer, FramebufferConfig};
 pub use state::{Context, ContextConfig};

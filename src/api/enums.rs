@@ -1,7 +1,7 @@
 //! GL enum constants generated from the Khronos registry (see `build.rs`).
 #![allow(missing_docs)]
 
-use super::types::GLenum;
+pub use super::types::*;
 
 include!(concat!(env!("OUT_DIR"), "/enums.rs"));
 

@@ -64,7 +64,9 @@ impl StateValue {
             StateValue::Floats(v) => v.iter().map(|&f| round_to_i32(f)).collect(),
             StateValue::Normalized(v) => v
                 .iter()
-                .map(|&f| round_to_i32((4294967295.0 * f.clamp(-1.0, 1.0) - 1.0) / 2.0))
+                // Table 4.9 maps [-1, 1] onto the integer range; tilegl uses f * (2^31 - 1)
+                // truncated, as Mesa does, so queries agree exactly with the reference.
+                .map(|&f| (f.clamp(-1.0, 1.0) * 2147483647.0) as i32)
                 .collect(),
         }
     }

@@ -1,0 +1,483 @@
+//! Rasterization checked against values derived independently in the test: coverage from
+//! point-in-triangle tests on pixel centres, interpolation from the specification's equations,
+//! and invariants (shared edges covered once, thread count and fast paths change nothing).
+
+mod common;
+
+use common::{pixel, read_rgba, window_ortho, Rng};
+use tilegl::enums::*;
+use tilegl::{Context, ContextConfig, Gl};
+
+/// Twice the signed area of (a, b, p).
+fn orient(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+}
+
+#[test]
+fn coverage_matches_point_in_triangle_away_from_edges() {
+    let mut rng = Rng(0x1234_5678);
+    for _ in 0..60 {
+        let mut gl = Context::new(64, 64);
+        window_ortho(&mut gl);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        let v: Vec<[f64; 2]> = (0..3)
+            .map(|_| [rng.range(-8.0, 72.0) as f64, rng.range(-8.0, 72.0) as f64])
+            .collect();
+        gl.begin(GL_TRIANGLES);
+        gl.color_3f(1.0, 1.0, 1.0);
+        for p in &v {
+            gl.vertex_2f(p[0] as f32, p[1] as f32);
+        }
+        gl.end();
+        let img = read_rgba(&mut gl);
+        let area = orient(v[0], v[1], v[2]);
+        for y in 0..64 {
+            for x in 0..64 {
+                let c = [x as f64 + 0.5, y as f64 + 0.5];
+                // Normalised edge distances (in pixels); skip centres within 1/64 pixel of an
+                // edge, where vertex snapping may legitimately decide either way.
+                let d: Vec<f64> = (0..3)
+                    .map(|i| {
+                        let (a, b) = (v[i], v[(i + 1) % 3]);
+                        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+                        orient(a, b, c) * area.signum() / len.max(1e-9)
+                    })
+                    .collect();
+                let covered = img[(y * 64 + x) as usize][0] == 255;
+                if d.iter().all(|&e| e > 1.0 / 64.0) {
+                    assert!(covered, "pixel ({x},{y}) inside {v:?} not covered");
+                } else if d.iter().any(|&e| e < -1.0 / 64.0) {
+                    assert!(!covered, "pixel ({x},{y}) outside {v:?} covered");
+                }
+            }
+        }
+    }
+}
+
+/// A jittered grid of triangles: lower triangles write only red, upper only green. Lower
+/// triangles are adjacent only to upper ones, so a pixel with both channels was covered twice
+/// and a black pixel inside the grid was missed: the fill rule must leave neither. Vertices sit
+/// on pixel centres (whole-pixel jitter), so many edges pass exactly through pixel centres,
+/// where the tie-breaking rule decides.
+#[test]
+fn shared_edges_are_covered_exactly_once() {
+    let mut rng = Rng(99);
+    let n = 9;
+    let cell = 8.0f32;
+    let mut grid = vec![[0f32; 2]; n * n];
+    for j in 0..n {
+        for i in 0..n {
+            let mut jitter = |k: usize| {
+                if k == 0 || k == n - 1 {
+                    0.0
+                } else {
+                    (rng.next_u64() % 5) as f32 - 2.0
+                }
+            };
+            let (jx, jy) = (jitter(i), jitter(j));
+            // Border vertices at the framebuffer edge, inner ones on pixel centres.
+            let at = |k: usize, d: f32| {
+                if k == 0 || k == n - 1 {
+                    k as f32 * cell
+                } else {
+                    k as f32 * cell + 0.5 + d
+                }
+            };
+            grid[j * n + i] = [at(i, jx), at(j, jy)];
+        }
+    }
+    let mut gl = Context::new(64, 64);
+    window_ortho(&mut gl);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.color_3f(1.0, 1.0, 1.0);
+    for (mask, upper) in [([1, 0, 0], false), ([0, 1, 0], true)] {
+        gl.color_mask(mask[0], mask[1], mask[2], 1);
+        gl.begin(GL_TRIANGLES);
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                let (a, b, c, d) = (
+                    grid[j * n + i],
+                    grid[j * n + i + 1],
+                    grid[(j + 1) * n + i + 1],
+                    grid[(j + 1) * n + i],
+                );
+                let tri = if upper { [a, c, d] } else { [a, b, c] };
+                for p in tri {
+                    gl.vertex_2f(p[0], p[1]);
+                }
+            }
+        }
+        gl.end();
+    }
+    let img = read_rgba(&mut gl);
+    for (i, p) in img.iter().enumerate() {
+        assert!(!(p[0] == 255 && p[1] == 255), "pixel {} covered twice", i);
+        assert!(p[0] == 255 || p[1] == 255, "pixel {} not covered", i);
+    }
+}
+
+/// Colour on a quad seen in perspective must be the perspective-correct interpolation: the
+/// expected value is computed by intersecting each pixel's eye ray with the quad's plane.
+#[test]
+fn interpolation_is_perspective_correct() {
+    let mut gl = Context::new(64, 64);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 100.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    // A floor-like quad from z = -1.5 (near, red = 0) to z = -20 (far, red = 1).
+    let (z_near, z_far) = (-1.5f64, -20.0f64);
+    gl.begin(GL_QUADS);
+    gl.color_3f(0.0, 0.0, 1.0);
+    gl.vertex_3f(-4.0, -1.0, z_near as f32);
+    gl.vertex_3f(4.0, -1.0, z_near as f32);
+    gl.color_3f(1.0, 0.0, 1.0);
+    gl.vertex_3f(4.0, -1.0, z_far as f32);
+    gl.vertex_3f(-4.0, -1.0, z_far as f32);
+    gl.end();
+    let mut checked = 0;
+    for y in 0..64 {
+        let yc = y as f64 + 0.5;
+        let ndc_y = yc / 32.0 - 1.0; // eye ray direction (ndc_y, -1) scaled by near = 1
+        if ndc_y >= -0.06 {
+            continue; // above the horizon of the quad or too close to it
+        }
+        // Ray (x*t, ndc_y*t, -t) meets the plane y = -1 at t = -1/ndc_y, z = 1/ndc_y.
+        let z = 1.0 / ndc_y;
+        if z > z_near - 0.05 || z < z_far + 0.05 {
+            continue;
+        }
+        let expected = (z - z_near) / (z_far - z_near);
+        let p = pixel(&mut gl, 32, y);
+        let got = p[0] as f64 / 255.0;
+        assert!(
+            (got - expected).abs() <= 1.5 / 255.0,
+            "row {y}: red {got}, expected {expected}"
+        );
+        checked += 1;
+    }
+    assert!(checked > 10, "too few rows checked ({checked})");
+}
+
+/// Flat shading takes the colour of the provoking vertex of each primitive (table 2.9).
+#[test]
+fn flat_shading_uses_the_provoking_vertex() {
+    let colors = [
+        [255u8, 0, 0],
+        [0, 255, 0],
+        [0, 0, 255],
+        [255, 255, 0],
+        [0, 255, 255],
+        [255, 0, 255],
+    ];
+    // (mode, vertex count, index of the provoking vertex of the first primitive)
+    let cases = [
+        (GL_TRIANGLES, 3, 2),
+        (GL_TRIANGLE_STRIP, 3, 2),
+        (GL_TRIANGLE_FAN, 3, 2),
+        (GL_QUADS, 4, 3),
+        (GL_QUAD_STRIP, 4, 3),
+        (GL_POLYGON, 4, 0),
+    ];
+    for (mode, count, provoking) in cases {
+        let mut gl = Context::new(32, 32);
+        window_ortho(&mut gl);
+        gl.shade_model(GL_FLAT);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        // A square (quad strip order differs: 0,1 bottom, 2,3 top).
+        let pts: [[f32; 2]; 4] = if mode == GL_QUAD_STRIP {
+            [[4.0, 4.0], [28.0, 4.0], [4.0, 28.0], [28.0, 28.0]]
+        } else {
+            [[4.0, 4.0], [28.0, 4.0], [28.0, 28.0], [4.0, 28.0]]
+        };
+        gl.begin(mode);
+        for i in 0..count {
+            let c = colors[i];
+            gl.color_3ub(c[0], c[1], c[2]);
+            gl.vertex_2f(pts[i][0], pts[i][1]);
+        }
+        gl.end();
+        let c = colors[provoking];
+        let p = pixel(&mut gl, 20, 10);
+        assert_eq!(p, [c[0], c[1], c[2], 255], "mode {mode:#x}");
+    }
+}
+
+/// Every depth function against a reference plane at depth 0.5, for a plane at 0.25 and 0.75.
+#[test]
+fn depth_functions_follow_the_comparison() {
+    let funcs = [
+        (GL_NEVER, [false, false, false]),
+        (GL_LESS, [true, false, false]),
+        (GL_EQUAL, [false, true, false]),
+        (GL_LEQUAL, [true, true, false]),
+        (GL_GREATER, [false, false, true]),
+        (GL_NOTEQUAL, [true, false, true]),
+        (GL_GEQUAL, [false, true, true]),
+        (GL_ALWAYS, [true, true, true]),
+    ];
+    for (func, expect) in funcs {
+        for (k, z) in [-0.5f32, 0.0, 0.5].into_iter().enumerate() {
+            let mut gl = Context::new(16, 16);
+            gl.enable(GL_DEPTH_TEST);
+            gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            gl.color_3f(0.0, 0.0, 1.0);
+            gl.rectf(-1.0, -1.0, 1.0, 1.0); // z = 0 -> window depth 0.5
+            gl.depth_func(func);
+            gl.color_3f(1.0, 0.0, 0.0);
+            gl.begin(GL_QUADS);
+            for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                gl.vertex_3f(x, y, z);
+            }
+            gl.end();
+            let p = pixel(&mut gl, 8, 8);
+            let red = p[0] == 255;
+            assert_eq!(red, expect[k], "func {func:#x}, z {z}");
+        }
+    }
+}
+
+/// Attributes at a user-clip-plane boundary: with an orthographic projection, colour is linear
+/// in window x, so every pixel equals the analytic value after clipping.
+#[test]
+fn clipped_attributes_are_interpolated_exactly() {
+    let mut gl = Context::new(64, 8);
+    window_ortho(&mut gl);
+    gl.clip_plane(GL_CLIP_PLANE0, &[-1.0, 0.0, 0.0, 40.0]); // keep x <= 40
+    gl.enable(GL_CLIP_PLANE0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.begin(GL_QUADS);
+    gl.color_3f(0.0, 0.0, 0.0);
+    gl.vertex_2f(0.0, 0.0);
+    gl.color_3f(1.0, 0.0, 0.0);
+    gl.vertex_2f(64.0, 0.0);
+    gl.vertex_2f(64.0, 8.0);
+    gl.color_3f(0.0, 0.0, 0.0);
+    gl.vertex_2f(0.0, 8.0);
+    gl.end();
+    for x in 0..64 {
+        let p = pixel(&mut gl, x, 4);
+        if x < 40 {
+            let expected = (x as f64 + 0.5) / 64.0 * 255.0;
+            assert!(
+                (p[0] as f64 - expected).abs() <= 1.0,
+                "x {x}: {} vs {expected}",
+                p[0]
+            );
+        } else {
+            assert_eq!(p, [0, 0, 0, 0], "x {x} should be clipped");
+        }
+    }
+}
+
+fn busy_scene(gl: &mut Context) {
+    let mut rng = Rng(7);
+    gl.enable(GL_DEPTH_TEST);
+    gl.clear_color(0.2, 0.1, 0.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.begin(GL_TRIANGLES);
+    for _ in 0..600 {
+        let (cx, cy, cz) = (
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+        for _ in 0..3 {
+            gl.color_3f(
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
+            gl.vertex_3f(
+                cx + rng.range(-1.0, 1.0),
+                cy + rng.range(-1.0, 1.0),
+                cz + rng.range(-1.0, 1.0),
+            );
+        }
+    }
+    gl.end();
+    gl.begin(GL_LINES);
+    for _ in 0..100 {
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+    gl.begin(GL_POINTS);
+    for _ in 0..100 {
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+}
+
+#[test]
+fn output_is_identical_for_1_2_and_8_threads() {
+    let render = |threads| {
+        let mut gl = Context::with_config(ContextConfig {
+            width: 200,
+            height: 150,
+            threads,
+            ..ContextConfig::default()
+        });
+        busy_scene(&mut gl);
+        let mut depth = vec![0u8; 200 * 150 * 4];
+        gl.read_pixels(
+            0,
+            0,
+            200,
+            150,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT,
+            &mut depth,
+        );
+        (read_rgba(&mut gl), depth)
+    };
+    let one = render(1);
+    assert_eq!(one, render(2));
+    assert_eq!(one, render(8));
+    assert!(one.0.iter().any(|p| *p != one.0[0]), "scene drew nothing");
+}
+
+/// The specialised span functions and the general path give identical pixels.
+#[test]
+fn fast_paths_match_the_general_path() {
+    let keys: [(GLenum, u8, [u8; 4]); 5] = [
+        (GL_LESS, 1, [1, 1, 1, 1]),
+        (GL_LEQUAL, 1, [1, 1, 1, 1]),
+        (GL_GREATER, 1, [1, 0, 1, 1]),
+        (GL_LESS, 0, [1, 1, 0, 1]),
+        (GL_ALWAYS, 1, [1, 1, 1, 1]),
+    ];
+    for (func, mask, cmask) in keys {
+        for depth_test in [true, false] {
+            let render = |general| {
+                let mut gl = Context::new(96, 96);
+                gl.set_force_general_path(general);
+                busy_scene(&mut gl);
+                if !depth_test {
+                    gl.disable(GL_DEPTH_TEST);
+                }
+                gl.depth_func(func);
+                gl.depth_mask(mask);
+                gl.color_mask(cmask[0], cmask[1], cmask[2], cmask[3]);
+                busy_scene_again(&mut gl);
+                read_rgba(&mut gl)
+            };
+            assert_eq!(
+                render(true),
+                render(false),
+                "func {func:#x} mask {mask} cmask {cmask:?}"
+            );
+        }
+    }
+}
+
+fn busy_scene_again(gl: &mut Context) {
+    let mut rng = Rng(11);
+    gl.begin(GL_TRIANGLE_STRIP);
+    for _ in 0..200 {
+        gl.color_3f(
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+        );
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+}
+
+#[test]
+fn scissor_and_color_mask_limit_writes() {
+    let mut gl = Context::new(32, 32);
+    gl.clear_color(0.0, 0.0, 1.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(8, 8, 8, 8);
+    gl.color_mask(1, 0, 1, 1);
+    gl.color_3f(1.0, 1.0, 0.0);
+    gl.rectf(-1.0, -1.0, 1.0, 1.0);
+    assert_eq!(pixel(&mut gl, 10, 10), [255, 0, 0, 255]);
+    assert_eq!(pixel(&mut gl, 20, 10), [0, 0, 255, 255]);
+    assert_eq!(pixel(&mut gl, 7, 10), [0, 0, 255, 255]);
+    // Clear obeys the scissor and the colour mask too.
+    gl.clear_color(0.0, 1.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    assert_eq!(pixel(&mut gl, 10, 10), [0, 0, 0, 0]);
+    assert_eq!(pixel(&mut gl, 20, 20), [0, 0, 255, 255]);
+}
+
+#[test]
+fn culling_and_front_face() {
+    // (cull face, front face, clockwise?, drawn?)
+    let cases = [
+        (GL_BACK, GL_CCW, false, true),
+        (GL_BACK, GL_CCW, true, false),
+        (GL_FRONT, GL_CCW, false, false),
+        (GL_FRONT, GL_CW, false, true),
+        (GL_FRONT_AND_BACK, GL_CCW, false, false),
+        (GL_BACK, GL_CW, false, false),
+    ];
+    for (cull, front, cw, drawn) in cases {
+        let mut gl = Context::new(16, 16);
+        gl.enable(GL_CULL_FACE);
+        gl.cull_face(cull);
+        gl.front_face(front);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        gl.color_3f(1.0, 1.0, 1.0);
+        gl.begin(GL_TRIANGLES);
+        let mut v = vec![[-1.0f32, -1.0], [1.0, -1.0], [0.0, 1.0]];
+        if cw {
+            v.swap(1, 2);
+        }
+        for p in v {
+            gl.vertex_2f(p[0], p[1]);
+        }
+        gl.end();
+        assert_eq!(
+            pixel(&mut gl, 8, 6)[0] == 255,
+            drawn,
+            "cull {cull:#x} front {front:#x} cw {cw}"
+        );
+    }
+}
+
+#[test]
+fn get_converts_types_per_section_6_1_2() {
+    let mut gl = Context::new(16, 16);
+    gl.clear_color(1.0, 0.0, 0.5, -1.0);
+    let mut i = [0i32; 4];
+    gl.get_integerv(GL_COLOR_CLEAR_VALUE, &mut i);
+    // Colours (clamped by glClearColor) map [-1, 1] linearly onto the integer range:
+    // c * (2^31 - 1), truncated (table 4.9's mapping as Mesa applies it).
+    assert_eq!(i, [i32::MAX, 0, 1073741823, 0]);
+    let mut b = [9u8; 4];
+    gl.get_booleanv(GL_COLOR_CLEAR_VALUE, &mut b);
+    assert_eq!(b, [1, 0, 1, 0]);
+    gl.viewport(1, 2, 30, 40);
+    let mut f = [0f32; 4];
+    gl.get_floatv(GL_VIEWPORT, &mut f);
+    assert_eq!(f, [1.0, 2.0, 30.0, 40.0]);
+    gl.depth_func(GL_GEQUAL);
+    let mut e = [0i32];
+    gl.get_integerv(GL_DEPTH_FUNC, &mut e);
+    assert_eq!(e[0] as u32, GL_GEQUAL);
+    let mut m = [0f64; 16];
+    gl.translated(1.0, 2.0, 3.0);
+    gl.get_doublev(GL_MODELVIEW_MATRIX, &mut m);
+    assert_eq!(&m[12..15], &[1.0, 2.0, 3.0]);
+    gl.get_doublev(GL_TRANSPOSE_MODELVIEW_MATRIX, &mut m);
+    assert_eq!([m[3], m[7], m[11]], [1.0, 2.0, 3.0]);
+}
