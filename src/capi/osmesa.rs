@@ -8,7 +8,6 @@ use std::cell::Cell;
 use std::ffi::{c_char, c_void, CStr};
 
 use crate::api::enums::*;
-use crate::api::*;
 use crate::framebuffer::FramebufferConfig;
 use crate::state::{Context, ContextConfig};
 

@@ -2,7 +2,6 @@
 
 use crate::api::convert::{self, ClearMask, PixelFormat, PixelType};
 use crate::api::enums::*;
-use crate::api::*;
 use crate::fragment::span::{color_to_u8, depth_to_fixed};
 use crate::raster::scene::{ClearCommand, Command};
 use crate::raster::setup::Rect;

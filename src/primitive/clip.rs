@@ -88,9 +88,12 @@ pub fn clip_polygon(
     if poly.iter().any(|v| !v.is_finite()) {
         return false;
     }
-    let codes: Vec<u32> = poly.iter().map(|v| outcode(v, user)).collect();
-    let all_or = codes.iter().fold(0, |a, c| a | c);
-    let all_and = codes.iter().fold(!0, |a, c| a & c);
+    let (mut all_or, mut all_and) = (0u32, !0u32);
+    for v in poly.iter() {
+        let c = outcode(v, user);
+        all_or |= c;
+        all_and &= c;
+    }
     if all_and != 0 {
         return false;
     }

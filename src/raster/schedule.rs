@@ -72,10 +72,10 @@ fn clear_tile(c: &ClearCommand, tile: &mut Tile) {
         let row = tile.index(x0, y);
         let n = (x1 - x0) as usize;
         if let Some((rgba, mask)) = c.color {
-            for px in &mut tile.color[row..row + n] {
-                if mask == [true; 4] {
-                    *px = rgba;
-                } else {
+            if mask == [true; 4] {
+                tile.color[row..row + n].fill(rgba);
+            } else {
+                for px in &mut tile.color[row..row + n] {
                     for ch in 0..4 {
                         if mask[ch] {
                             px[ch] = rgba[ch];

@@ -95,10 +95,10 @@ pub fn bin_triangle(
     let z = Plane::through(p, v.map(|w| w.z), inv_det);
     let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
     let n = ds.attr_count.min(MAX_ATTRS);
-    let mut planes = [Plane::default(); MAX_ATTRS];
     let perspective = !ds.flat;
-    for (i, plane) in planes.iter_mut().enumerate().take(n) {
-        *plane = if perspective {
+    let offset = scene.planes.len() as u32;
+    scene.planes.extend((0..n).map(|i| {
+        if perspective {
             Plane::through(
                 p,
                 [0, 1, 2].map(|k| attrs[k][i] as f64 * v[k].inv_w),
@@ -107,9 +107,8 @@ pub fn bin_triangle(
         } else {
             // Flat shading: every vertex already carries the provoking vertex's values.
             Plane::constant(attrs[0][i] as f64)
-        };
-    }
-    let offset = scene.add_planes(&planes[..n]);
+        }
+    }));
     scene.bin(
         Command::Triangle(TriangleCommand {
             state,

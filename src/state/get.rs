@@ -4,7 +4,6 @@ use super::tables::limits;
 use super::Context;
 use crate::api::convert::{self, PixelStoreParam, Query};
 use crate::api::enums::*;
-use crate::api::*;
 use glam::Mat4;
 
 /// A state value in its natural type, before conversion to the requested one.

@@ -8,7 +8,6 @@ use super::tables::{limits, Viewport};
 use super::Context;
 use crate::api::convert::{self, MatrixMode};
 use crate::api::enums::*;
-use crate::api::*;
 
 /// Inverse of `m`, or the identity when `m` is singular or not finite (Mesa does the same;
 /// the specification leaves it undefined).

@@ -57,6 +57,8 @@ pub struct Context {
     pub(crate) immediate: Option<ImmediateBatch>,
     /// An emptied vertex buffer kept for the next `glBegin`.
     pub(crate) spare_vertices: Vec<crate::vertex::immediate::ImmVertex>,
+    /// Clip-space vertices of the current draw, kept to reuse the allocation.
+    pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
     pub(crate) framebuffer: Framebuffer,
@@ -120,6 +122,7 @@ impl Context {
             unpack: PixelStore::default(),
             immediate: None,
             spare_vertices: Vec::new(),
+            clip_buffer: Vec::new(),
             active_texture: 0,
             framebuffer,
             scene,

@@ -5,7 +5,6 @@ use glam::{Vec3, Vec4};
 
 use crate::api::convert::{self, PrimitiveMode};
 use crate::api::enums::*;
-use crate::api::*;
 use crate::state::tables::limits;
 use crate::state::Context;
 

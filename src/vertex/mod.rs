@@ -6,7 +6,7 @@ pub mod transform;
 
 use crate::api::convert::PrimitiveMode;
 use crate::primitive::assemble::{assemble, Primitive};
-use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
 use crate::raster::{line, point, tri};
@@ -24,11 +24,17 @@ impl Context {
         if ds.draw_rect.is_empty() || ds.key.writes_nothing() {
             return;
         }
-        let clip: Vec<ClipVertex> = verts.iter().map(|v| transform::to_clip(&ds, v)).collect();
+        // Reuse the clip-space buffer across draws: large batches would otherwise fault in
+        // fresh pages every frame.
+        let mut clip = std::mem::take(&mut self.clip_buffer);
+        clip.clear();
+        clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v)));
         let n_attrs = ds.attr_count;
         let user = &ds.clip_planes;
-        let mut poly = Vec::with_capacity(8);
-        let mut scratch = Vec::with_capacity(8);
+        let mut poly = Vec::with_capacity(16);
+        let mut scratch = Vec::with_capacity(16);
+        let mut win = Vec::with_capacity(16);
+        let mut xy = Vec::with_capacity(16);
         for prim in assemble(mode, clip.len()) {
             if self.scene.is_full() {
                 self.flush_scene();
@@ -67,6 +73,28 @@ impl Context {
                     }
                 }
                 Primitive::Triangle { v, provoking } => {
+                    let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
+                    if tri.iter().all(|c| point_visible(c, user)) {
+                        // Entirely inside every clip plane (the common case): no copies.
+                        let w = tri.map(|c| to_window(&ds, c));
+                        let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
+                        if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
+                            continue;
+                        }
+                        let attrs = if ds.flat {
+                            [&clip[provoking].attrs[..n_attrs]; 3]
+                        } else {
+                            tri.map(|c| &c.attrs[..n_attrs])
+                        };
+                        tri::bin_triangle(
+                            &ds,
+                            state,
+                            [&w[0], &w[1], &w[2]],
+                            attrs,
+                            &mut self.scene,
+                        );
+                        continue;
+                    }
                     poly.clear();
                     poly.extend(v.iter().map(|&i| clip[i]));
                     if ds.flat {
@@ -78,8 +106,10 @@ impl Context {
                     if !clip_polygon(&mut poly, &mut scratch, user, n_attrs) {
                         continue;
                     }
-                    let win: Vec<_> = poly.iter().map(|p| to_window(&ds, p)).collect();
-                    let xy: Vec<[i64; 2]> = win.iter().map(|w| w.xy).collect();
+                    win.clear();
+                    win.extend(poly.iter().map(|p| to_window(&ds, p)));
+                    xy.clear();
+                    xy.extend(win.iter().map(|w| w.xy));
                     let area = signed_area2(&xy);
                     if area == 0 {
                         continue;
@@ -103,5 +133,6 @@ impl Context {
                 }
             }
         }
+        self.clip_buffer = clip;
     }
 }
