@@ -31,6 +31,7 @@ pub mod framebuffer;
 pub mod primitive;
 pub mod raster;
 pub mod state;
+pub mod texture;
 pub mod vertex;
 
 pub use api::enums;

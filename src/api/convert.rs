@@ -5,6 +5,10 @@
 use super::enums::*;
 use super::types::GLenum;
 
+mod texture;
+#[allow(unused_imports)]
+pub use texture::*;
+
 /// The ten primitive modes of `glBegin`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PrimitiveMode {
@@ -197,6 +201,25 @@ pub fn shade_model(e: GLenum) -> Option<ShadeModel> {
     })
 }
 
+/// Texture targets that can be enabled and bound.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TextureTarget {
+    T1D = 0,
+    T2D = 1,
+    T3D = 2,
+    CubeMap = 3,
+}
+
+pub fn texture_target(e: GLenum) -> Option<TextureTarget> {
+    Some(match e {
+        GL_TEXTURE_1D => TextureTarget::T1D,
+        GL_TEXTURE_2D => TextureTarget::T2D,
+        GL_TEXTURE_3D => TextureTarget::T3D,
+        GL_TEXTURE_CUBE_MAP => TextureTarget::CubeMap,
+        _ => return None,
+    })
+}
+
 /// Capabilities of `glEnable`/`glDisable`/`glIsEnabled` that tilegl implements.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Capability {
@@ -207,6 +230,8 @@ pub enum Capability {
     Dither,
     Normalize,
     RescaleNormal,
+    /// A texture target on the active unit.
+    Texture(TextureTarget),
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -217,6 +242,7 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_DITHER => Capability::Dither,
         GL_NORMALIZE => Capability::Normalize,
         GL_RESCALE_NORMAL => Capability::RescaleNormal,
+        e if texture_target(e).is_some() => Capability::Texture(texture_target(e)?),
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }

@@ -1,6 +1,8 @@
 //! `Context`: all GL state as plain data, the entry points that set it, and the one place that
 //! turns it into the immutable per-draw snapshot.
 
+#[macro_use]
+mod textures;
 pub mod get;
 pub mod matrices;
 pub mod snapshot;
@@ -61,6 +63,8 @@ pub struct Context {
     pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
+    /// Texture objects, bindings and per-unit enables.
+    pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
     pub(crate) scene: Scene,
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
@@ -124,6 +128,7 @@ impl Context {
             spare_vertices: Vec::new(),
             clip_buffer: Vec::new(),
             active_texture: 0,
+            textures: Default::default(),
             framebuffer,
             scene,
             draw_state: None,
@@ -280,6 +285,7 @@ impl Context {
             Capability::Dither => self.fragment_ops.dither = on,
             Capability::Normalize => self.transform.normalize = on,
             Capability::RescaleNormal => self.transform.rescale_normal = on,
+            Capability::Texture(t) => self.textures.set_enabled(self.active_texture, t, on),
         }
         self.invalidate();
     }
@@ -309,6 +315,7 @@ impl Context {
             Capability::Dither => self.fragment_ops.dither,
             Capability::Normalize => self.transform.normalize,
             Capability::RescaleNormal => self.transform.rescale_normal,
+            Capability::Texture(t) => self.textures.is_enabled(self.active_texture, t),
         }
     }
 
@@ -472,6 +479,8 @@ impl Gl for Context {
         }
         Context::get_error(self)
     }
+
+    texture_entry_points!();
 
     gl_forward_all!(
         get_string,

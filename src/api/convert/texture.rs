@@ -1,0 +1,1 @@
+//! GLenum conversions of the texturing calls (part of `convert`).
