@@ -232,6 +232,11 @@ pub enum Capability {
     RescaleNormal,
     /// A texture target on the active unit.
     Texture(TextureTarget),
+    AlphaTest,
+    StencilTest,
+    Blend,
+    ColorLogicOp,
+    IndexLogicOp,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -243,6 +248,11 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_NORMALIZE => Capability::Normalize,
         GL_RESCALE_NORMAL => Capability::RescaleNormal,
         e if texture_target(e).is_some() => Capability::Texture(texture_target(e)?),
+        GL_ALPHA_TEST => Capability::AlphaTest,
+        GL_STENCIL_TEST => Capability::StencilTest,
+        GL_BLEND => Capability::Blend,
+        GL_COLOR_LOGIC_OP => Capability::ColorLogicOp,
+        GL_INDEX_LOGIC_OP => Capability::IndexLogicOp,
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }
@@ -532,6 +542,21 @@ pub enum Query {
     MaxAttribStackDepth,
     SampleBuffers,
     Samples,
+    AlphaTestFunc,
+    AlphaTestRef,
+    StencilFunc,
+    StencilValueMask,
+    StencilRef,
+    StencilFail,
+    StencilPassDepthFail,
+    StencilPassDepthPass,
+    BlendSrcRgb,
+    BlendDstRgb,
+    BlendSrcAlpha,
+    BlendDstAlpha,
+    BlendEquationRgb,
+    BlendColor,
+    LogicOpMode,
 }
 
 /// The `glGet*` query for `pname`.
@@ -610,6 +635,22 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_MAX_ATTRIB_STACK_DEPTH => MaxAttribStackDepth,
         GL_SAMPLE_BUFFERS => SampleBuffers,
         GL_SAMPLES => Samples,
+        GL_ALPHA_TEST_FUNC => AlphaTestFunc,
+        GL_ALPHA_TEST_REF => AlphaTestRef,
+        GL_STENCIL_FUNC => StencilFunc,
+        GL_STENCIL_VALUE_MASK => StencilValueMask,
+        GL_STENCIL_REF => StencilRef,
+        GL_STENCIL_FAIL => StencilFail,
+        GL_STENCIL_PASS_DEPTH_FAIL => StencilPassDepthFail,
+        GL_STENCIL_PASS_DEPTH_PASS => StencilPassDepthPass,
+        // GL_BLEND_SRC and GL_BLEND_DST report the RGB factors.
+        GL_BLEND_SRC | GL_BLEND_SRC_RGB => BlendSrcRgb,
+        GL_BLEND_DST | GL_BLEND_DST_RGB => BlendDstRgb,
+        GL_BLEND_SRC_ALPHA => BlendSrcAlpha,
+        GL_BLEND_DST_ALPHA => BlendDstAlpha,
+        GL_BLEND_EQUATION => BlendEquationRgb,
+        GL_BLEND_COLOR => BlendColor,
+        GL_LOGIC_OP_MODE => LogicOpMode,
         _ => return None,
     })
 }
@@ -617,4 +658,224 @@ pub fn query(e: GLenum) -> Option<Query> {
 /// The GLenum of a texture unit index.
 pub fn texture_unit_enum(unit: usize) -> GLenum {
     GL_TEXTURE0 + unit as GLenum
+}
+
+/// `glStencilOp` actions (section 4.1.5), including the wrapping ones of GL 1.4.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StencilOp {
+    Keep,
+    Zero,
+    Replace,
+    Incr,
+    Decr,
+    Invert,
+    IncrWrap,
+    DecrWrap,
+}
+
+impl StencilOp {
+    pub fn to_gl(self) -> GLenum {
+        use StencilOp::*;
+        match self {
+            Keep => GL_KEEP,
+            Zero => GL_ZERO,
+            Replace => GL_REPLACE,
+            Incr => GL_INCR,
+            Decr => GL_DECR,
+            Invert => GL_INVERT,
+            IncrWrap => GL_INCR_WRAP,
+            DecrWrap => GL_DECR_WRAP,
+        }
+    }
+}
+
+pub fn stencil_op(e: GLenum) -> Option<StencilOp> {
+    use StencilOp::*;
+    Some(match e {
+        GL_KEEP => Keep,
+        GL_ZERO => Zero,
+        GL_REPLACE => Replace,
+        GL_INCR => Incr,
+        GL_DECR => Decr,
+        GL_INVERT => Invert,
+        GL_INCR_WRAP => IncrWrap,
+        GL_DECR_WRAP => DecrWrap,
+        _ => return None,
+    })
+}
+
+/// Blend factors (tables 4.1 and 4.2), including the constant-colour factors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendFactor {
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    DstColor,
+    OneMinusDstColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstAlpha,
+    OneMinusDstAlpha,
+    ConstantColor,
+    OneMinusConstantColor,
+    ConstantAlpha,
+    OneMinusConstantAlpha,
+    SrcAlphaSaturate,
+}
+
+impl BlendFactor {
+    pub fn to_gl(self) -> GLenum {
+        use BlendFactor::*;
+        match self {
+            Zero => GL_ZERO,
+            One => GL_ONE,
+            SrcColor => GL_SRC_COLOR,
+            OneMinusSrcColor => GL_ONE_MINUS_SRC_COLOR,
+            DstColor => GL_DST_COLOR,
+            OneMinusDstColor => GL_ONE_MINUS_DST_COLOR,
+            SrcAlpha => GL_SRC_ALPHA,
+            OneMinusSrcAlpha => GL_ONE_MINUS_SRC_ALPHA,
+            DstAlpha => GL_DST_ALPHA,
+            OneMinusDstAlpha => GL_ONE_MINUS_DST_ALPHA,
+            ConstantColor => GL_CONSTANT_COLOR,
+            OneMinusConstantColor => GL_ONE_MINUS_CONSTANT_COLOR,
+            ConstantAlpha => GL_CONSTANT_ALPHA,
+            OneMinusConstantAlpha => GL_ONE_MINUS_CONSTANT_ALPHA,
+            SrcAlphaSaturate => GL_SRC_ALPHA_SATURATE,
+        }
+    }
+}
+
+/// A blend factor; `source` tells which side it is for (GL 1.4+ accepts the colour factors
+/// on both sides; SRC_ALPHA_SATURATE only as a source factor).
+pub fn blend_factor(e: GLenum, source: bool) -> Option<BlendFactor> {
+    use BlendFactor::*;
+    Some(match e {
+        GL_ZERO => Zero,
+        GL_ONE => One,
+        GL_SRC_COLOR => SrcColor,
+        GL_ONE_MINUS_SRC_COLOR => OneMinusSrcColor,
+        GL_DST_COLOR => DstColor,
+        GL_ONE_MINUS_DST_COLOR => OneMinusDstColor,
+        GL_SRC_ALPHA => SrcAlpha,
+        GL_ONE_MINUS_SRC_ALPHA => OneMinusSrcAlpha,
+        GL_DST_ALPHA => DstAlpha,
+        GL_ONE_MINUS_DST_ALPHA => OneMinusDstAlpha,
+        GL_CONSTANT_COLOR => ConstantColor,
+        GL_ONE_MINUS_CONSTANT_COLOR => OneMinusConstantColor,
+        GL_CONSTANT_ALPHA => ConstantAlpha,
+        GL_ONE_MINUS_CONSTANT_ALPHA => OneMinusConstantAlpha,
+        GL_SRC_ALPHA_SATURATE if source => SrcAlphaSaturate,
+        _ => return None,
+    })
+}
+
+/// Blend equations (`glBlendEquation`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BlendEquation {
+    Add,
+    Subtract,
+    ReverseSubtract,
+    Min,
+    Max,
+}
+
+impl BlendEquation {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            BlendEquation::Add => GL_FUNC_ADD,
+            BlendEquation::Subtract => GL_FUNC_SUBTRACT,
+            BlendEquation::ReverseSubtract => GL_FUNC_REVERSE_SUBTRACT,
+            BlendEquation::Min => GL_MIN,
+            BlendEquation::Max => GL_MAX,
+        }
+    }
+}
+
+pub fn blend_equation(e: GLenum) -> Option<BlendEquation> {
+    Some(match e {
+        GL_FUNC_ADD => BlendEquation::Add,
+        GL_FUNC_SUBTRACT => BlendEquation::Subtract,
+        GL_FUNC_REVERSE_SUBTRACT => BlendEquation::ReverseSubtract,
+        GL_MIN => BlendEquation::Min,
+        GL_MAX => BlendEquation::Max,
+        _ => return None,
+    })
+}
+
+/// The sixteen logic operations (table 4.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LogicOp {
+    Clear,
+    And,
+    AndReverse,
+    Copy,
+    AndInverted,
+    Noop,
+    Xor,
+    Or,
+    Nor,
+    Equiv,
+    Invert,
+    OrReverse,
+    CopyInverted,
+    OrInverted,
+    Nand,
+    Set,
+}
+
+impl LogicOp {
+    /// Applies the operation to source `s` and destination `d`.
+    #[inline(always)]
+    pub fn apply(self, s: u8, d: u8) -> u8 {
+        use LogicOp::*;
+        match self {
+            Clear => 0,
+            And => s & d,
+            AndReverse => s & !d,
+            Copy => s,
+            AndInverted => !s & d,
+            Noop => d,
+            Xor => s ^ d,
+            Or => s | d,
+            Nor => !(s | d),
+            Equiv => !(s ^ d),
+            Invert => !d,
+            OrReverse => s | !d,
+            CopyInverted => !s,
+            OrInverted => !s | d,
+            Nand => !(s & d),
+            Set => 0xFF,
+        }
+    }
+
+    pub fn to_gl(self) -> GLenum {
+        GL_CLEAR + self as GLenum
+    }
+}
+
+pub fn logic_op(e: GLenum) -> Option<LogicOp> {
+    use LogicOp::*;
+    const OPS: [LogicOp; 16] = [
+        Clear,
+        And,
+        AndReverse,
+        Copy,
+        AndInverted,
+        Noop,
+        Xor,
+        Or,
+        Nor,
+        Equiv,
+        Invert,
+        OrReverse,
+        CopyInverted,
+        OrInverted,
+        Nand,
+        Set,
+    ];
+    // GL_CLEAR .. GL_SET are consecutive (0x1500 .. 0x150F) in table order.
+    e.checked_sub(GL_CLEAR)
+        .and_then(|i| OPS.get(i as usize).copied())
 }

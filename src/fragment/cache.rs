@@ -7,10 +7,10 @@ use crate::api::convert::CompareFunc;
 
 /// The span function for `key`; `force_general` always answers the general path.
 pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
-    if key.writes_nothing() && key.depth_func.is_none() {
+    if key.writes_nothing() {
         return span_nothing;
     }
-    if force_general {
+    if force_general || !key.is_simple() {
         return span_general;
     }
     let full = key.color_mask == [true; 4];

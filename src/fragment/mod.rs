@@ -1,6 +1,7 @@
 //! The fragment stage: per-draw specialised span functions that test and write fragments.
 //! A stage that the draw's state disables is absent from the chosen function.
 
+pub mod blend;
 pub mod cache;
 pub mod key;
 pub mod span;

@@ -2,7 +2,9 @@
 //! reads the key at run time; specialised paths are the same code monomorphised on the key,
 //! so a disabled stage is compiled out instead of skipped by a branch.
 
-use crate::api::convert::CompareFunc;
+use super::blend::blend;
+use super::key::Uniforms;
+use crate::api::convert::{CompareFunc, StencilOp};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
 use crate::state::DrawState;
@@ -56,8 +58,28 @@ pub mod depth_mode {
     pub const LEQUAL_WRITE: u8 = 3;
 }
 
+/// Applies a stencil action to `old` under the write mask (section 4.1.5; 8-bit buffer).
 #[inline(always)]
-fn shade<const DEPTH: u8, const FULL_MASK: bool>(
+pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
+    let v = match op {
+        StencilOp::Keep => return old,
+        StencilOp::Zero => 0,
+        StencilOp::Replace => u.stencil_ref,
+        StencilOp::Incr => old.saturating_add(1),
+        StencilOp::Decr => old.saturating_sub(1),
+        StencilOp::Invert => !old,
+        StencilOp::IncrWrap => old.wrapping_add(1),
+        StencilOp::DecrWrap => old.wrapping_sub(1),
+    };
+    (old & !u.stencil_write_mask) | (v & u.stencil_write_mask)
+}
+
+/// The per-fragment pipeline in the specification's order: alpha test, stencil test, depth
+/// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
+/// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
+/// by `DEPTH` and the colour mask by `FULL_MASK`.
+#[inline(always)]
+fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
     ds: &DrawState,
     tile: &mut Tile,
     y: i32,
@@ -66,6 +88,7 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool>(
     it: &Interpolants,
 ) {
     let key = &ds.key;
+    let u = &ds.uniforms;
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
@@ -82,8 +105,24 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool>(
     }
     for i in 0..n {
         let idx = row + i;
-        let depth = depth_to_fixed(z, ds.depth_max);
-        let pass = match DEPTH {
+        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+        let color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        let z_here = z;
+        // Step the interpolants now, so that every `continue` below moves to the next pixel.
+        z += dz;
+        inv_w += dinv_w;
+        for c in 0..4 {
+            attr[c] += dattr[c];
+        }
+        if !SIMPLE {
+            if let Some(f) = key.alpha_func {
+                if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
+                    continue;
+                }
+            }
+        }
+        let depth = depth_to_fixed(z_here, ds.depth_max);
+        let depth_pass = match DEPTH {
             depth_mode::NONE => true,
             depth_mode::LESS_WRITE => depth < tile.depth[idx],
             depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
@@ -93,47 +132,63 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool>(
                 Some(f) => f.test(depth, tile.depth[idx]),
             },
         };
-        if pass {
-            let write_depth = match DEPTH {
-                depth_mode::NONE => false,
-                depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
-                _ => key.depth_write,
-            };
-            if write_depth {
-                tile.depth[idx] = depth;
-            }
-            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-            let rgba = [
-                color_to_u8(attr[0] * w),
-                color_to_u8(attr[1] * w),
-                color_to_u8(attr[2] * w),
-                color_to_u8(attr[3] * w),
-            ];
-            if FULL_MASK {
-                tile.color[idx] = rgba;
-            } else {
-                let dst = &mut tile.color[idx];
-                for c in 0..4 {
-                    if key.color_mask[c] {
-                        dst[c] = rgba[c];
-                    }
-                }
+        if !SIMPLE {
+            if let Some(st) = key.stencil {
+                let old = tile.stencil[idx];
+                let mask = u.stencil_value_mask;
+                let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
+                    tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
+                    continue;
+                } else if depth_pass {
+                    st.depth_pass
+                } else {
+                    st.depth_fail
+                };
+                tile.stencil[idx] = apply_stencil_op(action, old, u);
             }
         }
-        z += dz;
-        inv_w += dinv_w;
-        for c in 0..4 {
-            attr[c] += dattr[c];
+        if !depth_pass {
+            continue;
+        }
+        let write_depth = match DEPTH {
+            depth_mode::NONE => false,
+            depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
+            _ => key.depth_write,
+        };
+        if write_depth {
+            tile.depth[idx] = depth;
+        }
+        let mut rgba = color.map(color_to_u8);
+        if !SIMPLE {
+            let dst = tile.color[idx];
+            if let Some(op) = key.logic_op {
+                for c in 0..4 {
+                    rgba[c] = op.apply(rgba[c], dst[c]);
+                }
+            } else if let Some(b) = &key.blend {
+                rgba = blend(b, rgba, dst, u.blend_color);
+            }
+        }
+        if FULL_MASK {
+            tile.color[idx] = rgba;
+        } else {
+            let dst = &mut tile.color[idx];
+            for c in 0..4 {
+                if key.color_mask[c] {
+                    dst[c] = rgba[c];
+                }
+            }
         }
     }
 }
 
 /// The general path: every decision read from the key at run time.
 pub fn span_general(ds: &DrawState, tile: &mut Tile, y: i32, x0: i32, x1: i32, it: &Interpolants) {
-    shade::<{ depth_mode::DYNAMIC }, false>(ds, tile, y, x0, x1, it)
+    shade::<{ depth_mode::DYNAMIC }, false, false>(ds, tile, y, x0, x1, it)
 }
 
-/// A specialised path: depth mode and full colour mask fixed at compile time.
+/// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
+/// mode and full colour mask fixed at compile time.
 pub fn span_specialised<const DEPTH: u8, const FULL_MASK: bool>(
     ds: &DrawState,
     tile: &mut Tile,
@@ -142,7 +197,7 @@ pub fn span_specialised<const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants,
 ) {
-    shade::<DEPTH, FULL_MASK>(ds, tile, y, x0, x1, it)
+    shade::<DEPTH, FULL_MASK, true>(ds, tile, y, x0, x1, it)
 }
 
 /// Draws nothing (a key whose fragments change no buffer).

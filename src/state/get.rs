@@ -213,6 +213,22 @@ impl Context {
             }
             Query::MaxAttribStackDepth => int1(limits::MAX_ATTRIB_STACK_DEPTH as i64),
             Query::SampleBuffers | Query::Samples => int1(0),
+            Query::AlphaTestFunc => Enum(ops.alpha_func.to_gl()),
+            // The alpha reference is a colour-like value: integer queries scale it.
+            Query::AlphaTestRef => Normalized(vec![ops.alpha_ref as f64]),
+            Query::StencilFunc => Enum(ops.stencil_func.to_gl()),
+            Query::StencilValueMask => int1(ops.stencil_value_mask as i32 as i64),
+            Query::StencilRef => int1(ops.stencil_ref as i64),
+            Query::StencilFail => Enum(ops.stencil_fail.to_gl()),
+            Query::StencilPassDepthFail => Enum(ops.stencil_depth_fail.to_gl()),
+            Query::StencilPassDepthPass => Enum(ops.stencil_depth_pass.to_gl()),
+            Query::BlendSrcRgb => Enum(ops.blend_src_rgb.to_gl()),
+            Query::BlendDstRgb => Enum(ops.blend_dst_rgb.to_gl()),
+            Query::BlendSrcAlpha => Enum(ops.blend_src_alpha.to_gl()),
+            Query::BlendDstAlpha => Enum(ops.blend_dst_alpha.to_gl()),
+            Query::BlendEquationRgb => Enum(ops.blend_equation.to_gl()),
+            Query::BlendColor => Normalized(ops.blend_color.iter().map(|&c| c as f64).collect()),
+            Query::LogicOpMode => Enum(ops.logic_op.to_gl()),
         }
     }
 

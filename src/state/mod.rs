@@ -5,6 +5,7 @@
 mod textures;
 pub mod get;
 pub mod matrices;
+pub mod per_fragment;
 pub mod snapshot;
 pub mod tables;
 
@@ -286,6 +287,11 @@ impl Context {
             Capability::Normalize => self.transform.normalize = on,
             Capability::RescaleNormal => self.transform.rescale_normal = on,
             Capability::Texture(t) => self.textures.set_enabled(self.active_texture, t, on),
+            Capability::AlphaTest => self.fragment_ops.alpha_test = on,
+            Capability::StencilTest => self.fragment_ops.stencil_test = on,
+            Capability::Blend => self.fragment_ops.blend = on,
+            Capability::ColorLogicOp => self.fragment_ops.color_logic_op = on,
+            Capability::IndexLogicOp => self.fragment_ops.index_logic_op = on,
         }
         self.invalidate();
     }
@@ -316,6 +322,11 @@ impl Context {
             Capability::Normalize => self.transform.normalize,
             Capability::RescaleNormal => self.transform.rescale_normal,
             Capability::Texture(t) => self.textures.is_enabled(self.active_texture, t),
+            Capability::AlphaTest => self.fragment_ops.alpha_test,
+            Capability::StencilTest => self.fragment_ops.stencil_test,
+            Capability::Blend => self.fragment_ops.blend,
+            Capability::ColorLogicOp => self.fragment_ops.color_logic_op,
+            Capability::IndexLogicOp => self.fragment_ops.index_logic_op,
         }
     }
 
@@ -536,6 +547,15 @@ impl Gl for Context {
         get_doublev,
         // pixels
         read_pixels,
+        // per-fragment operations
+        alpha_func,
+        stencil_func,
+        stencil_op,
+        blend_func,
+        blend_func_separate,
+        blend_color,
+        blend_equation,
+        logic_op,
         // immediate mode
         begin,
         end,

@@ -9,7 +9,7 @@ use glam::{DVec4, Mat4};
 use super::Context;
 use crate::api::convert::{Face, ShadeModel, Winding};
 use crate::fragment::cache::select_span;
-use crate::fragment::key::FragmentKey;
+use crate::fragment::key::{FragmentKey, Uniforms};
 use crate::fragment::span::SpanFn;
 use crate::raster::setup::Rect;
 
@@ -41,6 +41,7 @@ pub struct DrawState {
     pub attr_count: usize,
     pub depth_max: u32,
     pub key: FragmentKey,
+    pub uniforms: Uniforms,
     /// The fragment function chosen for `key`.
     pub span: SpanFn,
 }
@@ -83,7 +84,9 @@ impl Context {
                 y1: s.y.saturating_add(s.height),
             });
         }
-        let key = FragmentKey::from_state(ops, self.framebuffer.config.depth_bits > 0);
+        let cfg = self.framebuffer.config;
+        let key = FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0);
+        let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,
             modelview,
@@ -102,6 +105,7 @@ impl Context {
             attr_count: COLOR_ATTRS,
             depth_max: self.framebuffer.depth_max(),
             key,
+            uniforms,
             span: select_span(&key, self.force_general_path),
         });
         self.draw_state = Some(ds.clone());

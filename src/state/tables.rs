@@ -1,7 +1,10 @@
 //! GL state as plain data, grouped like the specification's state tables (OpenGL 1.5, section
 //! 6.2), with the defaults those tables give.
 
-use crate::api::convert::{CompareFunc, Face, MatrixMode, ShadeModel, Winding};
+use crate::api::convert::{
+    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, ShadeModel, StencilOp,
+    Winding,
+};
 use crate::api::enums::GL_DONT_CARE;
 use crate::api::GLenum;
 use glam::{DVec4, Mat4, Vec3, Vec4};
@@ -102,6 +105,28 @@ pub struct FragmentOpsState {
     pub color_mask: [bool; 4],
     pub dither: bool,
     pub stencil_writemask: u32,
+    pub alpha_test: bool,
+    pub alpha_func: CompareFunc,
+    /// Alpha reference, clamped to [0, 1] at `glAlphaFunc`.
+    pub alpha_ref: f32,
+    pub stencil_test: bool,
+    pub stencil_func: CompareFunc,
+    /// Stencil reference as given (clamped to the buffer's range when used and queried).
+    pub stencil_ref: i32,
+    pub stencil_value_mask: u32,
+    pub stencil_fail: StencilOp,
+    pub stencil_depth_fail: StencilOp,
+    pub stencil_depth_pass: StencilOp,
+    pub blend: bool,
+    pub blend_src_rgb: BlendFactor,
+    pub blend_dst_rgb: BlendFactor,
+    pub blend_src_alpha: BlendFactor,
+    pub blend_dst_alpha: BlendFactor,
+    pub blend_equation: BlendEquation,
+    pub blend_color: [f32; 4],
+    pub color_logic_op: bool,
+    pub index_logic_op: bool,
+    pub logic_op: LogicOp,
 }
 
 impl Default for FragmentOpsState {
@@ -115,6 +140,26 @@ impl Default for FragmentOpsState {
             color_mask: [true; 4],
             dither: true,
             stencil_writemask: !0,
+            alpha_test: false,
+            alpha_func: CompareFunc::Always,
+            alpha_ref: 0.0,
+            stencil_test: false,
+            stencil_func: CompareFunc::Always,
+            stencil_ref: 0,
+            stencil_value_mask: !0,
+            stencil_fail: StencilOp::Keep,
+            stencil_depth_fail: StencilOp::Keep,
+            stencil_depth_pass: StencilOp::Keep,
+            blend: false,
+            blend_src_rgb: BlendFactor::One,
+            blend_dst_rgb: BlendFactor::Zero,
+            blend_src_alpha: BlendFactor::One,
+            blend_dst_alpha: BlendFactor::Zero,
+            blend_equation: BlendEquation::Add,
+            blend_color: [0.0; 4],
+            color_logic_op: false,
+            index_logic_op: false,
+            logic_op: LogicOp::Copy,
         }
     }
 }
