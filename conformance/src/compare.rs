@@ -1,0 +1,360 @@
+//! Running one scene on tilegl and on Mesa, reading both back and measuring the difference.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use tilegl::enums::*;
+use tilegl::{Context, Gl};
+
+use crate::mesa::{self, MesaContext, Oracle, OracleError, OracleInfo};
+use crate::tolerance::Tolerance;
+
+/// A scene: a fixed framebuffer size and the GL calls that draw it, written against the `Gl`
+/// trait so it runs on every implementation.
+#[derive(Clone, Copy)]
+pub struct Scene {
+    /// Unique name (also the test name and the known-failures key).
+    pub name: &'static str,
+    pub width: i32,
+    pub height: i32,
+    /// The GL calls. The framebuffer starts in the default state of a new context.
+    pub draw: fn(&mut dyn Gl),
+}
+
+impl fmt::Debug for Scene {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Scene({} {}x{})", self.name, self.width, self.height)
+    }
+}
+
+/// An RGBA8 picture as `glReadPixels` returns it: rows bottom-up.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image {
+    pub width: i32,
+    pub height: i32,
+    pub pixels: Vec<u8>,
+}
+
+const IMAGE_MAGIC: &[u8; 8] = b"TGLRGBA1";
+
+impl Image {
+    /// Reads the whole `width` x `height` colour buffer with `glReadPixels(GL_RGBA,
+    /// GL_UNSIGNED_BYTE)` (pack alignment 4 is fine for RGBA8).
+    pub fn read(gl: &mut dyn Gl, width: i32, height: i32) -> Image {
+        let mut pixels = vec![0u8; width.max(0) as usize * height.max(0) as usize * 4];
+        gl.read_pixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, &mut pixels);
+        Image {
+            width,
+            height,
+            pixels,
+        }
+    }
+
+    /// The RGBA value at (x, y), y counted from the bottom.
+    pub fn pixel(&self, x: i32, y: i32) -> [u8; 4] {
+        let i = ((y * self.width + x) * 4) as usize;
+        [
+            self.pixels[i],
+            self.pixels[i + 1],
+            self.pixels[i + 2],
+            self.pixels[i + 3],
+        ]
+    }
+
+    /// Serialises to a small raw format (magic, width, height, RGBA bytes).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(16 + self.pixels.len());
+        out.extend_from_slice(IMAGE_MAGIC);
+        out.extend_from_slice(&(self.width as u32).to_le_bytes());
+        out.extend_from_slice(&(self.height as u32).to_le_bytes());
+        out.extend_from_slice(&self.pixels);
+        out
+    }
+
+    /// Parses [`Image::to_bytes`] output.
+    pub fn from_bytes(b: &[u8]) -> Option<Image> {
+        if b.len() < 16 || &b[..8] != IMAGE_MAGIC {
+            return None;
+        }
+        let width = u32::from_le_bytes(b[8..12].try_into().ok()?) as i32;
+        let height = u32::from_le_bytes(b[12..16].try_into().ok()?) as i32;
+        let pixels = b[16..].to_vec();
+        (pixels.len() == width as usize * height as usize * 4).then_some(Image {
+            width,
+            height,
+            pixels,
+        })
+    }
+
+    /// Writes a binary PPM (RGB, top-down) for looking at a failure.
+    pub fn write_ppm(&self, path: &Path) -> std::io::Result<()> {
+        let mut out = format!("P6\n{} {}\n255\n", self.width, self.height).into_bytes();
+        for y in (0..self.height).rev() {
+            for x in 0..self.width {
+                out.extend_from_slice(&self.pixel(x, y)[..3]);
+            }
+        }
+        std::fs::write(path, out)
+    }
+}
+
+/// How far two pictures differ. Channel figures are over all four channels (R, G, B, A).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Diff {
+    /// PSNR in dB over RGBA (infinite when identical).
+    pub psnr: f64,
+    /// Largest channel difference (0-255).
+    pub max: u8,
+    /// Mean absolute channel difference.
+    pub mean: f64,
+    /// Share (0-1) of pixels whose largest channel difference exceeds the threshold.
+    pub bad_share: f64,
+    /// Number of such pixels.
+    pub bad_pixels: usize,
+    /// The threshold `bad_share` was computed with.
+    pub threshold: u8,
+    /// The first pixel (x, y) over the threshold, for reports.
+    pub first_bad: Option<(i32, i32)>,
+}
+
+impl fmt::Display for Diff {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "PSNR {:.2} dB, max {}, mean {:.4}, bad(>{}) {:.3}% ({} px)",
+            self.psnr,
+            self.max,
+            self.mean,
+            self.threshold,
+            self.bad_share * 100.0,
+            self.bad_pixels
+        )?;
+        if let Some((x, y)) = self.first_bad {
+            write!(f, ", first at ({x},{y})")?;
+        }
+        Ok(())
+    }
+}
+
+/// Compares two pictures of the same size; `threshold` is the per-channel difference above
+/// which a pixel counts as bad. Pictures of different sizes compare as totally different.
+pub fn diff(a: &Image, b: &Image, threshold: u8) -> Diff {
+    if a.width != b.width || a.height != b.height || a.pixels.len() != b.pixels.len() {
+        return Diff {
+            psnr: 0.0,
+            max: 255,
+            mean: 255.0,
+            bad_share: 1.0,
+            bad_pixels: (a.width.max(b.width) * a.height.max(b.height)) as usize,
+            threshold,
+            first_bad: Some((0, 0)),
+        };
+    }
+    let mut sq = 0u64;
+    let mut sum = 0u64;
+    let mut max = 0u8;
+    let mut bad = 0usize;
+    let mut first_bad = None;
+    for (i, (pa, pb)) in a.pixels.chunks(4).zip(b.pixels.chunks(4)).enumerate() {
+        let mut pmax = 0u8;
+        for c in 0..4 {
+            let d = pa[c].abs_diff(pb[c]);
+            pmax = pmax.max(d);
+            sum += d as u64;
+            sq += d as u64 * d as u64;
+        }
+        max = max.max(pmax);
+        if pmax > threshold {
+            bad += 1;
+            if first_bad.is_none() {
+                first_bad = Some((i as i32 % a.width, i as i32 / a.width));
+            }
+        }
+    }
+    let n = a.pixels.len().max(1) as f64;
+    let mse = sq as f64 / n;
+    let psnr = if mse == 0.0 {
+        f64::INFINITY
+    } else {
+        10.0 * (255.0f64 * 255.0 / mse).log10()
+    };
+    let px = (a.pixels.len() / 4).max(1);
+    Diff {
+        psnr,
+        max,
+        mean: sum as f64 / n,
+        bad_share: bad as f64 / px as f64,
+        bad_pixels: bad,
+        threshold,
+        first_bad,
+    }
+}
+
+/// A picture plus the error state GL reported after drawing it.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    pub image: Image,
+    /// `glGetError` right after the scene (before the read-back).
+    pub error: GLenum,
+}
+
+/// Runs a scene on any `Gl` implementation with a framebuffer of the scene's size.
+pub fn run_scene(gl: &mut dyn Gl, scene: &Scene) -> Rendered {
+    (scene.draw)(gl);
+    let error = gl.get_error();
+    gl.finish();
+    let image = Image::read(gl, scene.width, scene.height);
+    Rendered { image, error }
+}
+
+/// Renders a scene on a fresh tilegl context.
+pub fn render_tilegl(scene: &Scene) -> Rendered {
+    let mut ctx = Context::new(scene.width, scene.height);
+    run_scene(&mut ctx, scene)
+}
+
+/// Renders a scene on a fresh Mesa context of this process (its driver is whatever
+/// `GALLIUM_DRIVER` selected at the first context creation).
+pub fn render_mesa(scene: &Scene) -> Result<(Rendered, OracleInfo), OracleError> {
+    let mut mesa = MesaContext::create(scene.width, scene.height)?;
+    let r = run_scene(&mut *mesa, scene);
+    Ok((r, mesa.info().clone()))
+}
+
+const CHILD_SCENE_ENV: &str = "TILEGL_CHILD_SCENE";
+const CHILD_OUT_ENV: &str = "TILEGL_CHILD_OUT";
+
+/// In a child started by [`render_scene_with_driver`], renders the requested scene with Mesa,
+/// writes it where the parent expects it and returns `true` (the caller should then return
+/// without doing anything else). Returns `false` in a normal run.
+pub fn serve_child_request(scenes: &[Scene]) -> bool {
+    if !mesa::is_oracle_child() {
+        return false;
+    }
+    let (Ok(name), Ok(out)) = (
+        std::env::var(CHILD_SCENE_ENV),
+        std::env::var(CHILD_OUT_ENV),
+    ) else {
+        return false;
+    };
+    let Some(scene) = scenes.iter().find(|s| s.name == name) else {
+        return false;
+    };
+    match render_mesa(scene) {
+        Ok((r, info)) => {
+            let bytes = r.image.to_bytes();
+            if let Err(e) = std::fs::write(&out, bytes) {
+                eprintln!("child: cannot write {out}: {e}");
+                std::process::exit(3);
+            }
+            println!("TILEGL_CHILD_RENDERER={}", info.renderer);
+        }
+        Err(e) => {
+            eprintln!("child: {e}");
+            std::process::exit(2);
+        }
+    }
+    true
+}
+
+fn temp_path(tag: &str) -> PathBuf {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static N: AtomicUsize = AtomicUsize::new(0);
+    std::env::temp_dir().join(format!(
+        "tilegl-oracle-{}-{}-{}.raw",
+        std::process::id(),
+        N.fetch_add(1, Ordering::Relaxed),
+        tag
+    ))
+}
+
+/// Renders `scene` with Mesa under another Gallium driver by re-running the current executable
+/// with `GALLIUM_DRIVER=driver`. `args` must make the child reach a call of
+/// [`serve_child_request`] with a scene list containing `scene` (for a libtest binary:
+/// `[test_name, "--exact", "--nocapture"]`). Returns the picture and the child's renderer.
+pub fn render_scene_with_driver(
+    driver: &str,
+    scene: &Scene,
+    args: &[&str],
+) -> Result<(Image, String), OracleError> {
+    let out = temp_path(scene.name);
+    let out_s = out.to_string_lossy().into_owned();
+    let output = mesa::run_self_with_driver(
+        driver,
+        args,
+        &[(CHILD_SCENE_ENV, scene.name), (CHILD_OUT_ENV, &out_s)],
+    )?;
+    let bytes = std::fs::read(&out).map_err(|e| {
+        OracleError::Subprocess(format!(
+            "no picture from the {driver} child ({e}); stdout: {}",
+            String::from_utf8_lossy(&output.stdout)
+        ))
+    })?;
+    let _ = std::fs::remove_file(&out);
+    let image = Image::from_bytes(&bytes)
+        .ok_or_else(|| OracleError::Subprocess("bad picture from child".into()))?;
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let renderer = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("TILEGL_CHILD_RENDERER="))
+        .unwrap_or("")
+        .to_string();
+    Ok((image, renderer))
+}
+
+/// The outcome of one differential case.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    pub scene: &'static str,
+    pub tilegl: Rendered,
+    pub mesa: Rendered,
+    pub mesa_info: OracleInfo,
+    pub diff: Diff,
+    pub tolerance: Tolerance,
+}
+
+impl Comparison {
+    /// Within tolerance and the same `glGetError` result on both sides.
+    pub fn passed(&self) -> bool {
+        self.tolerance.accepts(&self.diff) && self.tilegl.error == self.mesa.error
+    }
+
+    /// One line for logs.
+    pub fn summary(&self) -> String {
+        format!(
+            "{}: {} [{}]; glGetError tilegl 0x{:04x} mesa 0x{:04x}; tolerance {}",
+            self.scene,
+            self.diff,
+            self.mesa_info,
+            self.tilegl.error,
+            self.mesa.error,
+            self.tolerance
+        )
+    }
+
+    /// Writes both pictures as PPM files into `dir` (for looking at a failure).
+    pub fn dump(&self, dir: &Path) -> std::io::Result<()> {
+        std::fs::create_dir_all(dir)?;
+        self.tilegl
+            .image
+            .write_ppm(&dir.join(format!("{}-tilegl.ppm", self.scene)))?;
+        self.mesa
+            .image
+            .write_ppm(&dir.join(format!("{}-mesa.ppm", self.scene)))
+    }
+}
+
+/// Runs `scene` on tilegl and on Mesa and compares the pictures under `tolerance`.
+pub fn compare_scene(scene: &Scene, tolerance: Tolerance) -> Result<Comparison, OracleError> {
+    let (mesa, mesa_info) = render_mesa(scene)?;
+    let tilegl = render_tilegl(scene);
+    let diff = diff(&tilegl.image, &mesa.image, tolerance.channel);
+    Ok(Comparison {
+        scene: scene.name,
+        tilegl,
+        mesa,
+        mesa_info,
+        diff,
+        tolerance,
+    })
+}
