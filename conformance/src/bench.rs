@@ -208,10 +208,7 @@ fn decode_result(b: &[u8]) -> Option<BenchResult> {
     Some(BenchResult {
         name: lines[0].clone(),
         error: lines[1].parse().ok()?,
-        frame_ms: lines[2]
-            .split(',')
-            .filter_map(|s| s.parse().ok())
-            .collect(),
+        frame_ms: lines[2].split(',').filter_map(|s| s.parse().ok()).collect(),
         image: Image::from_bytes(rest)?,
     })
 }
@@ -222,10 +219,8 @@ pub fn run_mesa_subprocess(
     cfg: &BenchConfig,
     extra_args: &[&str],
 ) -> Result<BenchResult, String> {
-    let out = std::env::temp_dir().join(format!(
-        "tilegl-bench-{}-{driver}.raw",
-        std::process::id()
-    ));
+    let out =
+        std::env::temp_dir().join(format!("tilegl-bench-{}-{driver}.raw", std::process::id()));
     let out_s = out.to_string_lossy().into_owned();
     let frames = cfg.frames.to_string();
     let tris = cfg.triangles.to_string();

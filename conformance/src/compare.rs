@@ -231,10 +231,7 @@ pub fn serve_child_request(scenes: &[Scene]) -> bool {
     if !mesa::is_oracle_child() {
         return false;
     }
-    let (Ok(name), Ok(out)) = (
-        std::env::var(CHILD_SCENE_ENV),
-        std::env::var(CHILD_OUT_ENV),
-    ) else {
+    let (Ok(name), Ok(out)) = (std::env::var(CHILD_SCENE_ENV), std::env::var(CHILD_OUT_ENV)) else {
         return false;
     };
     let Some(scene) = scenes.iter().find(|s| s.name == name) else {

@@ -193,7 +193,10 @@ fn ask(gl: &mut dyn Gl, q: Q) -> (String, Answer) {
         Q::ClipPlane(p) => {
             let mut v = [0.0; 4];
             gl.get_clip_plane(p, &mut v);
-            (format!("get_clip_plane(0x{p:04x})"), Answer::Doubles(v.to_vec()))
+            (
+                format!("get_clip_plane(0x{p:04x})"),
+                Answer::Doubles(v.to_vec()),
+            )
         }
     }
 }

@@ -66,7 +66,9 @@ fn main() {
         if let Some(dir) = &dump {
             let _ = std::fs::create_dir_all(dir);
             let n = scene.name;
-            let _ = m.image.write_ppm(&dir.join(format!("{n}-{}.ppm", info.driver())));
+            let _ = m
+                .image
+                .write_ppm(&dir.join(format!("{n}-{}.ppm", info.driver())));
             let _ = o.write_ppm(&dir.join(format!("{n}-{other_driver}.ppm")));
             let _ = t.image.write_ppm(&dir.join(format!("{n}-tilegl.ppm")));
         }
