@@ -1,1 +1,334 @@
-fn main() {}
+//! The `tilegl` command line.
+//!
+//! With no subcommand (`cargo run --release`) it renders the built-in scenes into `out/` and
+//! prints, for each, the PNG's path and how long it took. `tilegl gallery DIR` does the same
+//! into `DIR`. `replay`, `dump`, `conformance` and `bench` are the interfaces promised in
+//! DESIGN.md; those not available yet say so and exit with a non-zero status.
+
+mod scenes;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use clap::{Parser, Subcommand, ValueEnum};
+use tilegl::enums::*;
+use tilegl::{Context, ContextConfig, Gl};
+
+/// Exit status of a subcommand that exists in the interface but is not available yet.
+const NOT_AVAILABLE: u8 = 3;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "tilegl",
+    version,
+    about = "An OpenGL 1.5 fixed-function driver emulated by a tile-based software rasterizer",
+    long_about = "An OpenGL 1.5 fixed-function driver emulated by a tile-based software \
+                  rasterizer.\n\nWithout a subcommand, renders the built-in scenes into out/ \
+                  (the same as `tilegl gallery out`)."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Replay an apitrace capture or a call script into PNGs (not available yet).
+    Replay {
+        /// An apitrace `.trace` file or a call script.
+        file: PathBuf,
+        /// Frames to render, `A..B` (swap A up to, not including, swap B), `A..` or `A`.
+        #[arg(long, value_name = "A..B", value_parser = parse_frames)]
+        frames: Option<Frames>,
+        /// Call numbers after which to save the framebuffer (`call-NNNNNNNNNN.png`).
+        #[arg(long, value_name = "N,M,...", value_delimiter = ',')]
+        calls: Vec<u64>,
+        /// Where to write the pictures.
+        #[arg(short = 'o', long = "out", value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Compare with the reference pictures listed in DIR/frames.tsv.
+        #[arg(long, value_name = "DIR")]
+        compare: Option<PathBuf>,
+    },
+    /// Dump the calls and state of a trace or call script (not available yet).
+    Dump {
+        /// An apitrace `.trace` file or a call script.
+        file: PathBuf,
+        /// Where to write the dump.
+        #[arg(short = 'o', long = "out", value_name = "DIR", required = true)]
+        out: PathBuf,
+    },
+    /// Run the conformance suite (lives in the tilegl-conformance crate).
+    Conformance {
+        /// Only cases whose name contains PATTERN.
+        #[arg(long, value_name = "PATTERN")]
+        filter: Option<String>,
+        /// Compare against another implementation.
+        #[arg(long, value_enum, value_name = "IMPL")]
+        against: Option<Oracle>,
+        /// Write the report into DIR.
+        #[arg(long, value_name = "DIR")]
+        report: Option<PathBuf>,
+    },
+    /// Run the benchmarks (live in the tilegl-conformance crate).
+    Bench {
+        /// Arguments for the benchmark runner.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
+    /// Render the built-in scenes as PNGs into DIR (default `out`).
+    Gallery {
+        /// Output directory.
+        #[arg(default_value = "out")]
+        dir: PathBuf,
+        /// Render only these scenes (repeatable); see --list.
+        #[arg(long = "scene", value_name = "NAME")]
+        scenes: Vec<String>,
+        /// List the built-in scenes and exit.
+        #[arg(long)]
+        list: bool,
+        /// Worker threads for tile shading (0: one per core). The pictures are identical
+        /// for any count.
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
+    },
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Oracle {
+    /// Mesa's OSMesa (libOSMesa.so), loaded at run time.
+    Mesa,
+}
+
+/// A range of frames (swap numbers): `start..end`, `end` exclusive, `None` = to the end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Frames {
+    start: u64,
+    end: Option<u64>,
+}
+
+fn parse_frames(s: &str) -> Result<Frames, String> {
+    let num = |t: &str| {
+        t.trim()
+            .parse::<u64>()
+            .map_err(|_| format!("`{t}` is not a frame number"))
+    };
+    let frames = match s.split_once("..") {
+        None => {
+            let n = num(s)?;
+            Frames {
+                start: n,
+                end: Some(n + 1),
+            }
+        }
+        Some((a, b)) => Frames {
+            start: if a.is_empty() { 0 } else { num(a)? },
+            end: if b.is_empty() { None } else { Some(num(b)?) },
+        },
+    };
+    match frames.end {
+        Some(end) if end <= frames.start => Err(format!("`{s}` is an empty range")),
+        _ => Ok(frames),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        None => gallery(Path::new("out"), &[], 0),
+        Some(Command::Gallery {
+            dir,
+            scenes,
+            list,
+            threads,
+        }) => {
+            if list {
+                for s in scenes::SCENES {
+                    println!("{:<14} {}x{}  {}", s.name, s.width, s.height, s.about);
+                }
+                ExitCode::SUCCESS
+            } else {
+                gallery(&dir, &scenes, threads)
+            }
+        }
+        Some(Command::Replay { file, .. }) => {
+            if let Err(e) = std::fs::metadata(&file) {
+                eprintln!("tilegl replay: cannot read {}: {e}", file.display());
+                return ExitCode::FAILURE;
+            }
+            not_available(
+                "replay",
+                "the apitrace and call-script readers are not written yet (a later issue); \
+                 tilegl can render its built-in scenes meanwhile: `tilegl gallery`",
+            )
+        }
+        Some(Command::Dump { file, .. }) => {
+            if let Err(e) = std::fs::metadata(&file) {
+                eprintln!("tilegl dump: cannot read {}: {e}", file.display());
+                return ExitCode::FAILURE;
+            }
+            not_available(
+                "dump",
+                "the apitrace and call-script readers are not written yet (a later issue)",
+            )
+        }
+        Some(Command::Conformance { .. }) => not_available(
+            "conformance",
+            "the conformance suite lives in the tilegl-conformance crate; run it with\n    \
+             cargo test -p tilegl-conformance\n(it compares against Mesa's OSMesa where \
+             libOSMesa.so is installed)",
+        ),
+        Some(Command::Bench { .. }) => not_available(
+            "bench",
+            "the benchmarks live in the tilegl-conformance crate; run them with\n    \
+             cargo run --release -p tilegl-conformance --bin bench",
+        ),
+    }
+}
+
+fn not_available(command: &str, why: &str) -> ExitCode {
+    eprintln!("tilegl {command}: not available in this build: {why}");
+    ExitCode::from(NOT_AVAILABLE)
+}
+
+/// Renders the chosen built-in scenes (all when `only` is empty) into `dir`.
+fn gallery(dir: &Path, only: &[String], threads: usize) -> ExitCode {
+    if let Some(unknown) = only.iter().find(|n| scenes::find(n).is_none()) {
+        let names: Vec<&str> = scenes::SCENES.iter().map(|s| s.name).collect();
+        eprintln!(
+            "tilegl: no built-in scene `{unknown}`; there are: {}",
+            names.join(", ")
+        );
+        return ExitCode::FAILURE;
+    }
+    if let Err(e) = std::fs::create_dir_all(dir) {
+        eprintln!("tilegl: cannot create {}: {e}", dir.display());
+        return ExitCode::FAILURE;
+    }
+    let mut failed = false;
+    let total = Instant::now();
+    for scene in scenes::SCENES {
+        if !only.is_empty() && !only.iter().any(|n| n == scene.name) {
+            continue;
+        }
+        let path = dir.join(format!("{}.png", scene.name));
+        match render(scene, &path, threads) {
+            Ok(t) => println!(
+                "{:<28} {:>8}  render, {:>8}  PNG   {}",
+                path.display(),
+                ms(t.render),
+                ms(t.png),
+                scene.about
+            ),
+            Err(e) => {
+                eprintln!("{}: {e}", path.display());
+                failed = true;
+            }
+        }
+    }
+    println!("total {}", ms(total.elapsed()));
+    if failed {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+struct Timing {
+    render: Duration,
+    png: Duration,
+}
+
+fn ms(d: Duration) -> String {
+    format!("{:.2} ms", d.as_secs_f64() * 1e3)
+}
+
+/// Draws one scene (all GL calls until `glFinish` returns), then writes its PNG. A GL error
+/// raised by the scene is a failure: the scenes use only implemented, valid calls.
+fn render(scene: &scenes::Scene, path: &Path, threads: usize) -> Result<Timing, String> {
+    let mut ctx = Context::with_config(ContextConfig {
+        width: scene.width,
+        height: scene.height,
+        threads,
+        ..ContextConfig::default()
+    });
+    let start = Instant::now();
+    (scene.draw)(&mut ctx, scene.width, scene.height);
+    ctx.finish();
+    let render = start.elapsed();
+    let error = ctx.get_error();
+    if error != GL_NO_ERROR {
+        return Err(format!("the scene raised GL error 0x{error:04X}"));
+    }
+    let start = Instant::now();
+    tilegl::framebuffer::image::save_png(ctx.framebuffer(), path).map_err(|e| e.to_string())?;
+    Ok(Timing {
+        render,
+        png: start.elapsed(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frames_parse() {
+        let f = |start, end| Frames { start, end };
+        assert_eq!(parse_frames("3..7"), Ok(f(3, Some(7))));
+        assert_eq!(parse_frames("5"), Ok(f(5, Some(6))));
+        assert_eq!(parse_frames("2.."), Ok(f(2, None)));
+        assert_eq!(parse_frames("..4"), Ok(f(0, Some(4))));
+        assert!(parse_frames("7..3").is_err());
+        assert!(parse_frames("x..3").is_err());
+    }
+
+    #[test]
+    fn cli_parses_the_documented_interfaces() {
+        use clap::CommandFactory;
+        Cli::command().debug_assert();
+        let parse = |args: &[&str]| Cli::try_parse_from(args).map(|c| c.command);
+        assert!(parse(&["tilegl"]).unwrap().is_none());
+        let c = parse(&[
+            "tilegl",
+            "replay",
+            "a.trace",
+            "--frames",
+            "0..10",
+            "--calls",
+            "1,5,9",
+            "-o",
+            "o",
+            "--compare",
+            "ref",
+        ])
+        .unwrap();
+        match c {
+            Some(Command::Replay { calls, frames, .. }) => {
+                assert_eq!(calls, vec![1, 5, 9]);
+                assert_eq!(frames.unwrap().end, Some(10));
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(
+            parse(&["tilegl", "dump", "a.trace"]).is_err(),
+            "-o is required"
+        );
+        assert!(parse(&["tilegl", "dump", "a.trace", "-o", "d"]).is_ok());
+        assert!(parse(&[
+            "tilegl",
+            "conformance",
+            "--filter",
+            "depth",
+            "--against",
+            "mesa",
+            "--report",
+            "r"
+        ])
+        .is_ok());
+        assert!(parse(&["tilegl", "conformance", "--against", "nvidia"]).is_err());
+        assert!(parse(&["tilegl", "bench", "--quick"]).is_ok());
+        assert!(parse(&["tilegl", "gallery", "pics", "--scene", "clipping"]).is_ok());
+    }
+}
