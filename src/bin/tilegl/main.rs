@@ -173,17 +173,49 @@ fn main() -> ExitCode {
                 "the apitrace and call-script readers are not written yet (a later issue)",
             )
         }
-        Some(Command::Conformance { .. }) => not_available(
-            "conformance",
-            "the conformance suite lives in the tilegl-conformance crate; run it with\n    \
-             cargo test -p tilegl-conformance\n(it compares against Mesa's OSMesa where \
-             libOSMesa.so is installed)",
-        ),
-        Some(Command::Bench { .. }) => not_available(
-            "bench",
-            "the benchmarks live in the tilegl-conformance crate; run them with\n    \
-             cargo run --release -p tilegl-conformance --bin bench",
-        ),
+        Some(Command::Conformance { filter, report, .. }) => {
+            let mut run = String::from("cargo test -p tilegl-conformance");
+            if let Some(pattern) = filter {
+                run.push_str(" -- ");
+                run.push_str(&shell_word(&pattern));
+            }
+            let mut why = format!(
+                "the conformance suite lives in the tilegl-conformance crate; run it with\n    \
+                 {run}\n(its differential tests always compare against Mesa's OSMesa)"
+            );
+            if report.is_some() {
+                why.push_str("; --report is not supported yet");
+            }
+            not_available("conformance", &why)
+        }
+        Some(Command::Bench { args }) => {
+            let mut run = String::from("cargo run --release -p tilegl-conformance --bin bench");
+            if !args.is_empty() {
+                run.push_str(" --");
+                for a in &args {
+                    run.push(' ');
+                    run.push_str(&shell_word(a));
+                }
+            }
+            not_available(
+                "bench",
+                &format!(
+                    "the benchmarks live in the tilegl-conformance crate; run them with\n    {run}"
+                ),
+            )
+        }
+    }
+}
+
+/// `s` quoted for a POSIX shell when it is not a plain word.
+fn shell_word(s: &str) -> String {
+    let plain = !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+@%".contains(c));
+    if plain {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', r"'\''"))
     }
 }
 
@@ -282,6 +314,14 @@ mod tests {
         assert_eq!(parse_frames("..4"), Ok(f(0, Some(4))));
         assert!(parse_frames("7..3").is_err());
         assert!(parse_frames("x..3").is_err());
+    }
+
+    #[test]
+    fn shell_words_are_quoted_when_needed() {
+        assert_eq!(shell_word("depth_less"), "depth_less");
+        assert_eq!(shell_word("a b"), "'a b'");
+        assert_eq!(shell_word("it's"), r"'it'\''s'");
+        assert_eq!(shell_word(""), "''");
     }
 
     #[test]
