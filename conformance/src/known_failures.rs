@@ -4,24 +4,8 @@
 
 /// (case name, what goes wrong). Each entry is described in the conformance report.
 pub const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "line_endpoints",
-        "line rasterization draws the end pixel and drops the start pixel when an endpoint \
-         lies inside a pixel's diamond; diamond-exit (GL 1.5 section 3.4.1) draws the start \
-         pixel and not the end pixel",
-    ),
-    (
-        "lines",
-        "same line-endpoint bug as line_endpoints (8 endpoint pixels)",
-    ),
-    (
-        "line_strip",
-        "same line-endpoint bug as line_endpoints (6 endpoint pixels)",
-    ),
-    (
-        "flat_lines",
-        "same line-endpoint bug as line_endpoints (9 endpoint pixels)",
-    ),
+    // Empty: the line-endpoint cases (line_endpoints, lines, line_strip, flat_lines) were
+    // fixed by the exact diamond-exit test in src/raster/line.rs.
 ];
 
 /// The reason a case is listed, if it is.

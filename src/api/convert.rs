@@ -237,6 +237,10 @@ pub enum Capability {
     Blend,
     ColorLogicOp,
     IndexLogicOp,
+    Lighting,
+    Light(usize),
+    ColorMaterial,
+    ColorSum,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -253,6 +257,10 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_BLEND => Capability::Blend,
         GL_COLOR_LOGIC_OP => Capability::ColorLogicOp,
         GL_INDEX_LOGIC_OP => Capability::IndexLogicOp,
+        GL_LIGHTING => Capability::Lighting,
+        GL_COLOR_MATERIAL => Capability::ColorMaterial,
+        GL_COLOR_SUM => Capability::ColorSum,
+        e if light_index(e).is_some() => Capability::Light(light_index(e)?),
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }
@@ -557,6 +565,13 @@ pub enum Query {
     BlendEquationRgb,
     BlendColor,
     LogicOpMode,
+    MaxLights,
+    LightModelAmbient,
+    LightModelLocalViewer,
+    LightModelTwoSide,
+    LightModelColorControl,
+    ColorMaterialFace,
+    ColorMaterialParameter,
 }
 
 /// The `glGet*` query for `pname`.
@@ -651,6 +666,13 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_BLEND_EQUATION => BlendEquationRgb,
         GL_BLEND_COLOR => BlendColor,
         GL_LOGIC_OP_MODE => LogicOpMode,
+        GL_MAX_LIGHTS => MaxLights,
+        GL_LIGHT_MODEL_AMBIENT => LightModelAmbient,
+        GL_LIGHT_MODEL_LOCAL_VIEWER => LightModelLocalViewer,
+        GL_LIGHT_MODEL_TWO_SIDE => LightModelTwoSide,
+        GL_LIGHT_MODEL_COLOR_CONTROL => LightModelColorControl,
+        GL_COLOR_MATERIAL_FACE => ColorMaterialFace,
+        GL_COLOR_MATERIAL_PARAMETER => ColorMaterialParameter,
         _ => return None,
     })
 }
@@ -878,4 +900,154 @@ pub fn logic_op(e: GLenum) -> Option<LogicOp> {
     // GL_CLEAR .. GL_SET are consecutive (0x1500 .. 0x150F) in table order.
     e.checked_sub(GL_CLEAR)
         .and_then(|i| OPS.get(i as usize).copied())
+}
+
+/// `glLight` parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightParam {
+    Ambient,
+    Diffuse,
+    Specular,
+    Position,
+    SpotDirection,
+    SpotExponent,
+    SpotCutoff,
+    ConstantAttenuation,
+    LinearAttenuation,
+    QuadraticAttenuation,
+}
+
+impl LightParam {
+    /// Values the parameter takes.
+    pub fn count(self) -> usize {
+        use LightParam::*;
+        match self {
+            Ambient | Diffuse | Specular | Position => 4,
+            SpotDirection => 3,
+            _ => 1,
+        }
+    }
+
+    /// Whether integer forms map the values like colours (table 2.6 style).
+    pub fn is_color(self) -> bool {
+        matches!(
+            self,
+            LightParam::Ambient | LightParam::Diffuse | LightParam::Specular
+        )
+    }
+}
+
+pub fn light_param(e: GLenum) -> Option<LightParam> {
+    use LightParam::*;
+    Some(match e {
+        GL_AMBIENT => Ambient,
+        GL_DIFFUSE => Diffuse,
+        GL_SPECULAR => Specular,
+        GL_POSITION => Position,
+        GL_SPOT_DIRECTION => SpotDirection,
+        GL_SPOT_EXPONENT => SpotExponent,
+        GL_SPOT_CUTOFF => SpotCutoff,
+        GL_CONSTANT_ATTENUATION => ConstantAttenuation,
+        GL_LINEAR_ATTENUATION => LinearAttenuation,
+        GL_QUADRATIC_ATTENUATION => QuadraticAttenuation,
+        _ => return None,
+    })
+}
+
+/// Index of `GL_LIGHTi`.
+pub fn light_index(e: GLenum) -> Option<usize> {
+    let i = e.checked_sub(GL_LIGHT0)? as usize;
+    (i < 8).then_some(i)
+}
+
+/// `glMaterial` parameters (colour indexes are accepted and ignored: no index mode).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MaterialParam {
+    Ambient,
+    Diffuse,
+    Specular,
+    Emission,
+    Shininess,
+    AmbientAndDiffuse,
+    ColorIndexes,
+}
+
+impl MaterialParam {
+    pub fn count(self) -> usize {
+        match self {
+            MaterialParam::Shininess => 1,
+            MaterialParam::ColorIndexes => 3,
+            _ => 4,
+        }
+    }
+}
+
+pub fn material_param(e: GLenum) -> Option<MaterialParam> {
+    use MaterialParam::*;
+    Some(match e {
+        GL_AMBIENT => Ambient,
+        GL_DIFFUSE => Diffuse,
+        GL_SPECULAR => Specular,
+        GL_EMISSION => Emission,
+        GL_SHININESS => Shininess,
+        GL_AMBIENT_AND_DIFFUSE => AmbientAndDiffuse,
+        GL_COLOR_INDEXES => ColorIndexes,
+        _ => return None,
+    })
+}
+
+/// `glColorMaterial` modes.
+pub fn color_material_mode(e: GLenum) -> Option<MaterialParam> {
+    use MaterialParam::*;
+    Some(match e {
+        GL_AMBIENT => Ambient,
+        GL_DIFFUSE => Diffuse,
+        GL_SPECULAR => Specular,
+        GL_EMISSION => Emission,
+        GL_AMBIENT_AND_DIFFUSE => AmbientAndDiffuse,
+        _ => return None,
+    })
+}
+
+impl MaterialParam {
+    pub fn to_gl(self) -> GLenum {
+        use MaterialParam::*;
+        match self {
+            Ambient => GL_AMBIENT,
+            Diffuse => GL_DIFFUSE,
+            Specular => GL_SPECULAR,
+            Emission => GL_EMISSION,
+            Shininess => GL_SHININESS,
+            AmbientAndDiffuse => GL_AMBIENT_AND_DIFFUSE,
+            ColorIndexes => GL_COLOR_INDEXES,
+        }
+    }
+}
+
+/// `glLightModel` parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightModelParam {
+    Ambient,
+    LocalViewer,
+    TwoSide,
+    ColorControl,
+}
+
+pub fn light_model_param(e: GLenum) -> Option<LightModelParam> {
+    Some(match e {
+        GL_LIGHT_MODEL_AMBIENT => LightModelParam::Ambient,
+        GL_LIGHT_MODEL_LOCAL_VIEWER => LightModelParam::LocalViewer,
+        GL_LIGHT_MODEL_TWO_SIDE => LightModelParam::TwoSide,
+        GL_LIGHT_MODEL_COLOR_CONTROL => LightModelParam::ColorControl,
+        _ => return None,
+    })
+}
+
+/// `GL_LIGHT_MODEL_COLOR_CONTROL` values: true for `GL_SEPARATE_SPECULAR_COLOR`.
+pub fn separate_specular(e: GLenum) -> Option<bool> {
+    match e {
+        GL_SINGLE_COLOR => Some(false),
+        GL_SEPARATE_SPECULAR_COLOR => Some(true),
+        _ => None,
+    }
 }

@@ -41,6 +41,8 @@ pub struct FragmentKey {
     pub logic_op: Option<LogicOp>,
     /// Per-channel colour write enables (R, G, B, A).
     pub color_mask: [bool; 4],
+    /// Add the secondary colour after texturing (section 3.9).
+    pub color_sum: bool,
 }
 
 /// Per-draw values read by the fragment stage.
@@ -63,6 +65,7 @@ impl FragmentKey {
         ops: &FragmentOpsState,
         has_depth_buffer: bool,
         has_stencil_buffer: bool,
+        color_sum: bool,
     ) -> FragmentKey {
         let enabled = ops.depth_test && has_depth_buffer;
         let mut depth_func = enabled.then_some(ops.depth_func);
@@ -109,6 +112,7 @@ impl FragmentKey {
             blend,
             logic_op: if ops.color_logic_op { logic_op } else { None },
             color_mask: ops.color_mask,
+            color_sum,
         }
     }
 
@@ -123,6 +127,7 @@ impl FragmentKey {
             && self.stencil.is_none()
             && self.blend.is_none()
             && self.logic_op.is_none()
+            && !self.color_sum
     }
 }
 

@@ -97,21 +97,28 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
     let dz = it.z.a;
     let mut inv_w = it.inv_w.at(xc0, yc) as f32;
     let dinv_w = it.inv_w.a as f32;
-    let mut attr = [0f32; 4];
-    let mut dattr = [0f32; 4];
-    for c in 0..4 {
+    // Primary colour, then the secondary colour when the colour sum needs it.
+    let na = if !SIMPLE && key.color_sum { 8 } else { 4 };
+    let mut attr = [0f32; 8];
+    let mut dattr = [0f32; 8];
+    for c in 0..na {
         attr[c] = it.attrs[c].at(xc0, yc) as f32;
         dattr[c] = it.attrs[c].a as f32;
     }
     for i in 0..n {
         let idx = row + i;
         let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-        let color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        if !SIMPLE && key.color_sum {
+            for c in 0..3 {
+                color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
+            }
+        }
         let z_here = z;
         // Step the interpolants now, so that every `continue` below moves to the next pixel.
         z += dz;
         inv_w += dinv_w;
-        for c in 0..4 {
+        for c in 0..na {
             attr[c] += dattr[c];
         }
         if !SIMPLE {

@@ -1,8 +1,8 @@
-//! Lines of width 1 (section 3.4.1). tilegl follows the diamond-exit rule in its usual
-//! "half-open major axis" form: an x-major line produces one fragment per pixel column whose
-//! centre lies in [x_start, x_end) (mirrored for lines drawn towards -x), in the row that
-//! contains the line at that centre; y-major lines likewise with rows. Attributes are
-//! interpolated perspective-correctly along the line.
+//! Lines of width 1 (section 3.4.1), by the diamond-exit rule in its major-axis form: an
+//! x-major line produces one fragment per pixel column whose diamond it leaves (the start
+//! pixel is drawn, the end pixel is not), in the row that contains the line at the column's
+//! centre; y-major lines likewise with rows. Attributes are interpolated perspective-correctly
+//! along the line.
 
 use super::point::emit_pixel;
 use super::setup::SUBPIXEL;
@@ -32,22 +32,9 @@ pub fn bin_line(
     } else {
         (y0, y1, x0, dx / dy)
     };
-    let forward = a1 > a0;
-    let (lo, hi) = if forward { (a0, a1) } else { (a1, a0) };
-    // Pixel centres c + 0.5 in [lo, hi) going forward, (lo, hi] going backward.
-    let first = if forward {
-        (lo - 0.5).ceil()
-    } else {
-        (lo - 0.5).floor() + 1.0
-    };
-    let last = if forward {
-        (hi - 0.5).ceil() - 1.0
-    } else {
-        (hi - 0.5).floor()
-    };
-    if !(first <= last) {
-        return;
-    }
+    // Candidate pixels: one per major-axis row from the start's to the end's; each is kept
+    // when the segment leaves that pixel's diamond (see `exits_diamond`).
+    let (first, last) = (a0.min(a1).floor(), a0.max(a1).floor());
     // Bound the loop by the draw rectangle so huge lines cost only what is visible.
     let r = &ds.draw_rect;
     let (clip_lo, clip_hi) = if x_major {
@@ -60,10 +47,16 @@ pub fn bin_line(
     let n = ds.attr_count.min(MAX_ATTRS);
     let mut a = [0f32; MAX_ATTRS];
     let mut c = first;
+    let (lo, hi) = (a0.min(a1), a0.max(a1));
     while c <= last {
         let centre = c + 0.5;
         let t = ((centre - a0) / (a1 - a0)).clamp(0.0, 1.0);
-        let minor = (b0 + (centre - a0) * db_da).floor();
+        let minor = (b0 + (centre.clamp(lo, hi) - a0) * db_da).floor();
+        let (px, py) = if x_major { (c, minor) } else { (minor, c) };
+        if !exits_diamond([x0, y0], [x1, y1], [px + 0.5, py + 0.5]) {
+            c += 1.0;
+            continue;
+        }
         let z = v[0].z + t * (v[1].z - v[0].z);
         // Perspective-correct: interpolate attr/w and 1/w linearly in window space.
         let iw = v[0].inv_w + t * (v[1].inv_w - v[0].inv_w);
@@ -76,12 +69,33 @@ pub fn bin_line(
                 (p / iw) as f32
             };
         }
-        let (px, py) = if x_major {
-            (c as i64, minor as i64)
-        } else {
-            (minor as i64, c as i64)
-        };
-        emit_pixel(ds, state, px, py, z, &a[..n], scene);
+        emit_pixel(ds, state, px as i64, py as i64, z, &a[..n], scene);
         c += 1.0;
     }
+}
+
+/// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the segment from `p0` to
+/// `p1` produces the fragment when it meets the diamond `|x - cx| + |y - cy| < 1/2` and its end
+/// point lies outside it (it leaves the diamond).
+fn exits_diamond(p0: [f64; 2], p1: [f64; 2], c: [f64; 2]) -> bool {
+    let l1 = |p: [f64; 2]| (p[0] - c[0]).abs() + (p[1] - c[1]).abs();
+    if l1(p1) < 0.5 {
+        return false;
+    }
+    // The L1 distance is convex and piecewise linear along the segment: its minimum is at an
+    // end point or where the segment crosses x = cx or y = cy.
+    let mut best = l1(p0).min(l1(p1));
+    for axis in 0..2 {
+        let d = p1[axis] - p0[axis];
+        if d != 0.0 {
+            let t = (c[axis] - p0[axis]) / d;
+            if (0.0..=1.0).contains(&t) {
+                best = best.min(l1([
+                    p0[0] + t * (p1[0] - p0[0]),
+                    p0[1] + t * (p1[1] - p0[1]),
+                ]));
+            }
+        }
+    }
+    best < 0.5
 }

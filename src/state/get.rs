@@ -229,6 +229,23 @@ impl Context {
             Query::BlendEquationRgb => Enum(ops.blend_equation.to_gl()),
             Query::BlendColor => Normalized(ops.blend_color.iter().map(|&c| c as f64).collect()),
             Query::LogicOpMode => Enum(ops.logic_op.to_gl()),
+            Query::MaxLights => int1(8),
+            Query::LightModelAmbient => Normalized(
+                self.lighting
+                    .model_ambient
+                    .to_array()
+                    .map(|v| v as f64)
+                    .to_vec(),
+            ),
+            Query::LightModelLocalViewer => bool1(self.lighting.local_viewer),
+            Query::LightModelTwoSide => bool1(self.lighting.two_side),
+            Query::LightModelColorControl => Enum(if self.lighting.separate_specular {
+                GL_SEPARATE_SPECULAR_COLOR
+            } else {
+                GL_SINGLE_COLOR
+            }),
+            Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),
+            Query::ColorMaterialParameter => Enum(self.lighting.color_material_mode.to_gl()),
         }
     }
 

@@ -4,6 +4,7 @@
 #[macro_use]
 mod textures;
 pub mod get;
+pub mod lighting;
 pub mod matrices;
 pub mod per_fragment;
 pub mod snapshot;
@@ -64,6 +65,9 @@ pub struct Context {
     pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
+    pub(crate) lighting: lighting::LightingState,
+    /// Lighting inputs derived from the state, rebuilt after a change.
+    pub(crate) light_setup: Option<std::sync::Arc<crate::vertex::lighting::LightSetup>>,
     /// Texture objects, bindings and per-unit enables.
     pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
@@ -130,6 +134,8 @@ impl Context {
             clip_buffer: Vec::new(),
             active_texture: 0,
             textures: Default::default(),
+            lighting: Default::default(),
+            light_setup: None,
             framebuffer,
             scene,
             draw_state: None,
@@ -205,6 +211,7 @@ impl Context {
     #[inline]
     pub(crate) fn invalidate(&mut self) {
         self.draw_state = None;
+        self.light_setup = None;
     }
 
     /// Keeps `s` alive with the context and returns a C string pointer to it.
@@ -292,6 +299,15 @@ impl Context {
             Capability::Blend => self.fragment_ops.blend = on,
             Capability::ColorLogicOp => self.fragment_ops.color_logic_op = on,
             Capability::IndexLogicOp => self.fragment_ops.index_logic_op = on,
+            Capability::Lighting => self.lighting.enabled = on,
+            Capability::Light(i) => self.lighting.lights[i].enabled = on,
+            Capability::ColorMaterial => {
+                self.lighting.color_material = on;
+                // Enabling makes the current colour the tracked material at once.
+                let c = self.current.color;
+                self.lighting.track_color(c);
+            }
+            Capability::ColorSum => self.lighting.color_sum = on,
         }
         self.invalidate();
     }
@@ -327,6 +343,10 @@ impl Context {
             Capability::Blend => self.fragment_ops.blend,
             Capability::ColorLogicOp => self.fragment_ops.color_logic_op,
             Capability::IndexLogicOp => self.fragment_ops.index_logic_op,
+            Capability::Lighting => self.lighting.enabled,
+            Capability::Light(i) => self.lighting.lights[i].enabled,
+            Capability::ColorMaterial => self.lighting.color_material,
+            Capability::ColorSum => self.lighting.color_sum,
         }
     }
 
@@ -556,6 +576,40 @@ impl Gl for Context {
         blend_color,
         blend_equation,
         logic_op,
+        // lighting
+        lightf,
+        lighti,
+        lightfv,
+        lightiv,
+        light_modelf,
+        light_modeli,
+        light_modelfv,
+        light_modeliv,
+        materialf,
+        materiali,
+        materialfv,
+        materialiv,
+        color_material,
+        get_lightfv,
+        get_lightiv,
+        get_materialfv,
+        get_materialiv,
+        secondary_color_3b,
+        secondary_color_3bv,
+        secondary_color_3d,
+        secondary_color_3dv,
+        secondary_color_3f,
+        secondary_color_3fv,
+        secondary_color_3i,
+        secondary_color_3iv,
+        secondary_color_3s,
+        secondary_color_3sv,
+        secondary_color_3ub,
+        secondary_color_3ubv,
+        secondary_color_3ui,
+        secondary_color_3uiv,
+        secondary_color_3us,
+        secondary_color_3usv,
         // immediate mode
         begin,
         end,

@@ -13,11 +13,30 @@ use crate::fragment::key::{FragmentKey, Uniforms};
 use crate::fragment::span::SpanFn;
 use crate::raster::setup::Rect;
 
-/// Number of interpolated attributes carried per vertex today: the primary colour (RGBA).
-/// Later stages (texture coordinates, secondary colour, fog) extend the list.
+/// Attribute layout of a vertex after the vertex stage. Rasterization interpolates the first
+/// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
+/// for back-facing polygons under two-sided lighting.
+pub mod attr {
+    use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+    /// Primary colour RGBA.
+    pub const COLOR0: usize = 0;
+    /// Secondary colour RGBA.
+    pub const COLOR1: usize = 4;
+    /// Both colours.
+    pub const COLORS: usize = 8;
+    /// Texture coordinates (s, t, r, q) per unit.
+    pub const TEX: usize = 8;
+    /// Fog coordinate.
+    pub const FOG: usize = TEX + 4 * MAX_TEXTURE_UNITS;
+    /// Back-face primary and secondary colours.
+    pub const BACK: usize = FOG + 1;
+    /// All attributes.
+    pub const COUNT: usize = BACK + COLORS;
+}
+/// Number of interpolated colour attributes (primary RGBA).
 pub const COLOR_ATTRS: usize = 4;
 /// The most attributes a vertex can carry.
-pub const MAX_ATTRS: usize = 4 + 4 + 4 * super::tables::limits::MAX_TEXTURE_UNITS + 1;
+pub const MAX_ATTRS: usize = attr::COUNT;
 
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]
@@ -37,8 +56,12 @@ pub struct DrawState {
     pub cull: Option<Face>,
     pub front_face: Winding,
     pub flat: bool,
-    /// Interpolated attributes per vertex.
+    /// Interpolated attributes per vertex (a prefix of the `attr` layout).
     pub attr_count: usize,
+    /// Attributes carried through clipping (includes the back colours with two-sided lighting).
+    pub clip_attr_count: usize,
+    /// Two-sided lighting: back-facing polygons take the back colours.
+    pub two_sided: bool,
     pub depth_max: u32,
     pub key: FragmentKey,
     pub uniforms: Uniforms,
@@ -85,7 +108,16 @@ impl Context {
             });
         }
         let cfg = self.framebuffer.config;
-        let key = FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0);
+        let lit = &self.lighting;
+        // Colour sum (section 3.9): with lighting, under separate specular; else GL_COLOR_SUM.
+        let color_sum = if lit.enabled {
+            lit.separate_specular
+        } else {
+            lit.color_sum
+        };
+        let two_sided = lit.enabled && lit.two_side;
+        let attr_count = if color_sum { attr::COLORS } else { COLOR_ATTRS };
+        let key = FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,
@@ -102,7 +134,9 @@ impl Context {
             cull: self.raster.cull_enabled.then_some(self.raster.cull_face),
             front_face: self.raster.front_face,
             flat: self.raster.shade_model == ShadeModel::Flat,
-            attr_count: COLOR_ATTRS,
+            attr_count,
+            clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
+            two_sided,
             depth_max: self.framebuffer.depth_max(),
             key,
             uniforms,

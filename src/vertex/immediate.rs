@@ -14,6 +14,8 @@ pub struct ImmVertex {
     pub position: Vec4,
     pub color: Vec4,
     pub secondary_color: Vec4,
+    /// Back-face primary and secondary colours (two-sided lighting; else equal to the front).
+    pub back_colors: [Vec4; 2],
     pub normal: Vec3,
     pub texcoords: [Vec4; limits::MAX_TEXTURE_UNITS],
     pub fog_coord: f32,
@@ -74,11 +76,23 @@ impl Context {
     /// `glVertex`: outside `glBegin`/`glEnd` the specification leaves the effect undefined;
     /// tilegl ignores the call (as Mesa does).
     pub(crate) fn vertex4(&mut self, position: Vec4) {
+        if self.immediate.is_none() {
+            return;
+        }
+        let lit = self.lighting.enabled.then(|| {
+            let setup = self.light_setup();
+            setup.light(position, self.current.normal, &self.lighting.materials)
+        });
         let c = &self.current;
+        let (color, secondary_color, back_colors) = match lit {
+            Some(l) => (l.front[0], l.front[1], l.back),
+            None => (c.color, c.secondary_color, [c.color, c.secondary_color]),
+        };
         let v = ImmVertex {
             position,
-            color: c.color,
-            secondary_color: c.secondary_color,
+            color,
+            secondary_color,
+            back_colors,
             normal: c.normal,
             texcoords: c.texcoords,
             fog_coord: c.fog_coord,
@@ -94,6 +108,29 @@ impl Context {
 
     pub(crate) fn set_color(&mut self, c: Vec4) {
         self.current.color = c;
+        if self.lighting.color_material {
+            self.lighting.track_color(c);
+        }
+    }
+
+    /// The lighting inputs for the current state (built on first use after a change).
+    fn light_setup(&mut self) -> std::sync::Arc<super::lighting::LightSetup> {
+        if let Some(s) = &self.light_setup {
+            return s.clone();
+        }
+        let mv = *self
+            .transform
+            .modelview
+            .last()
+            .unwrap_or(&glam::Mat4::IDENTITY);
+        let s = std::sync::Arc::new(super::lighting::LightSetup::new(
+            &self.lighting,
+            mv,
+            self.transform.normalize,
+            self.transform.rescale_normal,
+        ));
+        self.light_setup = Some(s.clone());
+        s
     }
 
     /// `glRect`: a polygon with vertices (x1,y1), (x2,y1), (x2,y2), (x1,y2) at z = 0.
@@ -608,5 +645,81 @@ impl Context {
     }
     pub(crate) fn rectsv(&mut self, v1: &[GLshort; 2], v2: &[GLshort; 2]) {
         self.rect(v1[0] as f32, v1[1] as f32, v2[0] as f32, v2[1] as f32);
+    }
+    pub(crate) fn secondary_color_3b(&mut self, red: GLbyte, green: GLbyte, blue: GLbyte) {
+        self.current.secondary_color = Vec4::new(norm_i8(red), norm_i8(green), norm_i8(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3bv(&mut self, v: &[GLbyte; 3]) {
+        self.current.secondary_color = Vec4::new(norm_i8(v[0]), norm_i8(v[1]), norm_i8(v[2]), 0.0);
+    }
+    pub(crate) fn secondary_color_3d(&mut self, red: GLdouble, green: GLdouble, blue: GLdouble) {
+        self.current.secondary_color = Vec4::new(
+            (|v: f64| v as f32)(red),
+            (|v: f64| v as f32)(green),
+            (|v: f64| v as f32)(blue),
+            0.0,
+        );
+    }
+    pub(crate) fn secondary_color_3dv(&mut self, v: &[GLdouble; 3]) {
+        self.current.secondary_color = Vec4::new(
+            (|v: f64| v as f32)(v[0]),
+            (|v: f64| v as f32)(v[1]),
+            (|v: f64| v as f32)(v[2]),
+            0.0,
+        );
+    }
+    pub(crate) fn secondary_color_3f(&mut self, red: GLfloat, green: GLfloat, blue: GLfloat) {
+        self.current.secondary_color = Vec4::new(
+            (|v: f32| v)(red),
+            (|v: f32| v)(green),
+            (|v: f32| v)(blue),
+            0.0,
+        );
+    }
+    pub(crate) fn secondary_color_3fv(&mut self, v: &[GLfloat; 3]) {
+        self.current.secondary_color = Vec4::new(
+            (|v: f32| v)(v[0]),
+            (|v: f32| v)(v[1]),
+            (|v: f32| v)(v[2]),
+            0.0,
+        );
+    }
+    pub(crate) fn secondary_color_3i(&mut self, red: GLint, green: GLint, blue: GLint) {
+        self.current.secondary_color =
+            Vec4::new(norm_i32(red), norm_i32(green), norm_i32(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3iv(&mut self, v: &[GLint; 3]) {
+        self.current.secondary_color =
+            Vec4::new(norm_i32(v[0]), norm_i32(v[1]), norm_i32(v[2]), 0.0);
+    }
+    pub(crate) fn secondary_color_3s(&mut self, red: GLshort, green: GLshort, blue: GLshort) {
+        self.current.secondary_color =
+            Vec4::new(norm_i16(red), norm_i16(green), norm_i16(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3sv(&mut self, v: &[GLshort; 3]) {
+        self.current.secondary_color =
+            Vec4::new(norm_i16(v[0]), norm_i16(v[1]), norm_i16(v[2]), 0.0);
+    }
+    pub(crate) fn secondary_color_3ub(&mut self, red: GLubyte, green: GLubyte, blue: GLubyte) {
+        self.current.secondary_color = Vec4::new(norm_u8(red), norm_u8(green), norm_u8(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3ubv(&mut self, v: &[GLubyte; 3]) {
+        self.current.secondary_color = Vec4::new(norm_u8(v[0]), norm_u8(v[1]), norm_u8(v[2]), 0.0);
+    }
+    pub(crate) fn secondary_color_3ui(&mut self, red: GLuint, green: GLuint, blue: GLuint) {
+        self.current.secondary_color =
+            Vec4::new(norm_u32(red), norm_u32(green), norm_u32(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3uiv(&mut self, v: &[GLuint; 3]) {
+        self.current.secondary_color =
+            Vec4::new(norm_u32(v[0]), norm_u32(v[1]), norm_u32(v[2]), 0.0);
+    }
+    pub(crate) fn secondary_color_3us(&mut self, red: GLushort, green: GLushort, blue: GLushort) {
+        self.current.secondary_color =
+            Vec4::new(norm_u16(red), norm_u16(green), norm_u16(blue), 0.0);
+    }
+    pub(crate) fn secondary_color_3usv(&mut self, v: &[GLushort; 3]) {
+        self.current.secondary_color =
+            Vec4::new(norm_u16(v[0]), norm_u16(v[1]), norm_u16(v[2]), 0.0);
     }
 }

@@ -2,17 +2,34 @@
 //! the window, cull, and hand primitives to setup and binning.
 
 pub mod immediate;
+pub mod lighting;
 pub mod transform;
 
 use crate::api::convert::PrimitiveMode;
 use crate::primitive::assemble::{assemble, Primitive};
-use crate::primitive::clip::{clip_line, clip_polygon, point_visible};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
 use crate::raster::{line, point, tri};
-use crate::state::snapshot::COLOR_ATTRS;
-use crate::state::Context;
+use crate::state::snapshot::{attr, MAX_ATTRS};
+use crate::state::{Context, DrawState};
 use immediate::ImmVertex;
+use std::sync::Arc;
+
+/// Flat shading: every vertex of a primitive takes the provoking vertex's colours (front and
+/// back), before clipping so that clipped vertices inherit them too.
+fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVertex) {
+    v.attrs[..attr::COLORS].copy_from_slice(&provoking.attrs[..attr::COLORS]);
+    if ds.two_sided {
+        v.attrs[attr::BACK..attr::COUNT].copy_from_slice(&provoking.attrs[attr::BACK..attr::COUNT]);
+    }
+}
+
+/// Two-sided lighting: a back-facing polygon is drawn with the back colours.
+fn use_back_colors(attrs: &mut [f32; MAX_ATTRS]) {
+    let (front, back) = attrs.split_at_mut(attr::BACK);
+    front[..attr::COLORS].copy_from_slice(&back[..attr::COLORS]);
+}
 
 impl Context {
     /// Draws a batch of vertices of one primitive mode.
@@ -29,7 +46,13 @@ impl Context {
         let mut clip = std::mem::take(&mut self.clip_buffer);
         clip.clear();
         clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v)));
+        self.draw_clipped(&ds, mode, &clip);
+        self.clip_buffer = clip;
+    }
+
+    fn draw_clipped(&mut self, ds: &Arc<DrawState>, mode: PrimitiveMode, clip: &[ClipVertex]) {
         let n_attrs = ds.attr_count;
+        let clip_attrs = ds.clip_attr_count;
         let user = &ds.clip_planes;
         let mut poly = Vec::with_capacity(16);
         let mut scratch = Vec::with_capacity(16);
@@ -39,32 +62,25 @@ impl Context {
             if self.scene.is_full() {
                 self.flush_scene();
             }
-            let state = self.scene.add_state(&ds);
+            let state = self.scene.add_state(ds);
             match prim {
                 Primitive::Point(i) => {
                     if point_visible(&clip[i], user) {
-                        let w = to_window(&ds, &clip[i]);
-                        point::bin_point(
-                            &ds,
-                            state,
-                            &w,
-                            &clip[i].attrs[..n_attrs],
-                            &mut self.scene,
-                        );
+                        let w = to_window(ds, &clip[i]);
+                        point::bin_point(ds, state, &w, &clip[i].attrs[..n_attrs], &mut self.scene);
                     }
                 }
                 Primitive::Line { v, provoking } => {
                     let (mut a, mut b) = (clip[v[0]], clip[v[1]]);
                     if ds.flat {
-                        let c = clip[provoking].attrs;
-                        a.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
-                        b.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
+                        copy_provoking_colors(ds, &mut a, &clip[provoking]);
+                        copy_provoking_colors(ds, &mut b, &clip[provoking]);
                     }
-                    if let Some((a, b)) = clip_line(&a, &b, user, n_attrs) {
-                        let wa = to_window(&ds, &a);
-                        let wb = to_window(&ds, &b);
+                    if let Some((a, b)) = clip_line(&a, &b, user, clip_attrs) {
+                        let wa = to_window(ds, &a);
+                        let wb = to_window(ds, &b);
                         line::bin_line(
-                            &ds,
+                            ds,
                             state,
                             [&wa, &wb],
                             [&a.attrs[..n_attrs], &b.attrs[..n_attrs]],
@@ -74,9 +90,9 @@ impl Context {
                 }
                 Primitive::Triangle { v, provoking } => {
                     let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
-                    if tri.iter().all(|c| point_visible(c, user)) {
+                    if !ds.two_sided && tri.iter().all(|c| point_visible(c, user)) {
                         // Entirely inside every clip plane (the common case): no copies.
-                        let w = tri.map(|c| to_window(&ds, c));
+                        let w = tri.map(|c| to_window(ds, c));
                         let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
@@ -86,40 +102,39 @@ impl Context {
                         } else {
                             tri.map(|c| &c.attrs[..n_attrs])
                         };
-                        tri::bin_triangle(
-                            &ds,
-                            state,
-                            [&w[0], &w[1], &w[2]],
-                            attrs,
-                            &mut self.scene,
-                        );
+                        tri::bin_triangle(ds, state, [&w[0], &w[1], &w[2]], attrs, &mut self.scene);
                         continue;
                     }
                     poly.clear();
-                    poly.extend(v.iter().map(|&i| clip[i]));
+                    poly.extend(tri.iter().map(|&c| *c));
                     if ds.flat {
-                        let c = clip[provoking].attrs;
                         for p in poly.iter_mut() {
-                            p.attrs[..COLOR_ATTRS].copy_from_slice(&c[..COLOR_ATTRS]);
+                            copy_provoking_colors(ds, p, &clip[provoking]);
                         }
                     }
-                    if !clip_polygon(&mut poly, &mut scratch, user, n_attrs) {
+                    if !clip_polygon(&mut poly, &mut scratch, user, clip_attrs) {
                         continue;
                     }
                     win.clear();
-                    win.extend(poly.iter().map(|p| to_window(&ds, p)));
+                    win.extend(poly.iter().map(|p| to_window(ds, p)));
                     xy.clear();
                     xy.extend(win.iter().map(|w| w.xy));
                     let area = signed_area2(&xy);
                     if area == 0 {
                         continue;
                     }
-                    if is_culled(ds.cull, is_front(area, ds.front_face)) {
+                    let front = is_front(area, ds.front_face);
+                    if is_culled(ds.cull, front) {
                         continue;
+                    }
+                    if ds.two_sided && !front {
+                        for p in poly.iter_mut() {
+                            use_back_colors(&mut p.attrs);
+                        }
                     }
                     for k in 1..poly.len() - 1 {
                         tri::bin_triangle(
-                            &ds,
+                            ds,
                             state,
                             [&win[0], &win[k], &win[k + 1]],
                             [
@@ -133,6 +148,5 @@ impl Context {
                 }
             }
         }
-        self.clip_buffer = clip;
     }
 }

@@ -4,7 +4,7 @@ use glam::DVec4;
 
 use super::immediate::ImmVertex;
 use crate::primitive::clip::ClipVertex;
-use crate::state::snapshot::MAX_ATTRS;
+use crate::state::snapshot::{attr, MAX_ATTRS};
 use crate::state::DrawState;
 
 /// Transforms one vertex. Colours are clamped to [0, 1] here (section 2.14.7; with lighting
@@ -17,14 +17,19 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
         (ds.modelview * v.position).as_dvec4()
     };
     let mut attrs = [0f32; MAX_ATTRS];
-    for (a, c) in attrs.iter_mut().zip(v.color.to_array()) {
-        *a = if c >= 1.0 {
-            1.0
-        } else if c > 0.0 {
-            c
-        } else {
-            0.0
-        };
+    let clamp = |c: f32| c.max(0.0).min(1.0); // NaN becomes 0
+    let colors = [v.color, v.secondary_color];
+    for (k, c) in colors.iter().enumerate() {
+        for (i, x) in c.to_array().into_iter().enumerate() {
+            attrs[attr::COLOR0 + 4 * k + i] = clamp(x);
+        }
+    }
+    if ds.two_sided {
+        for (k, c) in v.back_colors.iter().enumerate() {
+            for (i, x) in c.to_array().into_iter().enumerate() {
+                attrs[attr::BACK + 4 * k + i] = clamp(x);
+            }
+        }
     }
     ClipVertex { pos, eye, attrs }
 }
