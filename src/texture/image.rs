@@ -1,0 +1,301 @@
+//! One texture image (one level of one face): its size, border, internal format and texels,
+//! held in `Arc`s so that draw snapshots share them and a later write copies on write.
+
+use std::sync::Arc;
+
+use super::format::{InternalFormat, Storage};
+use super::s3tc;
+
+/// Texel components, unsigned normalised, `components` per texel, rows bottom to top, images
+/// (3D slices) front to back, borders included.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Texels {
+    U8(Vec<u8>),
+    U16(Vec<u16>),
+    U32(Vec<u32>),
+}
+
+/// Allocation failed (`GL_OUT_OF_MEMORY`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OutOfMemory;
+
+fn alloc<T: Clone + Default>(n: usize) -> Result<Vec<T>, OutOfMemory> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
+    v.resize(n, T::default());
+    Ok(v)
+}
+
+impl Texels {
+    /// `n` zeroed components of `storage`.
+    pub fn zeroed(storage: Storage, n: usize) -> Result<Texels, OutOfMemory> {
+        Ok(match storage {
+            Storage::U8 => Texels::U8(alloc(n)?),
+            Storage::U16 => Texels::U16(alloc(n)?),
+            Storage::U32 => Texels::U32(alloc(n)?),
+        })
+    }
+
+    /// Component `i` as a value in [0, 1]; 0 past the end.
+    #[inline]
+    pub fn get(&self, i: usize) -> f32 {
+        match self {
+            Texels::U8(v) => v.get(i).map_or(0.0, |&c| c as f32 * (1.0 / 255.0)),
+            Texels::U16(v) => v.get(i).map_or(0.0, |&c| c as f32 * (1.0 / 65535.0)),
+            Texels::U32(v) => v
+                .get(i)
+                .map_or(0.0, |&c| (c as f64 / u32::MAX as f64) as f32),
+        }
+    }
+
+    /// Stores `value` (clamped to [0, 1], NaN as 0) rounded to the nearest representable value.
+    #[inline]
+    pub fn set(&mut self, i: usize, value: f32) {
+        let v = clamp01(value) as f64;
+        match self {
+            Texels::U8(t) => {
+                if let Some(c) = t.get_mut(i) {
+                    *c = (v * 255.0).round() as u8;
+                }
+            }
+            Texels::U16(t) => {
+                if let Some(c) = t.get_mut(i) {
+                    *c = (v * 65535.0).round() as u16;
+                }
+            }
+            Texels::U32(t) => {
+                if let Some(c) = t.get_mut(i) {
+                    *c = (v * u32::MAX as f64).round() as u32;
+                }
+            }
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Texels::U8(v) => v.len(),
+            Texels::U16(v) => v.len(),
+            Texels::U32(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Clamps to [0, 1]; NaN becomes 0.
+#[inline]
+pub fn clamp01(v: f32) -> f32 {
+    if v >= 1.0 {
+        1.0
+    } else if v > 0.0 {
+        v
+    } else {
+        0.0
+    }
+}
+
+/// One texture image.
+#[derive(Clone, Debug)]
+pub struct TexImage {
+    /// Stored size, borders included (height 1 for 1D, depth 1 for 1D and 2D).
+    pub width: i32,
+    pub height: i32,
+    pub depth: i32,
+    /// 0 or 1.
+    pub border: i32,
+    /// 1, 2 or 3.
+    pub dims: u8,
+    pub format: InternalFormat,
+    /// Decoded texels (for compressed images, the decoded blocks).
+    pub texels: Arc<Texels>,
+    /// The S3TC blocks of a compressed image.
+    pub blocks: Option<Arc<Vec<u8>>>,
+}
+
+impl TexImage {
+    /// A zeroed image of the given stored size; `proxy` images hold no texels.
+    pub fn new(
+        dims: u8,
+        size: [i32; 3],
+        border: i32,
+        format: InternalFormat,
+        proxy: bool,
+    ) -> Result<TexImage, OutOfMemory> {
+        let n = if proxy {
+            0
+        } else {
+            (size[0].max(0) as usize)
+                .checked_mul(size[1].max(0) as usize)
+                .and_then(|n| n.checked_mul(size[2].max(0) as usize))
+                .and_then(|n| n.checked_mul(format.base.components()))
+                .ok_or(OutOfMemory)?
+        };
+        let blocks = match format.compressed {
+            Some(f) if !proxy => {
+                let bytes = f.image_bytes(size[0].max(0) as usize, size[1].max(0) as usize);
+                Some(Arc::new(alloc::<u8>(bytes)?))
+            }
+            _ => None,
+        };
+        Ok(TexImage {
+            width: size[0],
+            height: size[1],
+            depth: size[2],
+            border,
+            dims,
+            format,
+            texels: Arc::new(Texels::zeroed(format.storage(), n)?),
+            blocks,
+        })
+    }
+
+    /// Border width along each axis.
+    #[inline]
+    pub fn borders(&self) -> [i32; 3] {
+        let b = self.border;
+        [
+            b,
+            if self.dims >= 2 { b } else { 0 },
+            if self.dims >= 3 { b } else { 0 },
+        ]
+    }
+
+    /// Size without borders (w_t, h_t, d_t of the specification).
+    #[inline]
+    pub fn inner_size(&self) -> [i32; 3] {
+        let b = self.borders();
+        [
+            self.width - 2 * b[0],
+            self.height - 2 * b[1],
+            self.depth - 2 * b[2],
+        ]
+    }
+
+    #[inline]
+    fn index(&self, x: i32, y: i32, z: i32) -> usize {
+        let (w, h) = (self.width.max(0) as usize, self.height.max(0) as usize);
+        ((z.max(0) as usize * h + y.max(0) as usize) * w + x.max(0) as usize)
+            * self.format.base.components()
+    }
+
+    /// The texel at stored coordinates (borders included, 0-based) as "internal RGBA": the
+    /// stored components in their slots (luminance, intensity and depth in R), the others
+    /// (0, 0, 0, 1). Out-of-range coordinates read 0.
+    #[inline]
+    pub fn fetch(&self, x: i32, y: i32, z: i32) -> [f32; 4] {
+        let mut out = [0.0, 0.0, 0.0, 1.0];
+        if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
+            return out;
+        }
+        let i = self.index(x, y, z);
+        for (k, &slot) in self.format.base.slots().iter().enumerate() {
+            out[slot] = self.texels.get(i + k);
+        }
+        out
+    }
+
+    /// Writes the texel at stored coordinates from internal RGBA (copy on write when a
+    /// snapshot shares the texels).
+    #[inline]
+    pub fn store(&mut self, x: i32, y: i32, z: i32, rgba: [f32; 4]) {
+        if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
+            return;
+        }
+        let i = self.index(x, y, z);
+        let slots = self.format.base.slots();
+        let texels = Arc::make_mut(&mut self.texels);
+        for (k, &slot) in slots.iter().enumerate() {
+            texels.set(i + k, rgba[slot]);
+        }
+    }
+
+    /// Re-encodes the S3TC blocks covering the stored rectangle `[x0, x1) x [y0, y1)` from the
+    /// texels, then replaces those texels by the decoded blocks (so sampling sees exactly what
+    /// the compressed image holds).
+    pub fn encode_region(&mut self, x0: i32, y0: i32, x1: i32, y1: i32) {
+        let Some(f) = self.format.compressed else {
+            return;
+        };
+        let (w, h) = (self.width.max(0), self.height.max(0));
+        let bx0 = (x0.max(0) / 4) as usize;
+        let by0 = (y0.max(0) / 4) as usize;
+        let bx1 = ((x1.min(w) + 3) / 4).max(0) as usize;
+        let by1 = ((y1.min(h) + 3) / 4).max(0) as usize;
+        let bw = (w as usize).div_ceil(4);
+        let bb = f.block_bytes();
+        for by in by0..by1 {
+            for bx in bx0..bx1 {
+                let mut px = [[0u8; 4]; 16];
+                let mut present = [false; 16];
+                for (k, p) in px.iter_mut().enumerate() {
+                    let (x, y) = (
+                        bx as i32 * 4 + (k % 4) as i32,
+                        by as i32 * 4 + (k / 4) as i32,
+                    );
+                    if x < w && y < h {
+                        let c = self.fetch(x, y, 0);
+                        *p = c.map(|v| (clamp01(v) * 255.0).round() as u8);
+                        present[k] = true;
+                    }
+                }
+                let block = s3tc::encode_block(f, &px, &present);
+                let decoded = s3tc::decode_block(f, &block);
+                if let Some(blocks) = self.blocks.as_mut() {
+                    let off = (by * bw + bx) * bb;
+                    if let Some(dst) = Arc::make_mut(blocks).get_mut(off..off + bb) {
+                        dst.copy_from_slice(&block[..bb]);
+                    }
+                }
+                for (k, c) in decoded.iter().enumerate() {
+                    if present[k] {
+                        let (x, y) = (
+                            bx as i32 * 4 + (k % 4) as i32,
+                            by as i32 * 4 + (k / 4) as i32,
+                        );
+                        self.store(x, y, 0, c.map(|v| v as f32 / 255.0));
+                    }
+                }
+            }
+        }
+    }
+
+    /// Replaces the blocks covering `[x0, x1) x [y0, y1)` (block-aligned) by `data` (a
+    /// rectangle of blocks, rows bottom to top) and decodes them into the texels.
+    pub fn load_blocks(&mut self, x0: i32, y0: i32, x1: i32, y1: i32, data: &[u8]) {
+        let Some(f) = self.format.compressed else {
+            return;
+        };
+        let bb = f.block_bytes();
+        let bw = (self.width.max(0) as usize).div_ceil(4);
+        let (bx0, by0) = ((x0.max(0) / 4) as usize, (y0.max(0) / 4) as usize);
+        let rw = ((x1 - x0).max(0) as usize).div_ceil(4);
+        let rh = ((y1 - y0).max(0) as usize).div_ceil(4);
+        for ry in 0..rh {
+            for rx in 0..rw {
+                let src_off = (ry * rw + rx) * bb;
+                let Some(src) = data.get(src_off..src_off + bb) else {
+                    return;
+                };
+                let (bx, by) = (bx0 + rx, by0 + ry);
+                if let Some(blocks) = self.blocks.as_mut() {
+                    let off = (by * bw + bx) * bb;
+                    if let Some(dst) = Arc::make_mut(blocks).get_mut(off..off + bb) {
+                        dst.copy_from_slice(src);
+                    }
+                }
+                let decoded = s3tc::decode_block(f, src);
+                for (k, c) in decoded.iter().enumerate() {
+                    let (x, y) = (
+                        bx as i32 * 4 + (k % 4) as i32,
+                        by as i32 * 4 + (k / 4) as i32,
+                    );
+                    if x < self.width && y < self.height {
+                        self.store(x, y, 0, c.map(|v| v as f32 / 255.0));
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,278 @@
+//! Pixel unpacking (client memory -> RGBA, section 3.6.4) for texture images, and packing
+//! (texture -> client memory, section 4.3.2 as used by `glGetTexImage`).
+//!
+//! Client data is in the machine's byte order; `GL_UNPACK_SWAP_BYTES` reverses the bytes of
+//! each element (a component, or a whole packed group). `GL_UNPACK_LSB_FIRST` concerns only
+//! `GL_BITMAP` data, which texture images do not take. Signed and unsigned integers become
+//! floats by table 2.9 of OpenGL 1.5: unsigned `c / (2^b - 1)`, signed `(2c + 1) / (2^b - 1)`.
+
+use crate::api::convert::{TexPixelFormat, TexPixelType};
+use crate::state::tables::PixelStore;
+
+/// Where the pixels of an image lie in client memory.
+#[derive(Clone, Copy, Debug)]
+pub struct Layout {
+    /// Offset of the first group.
+    pub start: usize,
+    pub row_stride: usize,
+    pub image_stride: usize,
+    /// Bytes of one group.
+    pub group: usize,
+    /// Bytes the whole image spans from offset 0.
+    pub end: usize,
+}
+
+/// The layout of a `width` x `height` x `depth` image of `dims` dimensions (SKIP_IMAGES and
+/// IMAGE_HEIGHT apply to three-dimensional images only). `None` on arithmetic overflow.
+pub fn layout(
+    store: &PixelStore,
+    dims: usize,
+    size: [usize; 3],
+    format: TexPixelFormat,
+    ty: TexPixelType,
+) -> Option<Layout> {
+    let group = ty.group_size(format);
+    let row_stride = store.row_stride(size[0], group, ty.size())?;
+    let rows_per_image = if dims == 3 && store.image_height > 0 {
+        store.image_height as usize
+    } else {
+        size[1]
+    };
+    let image_stride = row_stride.checked_mul(rows_per_image)?;
+    let skip_images = if dims == 3 {
+        store.skip_images.max(0) as usize
+    } else {
+        0
+    };
+    let start = image_stride
+        .checked_mul(skip_images)?
+        .checked_add(row_stride.checked_mul(store.skip_rows.max(0) as usize)?)?
+        .checked_add((store.skip_pixels.max(0) as usize).checked_mul(group)?)?;
+    let end = if size.contains(&0) {
+        0
+    } else {
+        start
+            .checked_add(image_stride.checked_mul(size[2] - 1)?)?
+            .checked_add(row_stride.checked_mul(size[1] - 1)?)?
+            .checked_add(size[0].checked_mul(group)?)?
+    };
+    Some(Layout {
+        start,
+        row_stride,
+        image_stride,
+        group,
+        end,
+    })
+}
+
+/// Reads an element of `n` bytes at `at` in machine order, optionally byte-swapped.
+#[inline]
+fn read_uint(data: &[u8], at: usize, n: usize, swap: bool) -> u32 {
+    let mut b = [0u8; 4];
+    if let Some(src) = data.get(at..at + n) {
+        b[..n].copy_from_slice(src);
+    }
+    if swap {
+        b[..n].reverse();
+    }
+    match n {
+        1 => b[0] as u32,
+        2 => u16::from_ne_bytes([b[0], b[1]]) as u32,
+        _ => u32::from_ne_bytes(b),
+    }
+}
+
+/// Unpacks one group at `at` to RGBA (luminance copied to R, G and B; missing colour
+/// components 0, missing alpha 1; depth in R), clamped to [0, 1].
+#[inline]
+pub fn unpack_group(
+    data: &[u8],
+    at: usize,
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    swap: bool,
+) -> [f32; 4] {
+    let mut rgba = [0.0f32, 0.0, 0.0, 1.0];
+    let slots = format.slots();
+    match ty {
+        TexPixelType::Packed(p) => {
+            let v = read_uint(data, at, p.size(), swap);
+            for (&slot, &(shift, bits)) in slots.iter().zip(p.fields()) {
+                let max = (1u32 << bits) - 1;
+                rgba[slot] = ((v >> shift) & max) as f32 / max as f32;
+            }
+        }
+        _ => {
+            let n = ty.size();
+            for (k, &slot) in slots.iter().enumerate() {
+                let raw = read_uint(data, at + k * n, n, swap);
+                rgba[slot] = match ty {
+                    TexPixelType::UnsignedByte => raw as f32 / 255.0,
+                    TexPixelType::Byte => (2.0 * (raw as u8 as i8) as f32 + 1.0) / 255.0,
+                    TexPixelType::UnsignedShort => raw as f32 / 65535.0,
+                    TexPixelType::Short => (2.0 * (raw as u16 as i16) as f32 + 1.0) / 65535.0,
+                    TexPixelType::UnsignedInt => (raw as f64 / u32::MAX as f64) as f32,
+                    TexPixelType::Int => {
+                        ((2.0 * (raw as i32) as f64 + 1.0) / u32::MAX as f64) as f32
+                    }
+                    TexPixelType::Float => f32::from_bits(raw),
+                    TexPixelType::Packed(_) => 0.0,
+                };
+            }
+        }
+    }
+    if matches!(
+        format,
+        TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+    ) {
+        rgba[1] = rgba[0];
+        rgba[2] = rgba[0];
+    }
+    rgba.map(super::image::clamp01)
+}
+
+/// Calls `f(x, y, z, rgba)` for every pixel of the image described by `layout` (the caller
+/// has checked that `data` holds `layout.end` bytes).
+pub fn unpack_image(
+    data: &[u8],
+    layout: &Layout,
+    size: [usize; 3],
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    swap: bool,
+    mut f: impl FnMut(usize, usize, usize, [f32; 4]),
+) {
+    for z in 0..size[2] {
+        for y in 0..size[1] {
+            let row = layout.start + z * layout.image_stride + y * layout.row_stride;
+            for x in 0..size[0] {
+                f(
+                    x,
+                    y,
+                    z,
+                    unpack_group(data, row + x * layout.group, format, ty, swap),
+                );
+            }
+        }
+    }
+}
+
+#[inline]
+fn write_uint(out: &mut [u8], at: usize, n: usize, v: u32, swap: bool) {
+    let mut b = match n {
+        1 => [v as u8, 0, 0, 0],
+        2 => {
+            let x = (v as u16).to_ne_bytes();
+            [x[0], x[1], 0, 0]
+        }
+        _ => v.to_ne_bytes(),
+    };
+    if swap {
+        b[..n].reverse();
+    }
+    if let Some(dst) = out.get_mut(at..at + n) {
+        dst.copy_from_slice(&b[..n]);
+    }
+}
+
+/// Packs one RGBA value (components in [0, 1]; depth in R) as a group at `at` (section 4.3.2:
+/// LUMINANCE is R + G + B clamped to 1; signed integers by `((2^b - 1) c - 1) / 2`).
+#[inline]
+pub fn pack_group(
+    out: &mut [u8],
+    at: usize,
+    rgba: [f32; 4],
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    swap: bool,
+) {
+    let mut v = rgba;
+    if matches!(
+        format,
+        TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+    ) {
+        v[0] = (v[0] + v[1] + v[2]).min(1.0);
+    }
+    let slots = format.slots();
+    match ty {
+        TexPixelType::Packed(p) => {
+            let mut word = 0u32;
+            for (&slot, &(shift, bits)) in slots.iter().zip(p.fields()) {
+                let max = (1u32 << bits) - 1;
+                word |= ((v[slot] as f64 * max as f64).round() as u32 & max) << shift;
+            }
+            write_uint(out, at, p.size(), word, swap);
+        }
+        _ => {
+            let n = ty.size();
+            for (k, &slot) in slots.iter().enumerate() {
+                let c = v[slot] as f64;
+                let raw = match ty {
+                    TexPixelType::UnsignedByte => (c * 255.0).round() as u32,
+                    TexPixelType::Byte => ((255.0 * c - 1.0) / 2.0).round() as i8 as u8 as u32,
+                    TexPixelType::UnsignedShort => (c * 65535.0).round() as u32,
+                    TexPixelType::Short => ((65535.0 * c - 1.0) / 2.0).round() as i16 as u16 as u32,
+                    TexPixelType::UnsignedInt => (c * u32::MAX as f64).round() as u32,
+                    TexPixelType::Int => ((u32::MAX as f64 * c - 1.0) / 2.0).round() as i32 as u32,
+                    TexPixelType::Float => (c as f32).to_bits(),
+                    TexPixelType::Packed(_) => 0,
+                };
+                write_uint(out, at + k * n, n, raw, swap);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::api::convert::PackedType;
+
+    #[test]
+    fn packed_layouts_by_hand() {
+        // 5_6_5: R = bits 15..11, G = 10..5, B = 4..0. 0b10000_100000_00001.
+        let v: u16 = (16 << 11) | (32 << 5) | 1;
+        let d = v.to_ne_bytes();
+        let t = TexPixelType::Packed(PackedType::UShort565);
+        let c = unpack_group(&d, 0, TexPixelFormat::Rgb, t, false);
+        assert_eq!(c, [16.0 / 31.0, 32.0 / 63.0, 1.0 / 31.0, 1.0]);
+        // 2_10_10_10_REV with BGRA: first component (B) in bits 9..0, A in 31..30.
+        let v: u32 = 1023 | (0 << 10) | (512 << 20) | (1 << 30);
+        let t = TexPixelType::Packed(PackedType::UInt2101010Rev);
+        let c = unpack_group(&v.to_ne_bytes(), 0, TexPixelFormat::Bgra, t, false);
+        assert_eq!(c, [512.0 / 1023.0, 0.0, 1.0, 1.0 / 3.0]);
+    }
+
+    #[test]
+    fn signed_conversion_is_table_2_9() {
+        let d = [(-128i8) as u8, 127u8];
+        let c = unpack_group(
+            &d,
+            0,
+            TexPixelFormat::LuminanceAlpha,
+            TexPixelType::Byte,
+            false,
+        );
+        // (2 * -128 + 1) / 255 = -1 -> clamped 0; (2 * 127 + 1) / 255 = 1.
+        assert_eq!(c, [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn pack_round_trips() {
+        for t in [
+            TexPixelType::UnsignedByte,
+            TexPixelType::UnsignedShort,
+            TexPixelType::UnsignedInt,
+            TexPixelType::Float,
+            TexPixelType::Packed(PackedType::UInt8888Rev),
+        ] {
+            let mut out = [0u8; 16];
+            let c = [0.0, 1.0, 0.2, 0.6];
+            pack_group(&mut out, 0, c, TexPixelFormat::Rgba, t, true);
+            let back = unpack_group(&out, 0, TexPixelFormat::Rgba, t, true);
+            for i in 0..4 {
+                assert!((back[i] - c[i]).abs() < 1.0 / 255.0, "{t:?}");
+            }
+        }
+    }
+}

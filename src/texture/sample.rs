@@ -1,0 +1,510 @@
+//! The sampler: pure functions of a frozen texture snapshot (section 3.8.8 - 3.8.9 and 3.8.14
+//! of OpenGL 1.5, EXT_texture_filter_anisotropic). No GL state is read here.
+//!
+//! Texel selection uses the integer-coordinate form of the wrap rules (as later GL
+//! specifications state them; equivalent to OpenGL 1.5 for power-of-two sizes and defined for
+//! any size): `u = s * w_t`; NEAREST takes `i = wrap(floor(u))`; LINEAR takes
+//! `i0 = wrap(floor(u - 1/2))`, `i1 = wrap(floor(u - 1/2) + 1)` with weight
+//! `alpha = frac(u - 1/2)`. `GL_CLAMP` first clamps `s` to [0, 1]. An index of -1 or `w_t`
+//! selects the border texel (border 1) or the border colour (border 0).
+//!
+//! Coordinates are scaled in `f64`, so `GL_REPEAT` is exact for |s| x size up to 2^53 (any
+//! `f32` product of a coordinate and a size up to 4096 is exact). Larger products saturate to
+//! the largest 64-bit integer before wrapping; infinite coordinates act as the largest finite
+//! value and NaN as 0. No input panics.
+
+use std::sync::Arc;
+
+use super::format::{BaseFormat, InternalFormat};
+use super::image::TexImage;
+use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
+use crate::api::convert::{DepthTextureMode, MagFilter, MinFilter, TextureTarget, WrapMode};
+
+/// The frozen contents of a bound, complete texture.
+#[derive(Debug)]
+pub struct BoundInner {
+    pub target: TextureTarget,
+    pub params: SamplerParams,
+    pub format: InternalFormat,
+    pub base: BaseFormat,
+    /// Inner size of the base level (w_b, h_b, d_b).
+    pub base_size: [f32; 3],
+    /// `levels[face][level - base_level]`, from the base level to the last level sampled.
+    pub levels: Vec<Vec<TexImage>>,
+}
+
+/// A cheap-to-clone, immutable snapshot of a complete texture, as a draw sees it. Later
+/// changes to the texture object copy on write and never reach a snapshot.
+#[derive(Clone, Debug)]
+pub struct BoundTexture {
+    inner: Arc<BoundInner>,
+}
+
+/// Wraps an integer texel coordinate (section 3.8.8; -1 and `size` mean "border").
+#[inline]
+pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
+    let size = size.max(1);
+    match mode {
+        WrapMode::Repeat => i.rem_euclid(size),
+        WrapMode::ClampToEdge => i.clamp(0, size - 1),
+        WrapMode::Clamp if !linear => i.clamp(0, size - 1),
+        WrapMode::Clamp | WrapMode::ClampToBorder => i.clamp(-1, size),
+        WrapMode::MirroredRepeat => {
+            let m = i.rem_euclid(2 * size);
+            if m < size {
+                m
+            } else {
+                2 * size - 1 - m
+            }
+        }
+    }
+}
+
+/// `floor(x)` as an integer: saturating, NaN as 0.
+#[inline]
+fn ifloor(x: f64) -> i64 {
+    x.floor() as i64
+}
+
+/// Cube map face selection (table 3.19 of OpenGL 1.5): the face index (+X, -X, +Y, -Y, +Z,
+/// -Z), and the face coordinates (s, t) in [0, 1]. Ties go to X, then Y. A zero (or NaN)
+/// direction gives face +Z... (defined, not meaningful).
+pub fn cube_face(dir: [f32; 3]) -> (usize, [f32; 2]) {
+    let [x, y, z] = dir;
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    let (face, sc, tc, ma) = if ax >= ay && ax >= az {
+        if x >= 0.0 {
+            (0, -z, -y, ax)
+        } else {
+            (1, z, -y, ax)
+        }
+    } else if ay >= az {
+        if y >= 0.0 {
+            (2, x, z, ay)
+        } else {
+            (3, x, -z, ay)
+        }
+    } else if z >= 0.0 {
+        (4, x, -y, az)
+    } else {
+        (5, -x, -y, az)
+    };
+    if ma > 0.0 {
+        (face, [(sc / ma + 1.0) * 0.5, (tc / ma + 1.0) * 0.5])
+    } else {
+        (face, [0.5, 0.5])
+    }
+}
+
+/// The face coordinates of direction `dir` projected on `face` (for derivatives).
+fn face_coords(face: usize, dir: [f32; 3]) -> [f32; 2] {
+    let [x, y, z] = dir;
+    let (sc, tc, ma) = match face {
+        0 => (-z, -y, x),
+        1 => (z, -y, -x),
+        2 => (x, z, y),
+        3 => (x, -z, -y),
+        4 => (x, -y, z),
+        _ => (-x, -y, -z),
+    };
+    let ma = ma.abs();
+    if ma > 0.0 {
+        [(sc / ma + 1.0) * 0.5, (tc / ma + 1.0) * 0.5]
+    } else {
+        [0.5, 0.5]
+    }
+}
+
+#[inline]
+fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+    [0, 1, 2, 3].map(|i| a[i] + (b[i] - a[i]) * w)
+}
+
+fn length(v: [f32; 3]) -> f32 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+impl BoundTexture {
+    pub(crate) fn from_inner(inner: Arc<BoundInner>) -> BoundTexture {
+        BoundTexture { inner }
+    }
+
+    /// The target sampled (the unit's highest-precedence enabled target).
+    pub fn target(&self) -> TextureTarget {
+        self.inner.target
+    }
+
+    /// The sampler parameters frozen with the snapshot.
+    pub fn params(&self) -> &SamplerParams {
+        &self.inner.params
+    }
+
+    /// The internal format of the base level.
+    pub fn internal_format(&self) -> InternalFormat {
+        self.inner.format
+    }
+
+    /// The base format the texture environment must use (table 3.22/3.23 of OpenGL 1.5): the
+    /// base level's, except that depth textures act as `GL_DEPTH_TEXTURE_MODE` says
+    /// (LUMINANCE, INTENSITY or ALPHA).
+    pub fn base_format(&self) -> BaseFormat {
+        match self.inner.base {
+            BaseFormat::DepthComponent => match self.inner.params.depth_mode {
+                DepthTextureMode::Luminance => BaseFormat::Luminance,
+                DepthTextureMode::Intensity => BaseFormat::Intensity,
+                DepthTextureMode::Alpha => BaseFormat::Alpha,
+            },
+            b => b,
+        }
+    }
+
+    /// Number of mipmap levels sampled (base level to the last).
+    pub fn level_count(&self) -> usize {
+        self.inner.levels.first().map_or(0, |l| l.len())
+    }
+
+    /// Whether the r coordinate is used: 3D textures, cube maps and depth comparison.
+    pub fn uses_r(&self) -> bool {
+        matches!(
+            self.inner.target,
+            TextureTarget::T3D | TextureTarget::CubeMap
+        ) || self.inner.params.compare
+    }
+
+    /// The switch-over point `c` between magnification and minification (section 3.8.9):
+    /// 0.5 when the magnification filter is LINEAR and the minification filter is
+    /// NEAREST_MIPMAP_NEAREST or NEAREST_MIPMAP_LINEAR, else 0.
+    pub fn switch_over(&self) -> f32 {
+        let p = &self.inner.params;
+        if p.mag_filter == MagFilter::Linear
+            && matches!(
+                p.min_filter,
+                MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear
+            )
+        {
+            0.5
+        } else {
+            0.0
+        }
+    }
+
+    /// The derivatives of (s, t, r) scaled to texels of the base level (u, v, w), with unused
+    /// dimensions zero.
+    fn scaled(&self, d: [f32; 3]) -> [f32; 3] {
+        let [w, h, dd] = self.inner.base_size;
+        match self.inner.target {
+            TextureTarget::T1D => [d[0] * w, 0.0, 0.0],
+            TextureTarget::T3D => [d[0] * w, d[1] * h, d[2] * dd],
+            _ => [d[0] * w, d[1] * h, 0.0],
+        }
+    }
+
+    /// λ from a scale factor ρ: `log2 ρ` plus the texture's and the unit's LOD bias (their
+    /// sum clamped to ±`GL_MAX_TEXTURE_LOD_BIAS`), clamped to [MIN_LOD, MAX_LOD]. ρ = 0 gives
+    /// MIN_LOD (magnification); an infinite or NaN ρ gives MAX_LOD (the coarsest level).
+    pub fn lambda_from_rho(&self, rho: f32, unit_lod_bias: f32) -> f32 {
+        let p = &self.inner.params;
+        let base = if rho.is_nan() {
+            f32::INFINITY
+        } else {
+            rho.log2()
+        };
+        let mut bias = p.lod_bias + unit_lod_bias;
+        if bias.is_nan() {
+            bias = 0.0;
+        }
+        let bias = bias.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
+        let lambda = base + bias;
+        let lambda = if lambda > p.max_lod {
+            p.max_lod
+        } else {
+            lambda
+        };
+        if lambda < p.min_lod {
+            p.min_lod
+        } else {
+            lambda
+        }
+    }
+
+    /// λ of equations 3.17-3.19 (OpenGL 1.5): ρ is the larger of the lengths of
+    /// (du/dx, dv/dx, dw/dx) and (du/dy, dv/dy, dw/dy), where u, v, w are s, t, r scaled by
+    /// the base level's width, height and depth (only the texture's dimensions count); then
+    /// [`BoundTexture::lambda_from_rho`]. For cube maps pass face-space derivatives, or use
+    /// [`BoundTexture::sample_grad`], which computes them.
+    pub fn scale_factor_lambda(&self, d_dx: [f32; 3], d_dy: [f32; 3], unit_lod_bias: f32) -> f32 {
+        let rho = length(self.scaled(d_dx)).max(length(self.scaled(d_dy)));
+        self.lambda_from_rho(rho, unit_lod_bias)
+    }
+
+    /// Samples at `coords` (s, t, r already divided by q; for cube maps the direction) with a
+    /// given λ: magnification when λ <= c ([`BoundTexture::switch_over`]), otherwise the
+    /// minification filter's level selection (section 3.8.8).
+    pub fn sample(&self, coords: [f32; 3], lambda: f32) -> [f32; 4] {
+        if self.inner.target == TextureTarget::CubeMap {
+            let (face, st) = cube_face(coords);
+            self.sample_face(face, [st[0], st[1], coords[2]], lambda)
+        } else {
+            self.sample_face(0, coords, lambda)
+        }
+    }
+
+    /// The main entry point of the fragment stage: the texture colour at `coords` (s, t, r
+    /// divided by q, or the cube map direction) given the screen-space derivatives of the same
+    /// coordinates and the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`).
+    ///
+    /// Footprint rule (anisotropic filtering, EXT_texture_filter_anisotropic): with the
+    /// derivatives scaled to texels, `Px = |d/dx|`, `Py = |d/dy|`, `Pmax = max(Px, Py)`,
+    /// `Pmin = min(Px, Py)`. The number of samples is
+    /// `N = min(ceil(Pmax / Pmin), MAX_ANISOTROPY)` (`MAX_ANISOTROPY` when `Pmin` is 0), and
+    /// `λ = log2(Pmax / N)` (plus biases and clamps). The N samples, each filtered with that
+    /// λ by the texture's filters, lie evenly along the major axis of the footprint, at
+    /// `coords + d_major * ((i + 1/2) / N - 1/2)` for i in 0..N, and are averaged with equal
+    /// weights. With `MAX_ANISOTROPY` = 1 (the default) this is exactly the isotropic λ of
+    /// [`BoundTexture::scale_factor_lambda`] and one sample.
+    ///
+    /// Cube maps: the face is chosen from `coords`; `coords + d_dx` and `coords + d_dy` are
+    /// projected on the same face to get face-space derivatives.
+    pub fn sample_grad(
+        &self,
+        coords: [f32; 3],
+        d_dx: [f32; 3],
+        d_dy: [f32; 3],
+        unit_lod_bias: f32,
+    ) -> [f32; 4] {
+        let (face, c, dx, dy) = if self.inner.target == TextureTarget::CubeMap {
+            let (face, st) = cube_face(coords);
+            let add = |d: [f32; 3]| [coords[0] + d[0], coords[1] + d[1], coords[2] + d[2]];
+            let fx = face_coords(face, add(d_dx));
+            let fy = face_coords(face, add(d_dy));
+            (
+                face,
+                [st[0], st[1], coords[2]],
+                [fx[0] - st[0], fx[1] - st[1], 0.0],
+                [fy[0] - st[0], fy[1] - st[1], 0.0],
+            )
+        } else {
+            (0, coords, d_dx, d_dy)
+        };
+        let (px, py) = (length(self.scaled(dx)), length(self.scaled(dy)));
+        let max_aniso = self.inner.params.max_anisotropy;
+        if max_aniso <= 1.0 {
+            let lambda = self.lambda_from_rho(px.max(py), unit_lod_bias);
+            return self.sample_face(face, c, lambda);
+        }
+        let (pmax, pmin, axis) = if px >= py { (px, py, dx) } else { (py, px, dy) };
+        let n = if !pmax.is_finite() || pmax <= 0.0 {
+            1.0
+        } else if pmin > 0.0 {
+            (pmax / pmin).ceil().min(max_aniso).max(1.0)
+        } else {
+            max_aniso.floor().max(1.0)
+        };
+        let n = n as usize;
+        let lambda = self.lambda_from_rho(pmax / n as f32, unit_lod_bias);
+        if n <= 1 {
+            return self.sample_face(face, c, lambda);
+        }
+        let mut sum = [0.0f32; 4];
+        for i in 0..n {
+            let k = (i as f32 + 0.5) / n as f32 - 0.5;
+            let p = [c[0] + axis[0] * k, c[1] + axis[1] * k, c[2] + axis[2] * k];
+            let v = self.sample_face(face, p, lambda);
+            for j in 0..4 {
+                sum[j] += v[j];
+            }
+        }
+        sum.map(|v| v / n as f32)
+    }
+
+    /// Level selection and filtering on one face (coords: s, t, r; for cube faces r is only
+    /// used for depth comparison).
+    fn sample_face(&self, face: usize, coords: [f32; 3], lambda: f32) -> [f32; 4] {
+        let Some(levels) = self.inner.levels.get(face) else {
+            return [0.0, 0.0, 0.0, 1.0];
+        };
+        let Some(base) = levels.first() else {
+            return [0.0, 0.0, 0.0, 1.0];
+        };
+        let p = &self.inner.params;
+        let q = levels.len() - 1;
+        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        let raw = if lambda <= self.switch_over() {
+            self.filter(base, p.mag_filter == MagFilter::Linear, coords)
+        } else {
+            let linear = matches!(
+                p.min_filter,
+                MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
+            );
+            match p.min_filter {
+                MinFilter::Nearest | MinFilter::Linear => self.filter(base, linear, coords),
+                MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                    let d = if lambda <= 0.5 {
+                        0
+                    } else {
+                        ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
+                    };
+                    self.filter(&levels[d.min(q)], linear, coords)
+                }
+                MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                    if lambda >= q as f32 {
+                        self.filter(&levels[q], linear, coords)
+                    } else {
+                        let d1 = (lambda.floor().max(0.0) as usize).min(q);
+                        let d2 = (d1 + 1).min(q);
+                        let w = lambda - lambda.floor();
+                        let t1 = self.filter(&levels[d1], linear, coords);
+                        let t2 = self.filter(&levels[d2], linear, coords);
+                        lerp4(t1, t2, w)
+                    }
+                }
+            }
+        };
+        self.finish(raw)
+    }
+
+    /// Internal RGBA after filtering -> texture source colour.
+    fn finish(&self, v: [f32; 4]) -> [f32; 4] {
+        match self.inner.base {
+            BaseFormat::DepthComponent => {
+                let d = v[0];
+                match self.inner.params.depth_mode {
+                    DepthTextureMode::Luminance => [d, d, d, 1.0],
+                    DepthTextureMode::Intensity => [d; 4],
+                    DepthTextureMode::Alpha => [0.0, 0.0, 0.0, d],
+                }
+            }
+            b => b.expand(v),
+        }
+    }
+
+    /// One texel by wrapped inner indices (-1 or size: border), in internal RGBA, after depth
+    /// comparison when enabled.
+    #[inline]
+    fn texel(&self, img: &TexImage, idx: [i64; 3], inner: [i64; 3], r: f32) -> [f32; 4] {
+        let b = img.borders();
+        let mut outside = false;
+        for d in 0..3 {
+            if idx[d] < 0 || idx[d] >= inner[d] {
+                outside = true;
+            }
+        }
+        let v = if outside && img.border == 0 {
+            self.inner.params.border_color
+        } else {
+            img.fetch(
+                (idx[0] + b[0] as i64) as i32,
+                (idx[1] + b[1] as i64) as i32,
+                (idx[2] + b[2] as i64) as i32,
+            )
+        };
+        let p = &self.inner.params;
+        if p.compare && self.inner.base == BaseFormat::DepthComponent {
+            let r = super::image::clamp01(r);
+            let pass = p.compare_func.test(r, v[0]);
+            let x = if pass { 1.0 } else { 0.0 };
+            [x, x, x, x]
+        } else {
+            v
+        }
+    }
+
+    /// NEAREST or LINEAR filtering of one image (1D, 2D or 3D by the target).
+    fn filter(&self, img: &TexImage, linear: bool, coords: [f32; 3]) -> [f32; 4] {
+        let dims = match self.inner.target {
+            TextureTarget::T1D => 1,
+            TextureTarget::T3D => 3,
+            _ => 2,
+        };
+        let inner = img.inner_size().map(|s| s.max(1) as i64);
+        let wrap = self.inner.params.wrap;
+        let r = coords[2];
+        // Per axis: the two indices and the weight of the second.
+        let mut i0 = [0i64; 3];
+        let mut i1 = [0i64; 3];
+        let mut w = [0.0f32; 3];
+        for d in 0..dims {
+            let mut s = coords[d] as f64;
+            if wrap[d] == WrapMode::Clamp {
+                s = s.clamp(0.0, 1.0);
+                if s.is_nan() {
+                    s = 0.0;
+                }
+            }
+            let u = s * inner[d] as f64;
+            if linear {
+                let u = u - 0.5;
+                let f = ifloor(u);
+                let frac = u - u.floor();
+                w[d] = if frac.is_finite() { frac as f32 } else { 0.0 };
+                i0[d] = wrap_index(f, inner[d], wrap[d], true);
+                i1[d] = wrap_index(f.saturating_add(1), inner[d], wrap[d], true);
+            } else {
+                i0[d] = wrap_index(ifloor(u), inner[d], wrap[d], false);
+                i1[d] = i0[d];
+            }
+        }
+        if !linear {
+            return self.texel(img, i0, inner, r);
+        }
+        match dims {
+            1 => {
+                let a = self.texel(img, [i0[0], 0, 0], inner, r);
+                let b = self.texel(img, [i1[0], 0, 0], inner, r);
+                lerp4(a, b, w[0])
+            }
+            2 => {
+                let t = |i: i64, j: i64| self.texel(img, [i, j, 0], inner, r);
+                let row0 = lerp4(t(i0[0], i0[1]), t(i1[0], i0[1]), w[0]);
+                let row1 = lerp4(t(i0[0], i1[1]), t(i1[0], i1[1]), w[0]);
+                lerp4(row0, row1, w[1])
+            }
+            _ => {
+                let t = |i: i64, j: i64, k: i64| self.texel(img, [i, j, k], inner, r);
+                let slice = |k: i64| {
+                    let row0 = lerp4(t(i0[0], i0[1], k), t(i1[0], i0[1], k), w[0]);
+                    let row1 = lerp4(t(i0[0], i1[1], k), t(i1[0], i1[1], k), w[0]);
+                    lerp4(row0, row1, w[1])
+                };
+                lerp4(slice(i0[2]), slice(i1[2]), w[2])
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wrap_functions() {
+        use WrapMode::*;
+        assert_eq!(wrap_index(-1, 4, Repeat, true), 3);
+        assert_eq!(wrap_index(9, 4, Repeat, true), 1);
+        assert_eq!(wrap_index(-1, 4, ClampToEdge, true), 0);
+        assert_eq!(wrap_index(4, 4, ClampToBorder, true), 4);
+        assert_eq!(wrap_index(7, 4, ClampToBorder, true), 4);
+        assert_eq!(wrap_index(4, 4, Clamp, false), 3);
+        assert_eq!(wrap_index(-1, 4, Clamp, true), -1);
+        // Mirrored: 0 1 2 3 | 3 2 1 0 | 0 1 ...
+        let m: Vec<i64> = (-4..10)
+            .map(|i| wrap_index(i, 4, MirroredRepeat, true))
+            .collect();
+        assert_eq!(m, vec![3, 2, 1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0, 1]);
+        assert_eq!(wrap_index(i64::MAX, 3, Repeat, true), i64::MAX % 3);
+    }
+
+    #[test]
+    fn cube_faces_by_major_axis() {
+        assert_eq!(cube_face([1.0, 0.0, 0.0]), (0, [0.5, 0.5]));
+        assert_eq!(cube_face([-1.0, 0.5, 0.0]).0, 1);
+        assert_eq!(cube_face([0.1, 1.0, 0.2]).0, 2);
+        assert_eq!(cube_face([0.1, -1.0, 0.2]).0, 3);
+        assert_eq!(cube_face([0.1, 0.2, 1.0]).0, 4);
+        assert_eq!(cube_face([0.1, 0.2, -1.0]).0, 5);
+        // +X: sc = -rz, tc = -ry: direction (1, -0.5, -0.5) -> s = t = 0.75
+        assert_eq!(cube_face([1.0, -0.5, -0.5]), (0, [0.75, 0.75]));
+        let (_, st) = cube_face([f32::NAN; 3]);
+        assert!(st[0].is_nan() || st[0] == 0.5);
+    }
+}
