@@ -935,6 +935,17 @@ pub const SCENES: &[Scene] = &[
     scene("load_mult_matrix", load_mult_matrix),
     scene("viewport", viewport),
     scene("depth_range", depth_range),
+    scene("lit_directional", lit_directional),
+    scene("lit_positional_attenuated", lit_positional_attenuated),
+    scene("lit_spot", lit_spot),
+    scene(
+        "lit_two_sided_separate_specular",
+        lit_two_sided_separate_specular,
+    ),
+    scene("lit_color_material", lit_color_material),
+    scene("blend_over", blend_over),
+    scene("alpha_test_and_stencil", alpha_test_and_stencil),
+    scene("logic_xor", logic_xor),
     Scene {
         name: "cube_128",
         width: 128,
@@ -955,4 +966,160 @@ const fn scene(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
 /// The scene called `name`.
 pub fn find(name: &str) -> Option<&'static Scene> {
     SCENES.iter().find(|s| s.name == name)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lighting and per-fragment operations.
+
+/// A lit sphere of `stacks` x `slices` quads (triangle strips), unit radius, with normals.
+fn sphere(gl: &mut dyn Gl, stacks: usize, slices: usize) {
+    use std::f32::consts::PI;
+    for i in 0..stacks {
+        let (t0, t1) = (
+            PI * i as f32 / stacks as f32,
+            PI * (i + 1) as f32 / stacks as f32,
+        );
+        gl.begin(GL_TRIANGLE_STRIP);
+        for j in 0..=slices {
+            let p = 2.0 * PI * j as f32 / slices as f32;
+            for t in [t1, t0] {
+                let (x, y, z) = (t.sin() * p.cos(), t.cos(), t.sin() * p.sin());
+                gl.normal_3f(x, y, z);
+                gl.vertex_3f(x, y, z);
+            }
+        }
+        gl.end();
+    }
+}
+
+fn lit_setup(gl: &mut dyn Gl) {
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-0.6, 0.6, -0.6, 0.6, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    clear(gl);
+    gl.enable(GL_DEPTH_TEST);
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.8, 0.6, 0.3, 1.0]);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.6, 0.6, 0.6, 1.0]);
+    gl.materialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0);
+}
+
+fn lit_directional(gl: &mut dyn Gl) {
+    lit_setup(gl);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[1.0, 1.0, 1.0, 0.0]);
+    gl.translatef(0.0, 0.0, -3.0);
+    sphere(gl, 12, 16);
+}
+
+fn lit_positional_attenuated(gl: &mut dyn Gl) {
+    lit_setup(gl);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[-1.0, 1.0, -1.0, 1.0]);
+    gl.lightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 0.5);
+    gl.lightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0.3);
+    gl.lightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, 0.1);
+    gl.light_modeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    gl.translatef(0.0, 0.0, -3.0);
+    sphere(gl, 12, 16);
+}
+
+fn lit_spot(gl: &mut dyn Gl) {
+    lit_setup(gl);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.0, 0.0, 0.0, 1.0]);
+    gl.lightfv(GL_LIGHT0, GL_SPOT_DIRECTION, &[0.1, 0.1, -1.0]);
+    gl.lightf(GL_LIGHT0, GL_SPOT_CUTOFF, 12.0);
+    gl.lightf(GL_LIGHT0, GL_SPOT_EXPONENT, 10.0);
+    gl.light_modelfv(GL_LIGHT_MODEL_AMBIENT, &[0.1, 0.1, 0.1, 1.0]);
+    gl.translatef(0.0, 0.0, -3.0);
+    sphere(gl, 16, 24);
+}
+
+fn lit_two_sided_separate_specular(gl: &mut dyn Gl) {
+    lit_setup(gl);
+    gl.light_modeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+    gl.light_modeli(
+        GL_LIGHT_MODEL_COLOR_CONTROL,
+        GL_SEPARATE_SPECULAR_COLOR as i32,
+    );
+    gl.materialfv(GL_BACK, GL_DIFFUSE, &[0.2, 0.3, 0.9, 1.0]);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.0, 0.5, 1.0, 0.0]);
+    gl.enable(GL_LIGHT1);
+    gl.lightfv(GL_LIGHT1, GL_DIFFUSE, &[0.0, 0.8, 0.2, 1.0]);
+    gl.lightfv(GL_LIGHT1, GL_POSITION, &[0.0, 0.0, -1.0, 0.0]);
+    gl.translatef(0.0, 0.0, -3.5);
+    gl.rotatef(25.0, 1.0, 0.0, 0.0);
+    // The far half of an open cylinder: its inside (back faces) faces the viewer, and the
+    // front faces of its rim show at the top.
+    gl.begin(GL_QUAD_STRIP);
+    for j in 0..=16 {
+        let a = std::f32::consts::PI * j as f32 / 16.0;
+        gl.normal_3f(a.cos(), 0.0, -a.sin());
+        gl.vertex_3f(a.cos(), -0.6, -a.sin());
+        gl.vertex_3f(a.cos(), 0.6, -a.sin());
+    }
+    gl.end();
+}
+
+fn lit_color_material(gl: &mut dyn Gl) {
+    lit_setup(gl);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[1.0, 0.5, 1.0, 0.0]);
+    gl.enable(GL_COLOR_MATERIAL);
+    gl.color_material(GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    gl.enable(GL_NORMALIZE);
+    gl.translatef(0.0, 0.0, -3.0);
+    gl.scalef(1.0, 0.7, 1.3);
+    gl.color_3f(0.2, 0.8, 0.4);
+    sphere(gl, 10, 14);
+}
+
+fn blend_over(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for k in 0..6 {
+        let c = PALETTE[k % PALETTE.len()];
+        gl.color_4f(c[0], c[1], c[2], 0.25 + 0.12 * k as f32);
+        let o = 4.0 + 7.0 * k as f32;
+        gl.rectf(o, o * 0.8, o + 22.0, o * 0.8 + 20.0);
+    }
+    gl.blend_func_separate(GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    gl.blend_equation(GL_FUNC_REVERSE_SUBTRACT);
+    gl.color_4f(0.3, 0.1, 0.2, 0.5);
+    gl.rectf(30.0, 2.0, 62.0, 30.0);
+}
+
+fn alpha_test_and_stencil(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_stencil(0);
+    gl.clear(GL_STENCIL_BUFFER_BIT);
+    // Write 1 into the stencil where alpha passes (a smooth alpha ramp, cut at 0.5).
+    gl.enable(GL_STENCIL_TEST);
+    gl.stencil_func(GL_ALWAYS, 1, 0xFF);
+    gl.stencil_op(GL_KEEP, GL_KEEP, GL_REPLACE);
+    gl.enable(GL_ALPHA_TEST);
+    gl.alpha_func(GL_GREATER, 0.5);
+    gl.begin(GL_QUADS);
+    for (x, y) in [(4.0f32, 4.0f32), (60.0, 4.0), (60.0, 60.0), (4.0, 60.0)] {
+        gl.color_4f(0.9, 0.9, 0.2, x / 64.0);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+    gl.disable(GL_ALPHA_TEST);
+    // Draw only where the stencil is 1, incrementing with wrap.
+    gl.stencil_func(GL_EQUAL, 1, 0xFF);
+    gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    gl.color_3f(0.1, 0.3, 0.9);
+    gl.rectf(0.0, 20.0, 64.0, 44.0);
+}
+
+fn logic_xor(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_COLOR_LOGIC_OP);
+    gl.logic_op(GL_XOR);
+    gl.color_3f(1.0, 0.5, 0.25);
+    gl.rectf(8.0, 8.0, 40.0, 40.0);
+    gl.color_3f(0.25, 1.0, 0.75);
+    gl.rectf(24.0, 24.0, 56.0, 56.0);
 }

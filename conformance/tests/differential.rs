@@ -47,6 +47,14 @@ macro_rules! differential {
 }
 
 differential!(
+    lit_directional,
+    lit_positional_attenuated,
+    lit_spot,
+    lit_two_sided_separate_specular,
+    lit_color_material,
+    blend_over,
+    alpha_test_and_stencil,
+    logic_xor,
     points,
     lines,
     line_strip,

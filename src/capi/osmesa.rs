@@ -108,15 +108,13 @@ impl OsMesaContext {
         let (w, h) = (self.width, self.height);
         let format = self.format;
         let offsets: Vec<usize> = (0..h).map(|y| self.row_offset(y)).collect();
-        let fb = self.gl.framebuffer();
-        for y in 0..h {
-            for x in 0..w {
-                let o = offsets[y as usize] + x as usize * bpp;
-                to_format(
-                    format,
-                    fb.color_at(x, y).unwrap_or_default(),
-                    &mut out[o..o + bpp],
-                );
+        let rows = self.gl.framebuffer().color_rows_bottom_up();
+        let pixels: &[[u8; 4]] = bytemuck::cast_slice(&rows);
+        for y in 0..h as usize {
+            let src = &pixels[y * w as usize..(y + 1) * w as usize];
+            for (x, &c) in src.iter().enumerate() {
+                let o = offsets[y] + x * bpp;
+                to_format(format, c, &mut out[o..o + bpp]);
             }
         }
     }

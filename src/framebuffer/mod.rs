@@ -138,12 +138,14 @@ impl Framebuffer {
 
     /// The colour buffer as tightly packed RGBA8 rows, bottom row first.
     pub fn color_rows_bottom_up(&self) -> Vec<u8> {
-        let mut out = vec![0u8; self.width as usize * self.height as usize * 4];
-        for y in 0..self.height {
-            for x in 0..self.width {
-                let c = self.color_at(x, y).unwrap_or_default();
-                let o = (y as usize * self.width as usize + x as usize) * 4;
-                out[o..o + 4].copy_from_slice(&c);
+        let w = self.width.max(0) as usize;
+        let mut out = Vec::with_capacity(w * self.height.max(0) as usize * 4);
+        for y in 0..self.height.max(0) as usize {
+            for tx in 0..self.tiles_x {
+                let tile = &self.tiles[(y / TILE) * self.tiles_x + tx];
+                let row = (y % TILE) * TILE;
+                let n = TILE.min(w - tx * TILE);
+                out.extend_from_slice(bytemuck::cast_slice(&tile.color[row..row + n]));
             }
         }
         out
@@ -157,5 +159,28 @@ pub fn depth_max(bits: u32) -> u32 {
         0 => 0x00FF_FFFF,
         32.. => u32::MAX,
         b => (1u32 << b) - 1,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packed_rows_match_per_pixel_reads() {
+        let mut fb = Framebuffer::new(70, 5, FramebufferConfig::default());
+        for y in 0..5 {
+            for x in 0..70 {
+                fb.set_color(x, y, [x as u8, y as u8, (x * y) as u8, 7]);
+            }
+        }
+        let rows = fb.color_rows_bottom_up();
+        assert_eq!(rows.len(), 70 * 5 * 4);
+        for y in 0..5 {
+            for x in 0..70 {
+                let o = ((y * 70 + x) * 4) as usize;
+                assert_eq!(&rows[o..o + 4], &fb.color_at(x, y).unwrap());
+            }
+        }
     }
 }
