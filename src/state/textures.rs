@@ -196,6 +196,13 @@ fn check_depth_target(target: TexImageTarget, f: InternalFormat) -> Check<()> {
 }
 
 impl Context {
+    /// The texture snapshot unit `unit` samples for the next draw: the object bound to its
+    /// highest-precedence enabled target, or `None` when no target is enabled or the texture
+    /// is incomplete (see [`crate::texture::TextureState::bound_for_unit`]).
+    pub fn bound_texture(&self, unit: usize) -> Option<crate::texture::BoundTexture> {
+        self.textures.bound_for_unit(unit)
+    }
+
     // ----- objects
 
     pub(crate) fn gen_textures(&mut self, n: GLsizei, textures: &mut [GLuint]) {

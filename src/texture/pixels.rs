@@ -237,7 +237,7 @@ mod tests {
         let c = unpack_group(&d, 0, TexPixelFormat::Rgb, t, false);
         assert_eq!(c, [16.0 / 31.0, 32.0 / 63.0, 1.0 / 31.0, 1.0]);
         // 2_10_10_10_REV with BGRA: first component (B) in bits 9..0, A in 31..30.
-        let v: u32 = 1023 | (0 << 10) | (512 << 20) | (1 << 30);
+        let v: u32 = 1023 | (512 << 20) | (1 << 30); // G = 0
         let t = TexPixelType::Packed(PackedType::UInt2101010Rev);
         let c = unpack_group(&v.to_ne_bytes(), 0, TexPixelFormat::Bgra, t, false);
         assert_eq!(c, [512.0 / 1023.0, 0.0, 1.0, 1.0 / 3.0]);

@@ -1,0 +1,1455 @@
+//! Texture objects, image specification, pixel unpacking/packing, parameters and queries
+//! through the `Gl` trait, with error rules checked table-driven: every bad call records the
+//! expected error and leaves the texture state (parameters and level parameters) unchanged.
+
+use tilegl::enums::*;
+use tilegl::{Context, Gl};
+
+fn ctx() -> Context {
+    Context::new(16, 16)
+}
+
+fn level_param(gl: &mut Context, target: GLenum, level: i32, pname: GLenum) -> i32 {
+    let mut v = [0i32];
+    gl.get_tex_level_parameteriv(target, level, pname, &mut v);
+    v[0]
+}
+
+fn tex_param(gl: &mut Context, target: GLenum, pname: GLenum) -> i32 {
+    let mut v = [0i32];
+    gl.get_tex_parameteriv(target, pname, &mut v);
+    v[0]
+}
+
+/// Reads level 0 of the bound 2D texture back as RGBA floats.
+fn read_rgba_f32(gl: &mut Context, target: GLenum, n: usize) -> Vec<f32> {
+    let mut out = vec![0u8; n * 16];
+    gl.get_tex_image(target, 0, GL_RGBA, GL_FLOAT, &mut out);
+    out.chunks(4)
+        .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
+
+#[test]
+fn objects_gen_bind_delete() {
+    let mut gl = ctx();
+    let mut names = [0u32; 3];
+    gl.gen_textures(3, &mut names);
+    assert!(names.iter().all(|&n| n != 0));
+    assert!(names[0] != names[1] && names[1] != names[2]);
+    // Generated but never bound: not yet a texture.
+    assert_eq!(gl.is_texture(names[0]), 0);
+    gl.bind_texture(GL_TEXTURE_2D, names[0]);
+    assert_eq!(gl.is_texture(names[0]), 1);
+    assert_eq!(gl.is_texture(0), 0);
+    // Target mismatch.
+    gl.bind_texture(GL_TEXTURE_3D, names[0]);
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    // Parameters are per object; the default object keeps its own.
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.bind_texture(GL_TEXTURE_2D, 0);
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER),
+        GL_NEAREST_MIPMAP_LINEAR as i32
+    );
+    gl.bind_texture(GL_TEXTURE_2D, names[0]);
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER),
+        GL_LINEAR as i32
+    );
+    // Deleting a bound texture reverts the binding to the default object.
+    gl.delete_textures(1, &names[..1]);
+    assert_eq!(gl.is_texture(names[0]), 0);
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER),
+        GL_NEAREST_MIPMAP_LINEAR as i32
+    );
+    // Names need not come from glGenTextures; generated names skip used ones.
+    gl.bind_texture(GL_TEXTURE_1D, 1000);
+    assert_eq!(gl.is_texture(1000), 1);
+    // Priorities and residency.
+    gl.prioritize_textures(1, &[1000], &[2.0]);
+    gl.bind_texture(GL_TEXTURE_1D, 1000);
+    let mut p = [0f32];
+    gl.get_tex_parameterfv(GL_TEXTURE_1D, GL_TEXTURE_PRIORITY, &mut p);
+    assert_eq!(p[0], 1.0);
+    let mut res = [7u8];
+    assert_eq!(
+        gl.are_textures_resident(1, &[1000], &mut res),
+        GL_TRUE as u8
+    );
+    assert_eq!(
+        gl.are_textures_resident(1, &[5555], &mut res),
+        GL_FALSE as u8
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    gl.gen_textures(-1, &mut names);
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+}
+
+#[test]
+fn level_parameters_and_internal_format_precision() {
+    let mut gl = ctx();
+    let cases: [(GLenum, [i32; 7]); 8] = [
+        // R, G, B, A, L, I, depth sizes
+        (GL_RGBA8, [8, 8, 8, 8, 0, 0, 0]),
+        (GL_RGB16, [16, 16, 16, 0, 0, 0, 0]),
+        (GL_R3_G3_B2, [8, 8, 8, 0, 0, 0, 0]),
+        (GL_LUMINANCE12_ALPHA4, [0, 0, 0, 16, 16, 0, 0]),
+        (GL_INTENSITY16, [0, 0, 0, 0, 0, 16, 0]),
+        (GL_ALPHA4, [0, 0, 0, 8, 0, 0, 0]),
+        (GL_DEPTH_COMPONENT16, [0, 0, 0, 0, 0, 0, 16]),
+        (GL_DEPTH_COMPONENT32, [0, 0, 0, 0, 0, 0, 32]),
+    ];
+    for (ifmt, sizes) in cases {
+        let fmt = if ifmt == GL_DEPTH_COMPONENT16 || ifmt == GL_DEPTH_COMPONENT32 {
+            GL_DEPTH_COMPONENT
+        } else {
+            GL_RGBA
+        };
+        gl.tex_image_2d(GL_TEXTURE_2D, 0, ifmt as i32, 3, 5, 0, fmt, GL_FLOAT, None);
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "{ifmt:#x}");
+        let q = |gl: &mut Context, p| level_param(gl, GL_TEXTURE_2D, 0, p);
+        assert_eq!(q(&mut gl, GL_TEXTURE_WIDTH), 3);
+        assert_eq!(q(&mut gl, GL_TEXTURE_HEIGHT), 5);
+        assert_eq!(q(&mut gl, GL_TEXTURE_DEPTH), 1);
+        assert_eq!(q(&mut gl, GL_TEXTURE_INTERNAL_FORMAT), ifmt as i32);
+        let got = [
+            GL_TEXTURE_RED_SIZE,
+            GL_TEXTURE_GREEN_SIZE,
+            GL_TEXTURE_BLUE_SIZE,
+            GL_TEXTURE_ALPHA_SIZE,
+            GL_TEXTURE_LUMINANCE_SIZE,
+            GL_TEXTURE_INTENSITY_SIZE,
+            GL_TEXTURE_DEPTH_SIZE,
+        ]
+        .map(|p| q(&mut gl, p));
+        assert_eq!(got, sizes, "{ifmt:#x}");
+    }
+    // 16-bit formats keep 16 bits: 0x1234 / 65535 survives a round trip.
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE16 as i32,
+        1,
+        1,
+        0,
+        GL_LUMINANCE,
+        GL_UNSIGNED_SHORT,
+        Some(&0x1234u16.to_ne_bytes()),
+    );
+    let mut out = [0u8; 2];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_UNSIGNED_SHORT, &mut out);
+    assert_eq!(u16::from_ne_bytes(out), 0x1234);
+    // Undefined level: zeros, internal format 1.
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_2D, 3, GL_TEXTURE_WIDTH), 0);
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 3, GL_TEXTURE_INTERNAL_FORMAT),
+        1
+    );
+    // Borders count in the width.
+    gl.tex_image_1d(GL_TEXTURE_1D, 0, 3, 6, 1, GL_RGB, GL_UNSIGNED_BYTE, None);
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_1D, 0, GL_TEXTURE_WIDTH), 6);
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_1D, 0, GL_TEXTURE_BORDER), 1);
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_1D, 0, GL_TEXTURE_INTERNAL_FORMAT),
+        3
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
+
+/// Every packed type, unpacked from a hand-built bit pattern and read back as floats.
+#[test]
+fn unpack_packed_types_from_hand_computed_bit_layouts() {
+    // (type, format, element value, expected RGBA)
+    let cases: Vec<(GLenum, GLenum, u32, [f32; 4])> = vec![
+        (
+            GL_UNSIGNED_BYTE_3_3_2,
+            GL_RGB,
+            (0b101 << 5) | (0b010 << 2) | 0b11,
+            [5.0 / 7.0, 2.0 / 7.0, 1.0, 1.0],
+        ),
+        (
+            GL_UNSIGNED_BYTE_2_3_3_REV,
+            GL_RGB,
+            (0b10 << 6) | (0b011 << 3) | 0b001,
+            [1.0 / 7.0, 3.0 / 7.0, 2.0 / 3.0, 1.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_5_6_5,
+            GL_RGB,
+            (3 << 11) | (60 << 5) | 31,
+            [3.0 / 31.0, 60.0 / 63.0, 1.0, 1.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_5_6_5_REV,
+            GL_RGB,
+            (3 << 11) | (60 << 5) | 31,
+            [1.0, 60.0 / 63.0, 3.0 / 31.0, 1.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_4_4_4_4,
+            GL_RGBA,
+            0x1234,
+            [1.0 / 15.0, 2.0 / 15.0, 3.0 / 15.0, 4.0 / 15.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_4_4_4_4_REV,
+            GL_RGBA,
+            0x1234,
+            [4.0 / 15.0, 3.0 / 15.0, 2.0 / 15.0, 1.0 / 15.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_4_4_4_4,
+            GL_BGRA,
+            0x1234,
+            [3.0 / 15.0, 2.0 / 15.0, 1.0 / 15.0, 4.0 / 15.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_5_5_5_1,
+            GL_RGBA,
+            (1 << 11) | (2 << 6) | (3 << 1) | 1,
+            [1.0 / 31.0, 2.0 / 31.0, 3.0 / 31.0, 1.0],
+        ),
+        (
+            GL_UNSIGNED_SHORT_1_5_5_5_REV,
+            GL_RGBA,
+            1 | (2 << 5) | (3 << 10),
+            [1.0 / 31.0, 2.0 / 31.0, 3.0 / 31.0, 0.0],
+        ),
+        (
+            GL_UNSIGNED_INT_8_8_8_8,
+            GL_RGBA,
+            0x11223344,
+            [17.0 / 255.0, 34.0 / 255.0, 51.0 / 255.0, 68.0 / 255.0],
+        ),
+        (
+            GL_UNSIGNED_INT_8_8_8_8_REV,
+            GL_RGBA,
+            0x11223344,
+            [68.0 / 255.0, 51.0 / 255.0, 34.0 / 255.0, 17.0 / 255.0],
+        ),
+        (
+            GL_UNSIGNED_INT_10_10_10_2,
+            GL_RGBA,
+            (1 << 22) | (2 << 12) | (3 << 2) | 2,
+            [1.0 / 1023.0, 2.0 / 1023.0, 3.0 / 1023.0, 2.0 / 3.0],
+        ),
+        (
+            GL_UNSIGNED_INT_2_10_10_10_REV,
+            GL_RGBA,
+            1 | (2 << 10) | (3 << 20) | (1 << 30),
+            [1.0 / 1023.0, 2.0 / 1023.0, 3.0 / 1023.0, 1.0 / 3.0],
+        ),
+    ];
+    for (ty, fmt, v, want) in cases {
+        let bytes: Vec<u8> = match ty {
+            GL_UNSIGNED_BYTE_3_3_2 | GL_UNSIGNED_BYTE_2_3_3_REV => vec![v as u8],
+            GL_UNSIGNED_INT_8_8_8_8
+            | GL_UNSIGNED_INT_8_8_8_8_REV
+            | GL_UNSIGNED_INT_10_10_10_2
+            | GL_UNSIGNED_INT_2_10_10_10_REV => v.to_ne_bytes().to_vec(),
+            _ => (v as u16).to_ne_bytes().to_vec(),
+        };
+        let mut gl = ctx();
+        // RGBA16 keeps 10-bit components exactly enough (error < 1/65535 * 0.5).
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA16 as i32,
+            1,
+            1,
+            0,
+            fmt,
+            ty,
+            Some(&bytes),
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR, "{ty:#x}");
+        let got = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 1);
+        for c in 0..4 {
+            assert!(
+                (got[c] - want[c]).abs() < 1e-4,
+                "{ty:#x} {fmt:#x}: {got:?} vs {want:?}"
+            );
+        }
+        // Byte-swapped input gives the same result.
+        let mut swapped = bytes.clone();
+        swapped.reverse();
+        gl.pixel_storei(GL_UNPACK_SWAP_BYTES, 1);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA16 as i32,
+            1,
+            1,
+            0,
+            fmt,
+            ty,
+            Some(&swapped),
+        );
+        let got = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 1);
+        for c in 0..4 {
+            assert!((got[c] - want[c]).abs() < 1e-4, "swapped {ty:#x}");
+        }
+    }
+}
+
+#[test]
+fn unpack_component_types_and_formats() {
+    let mut gl = ctx();
+    // Signed types: (2c + 1) / (2^b - 1), negative clamps to 0.
+    let b: [i8; 4] = [-128, 0, 63, 127];
+    let bytes: Vec<u8> = b.iter().map(|&x| x as u8).collect();
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA16 as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_BYTE,
+        Some(&bytes),
+    );
+    let got = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 1);
+    let want = [0.0, 1.0 / 255.0, 127.0 / 255.0, 1.0];
+    for c in 0..4 {
+        assert!((got[c] - want[c]).abs() < 1e-4, "{got:?}");
+    }
+    // Single-channel formats fill the others with 0 (alpha 1); BGR reorders; LUMINANCE fills RGB.
+    let cases: [(GLenum, &[u8], [f32; 4]); 6] = [
+        (GL_RED, &[255], [1.0, 0.0, 0.0, 1.0]),
+        (GL_GREEN, &[255], [0.0, 1.0, 0.0, 1.0]),
+        (GL_BLUE, &[255], [0.0, 0.0, 1.0, 1.0]),
+        (GL_ALPHA, &[0], [0.0, 0.0, 0.0, 0.0]),
+        (GL_BGR, &[255, 0, 51], [0.2, 0.0, 1.0, 1.0]),
+        (GL_LUMINANCE_ALPHA, &[51, 102], [0.2, 0.2, 0.2, 0.4]),
+    ];
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    for (fmt, data, want) in cases {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            1,
+            1,
+            0,
+            fmt,
+            GL_UNSIGNED_BYTE,
+            Some(data),
+        );
+        let got = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 1);
+        for c in 0..4 {
+            assert!((got[c] - want[c]).abs() < 1e-6, "{fmt:#x}: {got:?}");
+        }
+    }
+    // Int and unsigned int, float.
+    let v: [u32; 4] = [0, u32::MAX, u32::MAX / 2, 0];
+    let bytes: Vec<u8> = v.iter().flat_map(|x| x.to_ne_bytes()).collect();
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA16 as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_INT,
+        Some(&bytes),
+    );
+    let got = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 1);
+    assert!((got[1] - 1.0).abs() < 1e-6 && (got[2] - 0.5).abs() < 1e-4 && got[0] == 0.0);
+}
+
+#[test]
+fn pixel_store_alignment_row_length_and_skips() {
+    let mut gl = ctx();
+    // A 2x2 RGB image inside a 3-pixel-wide client image, skipping 1 row and 1 pixel,
+    // alignment 4: row stride = ceil(9 / 4) * 4 = 12 bytes.
+    gl.pixel_storei(GL_UNPACK_ROW_LENGTH, 3);
+    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 1);
+    gl.pixel_storei(GL_UNPACK_SKIP_PIXELS, 1);
+    let mut data = vec![0u8; 12 * 3];
+    let put = |data: &mut Vec<u8>, x: usize, y: usize, v: u8| {
+        let at = y * 12 + x * 3;
+        data[at..at + 3].copy_from_slice(&[v, v, v]);
+    };
+    put(&mut data, 1, 1, 10);
+    put(&mut data, 2, 1, 20);
+    put(&mut data, 1, 2, 30);
+    put(&mut data, 2, 2, 40);
+    // Bytes needed: start 12 + 3, plus one row (12) plus 2 pixels (6) = 33.
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE as i32,
+        2,
+        2,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        Some(&data[..32]),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE, "one byte short");
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH), 0);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE as i32,
+        2,
+        2,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        Some(&data[..33]),
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 4];
+    gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &mut out);
+    assert_eq!(out, [10, 20, 30, 40]);
+    // 3D: skip images and image height.
+    let mut gl = ctx();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.pixel_storei(GL_UNPACK_IMAGE_HEIGHT, 3);
+    gl.pixel_storei(GL_UNPACK_SKIP_IMAGES, 1);
+    // Image stride 2 * 3 = 6 bytes; image k (after the skipped one) starts at 6 * (k + 1).
+    let mut data = vec![0u8; 6 * 3];
+    for k in 0..2 {
+        for j in 0..2 {
+            for i in 0..2 {
+                data[6 * (k + 1) + 2 * j + i] = (100 + 10 * k + 2 * j + i) as u8;
+            }
+        }
+    }
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_LUMINANCE as i32,
+        2,
+        2,
+        2,
+        0,
+        GL_LUMINANCE,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 8];
+    gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    gl.get_tex_image(GL_TEXTURE_3D, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &mut out);
+    assert_eq!(out, [100, 101, 102, 103, 110, 111, 112, 113]);
+}
+
+#[test]
+fn sub_images_and_get_tex_image_packing() {
+    let mut gl = ctx();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        4,
+        2,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[0; 32]),
+    );
+    gl.tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        1,
+        1,
+        2,
+        1,
+        GL_BGRA,
+        GL_UNSIGNED_BYTE,
+        Some(&[1, 2, 3, 4, 5, 6, 7, 8]),
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 32];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut out);
+    assert_eq!(&out[20..28], &[3, 2, 1, 4, 7, 6, 5, 8]);
+    assert!(out[..20].iter().all(|&b| b == 0));
+    // Packed output: 5_6_5 of (3/255 ...) -> rounding c * 31.
+    let mut o = [0u8; 2];
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB as i32,
+        1,
+        1,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        Some(&[255, 128, 0]),
+    );
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &mut o);
+    let g = ((128.0f64 / 255.0) * 63.0).round() as u16;
+    assert_eq!(u16::from_ne_bytes(o), (31 << 11) | (g << 5));
+    // Out of range sub-image, negative size, missing level.
+    for (x, y, w, h, err) in [
+        (3, 0, 2, 1, GL_INVALID_VALUE),
+        (-1, 0, 1, 1, GL_INVALID_VALUE),
+        (0, 0, -1, 1, GL_INVALID_VALUE),
+    ] {
+        gl.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            x,
+            y,
+            w,
+            h,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            Some(&[0; 64]),
+        );
+        assert_eq!(gl.get_error(), err);
+    }
+    gl.tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        2,
+        0,
+        0,
+        1,
+        1,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        Some(&[0; 3]),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn copy_tex_image_from_colour_and_depth_buffers() {
+    let mut gl = ctx();
+    gl.clear_color(1.0, 0.0, 0.0, 1.0);
+    gl.clear_depth(0.25);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA, 2, 3, 4, 4, 0);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let px = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 16);
+    assert_eq!(&px[..4], &[1.0, 0.0, 0.0, 1.0]);
+    // Sub-copy after a clear to green.
+    gl.clear_color(0.0, 1.0, 0.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 1, 1, 0, 0, 2, 2);
+    let px = read_rgba_f32(&mut gl, GL_TEXTURE_2D, 16);
+    assert_eq!(&px[(4 + 1) * 4..(4 + 1) * 4 + 4], &[0.0, 1.0, 0.0, 1.0]);
+    assert_eq!(&px[..4], &[1.0, 0.0, 0.0, 1.0]);
+    // Depth.
+    gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 0, 0, 2, 2, 0);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 16];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &mut out);
+    let d = f32::from_ne_bytes([out[0], out[1], out[2], out[3]]);
+    assert!((d - 0.25).abs() < 1e-6, "{d}");
+    // 1D and 3D.
+    gl.copy_tex_image_1d(GL_TEXTURE_1D, 0, GL_RGB8, 0, 0, 4, 0);
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_1D, 0, GL_TEXTURE_WIDTH), 4);
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_RGBA as i32,
+        2,
+        2,
+        2,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    gl.copy_tex_sub_image_3d(GL_TEXTURE_3D, 0, 0, 0, 1, 0, 0, 2, 2);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 32];
+    gl.get_tex_image(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut out);
+    assert_eq!(&out[16..20], &[0, 255, 0, 255]);
+    // Errors: 1..4 components, bad border.
+    gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, 3, 0, 0, 2, 2, 0);
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 2, 2, 2);
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+}
+
+#[test]
+fn compressed_textures_round_trip_and_decode() {
+    let mut gl = ctx();
+    let mut n = [0i32; 1];
+    let _ = &mut n;
+    // A DXT1 block: color0 = red 0xF800, color1 = blue 0x001F, all indices 2.
+    let mut block = vec![0x00, 0xF8, 0x1F, 0x00];
+    block.extend_from_slice(&0xAAAA_AAAAu32.to_le_bytes());
+    gl.compressed_tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+        4,
+        4,
+        0,
+        8,
+        Some(&block),
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED),
+        1
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE),
+        8
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT),
+        GL_COMPRESSED_RGB_S3TC_DXT1_EXT as i32
+    );
+    let mut back = [0u8; 8];
+    gl.get_compressed_tex_image(GL_TEXTURE_2D, 0, &mut back);
+    assert_eq!(&back[..], &block[..]);
+    // Decoded: (2 red + blue) / 3.
+    let mut px = [0u8; 64];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert_eq!(&px[..4], &[170, 0, 85, 255]);
+    // Uncompressed data with a compressed internal format is encoded on upload.
+    let mut img = Vec::new();
+    for k in 0..16 {
+        img.extend_from_slice(if k % 3 == 0 {
+            &[0, 255, 0, 255]
+        } else {
+            &[255, 255, 255, 255]
+        });
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGBA_S3TC_DXT5_EXT as i32,
+        4,
+        4,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&img),
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE),
+        16
+    );
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert_eq!(&px[..], &img[..], "two-colour blocks encode exactly");
+    // Generic compressed RGB picks DXT1.
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGB as i32,
+        5,
+        3,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[9; 60]),
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT),
+        GL_COMPRESSED_RGB_S3TC_DXT1_EXT as i32
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED_IMAGE_SIZE),
+        2 * 8
+    );
+    // Sub-image rules: 4-aligned offsets; size multiple of 4 unless reaching the edge.
+    gl.compressed_tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+        8,
+        6,
+        0,
+        2 * 2 * 16,
+        None,
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let blk = [0u8; 32];
+    gl.compressed_tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        4,
+        4,
+        4,
+        2,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+        16,
+        Some(&blk),
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR, "reaches the bottom edge");
+    gl.compressed_tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        2,
+        0,
+        4,
+        4,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+        16,
+        Some(&blk),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    gl.compressed_tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        0,
+        0,
+        4,
+        4,
+        GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
+        8,
+        Some(&blk),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION, "format differs");
+    gl.compressed_tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        0,
+        0,
+        4,
+        4,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+        15,
+        Some(&blk),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE, "image size");
+    gl.compressed_tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT,
+        4,
+        4,
+        1,
+        16,
+        None,
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION, "border");
+    gl.compressed_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, 16, None);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    gl.tex_image_1d(
+        GL_TEXTURE_1D,
+        0,
+        GL_COMPRESSED_RGBA_S3TC_DXT1_EXT as i32,
+        4,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    // Uncompressed image: no compressed data.
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        1,
+        GL_RGBA as i32,
+        4,
+        3,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    gl.get_compressed_tex_image(GL_TEXTURE_2D, 1, &mut back);
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+}
+
+#[test]
+fn proxies_report_without_storing() {
+    let mut gl = ctx();
+    gl.tex_image_2d(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        64,
+        32,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(
+        level_param(&mut gl, GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH),
+        64
+    );
+    assert_eq!(level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH), 0);
+    gl.tex_image_2d(
+        GL_PROXY_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        8192,
+        32,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(
+        level_param(&mut gl, GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH),
+        0
+    );
+    gl.tex_image_3d(
+        GL_PROXY_TEXTURE_3D,
+        0,
+        GL_RGBA8 as i32,
+        512,
+        2,
+        2,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_PROXY_TEXTURE_3D, 0, GL_TEXTURE_WIDTH),
+        0
+    );
+}
+
+/// A snapshot of the observable state of the bound 2D/1D/3D/cube textures.
+fn observe(gl: &mut Context) -> Vec<i32> {
+    let mut v = Vec::new();
+    for t in [
+        GL_TEXTURE_1D,
+        GL_TEXTURE_2D,
+        GL_TEXTURE_3D,
+        GL_TEXTURE_CUBE_MAP,
+    ] {
+        for p in [
+            GL_TEXTURE_MIN_FILTER,
+            GL_TEXTURE_MAG_FILTER,
+            GL_TEXTURE_WRAP_S,
+            GL_TEXTURE_WRAP_T,
+            GL_TEXTURE_WRAP_R,
+            GL_TEXTURE_BASE_LEVEL,
+            GL_TEXTURE_MAX_LEVEL,
+            GL_TEXTURE_MIN_LOD,
+            GL_TEXTURE_MAX_LOD,
+            GL_TEXTURE_COMPARE_MODE,
+            GL_TEXTURE_COMPARE_FUNC,
+            GL_DEPTH_TEXTURE_MODE,
+            GL_GENERATE_MIPMAP,
+            GL_TEXTURE_MAX_ANISOTROPY_EXT,
+        ] {
+            v.push(tex_param(gl, t, p));
+        }
+        let mut bc = [0i32; 4];
+        gl.get_tex_parameteriv(t, GL_TEXTURE_BORDER_COLOR, &mut bc);
+        v.extend_from_slice(&bc);
+    }
+    for t in [
+        GL_TEXTURE_1D,
+        GL_TEXTURE_2D,
+        GL_TEXTURE_3D,
+        GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+    ] {
+        for level in 0..2 {
+            for p in [
+                GL_TEXTURE_WIDTH,
+                GL_TEXTURE_HEIGHT,
+                GL_TEXTURE_DEPTH,
+                GL_TEXTURE_INTERNAL_FORMAT,
+                GL_TEXTURE_BORDER,
+            ] {
+                v.push(level_param(gl, t, level, p));
+            }
+        }
+    }
+    let mut px = [0u8; 16];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    v.extend(px.iter().map(|&b| b as i32));
+    assert_eq!(
+        gl.get_error(),
+        GL_NO_ERROR,
+        "observation itself is error-free"
+    );
+    v
+}
+
+type BadCall = (&'static str, GLenum, fn(&mut Context));
+
+#[test]
+fn every_error_is_recorded_and_changes_nothing() {
+    let calls: Vec<BadCall> = vec![
+        ("bind bad target", GL_INVALID_ENUM, |gl| {
+            gl.bind_texture(GL_TEXTURE, 5)
+        }),
+        ("teximage bad target", GL_INVALID_ENUM, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_3D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage bad format", GL_INVALID_ENUM, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA8,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage bad type", GL_INVALID_ENUM, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_RGBA,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage bitmap type", GL_INVALID_ENUM, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_BITMAP,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage negative level", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                -1,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage level too large", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                13,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage bad internal format", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                5,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage negative width", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                -1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage too wide", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                4097,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                None,
+            )
+        }),
+        ("teximage3d too deep", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_3d(
+                GL_TEXTURE_3D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                257,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                None,
+            )
+        }),
+        ("teximage bad border", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                2,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage border too big for size", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage non-square cube face", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                0,
+                GL_RGBA as i32,
+                2,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 8]),
+            )
+        }),
+        ("teximage short slice", GL_INVALID_VALUE, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                2,
+                2,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 15]),
+            )
+        }),
+        (
+            "teximage packed type and format",
+            GL_INVALID_OPERATION,
+            |gl| {
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    GL_RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_SHORT_5_6_5,
+                    Some(&[1; 4]),
+                )
+            },
+        ),
+        ("teximage 4444 with RGB", GL_INVALID_OPERATION, |gl| {
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGB,
+                GL_UNSIGNED_SHORT_4_4_4_4,
+                Some(&[1; 4]),
+            )
+        }),
+        (
+            "teximage depth data, colour format",
+            GL_INVALID_OPERATION,
+            |gl| {
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    GL_RGBA as i32,
+                    1,
+                    1,
+                    0,
+                    GL_DEPTH_COMPONENT,
+                    GL_FLOAT,
+                    Some(&[1; 4]),
+                )
+            },
+        ),
+        (
+            "teximage colour data, depth format",
+            GL_INVALID_OPERATION,
+            |gl| {
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    GL_DEPTH_COMPONENT as i32,
+                    1,
+                    1,
+                    0,
+                    GL_RGBA,
+                    GL_FLOAT,
+                    Some(&[1; 16]),
+                )
+            },
+        ),
+        ("teximage3d depth", GL_INVALID_OPERATION, |gl| {
+            gl.tex_image_3d(
+                GL_TEXTURE_3D,
+                0,
+                GL_DEPTH_COMPONENT as i32,
+                1,
+                1,
+                1,
+                0,
+                GL_DEPTH_COMPONENT,
+                GL_FLOAT,
+                Some(&[1; 4]),
+            )
+        }),
+        ("teximage1d 2d target", GL_INVALID_ENUM, |gl| {
+            gl.tex_image_1d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("texsubimage proxy", GL_INVALID_ENUM, |gl| {
+            gl.tex_sub_image_2d(
+                GL_PROXY_TEXTURE_2D,
+                0,
+                0,
+                0,
+                1,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("texsubimage outside", GL_INVALID_VALUE, |gl| {
+            gl.tex_sub_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                1,
+                1,
+                1,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("texsubimage short", GL_INVALID_VALUE, |gl| {
+            gl.tex_sub_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                0,
+                0,
+                1,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 3]),
+            )
+        }),
+        ("texsubimage undefined level", GL_INVALID_OPERATION, |gl| {
+            gl.tex_sub_image_2d(
+                GL_TEXTURE_2D,
+                1,
+                0,
+                0,
+                1,
+                1,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[1; 4]),
+            )
+        }),
+        ("copyteximage cube target", GL_INVALID_ENUM, |gl| {
+            gl.copy_tex_image_2d(GL_TEXTURE_CUBE_MAP, 0, GL_RGBA, 0, 0, 1, 1, 0)
+        }),
+        ("copytexsubimage undefined", GL_INVALID_OPERATION, |gl| {
+            gl.copy_tex_sub_image_2d(GL_TEXTURE_2D, 3, 0, 0, 0, 0, 1, 1)
+        }),
+        ("parameter bad pname", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WIDTH, 1)
+        }),
+        ("parameter bad target", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(
+                GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                GL_TEXTURE_MIN_FILTER,
+                GL_LINEAR as i32,
+            )
+        }),
+        ("min filter bad", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_REPEAT as i32)
+        }),
+        ("mag filter mipmap", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(
+                GL_TEXTURE_2D,
+                GL_TEXTURE_MAG_FILTER,
+                GL_LINEAR_MIPMAP_LINEAR as i32,
+            )
+        }),
+        ("wrap bad", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_R, GL_LINEAR as i32)
+        }),
+        ("base level negative", GL_INVALID_VALUE, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, -1)
+        }),
+        ("max level negative", GL_INVALID_VALUE, |gl| {
+            gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, -1.0)
+        }),
+        ("border colour scalar", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1.0)
+        }),
+        ("border colour short", GL_INVALID_VALUE, |gl| {
+            gl.tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &[1.0; 3])
+        }),
+        ("compare mode bad", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_LEQUAL as i32)
+        }),
+        ("compare func bad", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_NONE as i32)
+        }),
+        ("depth mode bad", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, GL_RGB as i32)
+        }),
+        ("anisotropy below 1", GL_INVALID_VALUE, |gl| {
+            gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 0.5)
+        }),
+        ("resident is read-only", GL_INVALID_ENUM, |gl| {
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_RESIDENT, 1)
+        }),
+        ("get level bad target", GL_INVALID_ENUM, |gl| {
+            gl.get_tex_level_parameteriv(GL_TEXTURE_CUBE_MAP, 0, GL_TEXTURE_WIDTH, &mut [0])
+        }),
+        ("get level bad level", GL_INVALID_VALUE, |gl| {
+            gl.get_tex_level_parameteriv(GL_TEXTURE_2D, -1, GL_TEXTURE_WIDTH, &mut [0])
+        }),
+        ("get level bad pname", GL_INVALID_ENUM, |gl| {
+            gl.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &mut [0])
+        }),
+        (
+            "compressed size of uncompressed",
+            GL_INVALID_OPERATION,
+            |gl| {
+                gl.get_tex_level_parameteriv(
+                    GL_TEXTURE_2D,
+                    0,
+                    GL_TEXTURE_COMPRESSED_IMAGE_SIZE,
+                    &mut [0],
+                )
+            },
+        ),
+        ("get tex image proxy", GL_INVALID_ENUM, |gl| {
+            gl.get_tex_image(
+                GL_PROXY_TEXTURE_2D,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                &mut [0; 16],
+            )
+        }),
+        ("get tex image short", GL_INVALID_VALUE, |gl| {
+            gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut [0; 3])
+        }),
+        (
+            "get tex image depth of colour",
+            GL_INVALID_OPERATION,
+            |gl| gl.get_tex_image(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &mut [0; 16]),
+        ),
+        ("get tex parameter bad", GL_INVALID_ENUM, |gl| {
+            gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_WIDTH, &mut [0])
+        }),
+        ("delete negative", GL_INVALID_VALUE, |gl| {
+            gl.delete_textures(-1, &[])
+        }),
+        ("tex image inside begin/end", GL_INVALID_OPERATION, |gl| {
+            gl.begin(GL_POINTS);
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&[9; 4]),
+            );
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+            gl.end();
+        }),
+    ];
+    for (name, err, call) in calls {
+        let mut gl = ctx();
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            1,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&[10, 20, 30, 40]),
+        );
+        gl.tex_image_1d(
+            GL_TEXTURE_1D,
+            0,
+            GL_RGB as i32,
+            2,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            Some(&[1; 8]),
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        let before = observe(&mut gl);
+        call(&mut gl);
+        assert_eq!(gl.get_error(), err, "{name}");
+        assert_eq!(observe(&mut gl), before, "{name}: state changed");
+    }
+}
+
+#[test]
+fn parameters_round_trip() {
+    let mut gl = ctx();
+    gl.tex_parameterfv(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_BORDER_COLOR,
+        &[0.5, -1.0, 2.0, 0.25],
+    );
+    let mut f = [0f32; 4];
+    gl.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &mut f);
+    assert_eq!(f, [0.5, 0.0, 1.0, 0.25]);
+    let mut i = [0i32; 4];
+    gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &mut i);
+    assert_eq!(i[2], i32::MAX);
+    gl.tex_parameteriv(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_BORDER_COLOR,
+        &[i32::MAX, 0, i32::MAX, 0],
+    );
+    gl.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, &mut f);
+    assert_eq!(f[0], 1.0);
+    assert!(f[1] < 1e-9);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 64.0);
+    gl.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, &mut f);
+    assert_eq!(f[0], 16.0);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, -2.5);
+    gl.get_tex_parameterfv(GL_TEXTURE_2D, GL_TEXTURE_MIN_LOD, &mut f);
+    assert_eq!(f[0], -2.5);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as f32);
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER),
+        GL_LINEAR as i32
+    );
+    assert_eq!(tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_RESIDENT), 1);
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE),
+        GL_NONE as i32
+    );
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC),
+        GL_LEQUAL as i32
+    );
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE),
+        GL_LUMINANCE as i32
+    );
+    assert_eq!(
+        tex_param(&mut gl, GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL),
+        1000
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn out_of_memory_and_huge_sizes_do_not_abort() {
+    let mut gl = ctx();
+    // The largest allowed 3D texture allocates (256^3 RGBA8 = 64 MiB) or reports
+    // GL_OUT_OF_MEMORY; either way no abort.
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_RGBA as i32,
+        256,
+        256,
+        256,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        None,
+    );
+    let e = gl.get_error();
+    assert!(e == GL_NO_ERROR || e == GL_OUT_OF_MEMORY);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        i32::MAX,
+        i32::MAX,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[0; 4]),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    gl.pixel_storei(GL_UNPACK_ROW_LENGTH, i32::MAX);
+    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, i32::MAX);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        4,
+        4,
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&[0; 64]),
+    );
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+}
