@@ -19,6 +19,9 @@ pub struct Scene {
     pub height: i32,
     /// The GL calls. The framebuffer starts in the default state of a new context.
     pub draw: fn(&mut dyn Gl),
+    /// When the picture matches: `tolerance::DIFFERENTIAL`, or, for scenes where llvmpipe and
+    /// softpipe themselves differ more (texture filtering), that measured spread.
+    pub tolerance: crate::tolerance::Tolerance,
 }
 
 impl fmt::Debug for Scene {

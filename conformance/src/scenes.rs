@@ -5,6 +5,7 @@
 //! Vertex positions avoid exact pixel-centre and edge ties where the tie is not the point of the
 //! case, so the scenes measure features rather than tie-breaking conventions.
 
+use crate::tolerance::{Tolerance, DIFFERENTIAL};
 use tilegl::enums::*;
 use tilegl::Gl;
 
@@ -946,20 +947,46 @@ pub const SCENES: &[Scene] = &[
     scene("blend_over", blend_over),
     scene("alpha_test_and_stencil", alpha_test_and_stencil),
     scene("logic_xor", logic_xor),
+    scene("tex_nearest_replace", tex_nearest_replace),
+    scene("tex_linear_modulate_clamp", tex_linear_modulate_clamp),
+    // llvmpipe vs softpipe: 2.124 %, 9.351 %, 5.640 % of pixels off by more than 8.
+    scene_with("tex_floor_nearest", tex_floor_nearest, spread(0.02124)),
+    scene_with("tex_floor_trilinear", tex_floor_trilinear, spread(0.09351)),
+    scene_with(
+        "tex_floor_mipmap_nearest",
+        tex_floor_mipmap_nearest,
+        spread(0.05640),
+    ),
     Scene {
         name: "cube_128",
         width: 128,
         height: 128,
         draw: big_viewport_128,
+        tolerance: DIFFERENTIAL,
     },
 ];
 
 const fn scene(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
+    scene_with(name, draw, DIFFERENTIAL)
+}
+
+/// A scene with its own tolerance: the bad-pixel share llvmpipe and softpipe themselves show on
+/// it (measured with `--bin calibrate`, recorded in TOLERANCE.md).
+const fn scene_with(name: &'static str, draw: fn(&mut dyn Gl), tolerance: Tolerance) -> Scene {
     Scene {
         name,
         width: 64,
         height: 64,
         draw,
+        tolerance,
+    }
+}
+
+/// Texture scenes: same channel threshold, bad share as measured between the Mesa drivers.
+const fn spread(max_bad_share: f64) -> Tolerance {
+    Tolerance {
+        channel: DIFFERENTIAL.channel,
+        max_bad_share,
     }
 }
 
@@ -1122,4 +1149,151 @@ fn logic_xor(gl: &mut dyn Gl) {
     gl.rectf(8.0, 8.0, 40.0, 40.0);
     gl.color_3f(0.25, 1.0, 0.75);
     gl.rectf(24.0, 24.0, 56.0, 56.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Texturing.
+
+/// An RGBA checkerboard with a colour ramp, `size` x `size`.
+fn checker_pixels(size: usize) -> Vec<u8> {
+    let mut p = Vec::with_capacity(size * size * 4);
+    for y in 0..size {
+        for x in 0..size {
+            let on = ((x * 8 / size) + (y * 8 / size)) % 2 == 0;
+            let r = (x * 255 / size.max(1)) as u8;
+            let g = (y * 255 / size.max(1)) as u8;
+            if on {
+                p.extend_from_slice(&[r, g, 255, 255]);
+            } else {
+                p.extend_from_slice(&[255 - r, 40, g, 160]);
+            }
+        }
+    }
+    p
+}
+
+fn textured_setup(gl: &mut dyn Gl, min: GLenum, mag: GLenum, wrap: GLenum, size: usize) {
+    clear(gl);
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_2D, name[0]);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    let px = checker_pixels(size);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        size as i32,
+        size as i32,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&px),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 0);
+    if min != GL_NEAREST && min != GL_LINEAR {
+        // Explicit mipmaps: each level a box-filtered checker of its own size.
+        let mut s = size / 2;
+        let mut level = 1;
+        while s >= 1 {
+            let p = checker_pixels(s);
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                level,
+                GL_RGBA as i32,
+                s as i32,
+                s as i32,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&p),
+            );
+            s /= 2;
+            level += 1;
+        }
+    }
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap as i32);
+    gl.enable(GL_TEXTURE_2D);
+}
+
+/// A floor in perspective, texture repeated: exercises minification and level selection.
+fn textured_floor(gl: &mut dyn Gl, min: GLenum, mag: GLenum, env: GLenum) {
+    textured_setup(gl, min, mag, GL_REPEAT, 32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env as i32);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 50.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.begin(GL_QUADS);
+    gl.color_3f(0.9, 0.7, 0.5);
+    for (s, t, x, z) in [
+        (0.0, 0.0, -4.0, -1.2),
+        (6.0, 0.0, 4.0, -1.2),
+        (6.0, 20.0, 4.0, -40.0),
+        (0.0, 20.0, -4.0, -40.0),
+    ] {
+        gl.tex_coord_2f(s, t);
+        gl.vertex_3f(x, -1.0, z);
+    }
+    gl.end();
+}
+
+fn tex_nearest_replace(gl: &mut dyn Gl) {
+    textured_setup(gl, GL_NEAREST, GL_NEAREST, GL_REPEAT, 16);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    pixel_space_keep(gl);
+    gl.begin(GL_QUADS);
+    // A parallelogram with affine texture coordinates: every quad split gives the same picture.
+    for (s, t, x, y) in [
+        (0.0, 0.0, 4.0, 4.0),
+        (1.5, 0.0, 56.0, 10.0),
+        (1.5, 1.5, 60.0, 60.0),
+        (0.0, 1.5, 8.0, 54.0),
+    ] {
+        gl.tex_coord_2f(s, t);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+}
+
+fn tex_linear_modulate_clamp(gl: &mut dyn Gl) {
+    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, 8);
+    pixel_space_keep(gl);
+    gl.begin(GL_QUADS);
+    gl.color_3f(1.0, 0.8, 0.6);
+    for (s, t, x, y) in [
+        (-0.2, -0.2, 4.0, 4.0),
+        (1.2, -0.2, 60.0, 4.0),
+        (1.2, 1.2, 60.0, 60.0),
+        (-0.2, 1.2, 4.0, 60.0),
+    ] {
+        gl.tex_coord_2f(s, t);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+}
+
+fn tex_floor_nearest(gl: &mut dyn Gl) {
+    textured_floor(gl, GL_NEAREST, GL_NEAREST, GL_REPLACE);
+}
+
+fn tex_floor_trilinear(gl: &mut dyn Gl) {
+    textured_floor(gl, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_MODULATE);
+}
+
+fn tex_floor_mipmap_nearest(gl: &mut dyn Gl) {
+    textured_floor(gl, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_DECAL);
+}
+
+/// Orthographic pixel space without clearing (the texture set-up already cleared).
+fn pixel_space_keep(gl: &mut dyn Gl) {
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 64.0, 0.0, 64.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
 }

@@ -24,7 +24,7 @@ fn run_case(name: &str) {
         return;
     }
     let scene = scenes::find(name).unwrap_or_else(|| panic!("no scene {name}"));
-    let c = compare::compare_scene(scene, DIFFERENTIAL)
+    let c = compare::compare_scene(scene, scene.tolerance)
         .unwrap_or_else(|e| panic!("{name}: oracle error: {e}"));
     if !c.passed() {
         if let Some(dir) = std::env::var_os("TILEGL_CONFORMANCE_DUMP") {
@@ -47,6 +47,11 @@ macro_rules! differential {
 }
 
 differential!(
+    tex_nearest_replace,
+    tex_linear_modulate_clamp,
+    tex_floor_nearest,
+    tex_floor_trilinear,
+    tex_floor_mipmap_nearest,
     lit_directional,
     lit_positional_attenuated,
     lit_spot,

@@ -1051,3 +1051,207 @@ pub fn separate_specular(e: GLenum) -> Option<bool> {
         _ => None,
     }
 }
+
+/// `GL_TEXTURE_ENV_MODE` values (section 3.8.13).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TexEnvMode {
+    Replace,
+    Modulate,
+    Decal,
+    Blend,
+    Add,
+    Combine,
+}
+
+impl TexEnvMode {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            TexEnvMode::Replace => GL_REPLACE,
+            TexEnvMode::Modulate => GL_MODULATE,
+            TexEnvMode::Decal => GL_DECAL,
+            TexEnvMode::Blend => GL_BLEND,
+            TexEnvMode::Add => GL_ADD,
+            TexEnvMode::Combine => GL_COMBINE,
+        }
+    }
+}
+
+pub fn tex_env_mode(e: GLenum) -> Option<TexEnvMode> {
+    Some(match e {
+        GL_REPLACE => TexEnvMode::Replace,
+        GL_MODULATE => TexEnvMode::Modulate,
+        GL_DECAL => TexEnvMode::Decal,
+        GL_BLEND => TexEnvMode::Blend,
+        GL_ADD => TexEnvMode::Add,
+        GL_COMBINE => TexEnvMode::Combine,
+        _ => return None,
+    })
+}
+
+/// `GL_COMBINE_RGB` / `GL_COMBINE_ALPHA` functions (DOT3 only for RGB).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CombineFunc {
+    Replace,
+    Modulate,
+    Add,
+    AddSigned,
+    Interpolate,
+    Subtract,
+    Dot3Rgb,
+    Dot3Rgba,
+}
+
+impl CombineFunc {
+    pub fn to_gl(self) -> GLenum {
+        use CombineFunc::*;
+        match self {
+            Replace => GL_REPLACE,
+            Modulate => GL_MODULATE,
+            Add => GL_ADD,
+            AddSigned => GL_ADD_SIGNED,
+            Interpolate => GL_INTERPOLATE,
+            Subtract => GL_SUBTRACT,
+            Dot3Rgb => GL_DOT3_RGB,
+            Dot3Rgba => GL_DOT3_RGBA,
+        }
+    }
+}
+
+pub fn combine_func(e: GLenum, rgb: bool) -> Option<CombineFunc> {
+    use CombineFunc::*;
+    Some(match e {
+        GL_REPLACE => Replace,
+        GL_MODULATE => Modulate,
+        GL_ADD => Add,
+        GL_ADD_SIGNED => AddSigned,
+        GL_INTERPOLATE => Interpolate,
+        GL_SUBTRACT => Subtract,
+        GL_DOT3_RGB if rgb => Dot3Rgb,
+        GL_DOT3_RGBA if rgb => Dot3Rgba,
+        _ => return None,
+    })
+}
+
+/// Combiner sources: `TEXTURE`, `TEXTUREn` (crossbar), `CONSTANT`, `PRIMARY_COLOR`, `PREVIOUS`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CombineSource {
+    Texture,
+    TextureUnit(u8),
+    Constant,
+    PrimaryColor,
+    Previous,
+}
+
+impl CombineSource {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            CombineSource::Texture => GL_TEXTURE,
+            CombineSource::TextureUnit(u) => GL_TEXTURE0 + u as GLenum,
+            CombineSource::Constant => GL_CONSTANT,
+            CombineSource::PrimaryColor => GL_PRIMARY_COLOR,
+            CombineSource::Previous => GL_PREVIOUS,
+        }
+    }
+}
+
+pub fn combine_source(e: GLenum) -> Option<CombineSource> {
+    Some(match e {
+        GL_TEXTURE => CombineSource::Texture,
+        GL_CONSTANT => CombineSource::Constant,
+        GL_PRIMARY_COLOR => CombineSource::PrimaryColor,
+        GL_PREVIOUS => CombineSource::Previous,
+        e if (GL_TEXTURE0..GL_TEXTURE0 + 8).contains(&e) => {
+            CombineSource::TextureUnit((e - GL_TEXTURE0) as u8)
+        }
+        _ => return None,
+    })
+}
+
+/// Combiner operands: the value, its complement, or (for RGB) the alpha or its complement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CombineOperand {
+    SrcColor,
+    OneMinusSrcColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+}
+
+impl CombineOperand {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            CombineOperand::SrcColor => GL_SRC_COLOR,
+            CombineOperand::OneMinusSrcColor => GL_ONE_MINUS_SRC_COLOR,
+            CombineOperand::SrcAlpha => GL_SRC_ALPHA,
+            CombineOperand::OneMinusSrcAlpha => GL_ONE_MINUS_SRC_ALPHA,
+        }
+    }
+}
+
+pub fn combine_operand(e: GLenum, rgb: bool) -> Option<CombineOperand> {
+    Some(match e {
+        GL_SRC_COLOR if rgb => CombineOperand::SrcColor,
+        GL_ONE_MINUS_SRC_COLOR if rgb => CombineOperand::OneMinusSrcColor,
+        GL_SRC_ALPHA => CombineOperand::SrcAlpha,
+        GL_ONE_MINUS_SRC_ALPHA => CombineOperand::OneMinusSrcAlpha,
+        _ => return None,
+    })
+}
+
+/// `glTexEnv` targets and parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TexEnvParam {
+    Mode,
+    Color,
+    LodBias,
+    CombineRgb,
+    CombineAlpha,
+    /// `GL_SOURCEn_RGB` / `GL_SOURCEn_ALPHA`.
+    Source {
+        rgb: bool,
+        n: usize,
+    },
+    /// `GL_OPERANDn_RGB` / `GL_OPERANDn_ALPHA`.
+    Operand {
+        rgb: bool,
+        n: usize,
+    },
+    RgbScale,
+    AlphaScale,
+}
+
+/// `glTexEnv(target, pname)`: target `GL_TEXTURE_ENV` takes the environment parameters,
+/// `GL_TEXTURE_FILTER_CONTROL` takes `GL_TEXTURE_LOD_BIAS`.
+pub fn tex_env_param(target: GLenum, pname: GLenum) -> Option<TexEnvParam> {
+    use TexEnvParam::*;
+    match target {
+        GL_TEXTURE_FILTER_CONTROL => (pname == GL_TEXTURE_LOD_BIAS).then_some(LodBias),
+        GL_TEXTURE_ENV => Some(match pname {
+            GL_TEXTURE_ENV_MODE => Mode,
+            GL_TEXTURE_ENV_COLOR => Color,
+            GL_COMBINE_RGB => CombineRgb,
+            GL_COMBINE_ALPHA => CombineAlpha,
+            GL_SOURCE0_RGB => Source { rgb: true, n: 0 },
+            GL_SOURCE1_RGB => Source { rgb: true, n: 1 },
+            GL_SOURCE2_RGB => Source { rgb: true, n: 2 },
+            GL_SOURCE0_ALPHA => Source { rgb: false, n: 0 },
+            GL_SOURCE1_ALPHA => Source { rgb: false, n: 1 },
+            GL_SOURCE2_ALPHA => Source { rgb: false, n: 2 },
+            GL_OPERAND0_RGB => Operand { rgb: true, n: 0 },
+            GL_OPERAND1_RGB => Operand { rgb: true, n: 1 },
+            GL_OPERAND2_RGB => Operand { rgb: true, n: 2 },
+            GL_OPERAND0_ALPHA => Operand { rgb: false, n: 0 },
+            GL_OPERAND1_ALPHA => Operand { rgb: false, n: 1 },
+            GL_OPERAND2_ALPHA => Operand { rgb: false, n: 2 },
+            GL_RGB_SCALE => RgbScale,
+            GL_ALPHA_SCALE => AlphaScale,
+            _ => return None,
+        }),
+        _ => None,
+    }
+}
+
+/// Index of a `GL_TEXTUREi` unit enum (`i` < 8).
+pub fn texture_unit(e: GLenum) -> Option<usize> {
+    let i = e.checked_sub(GL_TEXTURE0)? as usize;
+    (i < 8).then_some(i)
+}

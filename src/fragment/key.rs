@@ -43,6 +43,8 @@ pub struct FragmentKey {
     pub color_mask: [bool; 4],
     /// Add the secondary colour after texturing (section 3.9).
     pub color_sum: bool,
+    /// At least one texture unit applies (the units themselves are in the `DrawState`).
+    pub texturing: bool,
 }
 
 /// Per-draw values read by the fragment stage.
@@ -113,6 +115,7 @@ impl FragmentKey {
             logic_op: if ops.color_logic_op { logic_op } else { None },
             color_mask: ops.color_mask,
             color_sum,
+            texturing: false,
         }
     }
 
@@ -128,6 +131,7 @@ impl FragmentKey {
             && self.blend.is_none()
             && self.logic_op.is_none()
             && !self.color_sum
+            && !self.texturing
     }
 }
 

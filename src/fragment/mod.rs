@@ -5,3 +5,4 @@ pub mod blend;
 pub mod cache;
 pub mod key;
 pub mod span;
+pub mod texenv;

@@ -4,9 +4,11 @@
 
 use super::blend::blend;
 use super::key::Uniforms;
+use super::texenv::{self, CombineInputs};
 use crate::api::convert::{CompareFunc, StencilOp};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
+use crate::state::snapshot::attr;
 use crate::state::DrawState;
 
 /// The interpolants of one primitive for the fragment stage.
@@ -98,7 +100,11 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
     let mut inv_w = it.inv_w.at(xc0, yc) as f32;
     let dinv_w = it.inv_w.a as f32;
     // Primary colour, then the secondary colour when the colour sum needs it.
-    let na = if !SIMPLE && key.color_sum { 8 } else { 4 };
+    let na = if !SIMPLE && (key.color_sum || key.texturing) {
+        8
+    } else {
+        4
+    };
     let mut attr = [0f32; 8];
     let mut dattr = [0f32; 8];
     for c in 0..na {
@@ -109,6 +115,9 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
         let idx = row + i;
         let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
         let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        if !SIMPLE && key.texturing {
+            color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
+        }
         if !SIMPLE && key.color_sum {
             for c in 0..3 {
                 color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
@@ -187,6 +196,61 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
             }
         }
     }
+}
+
+/// Texture coordinates of one unit at a pixel, divided by q, with their screen derivatives
+/// (exact derivatives of the perspective-correct interpolation, instead of 2x2 differences).
+fn unit_coords(it: &Interpolants, base: usize, x: f64, y: f64) -> ([f32; 3], [f32; 3], [f32; 3]) {
+    let w = it.inv_w.at(x, y);
+    let (wa, wb) = (it.inv_w.a, it.inv_w.b);
+    let mut v = [0f64; 4];
+    let mut dx = [0f64; 4];
+    let mut dy = [0f64; 4];
+    for k in 0..4 {
+        let p = &it.attrs[base + k];
+        v[k] = p.at(x, y) / w;
+        dx[k] = (p.a - v[k] * wa) / w;
+        dy[k] = (p.b - v[k] * wb) / w;
+    }
+    let q = v[3];
+    let mut c = [0f32; 3];
+    let mut cdx = [0f32; 3];
+    let mut cdy = [0f32; 3];
+    for k in 0..3 {
+        c[k] = (v[k] / q) as f32;
+        cdx[k] = ((dx[k] * q - v[k] * dx[3]) / (q * q)) as f32;
+        cdy[k] = ((dy[k] * q - v[k] * dy[3]) / (q * q)) as f32;
+    }
+    // q = 0 (or non-finite input) gives no usable coordinate: sample at the origin.
+    let fix = |a: [f32; 3]| a.map(|x| if x.is_finite() { x } else { 0.0 });
+    (fix(c), fix(cdx), fix(cdy))
+}
+
+/// Samples every unit and runs the texture environment cascade on the primary colour.
+#[inline(never)]
+fn texture_fragment(
+    ds: &DrawState,
+    it: &Interpolants,
+    x: f64,
+    y: f64,
+    primary: [f32; 4],
+) -> [f32; 4] {
+    let primary = primary.map(|c| c.max(0.0).min(1.0));
+    let mut texels: [Option<[f32; 4]>; 8] = [None; 8];
+    for u in &ds.units {
+        let (c, dx, dy) = unit_coords(it, attr::TEX + 4 * u.unit, x, y);
+        texels[u.unit] = Some(u.texture.sample_grad(c, dx, dy, u.env.lod_bias));
+    }
+    let inputs = CombineInputs {
+        primary,
+        texels: &texels,
+    };
+    let mut color = primary;
+    for u in &ds.units {
+        let ct = texels[u.unit].unwrap_or([0.0; 4]);
+        color = texenv::apply(&u.env, u.base, u.unit, color, ct, &inputs);
+    }
+    color
 }
 
 /// The general path: every decision read from the key at run time.

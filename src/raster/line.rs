@@ -63,11 +63,8 @@ pub fn bin_line(
         for i in 0..n {
             let p = attrs[0][i] as f64 * v[0].inv_w
                 + t * (attrs[1][i] as f64 * v[1].inv_w - attrs[0][i] as f64 * v[0].inv_w);
-            a[i] = if ds.flat {
-                attrs[0][i]
-            } else {
-                (p / iw) as f32
-            };
+            // Flat colours are equal at both ends, so this returns them unchanged.
+            a[i] = (p / iw) as f32;
         }
         emit_pixel(ds, state, px as i64, py as i64, z, &a[..n], scene);
         c += 1.0;

@@ -50,7 +50,7 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
 use super::scene::{Command, Scene};
 use super::setup::{centre_range, Edge, Rect};
 use crate::primitive::viewport::WindowVertex;
-use crate::state::snapshot::MAX_ATTRS;
+use crate::state::snapshot::{attr, MAX_ATTRS};
 
 /// Sets up one triangle (any winding; facing was decided before) and bins it.
 pub fn bin_triangle(
@@ -95,20 +95,27 @@ pub fn bin_triangle(
     let z = Plane::through(p, v.map(|w| w.z), inv_det);
     let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
     let n = ds.attr_count.min(MAX_ATTRS);
-    let perspective = !ds.flat;
+    // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
+    // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
+    // vertex's value (every vertex already carries it), so dividing by 1/w gives it back.
     let offset = scene.planes.len() as u32;
     scene.planes.extend((0..n).map(|i| {
-        if perspective {
+        if ds.flat && i < attr::COLORS {
+            let c = attrs[0][i] as f64;
+            Plane {
+                a: inv_w.a * c,
+                b: inv_w.b * c,
+                c: inv_w.c * c,
+            }
+        } else {
             Plane::through(
                 p,
                 [0, 1, 2].map(|k| attrs[k][i] as f64 * v[k].inv_w),
                 inv_det,
             )
-        } else {
-            // Flat shading: every vertex already carries the provoking vertex's values.
-            Plane::constant(attrs[0][i] as f64)
         }
     }));
+
     scene.bin(
         Command::Triangle(TriangleCommand {
             state,
@@ -117,7 +124,7 @@ pub fn bin_triangle(
             z,
             inv_w,
             attrs: offset,
-            perspective,
+            perspective: true,
         }),
         bbox,
     );

@@ -208,8 +208,9 @@ impl Context {
             Query::PointSizeGranularity | Query::LineWidthGranularity => Floats(vec![0.125]),
             Query::LineWidth => Floats(vec![self.raster.line_width as f64]),
             Query::LineWidthRange => Floats(limits::LINE_WIDTH_RANGE.map(|v| v as f64).to_vec()),
-            Query::ActiveTexture | Query::ClientActiveTexture => {
-                Enum(convert::texture_unit_enum(unit))
+            Query::ActiveTexture => Enum(convert::texture_unit_enum(unit)),
+            Query::ClientActiveTexture => {
+                Enum(convert::texture_unit_enum(self.client_active_texture))
             }
             Query::MaxAttribStackDepth => int1(limits::MAX_ATTRIB_STACK_DEPTH as i64),
             Query::SampleBuffers | Query::Samples => int1(0),

@@ -9,6 +9,7 @@ pub mod matrices;
 pub mod per_fragment;
 pub mod snapshot;
 pub mod tables;
+pub mod texenv;
 
 use std::collections::HashMap;
 use std::ffi::CString;
@@ -65,6 +66,10 @@ pub struct Context {
     pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
+    /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
+    pub(crate) client_active_texture: usize,
+    /// Per-unit texture environments.
+    pub(crate) tex_env: [texenv::TexEnv; tables::limits::MAX_TEXTURE_UNITS],
     pub(crate) lighting: lighting::LightingState,
     /// Lighting inputs derived from the state, rebuilt after a change.
     pub(crate) light_setup: Option<std::sync::Arc<crate::vertex::lighting::LightSetup>>,
@@ -133,6 +138,8 @@ impl Context {
             spare_vertices: Vec::new(),
             clip_buffer: Vec::new(),
             active_texture: 0,
+            client_active_texture: 0,
+            tex_env: Default::default(),
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
@@ -610,6 +617,47 @@ impl Gl for Context {
         secondary_color_3uiv,
         secondary_color_3us,
         secondary_color_3usv,
+        // texture units and environments
+        active_texture,
+        client_active_texture,
+        tex_envf,
+        tex_envi,
+        tex_envfv,
+        tex_enviv,
+        get_tex_envfv,
+        get_tex_enviv,
+        multi_tex_coord_1d,
+        multi_tex_coord_1dv,
+        multi_tex_coord_1f,
+        multi_tex_coord_1fv,
+        multi_tex_coord_1i,
+        multi_tex_coord_1iv,
+        multi_tex_coord_1s,
+        multi_tex_coord_1sv,
+        multi_tex_coord_2d,
+        multi_tex_coord_2dv,
+        multi_tex_coord_2f,
+        multi_tex_coord_2fv,
+        multi_tex_coord_2i,
+        multi_tex_coord_2iv,
+        multi_tex_coord_2s,
+        multi_tex_coord_2sv,
+        multi_tex_coord_3d,
+        multi_tex_coord_3dv,
+        multi_tex_coord_3f,
+        multi_tex_coord_3fv,
+        multi_tex_coord_3i,
+        multi_tex_coord_3iv,
+        multi_tex_coord_3s,
+        multi_tex_coord_3sv,
+        multi_tex_coord_4d,
+        multi_tex_coord_4dv,
+        multi_tex_coord_4f,
+        multi_tex_coord_4fv,
+        multi_tex_coord_4i,
+        multi_tex_coord_4iv,
+        multi_tex_coord_4s,
+        multi_tex_coord_4sv,
         // immediate mode
         begin,
         end,

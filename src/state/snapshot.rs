@@ -12,6 +12,10 @@ use crate::fragment::cache::select_span;
 use crate::fragment::key::{FragmentKey, Uniforms};
 use crate::fragment::span::SpanFn;
 use crate::raster::setup::Rect;
+use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+use crate::state::texenv::TexEnv;
+use crate::texture::format::BaseFormat;
+use crate::texture::sample::BoundTexture;
 
 /// Attribute layout of a vertex after the vertex stage. Rasterization interpolates the first
 /// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
@@ -38,6 +42,18 @@ pub const COLOR_ATTRS: usize = 4;
 /// The most attributes a vertex can carry.
 pub const MAX_ATTRS: usize = attr::COUNT;
 
+/// One texture unit that takes part in a draw: it has an enabled, complete texture.
+#[derive(Clone, Debug)]
+pub struct TextureUnitDraw {
+    pub unit: usize,
+    pub texture: BoundTexture,
+    /// Base format as the environment sees it (depth textures per `GL_DEPTH_TEXTURE_MODE`).
+    pub base: BaseFormat,
+    pub env: TexEnv,
+    /// The unit's texture matrix.
+    pub matrix: Mat4,
+}
+
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]
 pub struct DrawState {
@@ -62,6 +78,8 @@ pub struct DrawState {
     pub clip_attr_count: usize,
     /// Two-sided lighting: back-facing polygons take the back colours.
     pub two_sided: bool,
+    /// Texture units in use, in unit order (empty: no texturing).
+    pub units: Vec<TextureUnitDraw>,
     pub depth_max: u32,
     pub key: FragmentKey,
     pub uniforms: Uniforms,
@@ -116,8 +134,26 @@ impl Context {
             lit.color_sum
         };
         let two_sided = lit.enabled && lit.two_side;
-        let attr_count = if color_sum { attr::COLORS } else { COLOR_ATTRS };
-        let key = FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
+        let units: Vec<TextureUnitDraw> = (0..MAX_TEXTURE_UNITS)
+            .filter_map(|u| {
+                let texture = self.textures.bound_for_unit(u)?;
+                Some(TextureUnitDraw {
+                    unit: u,
+                    base: texture.base_format(),
+                    texture,
+                    env: self.tex_env[u],
+                    matrix: *self.transform.texture[u].last().unwrap_or(&Mat4::IDENTITY),
+                })
+            })
+            .collect();
+        let attr_count = match units.last() {
+            Some(last) => attr::TEX + 4 * (last.unit + 1),
+            None if color_sum => attr::COLORS,
+            None => COLOR_ATTRS,
+        };
+        let mut key =
+            FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
+        key.texturing = !units.is_empty();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,
@@ -137,6 +173,7 @@ impl Context {
             attr_count,
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
             two_sided,
+            units,
             depth_max: self.framebuffer.depth_max(),
             key,
             uniforms,

@@ -31,5 +31,9 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
             }
         }
     }
+    for u in &ds.units {
+        let tc = u.matrix * v.texcoords[u.unit];
+        attrs[attr::TEX + 4 * u.unit..attr::TEX + 4 * u.unit + 4].copy_from_slice(&tc.to_array());
+    }
     ClipVertex { pos, eye, attrs }
 }
