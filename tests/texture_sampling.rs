@@ -874,3 +874,41 @@ fn generate_mipmap_box_filters_and_snapshots_are_copy_on_write() {
     assert!((before.sample([0.5, 0.5, 0.0], 5.0)[0] - 85.0 / 255.0).abs() < EPS);
     assert!((before.sample([0.25, 0.25, 0.0], -1.0)[0]).abs() < EPS);
 }
+
+/// Throughput of `sample_grad` (trilinear, RGBA8, 256x256 with mipmaps); run with
+/// `cargo test --release --test texture_sampling -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn sampler_throughput() {
+    let mut gl = ctx();
+    let data: Vec<u8> = (0..256 * 256 * 4).map(|i| (i * 7) as u8).collect();
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        256,
+        256,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.enable(GL_TEXTURE_2D);
+    let tex = gl.bound_texture(0).expect("complete");
+    let n = 2_000_000;
+    let start = std::time::Instant::now();
+    let mut acc = 0.0f32;
+    for k in 0..n {
+        let s = (k % 1000) as f32 * 0.00137;
+        let v = tex.sample_grad([s, s * 0.7, 0.0], [0.011, 0.0, 0.0], [0.0, 0.013, 0.0], 0.0);
+        acc += v[0];
+    }
+    let ns = start.elapsed().as_nanos() as f64 / n as f64;
+    println!("trilinear sample_grad: {ns:.1} ns/sample (checksum {acc})");
+}

@@ -185,15 +185,16 @@ impl TexImage {
     /// (0, 0, 0, 1). Out-of-range coordinates read 0.
     #[inline]
     pub fn fetch(&self, x: i32, y: i32, z: i32) -> [f32; 4] {
-        let mut out = [0.0, 0.0, 0.0, 1.0];
         if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
-            return out;
+            return [0.0, 0.0, 0.0, 1.0];
         }
         let i = self.index(x, y, z);
-        for (k, &slot) in self.format.base.slots().iter().enumerate() {
-            out[slot] = self.texels.get(i + k);
+        let base = self.format.base;
+        match &*self.texels {
+            Texels::U8(v) => gather(base, v, i, |c| c as f32 * (1.0 / 255.0)),
+            Texels::U16(v) => gather(base, v, i, |c| c as f32 * (1.0 / 65535.0)),
+            Texels::U32(v) => gather(base, v, i, |c| (c as f64 / u32::MAX as f64) as f32),
         }
-        out
     }
 
     /// Writes the texel at stored coordinates from internal RGBA (copy on write when a
@@ -297,5 +298,33 @@ impl TexImage {
                 }
             }
         }
+    }
+}
+
+/// The texel at component index `i` as internal RGBA (see [`TexImage::fetch`]), specialised
+/// per base format; out-of-range reads give (0, 0, 0, 1).
+#[inline(always)]
+fn gather<T: Copy>(
+    base: super::format::BaseFormat,
+    v: &[T],
+    i: usize,
+    conv: impl Fn(T) -> f32,
+) -> [f32; 4] {
+    use super::format::BaseFormat::*;
+    let none = [0.0, 0.0, 0.0, 1.0];
+    match base {
+        Alpha => v.get(i).map_or(none, |&a| [0.0, 0.0, 0.0, conv(a)]),
+        Luminance | Intensity | DepthComponent => {
+            v.get(i).map_or(none, |&l| [conv(l), 0.0, 0.0, 1.0])
+        }
+        LuminanceAlpha => v
+            .get(i..i + 2)
+            .map_or(none, |s| [conv(s[0]), 0.0, 0.0, conv(s[1])]),
+        Rgb => v
+            .get(i..i + 3)
+            .map_or(none, |s| [conv(s[0]), conv(s[1]), conv(s[2]), 1.0]),
+        Rgba => v
+            .get(i..i + 4)
+            .map_or(none, |s| [conv(s[0]), conv(s[1]), conv(s[2]), conv(s[3])]),
     }
 }

@@ -45,12 +45,25 @@ pub struct BoundTexture {
 pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
     let size = size.max(1);
     match mode {
-        WrapMode::Repeat => i.rem_euclid(size),
+        WrapMode::Repeat => {
+            // The common cases without a 64-bit division.
+            if (0..size).contains(&i) {
+                i
+            } else if (size & (size - 1)) == 0 {
+                i & (size - 1)
+            } else {
+                i.rem_euclid(size)
+            }
+        }
         WrapMode::ClampToEdge => i.clamp(0, size - 1),
         WrapMode::Clamp if !linear => i.clamp(0, size - 1),
         WrapMode::Clamp | WrapMode::ClampToBorder => i.clamp(-1, size),
         WrapMode::MirroredRepeat => {
-            let m = i.rem_euclid(2 * size);
+            let m = if (0..2 * size).contains(&i) {
+                i
+            } else {
+                i.rem_euclid(2 * size)
+            };
             if m < size {
                 m
             } else {
@@ -60,10 +73,20 @@ pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
     }
 }
 
-/// `floor(x)` as an integer: saturating, NaN as 0.
-#[inline]
-fn ifloor(x: f64) -> i64 {
-    x.floor() as i64
+/// `floor(x)` as an integer and the fraction `x - floor(x)` in [0, 1): saturating, NaN as
+/// (0, 0). Avoids the libm call `f64::floor` becomes without SSE4.1.
+#[inline(always)]
+fn floor_frac(x: f64) -> (i64, f32) {
+    if x.is_nan() {
+        return (0, 0.0);
+    }
+    if x.abs() >= 4_503_599_627_370_496.0 {
+        // |x| >= 2^52: already an integer.
+        return (x as i64, 0.0);
+    }
+    let t = x as i64;
+    let f = if (t as f64) > x { t - 1 } else { t };
+    (f, (x - f as f64) as f32)
 }
 
 /// Cube map face selection (table 3.19 of OpenGL 1.5): the face index (+X, -X, +Y, -Y, +Z,
@@ -117,7 +140,12 @@ fn face_coords(face: usize, dir: [f32; 3]) -> [f32; 2] {
 
 #[inline]
 fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
-    [0, 1, 2, 3].map(|i| a[i] + (b[i] - a[i]) * w)
+    [
+        a[0] + (b[0] - a[0]) * w,
+        a[1] + (b[1] - a[1]) * w,
+        a[2] + (b[2] - a[2]) * w,
+        a[3] + (b[3] - a[3]) * w,
+    ]
 }
 
 fn length(v: [f32; 3]) -> f32 {
@@ -350,9 +378,9 @@ impl BoundTexture {
                     if lambda >= q as f32 {
                         self.filter(&levels[q], linear, coords)
                     } else {
-                        let d1 = (lambda.floor().max(0.0) as usize).min(q);
+                        let (fl, w) = floor_frac(lambda as f64);
+                        let d1 = (fl.max(0) as usize).min(q);
                         let d2 = (d1 + 1).min(q);
-                        let w = lambda - lambda.floor();
                         let t1 = self.filter(&levels[d1], linear, coords);
                         let t2 = self.filter(&levels[d2], linear, coords);
                         lerp4(t1, t2, w)
@@ -380,7 +408,7 @@ impl BoundTexture {
 
     /// One texel by wrapped inner indices (-1 or size: border), in internal RGBA, after depth
     /// comparison when enabled.
-    #[inline]
+    #[inline(always)]
     fn texel(&self, img: &TexImage, idx: [i64; 3], inner: [i64; 3], r: f32) -> [f32; 4] {
         let b = img.borders();
         let mut outside = false;
@@ -416,7 +444,12 @@ impl BoundTexture {
             TextureTarget::T3D => 3,
             _ => 2,
         };
-        let inner = img.inner_size().map(|s| s.max(1) as i64);
+        let sz = img.inner_size();
+        let inner = [
+            sz[0].max(1) as i64,
+            sz[1].max(1) as i64,
+            sz[2].max(1) as i64,
+        ];
         let wrap = self.inner.params.wrap;
         let r = coords[2];
         // Per axis: the two indices and the weight of the second.
@@ -433,14 +466,12 @@ impl BoundTexture {
             }
             let u = s * inner[d] as f64;
             if linear {
-                let u = u - 0.5;
-                let f = ifloor(u);
-                let frac = u - u.floor();
-                w[d] = if frac.is_finite() { frac as f32 } else { 0.0 };
+                let (f, frac) = floor_frac(u - 0.5);
+                w[d] = frac;
                 i0[d] = wrap_index(f, inner[d], wrap[d], true);
                 i1[d] = wrap_index(f.saturating_add(1), inner[d], wrap[d], true);
             } else {
-                i0[d] = wrap_index(ifloor(u), inner[d], wrap[d], false);
+                i0[d] = wrap_index(floor_frac(u).0, inner[d], wrap[d], false);
                 i1[d] = i0[d];
             }
         }
