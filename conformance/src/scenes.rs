@@ -957,6 +957,10 @@ pub const SCENES: &[Scene] = &[
         tex_floor_mipmap_nearest,
         spread(0.05640),
     ),
+    scene("texgen_sphere_map", texgen_sphere_map),
+    scene("texgen_object_linear", texgen_object_linear),
+    scene("texgen_eye_linear", texgen_eye_linear),
+    scene("multitexture_combine", multitexture_combine),
     Scene {
         name: "cube_128",
         width: 128,
@@ -1296,4 +1300,81 @@ fn pixel_space_keep(gl: &mut dyn Gl) {
     gl.ortho(0.0, 64.0, 0.0, 64.0, -1.0, 1.0);
     gl.matrix_mode(GL_MODELVIEW);
     gl.load_identity();
+}
+
+// Texture coordinate generation.
+
+fn texgen_scene(gl: &mut dyn Gl, modes: [GLenum; 2], planes: bool) {
+    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_REPEAT, 16);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-0.6, 0.6, -0.6, 0.6, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.enable(GL_DEPTH_TEST);
+    if planes {
+        // Eye planes are transformed by the modelview current at glTexGen time.
+        gl.rotatef(20.0, 0.0, 0.0, 1.0);
+        gl.tex_genfv(GL_S, GL_OBJECT_PLANE, &[0.7, 0.2, 0.0, 0.1]);
+        gl.tex_genfv(GL_T, GL_OBJECT_PLANE, &[0.0, 0.5, 0.6, 0.0]);
+        gl.tex_genfv(GL_S, GL_EYE_PLANE, &[0.5, 0.0, 0.3, 0.2]);
+        gl.tex_genfv(GL_T, GL_EYE_PLANE, &[0.1, 0.6, 0.0, 0.0]);
+        gl.load_identity();
+    }
+    gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, modes[0] as i32);
+    gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, modes[1] as i32);
+    gl.enable(GL_TEXTURE_GEN_S);
+    gl.enable(GL_TEXTURE_GEN_T);
+    gl.translatef(0.0, 0.0, -3.0);
+    gl.rotatef(30.0, 1.0, 1.0, 0.0);
+    sphere(gl, 12, 16);
+}
+
+fn texgen_sphere_map(gl: &mut dyn Gl) {
+    texgen_scene(gl, [GL_SPHERE_MAP, GL_SPHERE_MAP], false);
+}
+
+fn texgen_object_linear(gl: &mut dyn Gl) {
+    texgen_scene(gl, [GL_OBJECT_LINEAR, GL_OBJECT_LINEAR], true);
+}
+
+fn texgen_eye_linear(gl: &mut dyn Gl) {
+    texgen_scene(gl, [GL_EYE_LINEAR, GL_EYE_LINEAR], true);
+}
+
+/// Two units: a base texture modulated by a second unit through GL_COMBINE (ADD_SIGNED with
+/// RGB_SCALE 2, the light-map recipe), texture matrix on unit 1.
+fn multitexture_combine(gl: &mut dyn Gl) {
+    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_REPEAT, 16);
+    gl.active_texture(GL_TEXTURE1);
+    textured_setup(gl, GL_NEAREST, GL_LINEAR, GL_REPEAT, 8);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE as i32);
+    gl.tex_envi(
+        GL_TEXTURE_ENV,
+        GL_OPERAND1_RGB,
+        GL_ONE_MINUS_SRC_COLOR as i32,
+    );
+    gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE as i32);
+    gl.matrix_mode(GL_TEXTURE);
+    gl.rotatef(30.0, 0.0, 0.0, 1.0);
+    gl.active_texture(GL_TEXTURE0);
+    pixel_space_keep(gl);
+    gl.begin(GL_QUADS);
+    gl.color_3f(0.8, 0.9, 1.0);
+    for (s, t, x, y) in [
+        (0.0, 0.0, 4.0, 4.0),
+        (1.0, 0.0, 60.0, 4.0),
+        (1.0, 1.0, 60.0, 60.0),
+        (0.0, 1.0, 4.0, 60.0),
+    ] {
+        gl.multi_tex_coord_2f(GL_TEXTURE0, s, t);
+        gl.multi_tex_coord_2f(GL_TEXTURE1, s * 2.0, t * 2.0);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
 }

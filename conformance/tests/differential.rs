@@ -47,6 +47,10 @@ macro_rules! differential {
 }
 
 differential!(
+    texgen_sphere_map,
+    texgen_object_linear,
+    texgen_eye_linear,
+    multitexture_combine,
     tex_nearest_replace,
     tex_linear_modulate_clamp,
     tex_floor_nearest,

@@ -241,6 +241,8 @@ pub enum Capability {
     Light(usize),
     ColorMaterial,
     ColorSum,
+    /// `GL_TEXTURE_GEN_S` .. `Q` of the active unit.
+    TexGen(usize),
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -260,6 +262,10 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_LIGHTING => Capability::Lighting,
         GL_COLOR_MATERIAL => Capability::ColorMaterial,
         GL_COLOR_SUM => Capability::ColorSum,
+        GL_TEXTURE_GEN_S => Capability::TexGen(0),
+        GL_TEXTURE_GEN_T => Capability::TexGen(1),
+        GL_TEXTURE_GEN_R => Capability::TexGen(2),
+        GL_TEXTURE_GEN_Q => Capability::TexGen(3),
         e if light_index(e).is_some() => Capability::Light(light_index(e)?),
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
@@ -1254,4 +1260,67 @@ pub fn tex_env_param(target: GLenum, pname: GLenum) -> Option<TexEnvParam> {
 pub fn texture_unit(e: GLenum) -> Option<usize> {
     let i = e.checked_sub(GL_TEXTURE0)? as usize;
     (i < 8).then_some(i)
+}
+
+/// `glTexGen` modes (section 2.11.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TexGenMode {
+    ObjectLinear,
+    EyeLinear,
+    SphereMap,
+    ReflectionMap,
+    NormalMap,
+}
+
+impl TexGenMode {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            TexGenMode::ObjectLinear => GL_OBJECT_LINEAR,
+            TexGenMode::EyeLinear => GL_EYE_LINEAR,
+            TexGenMode::SphereMap => GL_SPHERE_MAP,
+            TexGenMode::ReflectionMap => GL_REFLECTION_MAP,
+            TexGenMode::NormalMap => GL_NORMAL_MAP,
+        }
+    }
+}
+
+/// A texgen mode valid for coordinate `coord` (0..4 = s, t, r, q): sphere maps only for s and
+/// t, reflection and normal maps not for q.
+pub fn tex_gen_mode(e: GLenum, coord: usize) -> Option<TexGenMode> {
+    Some(match e {
+        GL_OBJECT_LINEAR => TexGenMode::ObjectLinear,
+        GL_EYE_LINEAR => TexGenMode::EyeLinear,
+        GL_SPHERE_MAP if coord < 2 => TexGenMode::SphereMap,
+        GL_REFLECTION_MAP if coord < 3 => TexGenMode::ReflectionMap,
+        GL_NORMAL_MAP if coord < 3 => TexGenMode::NormalMap,
+        _ => return None,
+    })
+}
+
+/// `GL_S`, `GL_T`, `GL_R`, `GL_Q` as 0..4.
+pub fn tex_gen_coord(e: GLenum) -> Option<usize> {
+    Some(match e {
+        GL_S => 0,
+        GL_T => 1,
+        GL_R => 2,
+        GL_Q => 3,
+        _ => return None,
+    })
+}
+
+/// `glTexGen` parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TexGenParam {
+    Mode,
+    ObjectPlane,
+    EyePlane,
+}
+
+pub fn tex_gen_param(e: GLenum) -> Option<TexGenParam> {
+    Some(match e {
+        GL_TEXTURE_GEN_MODE => TexGenParam::Mode,
+        GL_OBJECT_PLANE => TexGenParam::ObjectPlane,
+        GL_EYE_PLANE => TexGenParam::EyePlane,
+        _ => return None,
+    })
 }

@@ -10,6 +10,7 @@ pub mod per_fragment;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
+pub mod texgen;
 
 use std::collections::HashMap;
 use std::ffi::CString;
@@ -68,6 +69,8 @@ pub struct Context {
     pub(crate) active_texture: usize,
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
     pub(crate) client_active_texture: usize,
+    /// Per-unit texture coordinate generation.
+    pub(crate) tex_gen: [texgen::TexGenUnit; tables::limits::MAX_TEXTURE_UNITS],
     /// Per-unit texture environments.
     pub(crate) tex_env: [texenv::TexEnv; tables::limits::MAX_TEXTURE_UNITS],
     pub(crate) lighting: lighting::LightingState,
@@ -140,6 +143,7 @@ impl Context {
             active_texture: 0,
             client_active_texture: 0,
             tex_env: Default::default(),
+            tex_gen: std::array::from_fn(|_| texgen::default_unit()),
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
@@ -315,6 +319,7 @@ impl Context {
                 self.lighting.track_color(c);
             }
             Capability::ColorSum => self.lighting.color_sum = on,
+            Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled = on,
         }
         self.invalidate();
     }
@@ -354,6 +359,7 @@ impl Context {
             Capability::Light(i) => self.lighting.lights[i].enabled,
             Capability::ColorMaterial => self.lighting.color_material,
             Capability::ColorSum => self.lighting.color_sum,
+            Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled,
         }
     }
 
@@ -658,6 +664,16 @@ impl Gl for Context {
         multi_tex_coord_4iv,
         multi_tex_coord_4s,
         multi_tex_coord_4sv,
+        // texture coordinate generation
+        tex_gend,
+        tex_genf,
+        tex_geni,
+        tex_gendv,
+        tex_genfv,
+        tex_geniv,
+        get_tex_gendv,
+        get_tex_genfv,
+        get_tex_geniv,
         // immediate mode
         begin,
         end,

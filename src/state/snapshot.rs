@@ -7,6 +7,7 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
+use crate::api::convert::TexGenMode;
 use crate::api::convert::{Face, ShadeModel, Winding};
 use crate::fragment::cache::select_span;
 use crate::fragment::key::{FragmentKey, Uniforms};
@@ -16,6 +17,8 @@ use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::BoundTexture;
+use crate::vertex::lighting::NormalTransform;
+use crate::vertex::texgen::GenCoord;
 
 /// Attribute layout of a vertex after the vertex stage. Rasterization interpolates the first
 /// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
@@ -52,6 +55,8 @@ pub struct TextureUnitDraw {
     pub env: TexEnv,
     /// The unit's texture matrix.
     pub matrix: Mat4,
+    /// Texture coordinate generation for s, t, r, q (`None`: the current coordinate).
+    pub texgen: [Option<GenCoord>; 4],
 }
 
 /// The frozen state of one draw.
@@ -80,6 +85,9 @@ pub struct DrawState {
     pub two_sided: bool,
     /// Texture units in use, in unit order (empty: no texturing).
     pub units: Vec<TextureUnitDraw>,
+    /// Normals to eye space (texture generation needs them).
+    pub normal_transform: NormalTransform,
+    pub normalize: bool,
     pub depth_max: u32,
     pub key: FragmentKey,
     pub uniforms: Uniforms,
@@ -143,6 +151,18 @@ impl Context {
                     texture,
                     env: self.tex_env[u],
                     matrix: *self.transform.texture[u].last().unwrap_or(&Mat4::IDENTITY),
+                    texgen: std::array::from_fn(|c| {
+                        let g = &self.tex_gen[u][c];
+                        g.enabled.then(|| GenCoord {
+                            mode: g.mode,
+                            plane: DVec4::from_array(if g.mode == TexGenMode::ObjectLinear {
+                                g.object_plane
+                            } else {
+                                g.eye_plane
+                            })
+                            .as_vec4(),
+                        })
+                    }),
                 })
             })
             .collect();
@@ -174,6 +194,12 @@ impl Context {
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
             two_sided,
             units,
+            normal_transform: NormalTransform::new(
+                modelview,
+                self.transform.normalize,
+                self.transform.rescale_normal,
+            ),
+            normalize: self.transform.normalize,
             depth_max: self.framebuffer.depth_max(),
             key,
             uniforms,

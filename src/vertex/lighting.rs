@@ -4,6 +4,45 @@ use glam::{Mat3, Mat4, Vec3, Vec4};
 
 use crate::state::lighting::{Light, LightingState, Material};
 
+/// Object-space normals to eye space (section 2.11.3): the inverse transpose of the modelview's
+/// upper 3x3, then `GL_NORMALIZE` or the `GL_RESCALE_NORMAL` factor.
+#[derive(Clone, Copy, Debug)]
+pub struct NormalTransform {
+    pub matrix: Mat3,
+    /// The rescale factor f = 1 / |third row of the inverse|, when rescaling applies.
+    pub rescale: Option<f32>,
+}
+
+impl NormalTransform {
+    pub fn new(modelview: Mat4, normalize: bool, rescale: bool) -> NormalTransform {
+        let inv = crate::state::matrices::inverse_or_identity(modelview);
+        let rescale = (rescale && !normalize).then(|| {
+            let row = Vec3::new(inv.x_axis.z, inv.y_axis.z, inv.z_axis.z);
+            let len = row.length();
+            if len > 0.0 && len.is_finite() {
+                1.0 / len
+            } else {
+                1.0
+            }
+        });
+        NormalTransform {
+            matrix: Mat3::from_mat4(inv).transpose(),
+            rescale,
+        }
+    }
+
+    pub fn apply(&self, normal: Vec3, normalize: bool) -> Vec3 {
+        let n = self.matrix * normal;
+        if normalize {
+            n.normalize_or_zero()
+        } else if let Some(f) = self.rescale {
+            n * f
+        } else {
+            n
+        }
+    }
+}
+
 /// Lighting inputs that depend only on state outside `glBegin`/`glEnd` (derived once per state
 /// change): the enabled lights and the normal transformation.
 #[derive(Clone, Debug)]
@@ -46,18 +85,10 @@ fn clamp01(v: Vec4) -> Vec4 {
 
 impl LightSetup {
     pub fn new(state: &LightingState, modelview: Mat4, normalize: bool, rescale: bool) -> Self {
-        let inv = crate::state::matrices::inverse_or_identity(modelview);
-        let normal_matrix = Mat3::from_mat4(inv).transpose();
-        // Section 2.11.3: f = 1 / sqrt(m31^2 + m32^2 + m33^2) over the inverse's third row.
-        let rescale = (rescale && !normalize).then(|| {
-            let row = Vec3::new(inv.x_axis.z, inv.y_axis.z, inv.z_axis.z);
-            let len = row.length();
-            if len > 0.0 && len.is_finite() {
-                1.0 / len
-            } else {
-                1.0
-            }
-        });
+        let NormalTransform {
+            matrix: normal_matrix,
+            rescale,
+        } = NormalTransform::new(modelview, normalize, rescale);
         let lights = state
             .lights
             .iter()
@@ -89,12 +120,11 @@ impl LightSetup {
         } else {
             eye.truncate()
         };
-        let mut n = self.normal_matrix * normal;
-        if self.normalize {
-            n = n.normalize_or_zero();
-        } else if let Some(f) = self.rescale {
-            n *= f;
+        let n = NormalTransform {
+            matrix: self.normal_matrix,
+            rescale: self.rescale,
         }
+        .apply(normal, self.normalize);
         let front = self.face(v, n, &materials[0]);
         let back = if self.two_side {
             self.face(v, -n, &materials[1])

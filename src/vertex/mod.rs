@@ -3,6 +3,7 @@
 
 pub mod immediate;
 pub mod lighting;
+pub mod texgen;
 pub mod transform;
 
 use crate::api::convert::PrimitiveMode;

@@ -3,6 +3,7 @@
 use glam::DVec4;
 
 use super::immediate::ImmVertex;
+use super::texgen;
 use crate::primitive::clip::ClipVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};
 use crate::state::DrawState;
@@ -11,7 +12,12 @@ use crate::state::DrawState;
 /// off the current colour is used as is, then clamped).
 pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
     let pos = (ds.mvp * v.position).as_dvec4();
-    let eye = if ds.clip_planes.is_empty() {
+    let needs_eye = !ds.clip_planes.is_empty()
+        || ds
+            .units
+            .iter()
+            .any(|u| u.texgen.iter().any(|g| g.is_some()));
+    let eye = if !needs_eye {
         DVec4::ZERO
     } else {
         (ds.modelview * v.position).as_dvec4()
@@ -32,7 +38,12 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
         }
     }
     for u in &ds.units {
-        let tc = u.matrix * v.texcoords[u.unit];
+        let mut tc = v.texcoords[u.unit];
+        if u.texgen.iter().any(|g| g.is_some()) {
+            let n = ds.normal_transform.apply(v.normal, ds.normalize);
+            tc = texgen::generate(&u.texgen, tc, v.position, eye.as_vec4(), n);
+        }
+        let tc = u.matrix * tc;
         attrs[attr::TEX + 4 * u.unit..attr::TEX + 4 * u.unit + 4].copy_from_slice(&tc.to_array());
     }
     ClipVertex { pos, eye, attrs }
