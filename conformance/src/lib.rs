@@ -8,7 +8,44 @@ pub mod known_failures;
 pub mod mesa;
 pub mod prng;
 pub mod scenes;
+pub mod scenes_texture;
 pub mod tolerance;
 
 pub use compare::{Diff, Image, Scene};
 pub use mesa::{MesaContext, Oracle, OracleError, OracleInfo};
+
+/// Runs one differential scene: the same calls on tilegl and on Mesa, compared under the
+/// scene's tolerance, with the known-failure rule applied. Serves the child-process request
+/// when this process was started as the other Gallium driver's helper.
+pub fn run_differential_case(name: &str) {
+    if compare::serve_child_request(&scenes::SCENES) {
+        return;
+    }
+    if !mesa::require_mesa(name) {
+        return;
+    }
+    let scene = scenes::find(name).unwrap_or_else(|| panic!("no scene {name}"));
+    let c = compare::compare_scene(scene, scene.tolerance)
+        .unwrap_or_else(|e| panic!("{name}: oracle error: {e}"));
+    if !c.passed() {
+        if let Some(dir) = std::env::var_os("TILEGL_CONFORMANCE_DUMP") {
+            let _ = c.dump(std::path::Path::new(&dir));
+        }
+    }
+    known_failures::check_outcome(name, c.passed(), &c.summary());
+}
+
+/// Declares one `#[test]` per named scene (running [`run_differential_case`]) and a `CASES`
+/// list of the names.
+#[macro_export]
+macro_rules! differential {
+    ($($name:ident),* $(,)?) => {
+        $(
+            #[test]
+            fn $name() {
+                $crate::run_differential_case(stringify!($name));
+            }
+        )*
+        const CASES: &[&str] = &[$(stringify!($name)),*];
+    };
+}

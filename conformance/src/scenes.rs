@@ -16,7 +16,7 @@ const F: u8 = 0;
 
 /// Pixel-space projection: ortho(0, w, 0, h, -1, 1), identity modelview, cleared colour and
 /// depth (dark grey background).
-fn pixel_space(gl: &mut dyn Gl, w: f64, h: f64) {
+pub(crate) fn pixel_space(gl: &mut dyn Gl, w: f64, h: f64) {
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     gl.ortho(0.0, w, 0.0, h, -1.0, 1.0);
@@ -25,7 +25,7 @@ fn pixel_space(gl: &mut dyn Gl, w: f64, h: f64) {
     clear(gl);
 }
 
-fn clear(gl: &mut dyn Gl) {
+pub(crate) fn clear(gl: &mut dyn Gl) {
     gl.clear_color(0.1, 0.1, 0.15, 1.0);
     gl.clear_depth(1.0);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -43,7 +43,7 @@ const PALETTE: [[f32; 3]; 8] = [
     [0.5, 0.25, 1.0],
 ];
 
-fn pal(gl: &mut dyn Gl, i: usize) {
+pub(crate) fn pal(gl: &mut dyn Gl, i: usize) {
     let c = PALETTE[i % PALETTE.len()];
     gl.color_3f(c[0], c[1], c[2]);
 }
@@ -890,8 +890,8 @@ fn big_viewport_128(gl: &mut dyn Gl) {
     gl.end();
 }
 
-/// Every differential scene, in report order.
-pub const SCENES: &[Scene] = &[
+/// The scenes defined in this file.
+pub const BASE_SCENES: &[Scene] = &[
     scene("points", points),
     scene("lines", lines),
     scene("line_strip", line_strip),
@@ -947,20 +947,6 @@ pub const SCENES: &[Scene] = &[
     scene("blend_over", blend_over),
     scene("alpha_test_and_stencil", alpha_test_and_stencil),
     scene("logic_xor", logic_xor),
-    scene("tex_nearest_replace", tex_nearest_replace),
-    scene("tex_linear_modulate_clamp", tex_linear_modulate_clamp),
-    // llvmpipe vs softpipe: 2.124 %, 9.351 %, 5.640 % of pixels off by more than 8.
-    scene_with("tex_floor_nearest", tex_floor_nearest, spread(0.02124)),
-    scene_with("tex_floor_trilinear", tex_floor_trilinear, spread(0.09351)),
-    scene_with(
-        "tex_floor_mipmap_nearest",
-        tex_floor_mipmap_nearest,
-        spread(0.05640),
-    ),
-    scene("texgen_sphere_map", texgen_sphere_map),
-    scene("texgen_object_linear", texgen_object_linear),
-    scene("texgen_eye_linear", texgen_eye_linear),
-    scene("multitexture_combine", multitexture_combine),
     Scene {
         name: "cube_128",
         width: 128,
@@ -970,13 +956,17 @@ pub const SCENES: &[Scene] = &[
     },
 ];
 
-const fn scene(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
+pub(crate) const fn scene(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
     scene_with(name, draw, DIFFERENTIAL)
 }
 
 /// A scene with its own tolerance: the bad-pixel share llvmpipe and softpipe themselves show on
 /// it (measured with `--bin calibrate`, recorded in TOLERANCE.md).
-const fn scene_with(name: &'static str, draw: fn(&mut dyn Gl), tolerance: Tolerance) -> Scene {
+pub(crate) const fn scene_with(
+    name: &'static str,
+    draw: fn(&mut dyn Gl),
+    tolerance: Tolerance,
+) -> Scene {
     Scene {
         name,
         width: 64,
@@ -987,12 +977,16 @@ const fn scene_with(name: &'static str, draw: fn(&mut dyn Gl), tolerance: Tolera
 }
 
 /// Texture scenes: same channel threshold, bad share as measured between the Mesa drivers.
-const fn spread(max_bad_share: f64) -> Tolerance {
+pub(crate) const fn spread(max_bad_share: f64) -> Tolerance {
     Tolerance {
         channel: DIFFERENTIAL.channel,
         max_bad_share,
     }
 }
+
+/// Every differential scene, in report order: this file's, then the texturing ones.
+pub static SCENES: std::sync::LazyLock<Vec<Scene>> =
+    std::sync::LazyLock::new(|| [BASE_SCENES, crate::scenes_texture::TEXTURE_SCENES].concat());
 
 /// The scene called `name`.
 pub fn find(name: &str) -> Option<&'static Scene> {
@@ -1003,7 +997,7 @@ pub fn find(name: &str) -> Option<&'static Scene> {
 // Lighting and per-fragment operations.
 
 /// A lit sphere of `stacks` x `slices` quads (triangle strips), unit radius, with normals.
-fn sphere(gl: &mut dyn Gl, stacks: usize, slices: usize) {
+pub(crate) fn sphere(gl: &mut dyn Gl, stacks: usize, slices: usize) {
     use std::f32::consts::PI;
     for i in 0..stacks {
         let (t0, t1) = (
@@ -1153,228 +1147,4 @@ fn logic_xor(gl: &mut dyn Gl) {
     gl.rectf(8.0, 8.0, 40.0, 40.0);
     gl.color_3f(0.25, 1.0, 0.75);
     gl.rectf(24.0, 24.0, 56.0, 56.0);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Texturing.
-
-/// An RGBA checkerboard with a colour ramp, `size` x `size`.
-fn checker_pixels(size: usize) -> Vec<u8> {
-    let mut p = Vec::with_capacity(size * size * 4);
-    for y in 0..size {
-        for x in 0..size {
-            let on = ((x * 8 / size) + (y * 8 / size)) % 2 == 0;
-            let r = (x * 255 / size.max(1)) as u8;
-            let g = (y * 255 / size.max(1)) as u8;
-            if on {
-                p.extend_from_slice(&[r, g, 255, 255]);
-            } else {
-                p.extend_from_slice(&[255 - r, 40, g, 160]);
-            }
-        }
-    }
-    p
-}
-
-fn textured_setup(gl: &mut dyn Gl, min: GLenum, mag: GLenum, wrap: GLenum, size: usize) {
-    clear(gl);
-    let mut name = [0u32];
-    gl.gen_textures(1, &mut name);
-    gl.bind_texture(GL_TEXTURE_2D, name[0]);
-    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
-    let px = checker_pixels(size);
-    gl.tex_image_2d(
-        GL_TEXTURE_2D,
-        0,
-        GL_RGBA as i32,
-        size as i32,
-        size as i32,
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        Some(&px),
-    );
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 0);
-    if min != GL_NEAREST && min != GL_LINEAR {
-        // Explicit mipmaps: each level a box-filtered checker of its own size.
-        let mut s = size / 2;
-        let mut level = 1;
-        while s >= 1 {
-            let p = checker_pixels(s);
-            gl.tex_image_2d(
-                GL_TEXTURE_2D,
-                level,
-                GL_RGBA as i32,
-                s as i32,
-                s as i32,
-                0,
-                GL_RGBA,
-                GL_UNSIGNED_BYTE,
-                Some(&p),
-            );
-            s /= 2;
-            level += 1;
-        }
-    }
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag as i32);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap as i32);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap as i32);
-    gl.enable(GL_TEXTURE_2D);
-}
-
-/// A floor in perspective, texture repeated: exercises minification and level selection.
-fn textured_floor(gl: &mut dyn Gl, min: GLenum, mag: GLenum, env: GLenum) {
-    textured_setup(gl, min, mag, GL_REPEAT, 32);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env as i32);
-    gl.matrix_mode(GL_PROJECTION);
-    gl.load_identity();
-    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 50.0);
-    gl.matrix_mode(GL_MODELVIEW);
-    gl.load_identity();
-    gl.begin(GL_QUADS);
-    gl.color_3f(0.9, 0.7, 0.5);
-    for (s, t, x, z) in [
-        (0.0, 0.0, -4.0, -1.2),
-        (6.0, 0.0, 4.0, -1.2),
-        (6.0, 20.0, 4.0, -40.0),
-        (0.0, 20.0, -4.0, -40.0),
-    ] {
-        gl.tex_coord_2f(s, t);
-        gl.vertex_3f(x, -1.0, z);
-    }
-    gl.end();
-}
-
-fn tex_nearest_replace(gl: &mut dyn Gl) {
-    textured_setup(gl, GL_NEAREST, GL_NEAREST, GL_REPEAT, 16);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
-    pixel_space_keep(gl);
-    gl.begin(GL_QUADS);
-    // A parallelogram with affine texture coordinates: every quad split gives the same picture.
-    for (s, t, x, y) in [
-        (0.0, 0.0, 4.0, 4.0),
-        (1.5, 0.0, 56.0, 10.0),
-        (1.5, 1.5, 60.0, 60.0),
-        (0.0, 1.5, 8.0, 54.0),
-    ] {
-        gl.tex_coord_2f(s, t);
-        gl.vertex_2f(x, y);
-    }
-    gl.end();
-}
-
-fn tex_linear_modulate_clamp(gl: &mut dyn Gl) {
-    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, 8);
-    pixel_space_keep(gl);
-    gl.begin(GL_QUADS);
-    gl.color_3f(1.0, 0.8, 0.6);
-    for (s, t, x, y) in [
-        (-0.2, -0.2, 4.0, 4.0),
-        (1.2, -0.2, 60.0, 4.0),
-        (1.2, 1.2, 60.0, 60.0),
-        (-0.2, 1.2, 4.0, 60.0),
-    ] {
-        gl.tex_coord_2f(s, t);
-        gl.vertex_2f(x, y);
-    }
-    gl.end();
-}
-
-fn tex_floor_nearest(gl: &mut dyn Gl) {
-    textured_floor(gl, GL_NEAREST, GL_NEAREST, GL_REPLACE);
-}
-
-fn tex_floor_trilinear(gl: &mut dyn Gl) {
-    textured_floor(gl, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_MODULATE);
-}
-
-fn tex_floor_mipmap_nearest(gl: &mut dyn Gl) {
-    textured_floor(gl, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_DECAL);
-}
-
-/// Orthographic pixel space without clearing (the texture set-up already cleared).
-fn pixel_space_keep(gl: &mut dyn Gl) {
-    gl.matrix_mode(GL_PROJECTION);
-    gl.load_identity();
-    gl.ortho(0.0, 64.0, 0.0, 64.0, -1.0, 1.0);
-    gl.matrix_mode(GL_MODELVIEW);
-    gl.load_identity();
-}
-
-// Texture coordinate generation.
-
-fn texgen_scene(gl: &mut dyn Gl, modes: [GLenum; 2], planes: bool) {
-    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_REPEAT, 16);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
-    gl.matrix_mode(GL_PROJECTION);
-    gl.load_identity();
-    gl.frustum(-0.6, 0.6, -0.6, 0.6, 1.0, 10.0);
-    gl.matrix_mode(GL_MODELVIEW);
-    gl.load_identity();
-    gl.enable(GL_DEPTH_TEST);
-    if planes {
-        // Eye planes are transformed by the modelview current at glTexGen time.
-        gl.rotatef(20.0, 0.0, 0.0, 1.0);
-        gl.tex_genfv(GL_S, GL_OBJECT_PLANE, &[0.7, 0.2, 0.0, 0.1]);
-        gl.tex_genfv(GL_T, GL_OBJECT_PLANE, &[0.0, 0.5, 0.6, 0.0]);
-        gl.tex_genfv(GL_S, GL_EYE_PLANE, &[0.5, 0.0, 0.3, 0.2]);
-        gl.tex_genfv(GL_T, GL_EYE_PLANE, &[0.1, 0.6, 0.0, 0.0]);
-        gl.load_identity();
-    }
-    gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, modes[0] as i32);
-    gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, modes[1] as i32);
-    gl.enable(GL_TEXTURE_GEN_S);
-    gl.enable(GL_TEXTURE_GEN_T);
-    gl.translatef(0.0, 0.0, -3.0);
-    gl.rotatef(30.0, 1.0, 1.0, 0.0);
-    sphere(gl, 12, 16);
-}
-
-fn texgen_sphere_map(gl: &mut dyn Gl) {
-    texgen_scene(gl, [GL_SPHERE_MAP, GL_SPHERE_MAP], false);
-}
-
-fn texgen_object_linear(gl: &mut dyn Gl) {
-    texgen_scene(gl, [GL_OBJECT_LINEAR, GL_OBJECT_LINEAR], true);
-}
-
-fn texgen_eye_linear(gl: &mut dyn Gl) {
-    texgen_scene(gl, [GL_EYE_LINEAR, GL_EYE_LINEAR], true);
-}
-
-/// Two units: a base texture modulated by a second unit through GL_COMBINE (ADD_SIGNED with
-/// RGB_SCALE 2, the light-map recipe), texture matrix on unit 1.
-fn multitexture_combine(gl: &mut dyn Gl) {
-    textured_setup(gl, GL_LINEAR, GL_LINEAR, GL_REPEAT, 16);
-    gl.active_texture(GL_TEXTURE1);
-    textured_setup(gl, GL_NEAREST, GL_LINEAR, GL_REPEAT, 8);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED as i32);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS as i32);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE as i32);
-    gl.tex_envi(
-        GL_TEXTURE_ENV,
-        GL_OPERAND1_RGB,
-        GL_ONE_MINUS_SRC_COLOR as i32,
-    );
-    gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0);
-    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_MODULATE as i32);
-    gl.matrix_mode(GL_TEXTURE);
-    gl.rotatef(30.0, 0.0, 0.0, 1.0);
-    gl.active_texture(GL_TEXTURE0);
-    pixel_space_keep(gl);
-    gl.begin(GL_QUADS);
-    gl.color_3f(0.8, 0.9, 1.0);
-    for (s, t, x, y) in [
-        (0.0, 0.0, 4.0, 4.0),
-        (1.0, 0.0, 60.0, 4.0),
-        (1.0, 1.0, 60.0, 60.0),
-        (0.0, 1.0, 4.0, 60.0),
-    ] {
-        gl.multi_tex_coord_2f(GL_TEXTURE0, s, t);
-        gl.multi_tex_coord_2f(GL_TEXTURE1, s * 2.0, t * 2.0);
-        gl.vertex_2f(x, y);
-    }
-    gl.end();
 }

@@ -16,46 +16,9 @@ use tilegl_conformance::mesa::{self, MesaContext, Oracle};
 use tilegl_conformance::scenes::{self, SCENES};
 use tilegl_conformance::tolerance::DIFFERENTIAL;
 
-fn run_case(name: &str) {
-    if compare::serve_child_request(SCENES) {
-        return;
-    }
-    if !mesa::require_mesa(name) {
-        return;
-    }
-    let scene = scenes::find(name).unwrap_or_else(|| panic!("no scene {name}"));
-    let c = compare::compare_scene(scene, scene.tolerance)
-        .unwrap_or_else(|e| panic!("{name}: oracle error: {e}"));
-    if !c.passed() {
-        if let Some(dir) = std::env::var_os("TILEGL_CONFORMANCE_DUMP") {
-            let _ = c.dump(std::path::Path::new(&dir));
-        }
-    }
-    check_outcome(name, c.passed(), &c.summary());
-}
-
-macro_rules! differential {
-    ($($name:ident),* $(,)?) => {
-        $(
-            #[test]
-            fn $name() {
-                run_case(stringify!($name));
-            }
-        )*
-        const CASES: &[&str] = &[$(stringify!($name)),*];
-    };
-}
+use tilegl_conformance::differential;
 
 differential!(
-    texgen_sphere_map,
-    texgen_object_linear,
-    texgen_eye_linear,
-    multitexture_combine,
-    tex_nearest_replace,
-    tex_linear_modulate_clamp,
-    tex_floor_nearest,
-    tex_floor_trilinear,
-    tex_floor_mipmap_nearest,
     lit_directional,
     lit_positional_attenuated,
     lit_spot,
@@ -113,7 +76,7 @@ differential!(
 
 #[test]
 fn every_scene_has_a_test() {
-    let mut scene_names: Vec<&str> = SCENES.iter().map(|s| s.name).collect();
+    let mut scene_names: Vec<&str> = scenes::BASE_SCENES.iter().map(|s| s.name).collect();
     let mut cases = CASES.to_vec();
     scene_names.sort_unstable();
     cases.sort_unstable();
@@ -132,7 +95,7 @@ fn every_scene_has_a_test() {
 #[test]
 fn other_driver_subprocess_agrees() {
     const NAME: &str = "other_driver_subprocess_agrees";
-    if compare::serve_child_request(SCENES) {
+    if compare::serve_child_request(&SCENES) {
         return;
     }
     if !mesa::require_mesa(NAME) {

@@ -20,7 +20,7 @@ fn cells(d: &Diff, b2: &Diff, b24: &Diff) -> String {
 }
 
 fn main() {
-    if compare::serve_child_request(SCENES) {
+    if compare::serve_child_request(&SCENES) {
         return;
     }
     if let Err(e) = mesa::mesa_available() {
@@ -40,7 +40,7 @@ fn main() {
     let mut worst_bad24: f64 = 0.0;
     let mut worst_max = 0u8;
     let mut rows = Vec::new();
-    for scene in SCENES {
+    for scene in SCENES.iter() {
         let (m, info) = match compare::render_mesa(scene) {
             Ok(x) => x,
             Err(e) => {
