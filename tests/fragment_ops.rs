@@ -362,3 +362,69 @@ fn fragment_state_queries_round_trip() {
     assert_eq!(q(&mut gl, GL_LOGIC_OP_MODE), GL_XOR);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+/// Fog (section 3.10): f from the equations, C = f C_r + (1 - f) C_f, with the eye distance
+/// |z_eye| as fog coordinate, or the vertex fog coordinate.
+#[test]
+fn fog_equations() {
+    let color = [0.8f32, 0.2, 0.4];
+    let fog = [0.1f32, 0.5, 0.9];
+    // (mode, density, start, end, eye depth, use fog coordinate)
+    let cases = [
+        (GL_LINEAR, 1.0, 2.0, 10.0, 5.0, false),
+        (GL_LINEAR, 1.0, 2.0, 10.0, 12.0, false),
+        (GL_LINEAR, 1.0, 4.0, 4.0, 3.0, false), // start == end
+        (GL_EXP, 0.3, 0.0, 1.0, 4.0, false),
+        (GL_EXP, 0.0, 0.0, 1.0, 4.0, false), // density 0: no fog
+        (GL_EXP, 1e6, 0.0, 1.0, 4.0, false), // all fog
+        (GL_EXP2, 0.2, 0.0, 1.0, 3.0, false),
+        (GL_LINEAR, 1.0, 0.0, 8.0, 6.0, true),
+        (GL_EXP, 0.5, 0.0, 1.0, -2.0, true), // negative fog coordinate
+    ];
+    for (mode, density, start, end, d, coord) in cases {
+        let mut gl = Context::new(4, 4);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.ortho(-1.0, 1.0, -1.0, 1.0, 0.0, 100.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.enable(GL_FOG);
+        gl.fogi(GL_FOG_MODE, mode as i32);
+        gl.fogf(GL_FOG_DENSITY, density);
+        gl.fogf(GL_FOG_START, start);
+        gl.fogf(GL_FOG_END, end);
+        gl.fogfv(GL_FOG_COLOR, &[fog[0], fog[1], fog[2], 1.0]);
+        let z = if coord {
+            gl.fogi(GL_FOG_COORD_SRC, GL_FOG_COORD as i32);
+            gl.fog_coordf(d);
+            -50.0
+        } else {
+            -d
+        };
+        gl.color_3f(color[0], color[1], color[2]);
+        gl.begin(GL_QUADS);
+        for (x, y) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            gl.vertex_3f(x, y, z);
+        }
+        gl.end();
+        let c = if coord { d } else { d.abs() };
+        let f: f32 = match mode {
+            GL_LINEAR => {
+                if end == start {
+                    (end - c).clamp(0.0, 1.0)
+                } else {
+                    ((end - c) / (end - start)).clamp(0.0, 1.0)
+                }
+            }
+            GL_EXP => (-density * c).exp().clamp(0.0, 1.0),
+            _ => (-(density * c) * (density * c)).exp().clamp(0.0, 1.0),
+        };
+        let got = pixel(&mut gl, 2, 2);
+        for ch in 0..3 {
+            let e = (f * color[ch] + (1.0 - f) * fog[ch]) * 255.0;
+            assert!(
+                (got[ch] as f32 - e).abs() <= 1.0,
+                "mode {mode:#x} d {d}: ch {ch} got {} expected {e}",
+                got[ch]
+            );
+        }
+    }
+}

@@ -947,6 +947,10 @@ pub const BASE_SCENES: &[Scene] = &[
     scene("blend_over", blend_over),
     scene("alpha_test_and_stencil", alpha_test_and_stencil),
     scene("logic_xor", logic_xor),
+    scene("fog_linear", fog_linear),
+    scene("fog_exp", fog_exp),
+    scene("fog_exp2", fog_exp2),
+    scene("fog_coord_linear", fog_coord_linear),
     Scene {
         name: "cube_128",
         width: 128,
@@ -1147,4 +1151,83 @@ fn logic_xor(gl: &mut dyn Gl) {
     gl.rectf(8.0, 8.0, 40.0, 40.0);
     gl.color_3f(0.25, 1.0, 0.75);
     gl.rectf(24.0, 24.0, 56.0, 56.0);
+}
+
+// Fog.
+
+fn fog_scene(gl: &mut dyn Gl, mode: GLenum, coord: bool) {
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    clear(gl);
+    gl.enable(GL_FOG);
+    gl.fogi(GL_FOG_MODE, mode as i32);
+    gl.fogf(GL_FOG_DENSITY, 0.15);
+    gl.fogf(GL_FOG_START, 2.0);
+    gl.fogf(GL_FOG_END, 20.0);
+    gl.fogfv(GL_FOG_COLOR, &[0.6, 0.7, 0.8, 1.0]);
+    if coord {
+        gl.fogi(GL_FOG_COORD_SRC, GL_FOG_COORD as i32);
+    }
+    // A ground plane and two upright quads at different depths.
+    gl.begin(GL_TRIANGLES);
+    let quad = |gl: &mut dyn Gl, p: [[f32; 3]; 4], fc: [f32; 4], c: [f32; 3]| {
+        gl.color_3f(c[0], c[1], c[2]);
+        for k in [0usize, 1, 2, 0, 2, 3] {
+            gl.fog_coordf(fc[k]);
+            gl.vertex_3f(p[k][0], p[k][1], p[k][2]);
+        }
+    };
+    quad(
+        gl,
+        [
+            [-6.0, -1.0, -1.5],
+            [6.0, -1.0, -1.5],
+            [6.0, -1.0, -28.0],
+            [-6.0, -1.0, -28.0],
+        ],
+        [0.0, 3.0, 30.0, 12.0],
+        [0.2, 0.6, 0.2],
+    );
+    quad(
+        gl,
+        [
+            [-2.0, -1.0, -4.0],
+            [-0.5, -1.0, -4.0],
+            [-0.5, 1.0, -4.0],
+            [-2.0, 1.0, -4.0],
+        ],
+        [1.0, 1.0, 8.0, 8.0],
+        [0.9, 0.2, 0.1],
+    );
+    quad(
+        gl,
+        [
+            [0.5, -1.0, -12.0],
+            [3.0, -1.0, -12.0],
+            [3.0, 2.0, -12.0],
+            [0.5, 2.0, -12.0],
+        ],
+        [20.0, 2.0, 2.0, 20.0],
+        [0.9, 0.9, 0.1],
+    );
+    gl.end();
+}
+
+fn fog_linear(gl: &mut dyn Gl) {
+    fog_scene(gl, GL_LINEAR, false);
+}
+
+fn fog_exp(gl: &mut dyn Gl) {
+    fog_scene(gl, GL_EXP, false);
+}
+
+fn fog_exp2(gl: &mut dyn Gl) {
+    fog_scene(gl, GL_EXP2, false);
+}
+
+fn fog_coord_linear(gl: &mut dyn Gl) {
+    fog_scene(gl, GL_LINEAR, true);
 }

@@ -19,6 +19,10 @@ use tilegl_conformance::tolerance::DIFFERENTIAL;
 use tilegl_conformance::differential;
 
 differential!(
+    fog_linear,
+    fog_exp,
+    fog_exp2,
+    fog_coord_linear,
     lit_directional,
     lit_positional_attenuated,
     lit_spot,

@@ -243,6 +243,7 @@ pub enum Capability {
     ColorSum,
     /// `GL_TEXTURE_GEN_S` .. `Q` of the active unit.
     TexGen(usize),
+    Fog,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -262,6 +263,7 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_LIGHTING => Capability::Lighting,
         GL_COLOR_MATERIAL => Capability::ColorMaterial,
         GL_COLOR_SUM => Capability::ColorSum,
+        GL_FOG => Capability::Fog,
         GL_TEXTURE_GEN_S => Capability::TexGen(0),
         GL_TEXTURE_GEN_T => Capability::TexGen(1),
         GL_TEXTURE_GEN_R => Capability::TexGen(2),
@@ -578,6 +580,7 @@ pub enum Query {
     LightModelColorControl,
     ColorMaterialFace,
     ColorMaterialParameter,
+    Fog(FogParam),
 }
 
 /// The `glGet*` query for `pname`.
@@ -678,6 +681,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_LIGHT_MODEL_TWO_SIDE => LightModelTwoSide,
         GL_LIGHT_MODEL_COLOR_CONTROL => LightModelColorControl,
         GL_COLOR_MATERIAL_FACE => ColorMaterialFace,
+        e if fog_param(e).is_some() => Fog(fog_param(e)?),
         GL_COLOR_MATERIAL_PARAMETER => ColorMaterialParameter,
         _ => return None,
     })
@@ -1323,4 +1327,66 @@ pub fn tex_gen_param(e: GLenum) -> Option<TexGenParam> {
         GL_EYE_PLANE => TexGenParam::EyePlane,
         _ => return None,
     })
+}
+
+/// Fog equations (section 3.10).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FogMode {
+    Linear,
+    Exp,
+    Exp2,
+}
+
+impl FogMode {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            FogMode::Linear => GL_LINEAR,
+            FogMode::Exp => GL_EXP,
+            FogMode::Exp2 => GL_EXP2,
+        }
+    }
+}
+
+pub fn fog_mode(e: GLenum) -> Option<FogMode> {
+    Some(match e {
+        GL_LINEAR => FogMode::Linear,
+        GL_EXP => FogMode::Exp,
+        GL_EXP2 => FogMode::Exp2,
+        _ => return None,
+    })
+}
+
+/// `glFog` parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FogParam {
+    Mode,
+    Density,
+    Start,
+    End,
+    Index,
+    Color,
+    CoordSource,
+}
+
+pub fn fog_param(e: GLenum) -> Option<FogParam> {
+    Some(match e {
+        GL_FOG_MODE => FogParam::Mode,
+        GL_FOG_DENSITY => FogParam::Density,
+        GL_FOG_START => FogParam::Start,
+        GL_FOG_END => FogParam::End,
+        GL_FOG_INDEX => FogParam::Index,
+        GL_FOG_COLOR => FogParam::Color,
+        GL_FOG_COORD_SRC => FogParam::CoordSource,
+        _ => return None,
+    })
+}
+
+/// `GL_FOG_COORD_SRC` values: true for `GL_FOG_COORD` (the vertex fog coordinate), false for
+/// `GL_FRAGMENT_DEPTH`.
+pub fn fog_coord_source(e: GLenum) -> Option<bool> {
+    match e {
+        GL_FOG_COORD => Some(true),
+        GL_FRAGMENT_DEPTH => Some(false),
+        _ => None,
+    }
 }

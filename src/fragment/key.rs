@@ -2,7 +2,7 @@
 //! a span function is chosen for it; `Uniforms`: the per-draw values (references, masks,
 //! constant colour) that change no code path.
 
-use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, LogicOp, StencilOp};
+use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp, StencilOp};
 use crate::state::tables::FragmentOpsState;
 
 /// The stencil test and its three actions.
@@ -45,6 +45,8 @@ pub struct FragmentKey {
     pub color_sum: bool,
     /// At least one texture unit applies (the units themselves are in the `DrawState`).
     pub texturing: bool,
+    /// Fog, after the colour sum (parameters in the `DrawState`).
+    pub fog: Option<FogMode>,
 }
 
 /// Per-draw values read by the fragment stage.
@@ -116,6 +118,7 @@ impl FragmentKey {
             color_mask: ops.color_mask,
             color_sum,
             texturing: false,
+            fog: None,
         }
     }
 
@@ -132,6 +135,7 @@ impl FragmentKey {
             && self.logic_op.is_none()
             && !self.color_sum
             && !self.texturing
+            && self.fog.is_none()
     }
 }
 

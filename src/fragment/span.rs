@@ -123,6 +123,21 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
                 color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
             }
         }
+        if !SIMPLE && key.fog.is_some() {
+            if let Some(f) = &ds.fog {
+                let xc = x0 as f64 + i as f64 + 0.5;
+                let p = &it.attrs[attr::FOG];
+                let c = if it.perspective {
+                    (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
+                } else {
+                    p.at(xc, yc) as f32
+                };
+                let k = f.factor(c);
+                for ch in 0..3 {
+                    color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+                }
+            }
+        }
         let z_here = z;
         // Step the interpolants now, so that every `continue` below moves to the next pixel.
         z += dz;

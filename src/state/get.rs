@@ -245,6 +245,23 @@ impl Context {
             } else {
                 GL_SINGLE_COLOR
             }),
+            Query::Fog(p) => {
+                use crate::api::convert::FogParam;
+                let f = &self.fog;
+                match p {
+                    FogParam::Mode => Enum(f.mode.to_gl()),
+                    FogParam::Density => Floats(vec![f.density as f64]),
+                    FogParam::Start => Floats(vec![f.start as f64]),
+                    FogParam::End => Floats(vec![f.end as f64]),
+                    FogParam::Index => Floats(vec![f.index as f64]),
+                    FogParam::Color => Normalized(f.color.iter().map(|&c| c as f64).collect()),
+                    FogParam::CoordSource => Enum(if f.coord_from_vertex {
+                        GL_FOG_COORD
+                    } else {
+                        GL_FRAGMENT_DEPTH
+                    }),
+                }
+            }
             Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),
             Query::ColorMaterialParameter => Enum(self.lighting.color_material_mode.to_gl()),
         }

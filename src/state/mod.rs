@@ -3,6 +3,7 @@
 
 #[macro_use]
 mod textures;
+pub mod fog;
 pub mod get;
 pub mod lighting;
 pub mod matrices;
@@ -69,6 +70,7 @@ pub struct Context {
     pub(crate) active_texture: usize,
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
     pub(crate) client_active_texture: usize,
+    pub(crate) fog: fog::FogState,
     /// Per-unit texture coordinate generation.
     pub(crate) tex_gen: [texgen::TexGenUnit; tables::limits::MAX_TEXTURE_UNITS],
     /// Per-unit texture environments.
@@ -144,6 +146,7 @@ impl Context {
             client_active_texture: 0,
             tex_env: Default::default(),
             tex_gen: std::array::from_fn(|_| texgen::default_unit()),
+            fog: Default::default(),
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
@@ -320,6 +323,7 @@ impl Context {
             }
             Capability::ColorSum => self.lighting.color_sum = on,
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled = on,
+            Capability::Fog => self.fog.enabled = on,
         }
         self.invalidate();
     }
@@ -360,6 +364,7 @@ impl Context {
             Capability::ColorMaterial => self.lighting.color_material,
             Capability::ColorSum => self.lighting.color_sum,
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled,
+            Capability::Fog => self.fog.enabled,
         }
     }
 
@@ -674,6 +679,15 @@ impl Gl for Context {
         get_tex_gendv,
         get_tex_genfv,
         get_tex_geniv,
+        // fog
+        fogf,
+        fogi,
+        fogfv,
+        fogiv,
+        fog_coordf,
+        fog_coordd,
+        fog_coordfv,
+        fog_coorddv,
         // immediate mode
         begin,
         end,

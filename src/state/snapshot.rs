@@ -7,8 +7,8 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::TexGenMode;
 use crate::api::convert::{Face, ShadeModel, Winding};
+use crate::api::convert::{FogMode, TexGenMode};
 use crate::fragment::cache::select_span;
 use crate::fragment::key::{FragmentKey, Uniforms};
 use crate::fragment::span::SpanFn;
@@ -59,6 +59,39 @@ pub struct TextureUnitDraw {
     pub texgen: [Option<GenCoord>; 4],
 }
 
+/// Fog parameters of a draw (section 3.10).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FogDraw {
+    pub mode: FogMode,
+    pub density: f32,
+    pub start: f32,
+    pub end: f32,
+    pub color: [f32; 3],
+    /// Use the vertex fog coordinate instead of the eye distance.
+    pub coord_from_vertex: bool,
+}
+
+impl FogDraw {
+    /// The fog factor f for fog coordinate `c`, clamped to [0, 1]. With start == end the
+    /// linear factor uses a scale of 1 (as Mesa does) instead of dividing by zero.
+    #[inline]
+    pub fn factor(&self, c: f32) -> f32 {
+        let f = match self.mode {
+            FogMode::Linear => {
+                let range = self.end - self.start;
+                let scale = if range != 0.0 { 1.0 / range } else { 1.0 };
+                (self.end - c) * scale
+            }
+            FogMode::Exp => (-self.density * c).exp(),
+            FogMode::Exp2 => {
+                let d = self.density * c;
+                (-d * d).exp()
+            }
+        };
+        f.max(0.0).min(1.0)
+    }
+}
+
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]
 pub struct DrawState {
@@ -85,6 +118,8 @@ pub struct DrawState {
     pub two_sided: bool,
     /// Texture units in use, in unit order (empty: no texturing).
     pub units: Vec<TextureUnitDraw>,
+    /// Fog, when enabled (the mode is in the key; these are its parameters).
+    pub fog: Option<FogDraw>,
     /// Normals to eye space (texture generation needs them).
     pub normal_transform: NormalTransform,
     pub normalize: bool,
@@ -166,7 +201,17 @@ impl Context {
                 })
             })
             .collect();
+        let fs = &self.fog;
+        let fog = fs.enabled.then_some(FogDraw {
+            mode: fs.mode,
+            density: fs.density,
+            start: fs.start,
+            end: fs.end,
+            color: [fs.color[0], fs.color[1], fs.color[2]],
+            coord_from_vertex: fs.coord_from_vertex,
+        });
         let attr_count = match units.last() {
+            _ if fog.is_some() => attr::FOG + 1,
             Some(last) => attr::TEX + 4 * (last.unit + 1),
             None if color_sum => attr::COLORS,
             None => COLOR_ATTRS,
@@ -174,6 +219,7 @@ impl Context {
         let mut key =
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
         key.texturing = !units.is_empty();
+        key.fog = fog.map(|f| f.mode);
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,
@@ -194,6 +240,7 @@ impl Context {
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
             two_sided,
             units,
+            fog,
             normal_transform: NormalTransform::new(
                 modelview,
                 self.transform.normalize,

@@ -13,6 +13,7 @@ use crate::state::DrawState;
 pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
     let pos = (ds.mvp * v.position).as_dvec4();
     let needs_eye = !ds.clip_planes.is_empty()
+        || ds.fog.is_some_and(|f| !f.coord_from_vertex)
         || ds
             .units
             .iter()
@@ -45,6 +46,14 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
         }
         let tc = u.matrix * tc;
         attrs[attr::TEX + 4 * u.unit..attr::TEX + 4 * u.unit + 4].copy_from_slice(&tc.to_array());
+    }
+    if let Some(f) = &ds.fog {
+        // Section 3.10: the fog coordinate, or the eye distance approximated by |z_eye|.
+        attrs[attr::FOG] = if f.coord_from_vertex {
+            v.fog_coord
+        } else {
+            (eye.z as f32).abs()
+        };
     }
     ClipVertex { pos, eye, attrs }
 }
