@@ -23,6 +23,19 @@
 //! assert_eq!(px, [255, 0, 0, 255]);
 //! ```
 
+// Lints this crate opts out of, deliberately:
+// - `!(x >= lo)` rejects NaN together with out-of-range values, which GL argument checks need;
+// - manual clamps keep NaN handling explicit (and never panic on min > max);
+// - the numeric kernels index several parallel arrays by one loop counter;
+// - some span and pixel-transfer kernels take many scalar arguments on purpose.
+#![allow(
+    clippy::neg_cmp_op_on_partial_ord,
+    clippy::manual_clamp,
+    clippy::needless_range_loop,
+    clippy::too_many_arguments,
+    clippy::redundant_closure_call
+)]
+
 #[macro_use]
 pub mod api;
 pub mod capi;
@@ -30,6 +43,7 @@ pub mod fragment;
 pub mod framebuffer;
 pub mod primitive;
 pub mod raster;
+pub mod replay;
 pub mod state;
 pub mod texture;
 pub mod vertex;

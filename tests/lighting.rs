@@ -1,3 +1,4 @@
+#![allow(clippy::needless_range_loop)] // the lighting sums index several colour arrays per channel
 //! Lighting (section 2.14.1) checked against the equations evaluated in the test.
 
 mod common;

@@ -249,8 +249,45 @@ fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
         (
             "unimplemented entry point",
             none,
-            |g| g.line_stipple(2, 0xF0F0),
+            |g| g.accum(GL_ACCUM, 0.5),
             GL_INVALID_OPERATION,
+        ),
+        ("pointSize 0", none, |g| g.point_size(0.0), GL_INVALID_VALUE),
+        (
+            "pointSize NaN",
+            none,
+            |g| g.point_size(f32::NAN),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "lineWidth -1",
+            none,
+            |g| g.line_width(-1.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "polygonMode bad mode",
+            none,
+            |g| g.polygon_mode(GL_FRONT, GL_TRIANGLES),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "polygonMode bad face",
+            none,
+            |g| g.polygon_mode(GL_LEFT, GL_LINE),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "pointParameter negative min",
+            none,
+            |g| g.point_parameterf(GL_POINT_SIZE_MIN, -1.0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "pointParameter bad name",
+            none,
+            |g| g.point_parameterf(GL_POINT_SIZE, 1.0),
+            GL_INVALID_ENUM,
         ),
     ]
 }
@@ -324,5 +361,47 @@ fn first_error_sticks_until_read() {
     gl.viewport(0, 0, -1, -1); // INVALID_VALUE, dropped
     gl.pop_matrix(); // STACK_UNDERFLOW, dropped
     assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}
+
+#[test]
+fn rasterization_controls_are_stored_and_queried_per_spec() {
+    let mut gl = Context::new(8, 8);
+    let mut f = [0f32; 4];
+    let mut i = [0i32; 4];
+    // Defaults (table 6.11 - 6.13).
+    gl.get_floatv(GL_POINT_SIZE, &mut f);
+    assert_eq!(f[0], 1.0);
+    gl.get_integerv(GL_POLYGON_MODE, &mut i);
+    assert_eq!(&i[..2], &[GL_FILL as i32, GL_FILL as i32]);
+    gl.get_integerv(GL_LINE_STIPPLE_PATTERN, &mut i);
+    assert_eq!(i[0], 0xFFFF);
+    gl.get_floatv(GL_POINT_DISTANCE_ATTENUATION, &mut f);
+    assert_eq!(&f[..3], &[1.0, 0.0, 0.0]);
+    // Setters.
+    gl.point_size(3.5);
+    gl.line_width(2.0);
+    gl.line_stipple(300, 0x0F0F); // factor clamped to 256
+    gl.polygon_mode(GL_BACK, GL_LINE);
+    gl.polygon_offset(1.5, -2.0);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    gl.get_floatv(GL_POINT_SIZE, &mut f);
+    assert_eq!(f[0], 3.5);
+    gl.get_floatv(GL_LINE_WIDTH, &mut f);
+    assert_eq!(f[0], 2.0);
+    gl.get_integerv(GL_LINE_STIPPLE_REPEAT, &mut i);
+    assert_eq!(i[0], 256);
+    gl.get_integerv(GL_POLYGON_MODE, &mut i);
+    assert_eq!(&i[..2], &[GL_FILL as i32, GL_LINE as i32]);
+    gl.get_floatv(GL_POLYGON_OFFSET_FACTOR, &mut f);
+    assert_eq!(f[0], 1.5);
+    gl.get_floatv(GL_POLYGON_OFFSET_UNITS, &mut f);
+    assert_eq!(f[0], -2.0);
+    // The polygon stipple round-trips through the unpack and pack state.
+    let pattern: Vec<u8> = (0..128u32).map(|k| (k * 37 + 11) as u8).collect();
+    gl.polygon_stipple(&pattern);
+    let mut back = vec![0u8; 128];
+    gl.get_polygon_stipple(&mut back);
+    assert_eq!(back, pattern);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }

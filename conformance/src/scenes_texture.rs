@@ -29,7 +29,7 @@ fn checker_pixels(size: usize) -> Vec<u8> {
     let mut p = Vec::with_capacity(size * size * 4);
     for y in 0..size {
         for x in 0..size {
-            let on = ((x * 8 / size) + (y * 8 / size)) % 2 == 0;
+            let on = ((x * 8 / size) + (y * 8 / size)).is_multiple_of(2);
             let r = (x * 255 / size.max(1)) as u8;
             let g = (y * 255 / size.max(1)) as u8;
             if on {

@@ -244,6 +244,14 @@ pub enum Capability {
     /// `GL_TEXTURE_GEN_S` .. `Q` of the active unit.
     TexGen(usize),
     Fog,
+    PointSmooth,
+    LineSmooth,
+    PolygonSmooth,
+    LineStipple,
+    PolygonStipple,
+    PolygonOffsetFill,
+    PolygonOffsetLine,
+    PolygonOffsetPoint,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -264,6 +272,14 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_COLOR_MATERIAL => Capability::ColorMaterial,
         GL_COLOR_SUM => Capability::ColorSum,
         GL_FOG => Capability::Fog,
+        GL_POINT_SMOOTH => Capability::PointSmooth,
+        GL_LINE_SMOOTH => Capability::LineSmooth,
+        GL_POLYGON_SMOOTH => Capability::PolygonSmooth,
+        GL_LINE_STIPPLE => Capability::LineStipple,
+        GL_POLYGON_STIPPLE => Capability::PolygonStipple,
+        GL_POLYGON_OFFSET_FILL => Capability::PolygonOffsetFill,
+        GL_POLYGON_OFFSET_LINE => Capability::PolygonOffsetLine,
+        GL_POLYGON_OFFSET_POINT => Capability::PolygonOffsetPoint,
         GL_TEXTURE_GEN_S => Capability::TexGen(0),
         GL_TEXTURE_GEN_T => Capability::TexGen(1),
         GL_TEXTURE_GEN_R => Capability::TexGen(2),
@@ -581,6 +597,14 @@ pub enum Query {
     ColorMaterialFace,
     ColorMaterialParameter,
     Fog(FogParam),
+    PolygonMode,
+    PolygonOffsetFactor,
+    PolygonOffsetUnits,
+    LineStipplePattern,
+    LineStippleRepeat,
+    AliasedPointSizeRange,
+    AliasedLineWidthRange,
+    PointParam(PointParam),
 }
 
 /// The `glGet*` query for `pname`.
@@ -682,6 +706,14 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_LIGHT_MODEL_COLOR_CONTROL => LightModelColorControl,
         GL_COLOR_MATERIAL_FACE => ColorMaterialFace,
         e if fog_param(e).is_some() => Fog(fog_param(e)?),
+        e if point_param(e).is_some() => PointParam(point_param(e)?),
+        GL_POLYGON_MODE => PolygonMode,
+        GL_POLYGON_OFFSET_FACTOR => PolygonOffsetFactor,
+        GL_POLYGON_OFFSET_UNITS => PolygonOffsetUnits,
+        GL_LINE_STIPPLE_PATTERN => LineStipplePattern,
+        GL_LINE_STIPPLE_REPEAT => LineStippleRepeat,
+        GL_ALIASED_POINT_SIZE_RANGE => AliasedPointSizeRange,
+        GL_ALIASED_LINE_WIDTH_RANGE => AliasedLineWidthRange,
         GL_COLOR_MATERIAL_PARAMETER => ColorMaterialParameter,
         _ => return None,
     })
@@ -1389,4 +1421,50 @@ pub fn fog_coord_source(e: GLenum) -> Option<bool> {
         GL_FRAGMENT_DEPTH => Some(false),
         _ => None,
     }
+}
+
+/// `glPolygonMode` modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PolygonMode {
+    Point,
+    Line,
+    Fill,
+}
+
+impl PolygonMode {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            PolygonMode::Point => GL_POINT,
+            PolygonMode::Line => GL_LINE,
+            PolygonMode::Fill => GL_FILL,
+        }
+    }
+}
+
+pub fn polygon_mode(e: GLenum) -> Option<PolygonMode> {
+    Some(match e {
+        GL_POINT => PolygonMode::Point,
+        GL_LINE => PolygonMode::Line,
+        GL_FILL => PolygonMode::Fill,
+        _ => return None,
+    })
+}
+
+/// `glPointParameter` parameters (GL 1.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointParam {
+    SizeMin,
+    SizeMax,
+    FadeThresholdSize,
+    DistanceAttenuation,
+}
+
+pub fn point_param(e: GLenum) -> Option<PointParam> {
+    Some(match e {
+        GL_POINT_SIZE_MIN => PointParam::SizeMin,
+        GL_POINT_SIZE_MAX => PointParam::SizeMax,
+        GL_POINT_FADE_THRESHOLD_SIZE => PointParam::FadeThresholdSize,
+        GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
+        _ => return None,
+    })
 }

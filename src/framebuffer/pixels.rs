@@ -39,7 +39,7 @@ impl Context {
         } else {
             (1u32 << cfg.stencil_bits) - 1
         };
-        let stencil = (mask.stencil && cfg.stencil_bits > 0).then(|| {
+        let stencil = (mask.stencil && cfg.stencil_bits > 0).then_some({
             (
                 (self.clear_values.stencil as u32 & stencil_bits_mask) as u8,
                 (ops.stencil_writemask & stencil_bits_mask) as u8,

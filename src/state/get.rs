@@ -12,6 +12,8 @@ pub enum StateValue {
     Bools(Vec<bool>),
     Ints(Vec<i64>),
     Enum(GLenum),
+    /// Several enums (e.g. `GL_POLYGON_MODE`: front, back).
+    Enums(Vec<GLenum>),
     Floats(Vec<f64>),
     /// Colours, normals, depth range and clear depth: integer queries map [-1, 1] onto the
     /// full integer range (table 4.9) instead of rounding.
@@ -24,6 +26,7 @@ impl StateValue {
             StateValue::Bools(v) => v.len(),
             StateValue::Ints(v) => v.len(),
             StateValue::Enum(_) => 1,
+            StateValue::Enums(v) => v.len(),
             StateValue::Floats(v) | StateValue::Normalized(v) => v.len(),
         }
     }
@@ -37,6 +40,7 @@ impl StateValue {
             StateValue::Bools(v) => v.iter().map(|&b| b as i32 as f64).collect(),
             StateValue::Ints(v) => v.iter().map(|&i| i as f64).collect(),
             StateValue::Enum(e) => vec![*e as f64],
+            StateValue::Enums(v) => v.iter().map(|&e| e as f64).collect(),
             StateValue::Floats(v) | StateValue::Normalized(v) => v.clone(),
         }
     }
@@ -46,6 +50,7 @@ impl StateValue {
             StateValue::Bools(v) => v.clone(),
             StateValue::Ints(v) => v.iter().map(|&i| i != 0).collect(),
             StateValue::Enum(e) => vec![*e != 0],
+            StateValue::Enums(v) => v.iter().map(|&e| e != 0).collect(),
             StateValue::Floats(v) | StateValue::Normalized(v) => {
                 v.iter().map(|&f| f != 0.0).collect()
             }
@@ -60,6 +65,7 @@ impl StateValue {
                 .map(|&i| i.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
                 .collect(),
             StateValue::Enum(e) => vec![*e as i32],
+            StateValue::Enums(v) => v.iter().map(|&e| e as i32).collect(),
             StateValue::Floats(v) => v.iter().map(|&f| round_to_i32(f)).collect(),
             StateValue::Normalized(v) => v
                 .iter()
@@ -260,6 +266,29 @@ impl Context {
                     } else {
                         GL_FRAGMENT_DEPTH
                     }),
+                }
+            }
+            Query::PolygonMode => Enums(self.raster.polygon_mode.map(|m| m.to_gl()).to_vec()),
+            Query::PolygonOffsetFactor => Floats(vec![self.raster.offset_factor as f64]),
+            Query::PolygonOffsetUnits => Floats(vec![self.raster.offset_units as f64]),
+            Query::LineStipplePattern => int1(self.raster.line_stipple_pattern as i64),
+            Query::LineStippleRepeat => int1(self.raster.line_stipple_factor as i64),
+            Query::AliasedPointSizeRange => {
+                Floats(limits::POINT_SIZE_RANGE.map(|v| v as f64).to_vec())
+            }
+            Query::AliasedLineWidthRange => {
+                Floats(limits::LINE_WIDTH_RANGE.map(|v| v as f64).to_vec())
+            }
+            Query::PointParam(p) => {
+                use crate::api::convert::PointParam;
+                let r = &self.raster;
+                match p {
+                    PointParam::SizeMin => Floats(vec![r.point_size_min as f64]),
+                    PointParam::SizeMax => Floats(vec![r.point_size_max as f64]),
+                    PointParam::FadeThresholdSize => Floats(vec![r.point_fade_threshold as f64]),
+                    PointParam::DistanceAttenuation => {
+                        Floats(r.point_attenuation.map(|v| v as f64).to_vec())
+                    }
                 }
             }
             Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),

@@ -8,6 +8,7 @@ pub mod get;
 pub mod lighting;
 pub mod matrices;
 pub mod per_fragment;
+pub mod rasterization;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
@@ -108,12 +109,14 @@ impl Context {
     pub fn with_config(config: ContextConfig) -> Context {
         let width = config.width.clamp(0, limits::MAX_VIEWPORT_DIM);
         let height = config.height.clamp(0, limits::MAX_VIEWPORT_DIM);
-        let mut transform = TransformState::default();
-        transform.viewport = Viewport {
-            x: 0,
-            y: 0,
-            width,
-            height,
+        let transform = TransformState {
+            viewport: Viewport {
+                x: 0,
+                y: 0,
+                width,
+                height,
+            },
+            ..TransformState::default()
         };
         let fragment_ops = FragmentOpsState {
             scissor: transform.viewport,
@@ -324,6 +327,14 @@ impl Context {
             Capability::ColorSum => self.lighting.color_sum = on,
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled = on,
             Capability::Fog => self.fog.enabled = on,
+            Capability::PointSmooth => self.raster.point_smooth = on,
+            Capability::LineSmooth => self.raster.line_smooth = on,
+            Capability::PolygonSmooth => self.raster.polygon_smooth = on,
+            Capability::LineStipple => self.raster.line_stipple = on,
+            Capability::PolygonStipple => self.raster.polygon_stipple = on,
+            Capability::PolygonOffsetFill => self.raster.offset_enabled[0] = on,
+            Capability::PolygonOffsetLine => self.raster.offset_enabled[1] = on,
+            Capability::PolygonOffsetPoint => self.raster.offset_enabled[2] = on,
         }
         self.invalidate();
     }
@@ -365,6 +376,14 @@ impl Context {
             Capability::ColorSum => self.lighting.color_sum,
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled,
             Capability::Fog => self.fog.enabled,
+            Capability::PointSmooth => self.raster.point_smooth,
+            Capability::LineSmooth => self.raster.line_smooth,
+            Capability::PolygonSmooth => self.raster.polygon_smooth,
+            Capability::LineStipple => self.raster.line_stipple,
+            Capability::PolygonStipple => self.raster.polygon_stipple,
+            Capability::PolygonOffsetFill => self.raster.offset_enabled[0],
+            Capability::PolygonOffsetLine => self.raster.offset_enabled[1],
+            Capability::PolygonOffsetPoint => self.raster.offset_enabled[2],
         }
     }
 
@@ -688,6 +707,20 @@ impl Gl for Context {
         fog_coordd,
         fog_coordfv,
         fog_coorddv,
+        // rasterization controls
+        point_size,
+        line_width,
+        line_stipple,
+        polygon_mode,
+        polygon_offset,
+        polygon_stipple,
+        get_polygon_stipple,
+        edge_flag,
+        edge_flagv,
+        point_parameterf,
+        point_parameteri,
+        point_parameterfv,
+        point_parameteriv,
         // immediate mode
         begin,
         end,

@@ -2,8 +2,8 @@
 //! 6.2), with the defaults those tables give.
 
 use crate::api::convert::{
-    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, ShadeModel, StencilOp,
-    Winding,
+    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode, ShadeModel,
+    StencilOp, Winding,
 };
 use crate::api::enums::GL_DONT_CARE;
 use crate::api::GLenum;
@@ -23,8 +23,9 @@ pub mod limits {
     /// largest viewport offset.
     pub const SUBPIXEL_BITS: i32 = 8;
     pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
-    pub const POINT_SIZE_RANGE: [f32; 2] = [1.0, 1.0];
-    pub const LINE_WIDTH_RANGE: [f32; 2] = [1.0, 1.0];
+    /// Point sizes and line widths rasterized (larger values are clamped to the maximum).
+    pub const POINT_SIZE_RANGE: [f32; 2] = [1.0, 64.0];
+    pub const LINE_WIDTH_RANGE: [f32; 2] = [1.0, 64.0];
 }
 
 /// Table 6.6 / 6.7: transformation state.
@@ -79,6 +80,25 @@ pub struct RasterState {
     pub shade_model: ShadeModel,
     pub point_size: f32,
     pub line_width: f32,
+    pub point_smooth: bool,
+    pub line_smooth: bool,
+    pub polygon_smooth: bool,
+    pub line_stipple: bool,
+    pub line_stipple_factor: i32,
+    pub line_stipple_pattern: u16,
+    pub polygon_stipple: bool,
+    /// 32 rows of 32 bits, bottom row first; bit x of a row is `1 << (31 - x)`.
+    pub polygon_stipple_pattern: [u32; 32],
+    /// Front, back.
+    pub polygon_mode: [PolygonMode; 2],
+    pub offset_factor: f32,
+    pub offset_units: f32,
+    /// Fill, line, point.
+    pub offset_enabled: [bool; 3],
+    pub point_size_min: f32,
+    pub point_size_max: f32,
+    pub point_fade_threshold: f32,
+    pub point_attenuation: [f32; 3],
 }
 
 impl Default for RasterState {
@@ -90,6 +110,22 @@ impl Default for RasterState {
             shade_model: ShadeModel::Smooth,
             point_size: 1.0,
             line_width: 1.0,
+            point_smooth: false,
+            line_smooth: false,
+            polygon_smooth: false,
+            line_stipple: false,
+            line_stipple_factor: 1,
+            line_stipple_pattern: 0xFFFF,
+            polygon_stipple: false,
+            polygon_stipple_pattern: [!0; 32],
+            polygon_mode: [PolygonMode::Fill; 2],
+            offset_factor: 0.0,
+            offset_units: 0.0,
+            offset_enabled: [false; 3],
+            point_size_min: 0.0,
+            point_size_max: limits::POINT_SIZE_RANGE[1],
+            point_fade_threshold: 1.0,
+            point_attenuation: [1.0, 0.0, 0.0],
         }
     }
 }

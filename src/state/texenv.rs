@@ -232,10 +232,10 @@ impl Context {
         self.multi_tex_coord(target, Vec4::new(v[0] as f32, 0.0, 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_1f(&mut self, target: GLenum, s: GLfloat) {
-        self.multi_tex_coord(target, Vec4::new(s as f32, 0.0, 0.0, 1.0));
+        self.multi_tex_coord(target, Vec4::new(s, 0.0, 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_1fv(&mut self, target: GLenum, v: &[GLfloat; 1]) {
-        self.multi_tex_coord(target, Vec4::new(v[0] as f32, 0.0, 0.0, 1.0));
+        self.multi_tex_coord(target, Vec4::new(v[0], 0.0, 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_1i(&mut self, target: GLenum, s: GLint) {
         self.multi_tex_coord(target, Vec4::new(s as f32, 0.0, 0.0, 1.0));
@@ -256,10 +256,10 @@ impl Context {
         self.multi_tex_coord(target, Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_2f(&mut self, target: GLenum, s: GLfloat, t: GLfloat) {
-        self.multi_tex_coord(target, Vec4::new(s as f32, t as f32, 0.0, 1.0));
+        self.multi_tex_coord(target, Vec4::new(s, t, 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_2fv(&mut self, target: GLenum, v: &[GLfloat; 2]) {
-        self.multi_tex_coord(target, Vec4::new(v[0] as f32, v[1] as f32, 0.0, 1.0));
+        self.multi_tex_coord(target, Vec4::new(v[0], v[1], 0.0, 1.0));
     }
     pub(crate) fn multi_tex_coord_2i(&mut self, target: GLenum, s: GLint, t: GLint) {
         self.multi_tex_coord(target, Vec4::new(s as f32, t as f32, 0.0, 1.0));
@@ -295,13 +295,10 @@ impl Context {
         t: GLfloat,
         r: GLfloat,
     ) {
-        self.multi_tex_coord(target, Vec4::new(s as f32, t as f32, r as f32, 1.0));
+        self.multi_tex_coord(target, Vec4::new(s, t, r, 1.0));
     }
     pub(crate) fn multi_tex_coord_3fv(&mut self, target: GLenum, v: &[GLfloat; 3]) {
-        self.multi_tex_coord(
-            target,
-            Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, 1.0),
-        );
+        self.multi_tex_coord(target, Vec4::new(v[0], v[1], v[2], 1.0));
     }
     pub(crate) fn multi_tex_coord_3i(&mut self, target: GLenum, s: GLint, t: GLint, r: GLint) {
         self.multi_tex_coord(target, Vec4::new(s as f32, t as f32, r as f32, 1.0));
@@ -351,13 +348,10 @@ impl Context {
         r: GLfloat,
         q: GLfloat,
     ) {
-        self.multi_tex_coord(target, Vec4::new(s as f32, t as f32, r as f32, q as f32));
+        self.multi_tex_coord(target, Vec4::new(s, t, r, q));
     }
     pub(crate) fn multi_tex_coord_4fv(&mut self, target: GLenum, v: &[GLfloat; 4]) {
-        self.multi_tex_coord(
-            target,
-            Vec4::new(v[0] as f32, v[1] as f32, v[2] as f32, v[3] as f32),
-        );
+        self.multi_tex_coord(target, Vec4::new(v[0], v[1], v[2], v[3]));
     }
     pub(crate) fn multi_tex_coord_4i(
         &mut self,

@@ -63,7 +63,7 @@ pub fn state_fingerprint(gl: &mut Context) -> Vec<(GLenum, Vec<f64>)> {
             out.push((value, v));
         }
     }
-    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out.sort_by_key(|a| a.0);
     out.dedup_by(|a, b| a.0 == b.0);
     out
 }
