@@ -29,6 +29,8 @@ pub const RASTER_SCENES: &[Scene] = &[
     // + 10) = 245 pixels = 6.0 % of the picture.
     scene_with("smooth_points", smooth_points, spread(0.060)),
     scene("smooth_lines", smooth_lines),
+    scene("accum_motion_blur", accum_motion_blur),
+    scene("accum_ops", accum_ops),
 ];
 
 /// Points of sizes 1..=8 at fractional positions (no rounding ties).
@@ -356,4 +358,53 @@ fn smooth_lines(gl: &mut dyn Gl) {
         }
         gl.end();
     }
+}
+
+/// Motion blur with the accumulation buffer: eight positions of a moving shape, each
+/// accumulated with weight 1/8, returned once.
+fn accum_motion_blur(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_accum(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_ACCUM_BUFFER_BIT);
+    for k in 0..8 {
+        clear(gl);
+        gl.color_3f(1.0, 0.8 - 0.05 * k as f32, 0.2);
+        let x = 6.3 + 4.1 * k as f32;
+        gl.rectf(x, 20.2, x + 18.4, 44.6);
+        gl.accum(GL_ACCUM, 1.0 / 8.0);
+    }
+    gl.accum(GL_RETURN, 1.0);
+}
+
+/// Every operation: LOAD, ACCUM with a negative weight, MULT, ADD, RETURN with a scale
+/// above 1 (clamped), a scissored accumulation clear, and the colour mask on RETURN.
+fn accum_ops(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    // Values stay inside [-1, 1]: overflow is undefined (Mesa wraps, tilegl saturates).
+    gl.clear_accum(0.25, -0.5, 0.5, 0.75);
+    gl.clear(GL_ACCUM_BUFFER_BIT);
+    gl.begin(GL_QUADS);
+    gl.color_3f(1.0, 0.0, 0.0);
+    gl.vertex_2f(0.0, 0.0);
+    gl.color_3f(0.0, 1.0, 0.0);
+    gl.vertex_2f(64.0, 0.0);
+    gl.color_3f(0.0, 0.0, 1.0);
+    gl.vertex_2f(64.0, 64.0);
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.vertex_2f(0.0, 64.0);
+    gl.end();
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(0, 0, 32, 64);
+    gl.accum(GL_LOAD, 0.75);
+    gl.scissor(32, 0, 32, 32);
+    gl.accum(GL_ACCUM, -0.25);
+    gl.accum(GL_MULT, 0.5);
+    gl.scissor(0, 32, 64, 32);
+    gl.accum(GL_ADD, 0.125);
+    gl.disable(GL_SCISSOR_TEST);
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.color_mask(1, 1, 0, 1);
+    gl.accum(GL_RETURN, 1.5);
+    gl.color_mask(1, 1, 1, 1);
 }

@@ -19,6 +19,8 @@ differential!(
     polygon_stipple,
     smooth_points,
     smooth_lines,
+    accum_motion_blur,
+    accum_ops,
 );
 
 #[test]

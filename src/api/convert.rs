@@ -527,6 +527,7 @@ pub enum Query {
     MaxClipPlanes,
     MaxTextureUnits,
     ColorClearValue,
+    AccumClearValue,
     DepthClearValue,
     StencilClearValue,
     DepthFunc,
@@ -638,6 +639,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_MAX_CLIP_PLANES => MaxClipPlanes,
         GL_MAX_TEXTURE_UNITS => MaxTextureUnits,
         GL_COLOR_CLEAR_VALUE => ColorClearValue,
+        GL_ACCUM_CLEAR_VALUE => AccumClearValue,
         GL_DEPTH_CLEAR_VALUE => DepthClearValue,
         GL_STENCIL_CLEAR_VALUE => StencilClearValue,
         GL_DEPTH_FUNC => DepthFunc,
@@ -1465,6 +1467,27 @@ pub fn point_param(e: GLenum) -> Option<PointParam> {
         GL_POINT_SIZE_MAX => PointParam::SizeMax,
         GL_POINT_FADE_THRESHOLD_SIZE => PointParam::FadeThresholdSize,
         GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
+        _ => return None,
+    })
+}
+
+/// `glAccum` operations (section 4.2.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AccumOp {
+    Accum,
+    Load,
+    Return,
+    Mult,
+    Add,
+}
+
+pub fn accum_op(op: GLenum) -> Option<AccumOp> {
+    Some(match op {
+        GL_ACCUM => AccumOp::Accum,
+        GL_LOAD => AccumOp::Load,
+        GL_RETURN => AccumOp::Return,
+        GL_MULT => AccumOp::Mult,
+        GL_ADD => AccumOp::Add,
         _ => return None,
     })
 }

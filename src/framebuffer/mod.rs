@@ -3,6 +3,7 @@
 //!
 //! Coordinates are GL window coordinates: (0, 0) is the lower-left pixel.
 
+pub mod accum;
 pub mod image;
 pub mod pixels;
 
@@ -41,7 +42,7 @@ pub struct FramebufferConfig {
     pub depth_bits: u32,
     /// Stencil bits: 0 or 8.
     pub stencil_bits: u32,
-    /// Accumulation bits per channel (0 or 16); storage arrives with the accumulation issue.
+    /// Accumulation bits per channel (0 or 16, signed).
     pub accum_bits: u32,
 }
 
@@ -64,6 +65,10 @@ pub struct Framebuffer {
     pub tiles_y: usize,
     pub tiles: Vec<Tile>,
     pub config: FramebufferConfig,
+    /// The accumulation buffer (empty without accumulation bits): RGBA as signed 16-bit
+    /// fixed point over [-1, 1], row-major from the bottom row. Not tiled: only `glAccum` and
+    /// its clear touch it, after the scene is flushed.
+    pub accum: Vec<[i16; 4]>,
 }
 
 impl Framebuffer {
@@ -87,6 +92,11 @@ impl Framebuffer {
                 });
             }
         }
+        let accum = if config.accum_bits > 0 {
+            vec![[0; 4]; width as usize * height as usize]
+        } else {
+            Vec::new()
+        };
         Framebuffer {
             width,
             height,
@@ -94,6 +104,7 @@ impl Framebuffer {
             tiles_y,
             tiles,
             config,
+            accum,
         }
     }
 
@@ -117,6 +128,11 @@ impl Framebuffer {
     /// Colour of window pixel (x, y), or `None` outside the framebuffer.
     pub fn color_at(&self, x: i32, y: i32) -> Option<[u8; 4]> {
         self.locate(x, y).map(|(t, i)| self.tiles[t].color[i])
+    }
+
+    /// The colour of window pixel (x, y), for writing.
+    pub fn color_mut(&mut self, x: i32, y: i32) -> Option<&mut [u8; 4]> {
+        self.locate(x, y).map(|(t, i)| &mut self.tiles[t].color[i])
     }
 
     /// Depth of window pixel (x, y) as stored.

@@ -473,6 +473,9 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if mask.accum {
+            self.clear_accum_buffer();
+        }
         self.record_clear(mask);
     }
 
@@ -551,6 +554,8 @@ impl Gl for Context {
     texture_entry_points!();
 
     gl_forward_all!(
+        accum,
+        clear_accum,
         get_string,
         flush,
         finish,

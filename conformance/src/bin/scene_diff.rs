@@ -28,6 +28,16 @@ fn main() {
             }
         };
         println!("{}", c.summary());
+        // The first differing pixel, all four channels.
+        'find: for y in 0..scene.height {
+            for x in 0..scene.width {
+                let (a, b) = (c.tilegl.image.pixel(x, y), c.mesa.image.pixel(x, y));
+                if a != b {
+                    println!("first difference at ({x}, {y}): tilegl {a:?}, mesa {b:?}");
+                    break 'find;
+                }
+            }
+        }
         for y in (0..scene.height).rev() {
             let row: String = (0..scene.width)
                 .map(|x| {
