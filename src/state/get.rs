@@ -130,6 +130,7 @@ impl Context {
             Query::ColorClearValue => {
                 Normalized(self.clear_values.color.iter().map(|&c| c as f64).collect())
             }
+            Query::PixelRect(q) => self.pixel_rect_value(q),
             Query::AccumClearValue => {
                 Normalized(self.clear_values.accum.iter().map(|&c| c as f64).collect())
             }

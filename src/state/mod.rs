@@ -8,6 +8,7 @@ pub mod get;
 pub mod lighting;
 pub mod matrices;
 pub mod per_fragment;
+pub mod pixel_rect;
 pub mod rasterization;
 pub mod snapshot;
 pub mod tables;
@@ -72,6 +73,10 @@ pub struct Context {
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
     pub(crate) client_active_texture: usize,
     pub(crate) fog: fog::FogState,
+    /// The current raster position (`glRasterPos`, `glWindowPos`).
+    pub(crate) raster_pos: pixel_rect::RasterPos,
+    /// Pixel transfer modes, maps and zoom.
+    pub(crate) pixel_transfer: pixel_rect::PixelTransfer,
     /// Per-unit texture coordinate generation.
     pub(crate) tex_gen: [texgen::TexGenUnit; tables::limits::MAX_TEXTURE_UNITS],
     /// Per-unit texture environments.
@@ -150,6 +155,8 @@ impl Context {
             tex_env: Default::default(),
             tex_gen: std::array::from_fn(|_| texgen::default_unit()),
             fog: Default::default(),
+            raster_pos: Default::default(),
+            pixel_transfer: Default::default(),
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
@@ -554,6 +561,58 @@ impl Gl for Context {
     texture_entry_points!();
 
     gl_forward_all!(
+        raster_pos_2s,
+        raster_pos_2sv,
+        raster_pos_2i,
+        raster_pos_2iv,
+        raster_pos_2f,
+        raster_pos_2fv,
+        raster_pos_2d,
+        raster_pos_2dv,
+        raster_pos_3s,
+        raster_pos_3sv,
+        raster_pos_3i,
+        raster_pos_3iv,
+        raster_pos_3f,
+        raster_pos_3fv,
+        raster_pos_3d,
+        raster_pos_3dv,
+        raster_pos_4s,
+        raster_pos_4sv,
+        raster_pos_4i,
+        raster_pos_4iv,
+        raster_pos_4f,
+        raster_pos_4fv,
+        raster_pos_4d,
+        raster_pos_4dv,
+        window_pos_2s,
+        window_pos_2sv,
+        window_pos_2i,
+        window_pos_2iv,
+        window_pos_2f,
+        window_pos_2fv,
+        window_pos_2d,
+        window_pos_2dv,
+        window_pos_3s,
+        window_pos_3sv,
+        window_pos_3i,
+        window_pos_3iv,
+        window_pos_3f,
+        window_pos_3fv,
+        window_pos_3d,
+        window_pos_3dv,
+        pixel_transferf,
+        pixel_transferi,
+        pixel_zoom,
+        pixel_mapfv,
+        pixel_mapuiv,
+        pixel_mapusv,
+        get_pixel_mapfv,
+        get_pixel_mapuiv,
+        get_pixel_mapusv,
+        draw_pixels,
+        copy_pixels,
+        bitmap,
         accum,
         clear_accum,
         get_string,
