@@ -5,7 +5,10 @@
 use super::enums::*;
 use super::types::GLenum;
 
+mod arrays;
 mod texture;
+#[allow(unused_imports)]
+pub use arrays::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -605,6 +608,8 @@ pub enum Query {
     AliasedPointSizeRange,
     AliasedLineWidthRange,
     PointParam(PointParam),
+    /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
+    Arrays(ArrayQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -618,6 +623,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(p) = pixel_store_param(e) {
         return Some(PixelStore(p));
+    }
+    if let Some(q) = array_query(e) {
+        return Some(Arrays(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,
