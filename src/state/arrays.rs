@@ -967,6 +967,8 @@ impl Context {
             return;
         };
         if buffer != 0 {
+            // glGenBuffers continues above names bound without being generated.
+            self.client.buffers.next = self.client.buffers.next.max(buffer);
             let slot = self.client.buffers.objects.entry(buffer).or_insert(None);
             if slot.is_none() {
                 *slot = Some(BufferObject::default());

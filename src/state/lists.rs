@@ -55,6 +55,9 @@ pub struct ListState {
     compiling: Option<(GLuint, bool, Vec<ListCommand>)>,
     /// Nesting depth of list execution (0 outside `glCallList`).
     depth: u32,
+    /// The largest name ever defined or generated: `glGenLists` hands out names above it
+    /// while it can (deleted names are not reused at once, as in Mesa).
+    high: GLuint,
     base: GLuint,
 }
 
@@ -134,8 +137,12 @@ impl Context {
             self.record_error(GL_OUT_OF_MEMORY);
             return 0;
         }
-        // The first run of `range` unused names (names are used once defined or generated).
-        let mut start: u64 = 1;
+        // Above every name used so far; when that overflows, the first run of `range` unused
+        // names (names are used once defined or generated).
+        let mut start: u64 = self.lists.high as u64 + 1;
+        if start + range as u64 - 1 > u32::MAX as u64 {
+            start = 1;
+        }
         loop {
             let end = start + range as u64 - 1;
             if end > u32::MAX as u64 {
@@ -156,6 +163,7 @@ impl Context {
         for name in start..start + range as u64 {
             self.lists.lists.insert(name as u32, empty.clone());
         }
+        self.lists.high = self.lists.high.max((start + range as u64 - 1) as GLuint);
         start as GLuint
     }
 
@@ -181,6 +189,7 @@ impl Context {
             return;
         };
         self.lists.lists.insert(name, Arc::new(cmds));
+        self.lists.high = self.lists.high.max(name);
     }
 
     pub(crate) fn call_list(&mut self, list: GLuint) {
