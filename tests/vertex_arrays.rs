@@ -1205,3 +1205,60 @@ fn disabled_vertex_array_draws_nothing_but_sets_current_values() {
     gl.get_floatv(GL_CURRENT_COLOR, &mut c);
     assert_eq!(c, col);
 }
+
+#[test]
+fn edge_flag_and_second_unit_texture_coordinate_arrays_set_their_current_values() {
+    let mut gl = Context::new(8, 8);
+    let flags: [u8; 2] = [1, 0];
+    let tex: [f32; 6] = [9.0, 9.0, 9.0, 0.5, -2.0, 7.0];
+    gl.edge_flag_pointer(0, ClientPtr(flags.as_ptr() as usize));
+    gl.enable_client_state(GL_EDGE_FLAG_ARRAY);
+    gl.client_active_texture(GL_TEXTURE1);
+    buffer(&mut gl, GL_ARRAY_BUFFER, &f32_bytes(&tex));
+    gl.tex_coord_pointer(3, GL_FLOAT, 0, ClientPtr(0));
+    gl.enable_client_state(GL_TEXTURE_COORD_ARRAY);
+    gl.array_element(1);
+    no_error(&mut gl);
+    let mut e = [7u8];
+    gl.get_booleanv(GL_EDGE_FLAG, &mut e);
+    assert_eq!(e[0], 0);
+    // Unit 1 got (s, t, r, 1); unit 0 kept its default (0, 0, 0, 1).
+    let mut t = [0f32; 4];
+    gl.active_texture(GL_TEXTURE1);
+    gl.get_floatv(GL_CURRENT_TEXTURE_COORDS, &mut t);
+    assert_eq!(t, [0.5, -2.0, 7.0, 1.0]);
+    gl.active_texture(GL_TEXTURE0);
+    gl.get_floatv(GL_CURRENT_TEXTURE_COORDS, &mut t);
+    assert_eq!(t, [0.0, 0.0, 0.0, 1.0]);
+    // The same through the immediate-mode call.
+    let mut b = Context::new(8, 8);
+    b.edge_flag(0);
+    b.multi_tex_coord_3fv(GL_TEXTURE1, &[0.5, -2.0, 7.0]);
+    b.active_texture(GL_TEXTURE1);
+    let mut u = [0f32; 4];
+    b.get_floatv(GL_CURRENT_TEXTURE_COORDS, &mut u);
+    assert_eq!(t.len(), u.len());
+    assert_eq!(u, [0.5, -2.0, 7.0, 1.0]);
+}
+
+#[test]
+fn buffer_access_survives_unmap_and_buffer_data_resets_it() {
+    // GL 1.5 section 2.9: glMapBuffer sets GL_BUFFER_ACCESS; glUnmapBuffer only clears the
+    // mapping; glBufferData creates a store with access GL_READ_WRITE.
+    let mut gl = Context::new(8, 8);
+    buffer(&mut gl, GL_ARRAY_BUFFER, &[1, 2, 3, 4]);
+    let access = |gl: &mut Context| {
+        let mut v = [0];
+        gl.get_buffer_parameteriv(GL_ARRAY_BUFFER, GL_BUFFER_ACCESS, &mut v);
+        v[0] as GLenum
+    };
+    gl.map_buffer(GL_ARRAY_BUFFER, GL_READ_ONLY);
+    gl.unmap_buffer(GL_ARRAY_BUFFER);
+    assert_eq!(access(&mut gl), GL_READ_ONLY);
+    gl.map_buffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY);
+    // glBufferData on a mapped buffer ends the mapping.
+    gl.buffer_data(GL_ARRAY_BUFFER, 2, None, GL_STATIC_DRAW);
+    assert!(gl.mapped_buffer_mut(GL_ARRAY_BUFFER).is_none());
+    assert_eq!(access(&mut gl), GL_READ_WRITE);
+    no_error(&mut gl);
+}
