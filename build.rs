@@ -5,8 +5,8 @@
 //! - `enums.rs`: every GL 1.0-1.5 enum, the two extensions tilegl implements
 //!   (EXT_texture_filter_anisotropic, EXT_texture_compression_s3tc), and the ARB/EXT aliases of
 //!   core enums that legacy programs use; plus name <-> value lookup tables.
-//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point, each defaulting to
-//!   "unsupported"), the `COMMANDS` metadata table with ARB/EXT alias names, and the
+//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point, and the two of
+//!   EXT_compiled_vertex_array, each defaulting to "unsupported"), the `COMMANDS` metadata table with ARB/EXT alias names, and the
 //!   `gl_forward!` macro that implements trait methods by forwarding to inherent methods behind the
 //!   one guard that enforces what is legal between `glBegin` and `glEnd`.
 //! - `capi_exports.rs`: the `extern "C"` entry points with the C signatures of `GL/gl.h`.
@@ -57,6 +57,10 @@ const EXTRA_EXTENSIONS: [&str; 6] = [
     "GL_EXT_blend_equation_separate",
     "GL_ARB_texture_swizzle",
 ];
+
+/// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
+/// exports, `ForeignGl` and the replay dispatch get them like core commands.
+const COMMAND_EXTENSIONS: [&str; 1] = ["GL_EXT_compiled_vertex_array"];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -281,6 +285,8 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glDrawRangeElements",
     "glMultiDrawArrays",
     "glMultiDrawElements",
+    "glLockArraysEXT",
+    "glUnlockArraysEXT",
 ];
 
 /// Whether a display list being compiled records the command (instead of executing it).
@@ -460,7 +466,15 @@ fn main() {
     }
     for x in root.descendants().filter(|n| n.has_tag_name("extension")) {
         let name = x.attribute("name").unwrap_or("");
-        if !EXTENSIONS.contains(&name) && !EXTRA_EXTENSIONS.contains(&name) {
+        if COMMAND_EXTENSIONS.contains(&name) {
+            for c in x.descendants().filter(|n| n.has_tag_name("command")) {
+                if let Some(n) = c.attribute("name") {
+                    if !core_cmds.iter().any(|c| c == n) {
+                        core_cmds.push(n.to_string());
+                    }
+                }
+            }
+        } else if !EXTENSIONS.contains(&name) && !EXTRA_EXTENSIONS.contains(&name) {
             continue;
         }
         for e in x.descendants().filter(|n| n.has_tag_name("enum")) {

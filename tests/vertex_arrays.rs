@@ -740,7 +740,34 @@ fn error_cases() -> Vec<(&'static str, Call, Call, GLenum)> {
     fn in_begin(g: &mut Context) {
         g.begin(GL_POINTS);
     }
+    fn locked(g: &mut Context) {
+        g.lock_arrays_ext(0, 4);
+    }
     vec![
+        (
+            "lockArraysEXT count 0",
+            none,
+            |g| g.lock_arrays_ext(0, 0),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "lockArraysEXT first -1",
+            none,
+            |g| g.lock_arrays_ext(-1, 3),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "lockArraysEXT twice",
+            locked,
+            |g| g.lock_arrays_ext(0, 4),
+            GL_INVALID_OPERATION,
+        ),
+        (
+            "unlockArraysEXT unlocked",
+            none,
+            |g| g.unlock_arrays_ext(),
+            GL_INVALID_OPERATION,
+        ),
         (
             "vertexPointer size 1",
             none,
@@ -1261,4 +1288,22 @@ fn buffer_access_survives_unmap_and_buffer_data_resets_it() {
     assert!(gl.mapped_buffer_mut(GL_ARRAY_BUFFER).is_none());
     assert_eq!(access(&mut gl), GL_READ_WRITE);
     no_error(&mut gl);
+}
+
+#[test]
+fn locked_arrays_report_their_range_and_still_draw_current_data() {
+    let m = mesh();
+    let reference = immediate_picture(&m, &(0..N).collect::<Vec<_>>());
+    let p = arrays_picture(|gl| {
+        gl.lock_arrays_ext(0, N as i32);
+        let mut v = [0i32; 2];
+        gl.get_integerv(GL_ARRAY_ELEMENT_LOCK_FIRST_EXT, &mut v[..1]);
+        gl.get_integerv(GL_ARRAY_ELEMENT_LOCK_COUNT_EXT, &mut v[1..]);
+        assert_eq!(v, [0, N as i32]);
+        gl.draw_arrays(GL_TRIANGLES, 0, N as i32);
+        gl.unlock_arrays_ext();
+        gl.get_integerv(GL_ARRAY_ELEMENT_LOCK_COUNT_EXT, &mut v[1..]);
+        assert_eq!(v[1], 0);
+    });
+    assert_same(&p, &reference, "locked arrays");
 }

@@ -340,6 +340,23 @@ mod scripts {
         err(gl, out, "draw arrays inside begin");
         gl.pop_client_attrib();
         err(gl, out, "pop client attrib");
+        // EXT_compiled_vertex_array.
+        gl.lock_arrays_ext(0, 0);
+        err(gl, out, "lock count 0");
+        gl.lock_arrays_ext(2, 5);
+        ints(
+            gl,
+            out,
+            &[
+                GL_ARRAY_ELEMENT_LOCK_FIRST_EXT,
+                GL_ARRAY_ELEMENT_LOCK_COUNT_EXT,
+            ],
+        );
+        gl.lock_arrays_ext(0, 1);
+        err(gl, out, "lock twice");
+        gl.unlock_arrays_ext();
+        gl.unlock_arrays_ext();
+        err(gl, out, "unlock twice");
         for _ in 0..17 {
             gl.push_client_attrib(GL_CLIENT_ALL_ATTRIB_BITS);
         }

@@ -167,6 +167,8 @@ pub struct ClientState {
     pub arrays: ArrayState,
     pub buffers: Buffers,
     stack: Vec<ClientAttribEntry>,
+    /// `glLockArraysEXT` range (first, count), if locked.
+    locked: Option<(GLint, GLsizei)>,
 }
 
 /// One array element, converted to the values the immediate-mode calls would set.
@@ -1216,6 +1218,28 @@ impl Context {
         client_memory::store_pointer(params, p);
     }
 
+    // ----- EXT_compiled_vertex_array
+
+    /// `glLockArraysEXT`: tilegl reads the arrays at every draw anyway, which the extension
+    /// allows (locking only permits caching), so the lock is state and error checks only.
+    pub(crate) fn lock_arrays_ext(&mut self, first: GLint, count: GLsizei) {
+        if first < 0 || count <= 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        if self.client.locked.is_some() {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.client.locked = Some((first, count));
+    }
+
+    pub(crate) fn unlock_arrays_ext(&mut self) {
+        if self.client.locked.take().is_none() {
+            self.record_error(GL_INVALID_OPERATION);
+        }
+    }
+
     // ----- client attribute stack
 
     pub(crate) fn push_client_attrib(&mut self, mask: GLbitfield) {
@@ -1274,6 +1298,8 @@ impl Context {
             ArrayQuery::ListIndex => int1(self.lists.index() as i64),
             ArrayQuery::ListMode => Enum(self.lists.mode()),
             ArrayQuery::MaxListNesting => int1(super::lists::MAX_LIST_NESTING as i64),
+            ArrayQuery::LockFirst => int1(self.client.locked.map_or(0, |l| l.0 as i64)),
+            ArrayQuery::LockCount => int1(self.client.locked.map_or(0, |l| l.1 as i64)),
         }
     }
 }

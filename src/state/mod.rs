@@ -872,6 +872,8 @@ impl Gl for Context {
         get_buffer_pointerv,
         push_client_attrib,
         pop_client_attrib,
+        lock_arrays_ext,
+        unlock_arrays_ext,
         // display lists
         gen_lists,
         new_list,

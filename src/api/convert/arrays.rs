@@ -264,6 +264,9 @@ pub enum ArrayQuery {
     ListIndex,
     ListMode,
     MaxListNesting,
+    /// EXT_compiled_vertex_array.
+    LockFirst,
+    LockCount,
 }
 
 pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
@@ -307,6 +310,8 @@ pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
         GL_LIST_INDEX => ListIndex,
         GL_LIST_MODE => ListMode,
         GL_MAX_LIST_NESTING => MaxListNesting,
+        GL_ARRAY_ELEMENT_LOCK_FIRST_EXT => LockFirst,
+        GL_ARRAY_ELEMENT_LOCK_COUNT_EXT => LockCount,
         _ => return None,
     })
 }
