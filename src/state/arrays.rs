@@ -557,14 +557,16 @@ impl Context {
 
     // ----- fetching and drawing
 
-    /// The bytes of array `a` from its first element on, for elements `0..=max_index`, given
-    /// to `f` (buffer contents or client memory).
+    /// The bytes of array `a` from element `min` on, covering elements `min..=max`, given to
+    /// `f` (buffer contents or client memory; element `i` starts at `(i - min) * stride`).
+    /// Client memory outside the elements the draw uses is never touched.
     fn with_array_bytes<R>(
         &self,
         a: &ArrayPointer,
-        max_index: u32,
+        (min, max): (u32, u32),
         f: impl FnOnce(&[u8]) -> R,
     ) -> R {
+        let start = (min as usize).saturating_mul(a.effective_stride());
         if a.buffer != 0 {
             let data = self
                 .client
@@ -573,12 +575,16 @@ impl Context {
                 .get(&a.buffer)
                 .and_then(|b| b.as_ref())
                 .map_or(&[][..], |b| &b.data[..]);
-            return f(data.get(a.pointer.0..).unwrap_or(&[]));
+            let from = a.pointer.0.saturating_add(start);
+            return f(data.get(from..).unwrap_or(&[]));
         }
-        let len = (max_index as usize)
+        let len = ((max - min) as usize)
             .saturating_mul(a.effective_stride())
             .saturating_add(a.element_bytes());
-        client_memory::with_client_bytes(a.pointer, len, f)
+        match a.pointer.0.checked_add(start) {
+            Some(p) if a.pointer.0 != 0 => client_memory::with_client_bytes(ClientPtr(p), len, f),
+            _ => f(&[]),
+        }
     }
 
     fn buffer_mapped(&self, name: GLuint) -> bool {
@@ -631,6 +637,7 @@ impl Context {
             .map_err(|_| GL_OUT_OF_MEMORY)?;
         vertices.resize(indices.len(), ArrayVertex::default());
         let max = indices.iter().copied().max().unwrap_or(0);
+        let min = indices.iter().copied().min().unwrap_or(0);
         let s = &self.client.arrays;
         type Put = fn(&mut ArrayVertex, Vec4);
         let mut jobs: Vec<(&ArrayPointer, bool, Vec4, Put)> = Vec::new();
@@ -659,18 +666,18 @@ impl Context {
             jobs.push((&s.vertex, false, zero1, |v, x| v.position = x));
         }
         for (a, normalize, default, put) in jobs {
-            self.with_array_bytes(a, max, |b| {
+            self.with_array_bytes(a, (min, max), |b| {
                 for (v, &i) in vertices.iter_mut().zip(indices) {
-                    put(v, element(b, a, i, normalize, default));
+                    put(v, element(b, a, i - min, normalize, default));
                 }
             });
         }
         for u in 0..MAX_TEXTURE_UNITS {
             if present.tex[u] {
                 let a = &s.tex_coord[u];
-                self.with_array_bytes(a, max, |b| {
+                self.with_array_bytes(a, (min, max), |b| {
                     for (v, &i) in vertices.iter_mut().zip(indices) {
-                        v.tex[u] = element(b, a, i, false, zero1);
+                        v.tex[u] = element(b, a, i - min, false, zero1);
                     }
                 });
             }
