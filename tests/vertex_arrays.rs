@@ -585,6 +585,7 @@ fn every_interleaved_format_equals_immediate_mode() {
         a.enable_client_state(GL_SECONDARY_COLOR_ARRAY);
         a.enable_client_state(GL_FOG_COORD_ARRAY);
         a.enable_client_state(GL_EDGE_FLAG_ARRAY);
+        a.enable_client_state(GL_INDEX_ARRAY);
         buffer(&mut a, GL_ARRAY_BUFFER, &rec);
         a.interleaved_arrays(fmt, 0, ClientPtr(0));
         a.draw_arrays(GL_TRIANGLES, 0, N as i32);
@@ -601,6 +602,7 @@ fn every_interleaved_format_equals_immediate_mode() {
             (GL_SECONDARY_COLOR_ARRAY, false),
             (GL_FOG_COORD_ARRAY, false),
             (GL_EDGE_FLAG_ARRAY, false),
+            (GL_INDEX_ARRAY, false),
         ] {
             assert_eq!(a.is_enabled(arr) != 0, on, "{fmt:#x} enable of {arr:#x}");
         }
@@ -694,6 +696,9 @@ fn array_state_defaults_match_table_6_8() {
         (GL_FOG_COORD_ARRAY_TYPE, GL_FLOAT as i32),
         (GL_TEXTURE_COORD_ARRAY_SIZE, 4),
         (GL_EDGE_FLAG_ARRAY_STRIDE, 0),
+        (GL_INDEX_ARRAY, 0),
+        (GL_INDEX_ARRAY_TYPE, GL_FLOAT as i32),
+        (GL_INDEX_ARRAY_STRIDE, 0),
         (GL_ARRAY_BUFFER_BINDING, 0),
         (GL_ELEMENT_ARRAY_BUFFER_BINDING, 0),
         (GL_CLIENT_ATTRIB_STACK_DEPTH, 0),
@@ -744,6 +749,18 @@ fn error_cases() -> Vec<(&'static str, Call, Call, GLenum)> {
         g.lock_arrays_ext(0, 4);
     }
     vec![
+        (
+            "indexPointer type byte",
+            none,
+            |g| g.index_pointer(GL_BYTE, 0, ClientPtr(0)),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "indexPointer stride",
+            none,
+            |g| g.index_pointer(GL_FLOAT, -1, ClientPtr(0)),
+            GL_INVALID_VALUE,
+        ),
         (
             "lockArraysEXT count 0",
             none,

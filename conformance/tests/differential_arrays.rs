@@ -109,6 +109,10 @@ mod scripts {
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
         GL_EDGE_FLAG_ARRAY,
         GL_EDGE_FLAG_ARRAY_STRIDE,
+        GL_INDEX_ARRAY,
+        GL_INDEX_ARRAY_TYPE,
+        GL_INDEX_ARRAY_STRIDE,
+        GL_INDEX_ARRAY_BUFFER_BINDING,
         GL_ARRAY_BUFFER_BINDING,
         GL_ELEMENT_ARRAY_BUFFER_BINDING,
         GL_CLIENT_ACTIVE_TEXTURE,
@@ -136,6 +140,8 @@ mod scripts {
         gl.client_active_texture(GL_TEXTURE1);
         gl.tex_coord_pointer(1, GL_INT, 4, ClientPtr(32));
         gl.edge_flag_pointer(2, ClientPtr(40));
+        gl.index_pointer(GL_SHORT, 6, ClientPtr(48));
+        gl.enable_client_state(GL_INDEX_ARRAY);
         for a in [
             GL_VERTEX_ARRAY,
             GL_NORMAL_ARRAY,
@@ -154,6 +160,7 @@ mod scripts {
             GL_FOG_COORD_ARRAY_POINTER,
             GL_TEXTURE_COORD_ARRAY_POINTER,
             GL_EDGE_FLAG_ARRAY_POINTER,
+            GL_INDEX_ARRAY_POINTER,
         ] {
             pointer(gl, out, p);
         }
@@ -193,10 +200,11 @@ mod scripts {
         gl.gen_buffers(1, &mut b);
         gl.bind_buffer(GL_ARRAY_BUFFER, b[0]);
         for (k, f) in formats.into_iter().enumerate() {
+            // Only the edge-flag and index arrays are enabled beforehand: section 2.8 also
+            // disables the secondary-colour and fog-coordinate arrays (tilegl,
+            // tests/vertex_arrays.rs); Mesa leaves those enabled.
             gl.enable_client_state(GL_EDGE_FLAG_ARRAY);
-            // Only the edge-flag array is enabled beforehand: section 2.8 also disables the
-            // secondary-colour and fog-coordinate arrays (tilegl, tests/vertex_arrays.rs); Mesa
-            // leaves them enabled.
+            gl.enable_client_state(GL_INDEX_ARRAY);
             gl.interleaved_arrays(f, if k % 2 == 0 { 0 } else { 64 }, ClientPtr(1000));
             err(gl, out, "glInterleavedArrays");
             ints(gl, out, ARRAY_STATE);
@@ -318,6 +326,8 @@ mod scripts {
         err(gl, out, "fog coord short");
         gl.tex_coord_pointer(0, GL_FLOAT, 0, ClientPtr(0));
         err(gl, out, "tex coord size 0");
+        gl.index_pointer(GL_BYTE, 0, ClientPtr(0));
+        err(gl, out, "index pointer byte");
         gl.edge_flag_pointer(-2, ClientPtr(0));
         err(gl, out, "edge flag stride");
         gl.interleaved_arrays(GL_RGB, 0, ClientPtr(0));

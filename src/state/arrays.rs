@@ -102,6 +102,7 @@ pub struct ArrayState {
     pub secondary_color: ArrayPointer,
     pub fog_coord: ArrayPointer,
     pub edge_flag: ArrayPointer,
+    pub index: ArrayPointer,
     pub tex_coord: [ArrayPointer; MAX_TEXTURE_UNITS],
     /// `GL_ARRAY_BUFFER_BINDING`.
     pub array_buffer: GLuint,
@@ -119,6 +120,7 @@ impl Default for ArrayState {
             secondary_color: ArrayPointer::new(3, Float),
             fog_coord: ArrayPointer::new(1, Float),
             edge_flag: ArrayPointer::new(1, UnsignedByte),
+            index: ArrayPointer::new(1, Float),
             tex_coord: [ArrayPointer::new(4, Float); MAX_TEXTURE_UNITS],
             array_buffer: 0,
             element_array_buffer: 0,
@@ -175,6 +177,7 @@ pub struct ClientState {
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct ArrayVertex {
     edge_flag: bool,
+    index: f32,
     tex: [Vec4; MAX_TEXTURE_UNITS],
     normal: Vec3,
     color: Vec4,
@@ -187,6 +190,7 @@ pub(crate) struct ArrayVertex {
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Present {
     edge_flag: bool,
+    index: bool,
     tex: [bool; MAX_TEXTURE_UNITS],
     normal: bool,
     color: bool,
@@ -267,6 +271,7 @@ impl Context {
             ClientArray::FogCoord => &mut s.fog_coord,
             ClientArray::TexCoord => &mut s.tex_coord[self.client_active_texture],
             ClientArray::EdgeFlag => &mut s.edge_flag,
+            ClientArray::Index => &mut s.index,
         }
     }
 
@@ -280,6 +285,7 @@ impl Context {
             ClientArray::FogCoord => &s.fog_coord,
             ClientArray::TexCoord => &s.tex_coord[self.client_active_texture],
             ClientArray::EdgeFlag => &s.edge_flag,
+            ClientArray::Index => &s.index,
         }
     }
 
@@ -434,6 +440,12 @@ impl Context {
         );
     }
 
+    pub(crate) fn index_pointer(&mut self, type_: GLenum, stride: GLsizei, pointer: ClientPtr) {
+        use ArrayType::*;
+        let types = [UnsignedByte, Short, Int, Float, Double];
+        self.set_pointer(ClientArray::Index, 1, &[1], type_, &types, stride, pointer);
+    }
+
     pub(crate) fn edge_flag_pointer(&mut self, stride: GLsizei, pointer: ClientPtr) {
         if stride < 0 {
             self.record_error(GL_INVALID_VALUE);
@@ -502,6 +514,7 @@ impl Context {
         let unit = self.client_active_texture;
         let a = &mut self.client.arrays;
         a.edge_flag.enabled = false;
+        a.index.enabled = false;
         a.secondary_color.enabled = false;
         a.fog_coord.enabled = false;
         set(&mut a.tex_coord[unit], st > 0, st, ArrayType::Float, at(0));
@@ -600,6 +613,7 @@ impl Context {
         let s = &self.client.arrays;
         let mut p = Present {
             edge_flag: s.edge_flag.enabled,
+            index: s.index.enabled,
             normal: s.normal.enabled,
             color: s.color.enabled,
             secondary_color: s.secondary_color.enabled,
@@ -612,6 +626,7 @@ impl Context {
         }
         let all = [
             &s.edge_flag,
+            &s.index,
             &s.normal,
             &s.color,
             &s.secondary_color,
@@ -646,6 +661,10 @@ impl Context {
             jobs.push((&s.edge_flag, false, Vec4::ZERO, |v, x| {
                 v.edge_flag = x.x != 0.0
             }));
+        }
+        if present.index {
+            // glIndex: the value as is (no normalization).
+            jobs.push((&s.index, false, Vec4::ZERO, |v, x| v.index = x.x));
         }
         if present.normal {
             jobs.push((&s.normal, true, Vec4::ZERO, |v, x| v.normal = x.truncate()));
@@ -689,6 +708,9 @@ impl Context {
     fn apply_element(&mut self, p: &Present, v: &ArrayVertex) {
         if p.edge_flag {
             self.current.edge_flag = v.edge_flag;
+        }
+        if p.index {
+            self.current.index = v.index;
         }
         for u in 0..MAX_TEXTURE_UNITS {
             if p.tex[u] {
@@ -1013,6 +1035,7 @@ impl Context {
                 &mut a.secondary_color,
                 &mut a.fog_coord,
                 &mut a.edge_flag,
+                &mut a.index,
             ]
             .into_iter()
             .chain(a.tex_coord.iter_mut())

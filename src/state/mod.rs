@@ -849,6 +849,7 @@ impl Gl for Context {
         fog_coord_pointer,
         tex_coord_pointer,
         edge_flag_pointer,
+        index_pointer,
         interleaved_arrays,
         enable_client_state,
         disable_client_state,

@@ -14,6 +14,8 @@ pub enum ClientArray {
     FogCoord,
     TexCoord,
     EdgeFlag,
+    /// Colour indices: state only in RGBA mode (sets the current index).
+    Index,
 }
 
 pub fn client_array(e: GLenum) -> Option<ClientArray> {
@@ -26,6 +28,7 @@ pub fn client_array(e: GLenum) -> Option<ClientArray> {
         GL_FOG_COORD_ARRAY => FogCoord,
         GL_TEXTURE_COORD_ARRAY => TexCoord,
         GL_EDGE_FLAG_ARRAY => EdgeFlag,
+        GL_INDEX_ARRAY => Index,
         _ => return None,
     })
 }
@@ -242,6 +245,7 @@ pub fn pointer_name(e: GLenum) -> Option<ClientArray> {
         GL_FOG_COORD_ARRAY_POINTER => FogCoord,
         GL_TEXTURE_COORD_ARRAY_POINTER => TexCoord,
         GL_EDGE_FLAG_ARRAY_POINTER => EdgeFlag,
+        GL_INDEX_ARRAY_POINTER => Index,
         _ => return None,
     })
 }
@@ -286,6 +290,7 @@ pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
         GL_SECONDARY_COLOR_ARRAY_TYPE => Type(A::SecondaryColor),
         GL_FOG_COORD_ARRAY_TYPE => Type(A::FogCoord),
         GL_TEXTURE_COORD_ARRAY_TYPE => Type(A::TexCoord),
+        GL_INDEX_ARRAY_TYPE => Type(A::Index),
         GL_VERTEX_ARRAY_STRIDE => Stride(A::Vertex),
         GL_NORMAL_ARRAY_STRIDE => Stride(A::Normal),
         GL_COLOR_ARRAY_STRIDE => Stride(A::Color),
@@ -293,6 +298,7 @@ pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
         GL_FOG_COORD_ARRAY_STRIDE => Stride(A::FogCoord),
         GL_TEXTURE_COORD_ARRAY_STRIDE => Stride(A::TexCoord),
         GL_EDGE_FLAG_ARRAY_STRIDE => Stride(A::EdgeFlag),
+        GL_INDEX_ARRAY_STRIDE => Stride(A::Index),
         GL_VERTEX_ARRAY_BUFFER_BINDING => BufferBinding(A::Vertex),
         GL_NORMAL_ARRAY_BUFFER_BINDING => BufferBinding(A::Normal),
         GL_COLOR_ARRAY_BUFFER_BINDING => BufferBinding(A::Color),
@@ -300,6 +306,7 @@ pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
         GL_FOG_COORD_ARRAY_BUFFER_BINDING => BufferBinding(A::FogCoord),
         GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING => BufferBinding(A::TexCoord),
         GL_EDGE_FLAG_ARRAY_BUFFER_BINDING => BufferBinding(A::EdgeFlag),
+        GL_INDEX_ARRAY_BUFFER_BINDING => BufferBinding(A::Index),
         GL_ARRAY_BUFFER_BINDING => ArrayBufferBinding,
         GL_ELEMENT_ARRAY_BUFFER_BINDING => ElementArrayBufferBinding,
         GL_MAX_ELEMENTS_VERTICES => MaxElementsVertices,
