@@ -1324,3 +1324,35 @@ fn locked_arrays_report_their_range_and_still_draw_current_data() {
     });
     assert_same(&p, &reference, "locked arrays");
 }
+
+#[test]
+fn a_draw_larger_than_one_fetch_chunk_equals_immediate_mode() {
+    // 3 x 3400 vertices: more than two of the 4096-element chunks a direct draw is fetched in.
+    let mut r = Rng(77);
+    let n = 3 * 3400;
+    let pos: Vec<f32> = (0..n)
+        .flat_map(|_| [r.range(0.0, 64.0), r.range(0.0, 64.0)])
+        .collect();
+    let col: Vec<u8> = (0..n * 4).map(|_| (r.next_u64() >> 56) as u8).collect();
+    let mut a = Context::new(64, 64);
+    window_ortho(&mut a);
+    buffer(&mut a, GL_ARRAY_BUFFER, &f32_bytes(&pos));
+    a.vertex_pointer(2, GL_FLOAT, 0, ClientPtr(0));
+    buffer(&mut a, GL_ARRAY_BUFFER, &col);
+    a.color_pointer(4, GL_UNSIGNED_BYTE, 0, ClientPtr(0));
+    a.enable_client_state(GL_VERTEX_ARRAY);
+    a.enable_client_state(GL_COLOR_ARRAY);
+    a.draw_arrays(GL_TRIANGLES, 0, n as i32);
+    no_error(&mut a);
+    let mut b = Context::new(64, 64);
+    window_ortho(&mut b);
+    b.begin(GL_TRIANGLES);
+    for i in 0..n {
+        b.color_4ubv(&col[4 * i..4 * i + 4].try_into().unwrap());
+        b.vertex_2fv(&pos[2 * i..2 * i + 2].try_into().unwrap());
+    }
+    b.end();
+    let (pa, pb) = (read_rgba(&mut a), read_rgba(&mut b));
+    assert_drawn(&pb);
+    assert_same(&pa, &pb, "large glDrawArrays");
+}

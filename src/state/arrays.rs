@@ -748,20 +748,44 @@ impl Context {
 
     /// Draws (or, while compiling a list, records) the elements `indices`.
     fn draw_indices(&mut self, mode: GLenum, indices: &[u32]) {
-        let f = match self.fetch_elements(indices) {
-            Ok(f) => f,
-            Err(e) => return self.list_aware_error(e),
-        };
         if self.list_recording() {
-            let f = f.clone();
+            let f = match self.fetch_elements(indices) {
+                Ok(f) => f,
+                Err(e) => return self.list_aware_error(e),
+            };
+            let g = f.clone();
             self.list_record(Box::new(move |ctx: &mut Context| {
-                ctx.draw_fetched(mode, &f)
+                ctx.draw_fetched(mode, &g)
             }));
-            if self.list_compile_only() {
-                return;
+            if !self.list_compile_only() {
+                self.draw_fetched(mode, &f);
+            }
+            return;
+        }
+        // Executed directly: fetched and applied in chunks, so a large draw needs no second
+        // full-size copy of its vertices next to the glBegin/glEnd batch.
+        if let Err(e) = self.enabled_arrays() {
+            return self.record_error(e);
+        }
+        if self.reject_inside_begin_end() {
+            return;
+        }
+        const CHUNK: usize = 4096;
+        self.begin(mode);
+        for chunk in indices.chunks(CHUNK) {
+            match self.fetch_elements(chunk) {
+                Ok(f) => {
+                    for v in &f.vertices {
+                        self.apply_element(&f.present, v);
+                    }
+                }
+                Err(e) => {
+                    self.record_error(e);
+                    break;
+                }
             }
         }
-        self.draw_fetched(mode, &f);
+        self.end();
     }
 
     pub(crate) fn array_element(&mut self, i: GLint) {
