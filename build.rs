@@ -5,10 +5,11 @@
 //! - `enums.rs`: every GL 1.0-1.5 enum, the two extensions tilegl implements
 //!   (EXT_texture_filter_anisotropic, EXT_texture_compression_s3tc), and the ARB/EXT aliases of
 //!   core enums that legacy programs use; plus name <-> value lookup tables.
-//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point, and the two of
-//!   EXT_compiled_vertex_array, each defaulting to "unsupported"), the `COMMANDS` metadata table with ARB/EXT alias names, and the
-//!   `gl_forward!` macro that implements trait methods by forwarding to inherent methods behind the
-//!   one guard that enforces what is legal between `glBegin` and `glEnd`.
+//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point and the two of
+//!   EXT_compiled_vertex_array, each defaulting to "unsupported"), the `COMMANDS` metadata
+//!   table with ARB/EXT alias names, and the `gl_forward!` macro that implements trait methods
+//!   by forwarding to inherent methods behind the one guard that enforces what is legal between
+//!   `glBegin` and `glEnd`, after the display-list recording prologue (`list_record_code`).
 //! - `capi_exports.rs`: the `extern "C"` entry points with the C signatures of `GL/gl.h`.
 //! - `foreign.rs`: `ForeignGl`, an implementation of `Gl` that calls C function pointers (the
 //!   Mesa oracle).

@@ -762,6 +762,30 @@ fn error_cases() -> Vec<(&'static str, Call, Call, GLenum)> {
             GL_INVALID_VALUE,
         ),
         (
+            "multiDrawArrays mode",
+            none,
+            |g| g.multi_draw_arrays(GL_QUADS + 100, &[0], &[3], 1),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "multiDrawArrays negative count",
+            none,
+            |g| g.multi_draw_arrays(GL_TRIANGLES, &[0, 0], &[3, -1], 2),
+            GL_INVALID_VALUE,
+        ),
+        (
+            "multiDrawElements type",
+            none,
+            |g| g.multi_draw_elements(GL_TRIANGLES, &[3], GL_FLOAT, ClientPtr(0), 1),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "multiDrawElements negative count",
+            none,
+            |g| g.multi_draw_elements(GL_TRIANGLES, &[-3], GL_UNSIGNED_INT, ClientPtr(0), 1),
+            GL_INVALID_VALUE,
+        ),
+        (
             "lockArraysEXT count 0",
             none,
             |g| g.lock_arrays_ext(0, 0),

@@ -342,6 +342,16 @@ mod scripts {
         err(gl, out, "draw arrays count");
         gl.draw_elements(GL_POINTS, 1, GL_SHORT, ClientPtr(0));
         err(gl, out, "draw elements type");
+        gl.multi_draw_arrays(GL_QUADS + 100, &[0], &[3], 1);
+        err(gl, out, "multi draw arrays mode");
+        gl.multi_draw_arrays(GL_POINTS, &[0, 0], &[0, -1], 2);
+        err(gl, out, "multi draw arrays negative count");
+        gl.multi_draw_arrays(GL_POINTS, &[0], &[0], -1);
+        err(gl, out, "multi draw arrays negative drawcount");
+        let no_indices = [0usize];
+        let ptrs = ClientPtr(no_indices.as_ptr() as usize);
+        gl.multi_draw_elements(GL_POINTS, &[0], GL_FLOAT, ptrs, 1);
+        err(gl, out, "multi draw elements type");
         gl.draw_range_elements(GL_POINTS, 3, 1, 0, GL_UNSIGNED_BYTE, ClientPtr(0));
         err(gl, out, "draw range end < start");
         gl.begin(GL_POINTS);

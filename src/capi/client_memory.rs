@@ -24,8 +24,9 @@ pub(crate) fn with_client_bytes<R>(ptr: ClientPtr, len: usize, f: impl FnOnce(&[
         return f(&[]);
     }
     // SAFETY: by the GL client-array contract (module docs) the application guarantees that
-    // the `len` bytes starting at `ptr` (the elements the current draw uses, as computed by the
-    // caller from the array's size, type, stride and the largest index) are valid and readable
+    // the `len` bytes starting at `ptr` (the elements the current draw uses, from the smallest
+    // to the largest index, as computed by the caller from the array's size, type and stride,
+    // or the draw's indices) are valid and readable
     // and not written during the draw; the slice lives only for the duration of `f`, i.e. the
     // draw command. Bytes have no alignment requirement.
     let bytes = unsafe { std::slice::from_raw_parts(ptr.0 as *const u8, len) };

@@ -935,8 +935,16 @@ impl Context {
         if drawcount < 0 || first.len() < drawcount as usize || count.len() < drawcount as usize {
             return self.list_aware_error(GL_INVALID_VALUE);
         }
-        for i in 0..drawcount as usize {
-            if count[i] > 0 || convert::primitive_mode(mode).is_none() {
+        let n = drawcount as usize;
+        // The checks of glDrawArrays, made once for all draws.
+        if convert::primitive_mode(mode).is_none() {
+            return self.list_aware_error(GL_INVALID_ENUM);
+        }
+        if count[..n].iter().chain(&first[..n]).any(|&c| c < 0) {
+            return self.list_aware_error(GL_INVALID_VALUE);
+        }
+        for i in 0..n {
+            if count[i] > 0 {
                 self.draw_arrays(mode, first[i], count[i]);
             }
         }
@@ -951,6 +959,12 @@ impl Context {
         drawcount: GLsizei,
     ) {
         if drawcount < 0 || count.len() < drawcount as usize {
+            return self.list_aware_error(GL_INVALID_VALUE);
+        }
+        if convert::primitive_mode(mode).is_none() || convert::index_type(type_).is_none() {
+            return self.list_aware_error(GL_INVALID_ENUM);
+        }
+        if count[..drawcount as usize].iter().any(|&c| c < 0) {
             return self.list_aware_error(GL_INVALID_VALUE);
         }
         // `indices` is a client array of `drawcount` pointers (offsets when an element array

@@ -376,7 +376,7 @@ pub fn list_name_type(e: GLenum) -> Option<ListNameType> {
     })
 }
 
-/// `glPushClientAttrib` groups: (pixel store, vertex array); `None` for unknown bits.
+/// `glPushClientAttrib` groups: (pixel store, vertex array); other bits are ignored.
 pub fn client_attrib_mask(mask: u32) -> (bool, bool) {
     (
         mask & GL_CLIENT_PIXEL_STORE_BIT != 0,
