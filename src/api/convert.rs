@@ -5,7 +5,10 @@
 use super::enums::*;
 use super::types::GLenum;
 
+mod arrays;
 mod texture;
+#[allow(unused_imports)]
+pub use arrays::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -607,6 +610,8 @@ pub enum Query {
     AliasedLineWidthRange,
     PointParam(PointParam),
     PixelRect(PixelRectQuery),
+    /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
+    Arrays(ArrayQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -620,6 +625,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(p) = pixel_store_param(e) {
         return Some(PixelStore(p));
+    }
+    if let Some(q) = array_query(e) {
+        return Some(Arrays(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,
@@ -1680,17 +1688,17 @@ pub fn draw_pixels_format(e: GLenum) -> Option<DrawPixelsFormat> {
 
 /// Component types of index data (`GL_BITMAP` is one bit per index).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum IndexType {
+pub enum PixelIndexType {
     Bitmap,
     Plain(texture::TexPixelType),
 }
 
-pub fn index_type(e: GLenum) -> Option<IndexType> {
+pub fn pixel_index_type(e: GLenum) -> Option<PixelIndexType> {
     if e == GL_BITMAP {
-        return Some(IndexType::Bitmap);
+        return Some(PixelIndexType::Bitmap);
     }
     match texture::tex_pixel_type(e)? {
         texture::TexPixelType::Packed(_) => None,
-        t => Some(IndexType::Plain(t)),
+        t => Some(PixelIndexType::Plain(t)),
     }
 }

@@ -3,9 +3,11 @@
 
 #[macro_use]
 mod textures;
+pub mod arrays;
 pub mod fog;
 pub mod get;
 pub mod lighting;
+pub mod lists;
 pub mod matrices;
 pub mod per_fragment;
 pub mod pixel_rect;
@@ -97,6 +99,10 @@ pub struct Context {
     present_requested: bool,
     /// Forces the general fragment path (used by the fast-path twin tests).
     pub(crate) force_general_path: bool,
+    /// Vertex arrays, buffer objects and the client attribute stack.
+    pub(crate) client: arrays::ClientState,
+    /// Display lists.
+    pub(crate) lists: lists::ListState,
 }
 
 impl Context {
@@ -167,6 +173,8 @@ impl Context {
             strings: HashMap::new(),
             present_requested: false,
             force_general_path: false,
+            client: Default::default(),
+            lists: Default::default(),
         }
     }
 
@@ -356,6 +364,9 @@ impl Context {
 
     pub(crate) fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
         let Some(cap) = convert::capability(cap) else {
+            if let Some(on) = self.client_array_enabled(cap) {
+                return on as GLboolean;
+            }
             self.record_error(GL_INVALID_ENUM);
             return GL_FALSE as GLboolean;
         };
@@ -893,6 +904,49 @@ impl Gl for Context {
         recti,
         rectiv,
         rects,
-        rectsv
+        rectsv,
+        // vertex arrays and buffer objects
+        vertex_pointer,
+        normal_pointer,
+        color_pointer,
+        secondary_color_pointer,
+        fog_coord_pointer,
+        tex_coord_pointer,
+        edge_flag_pointer,
+        index_pointer,
+        interleaved_arrays,
+        enable_client_state,
+        disable_client_state,
+        get_pointerv,
+        array_element,
+        draw_arrays,
+        draw_elements,
+        draw_range_elements,
+        multi_draw_arrays,
+        multi_draw_elements,
+        gen_buffers,
+        bind_buffer,
+        delete_buffers,
+        is_buffer,
+        buffer_data,
+        buffer_sub_data,
+        get_buffer_sub_data,
+        map_buffer,
+        unmap_buffer,
+        get_buffer_parameteriv,
+        get_buffer_pointerv,
+        push_client_attrib,
+        pop_client_attrib,
+        lock_arrays_ext,
+        unlock_arrays_ext,
+        // display lists
+        gen_lists,
+        new_list,
+        end_list,
+        call_list,
+        call_lists,
+        list_base,
+        delete_lists,
+        is_list
     );
 }

@@ -11,7 +11,7 @@ use glam::Vec4;
 
 use super::Context;
 use crate::api::convert::{
-    self, CopyPixelsType, DrawPixelsFormat, IndexType, PixelMap, PixelRectQuery,
+    self, CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery,
     PixelTransferParam, TexPixelFormat, TexPixelType,
 };
 use crate::api::enums::*;
@@ -181,12 +181,12 @@ fn read_index(
     data: &[u8],
     row_start: usize,
     n: usize,
-    ty: IndexType,
+    ty: PixelIndexType,
     swap: bool,
     lsb_first: bool,
 ) -> i64 {
     match ty {
-        IndexType::Bitmap => {
+        PixelIndexType::Bitmap => {
             let byte = data.get(row_start + n / 8).copied().unwrap_or(0);
             let bit = if lsb_first {
                 byte >> (n % 8)
@@ -195,7 +195,7 @@ fn read_index(
             };
             (bit & 1) as i64
         }
-        IndexType::Plain(t) => {
+        PixelIndexType::Plain(t) => {
             let size = t.size();
             let at = row_start + n * size;
             let Some(bytes) = data.get(at..at + size) else {
@@ -660,7 +660,7 @@ impl Context {
             f,
             DrawPixelsFormat::StencilIndex | DrawPixelsFormat::ColorIndex
         );
-        let index_ty = convert::index_type(type_);
+        let index_ty = convert::pixel_index_type(type_);
         let color_ty = convert::tex_pixel_type(type_);
         if (is_index && index_ty.is_none()) || (!is_index && color_ty.is_none()) {
             self.record_error(GL_INVALID_ENUM);
@@ -709,7 +709,7 @@ impl Context {
         w: usize,
         h: usize,
         f: DrawPixelsFormat,
-        index_ty: Option<IndexType>,
+        index_ty: Option<PixelIndexType>,
         color_ty: Option<TexPixelType>,
     ) -> Option<Vec<PixelValue>> {
         let u = &self.unpack;
@@ -720,8 +720,8 @@ impl Context {
             (DrawPixelsFormat::StencilIndex | DrawPixelsFormat::ColorIndex, Some(ity), _) => {
                 // Rows of indices: bits (GL_BITMAP) or elements, under the unpack state.
                 let (elem_bits, elem_size) = match ity {
-                    IndexType::Bitmap => (1, 1),
-                    IndexType::Plain(t) => (8 * t.size(), t.size()),
+                    PixelIndexType::Bitmap => (1, 1),
+                    PixelIndexType::Plain(t) => (8 * t.size(), t.size()),
                 };
                 let row_len = if u.row_length > 0 {
                     u.row_length as usize
@@ -745,8 +745,8 @@ impl Context {
                     let row = (u.skip_rows.max(0) as usize + j) * stride;
                     for i in 0..w {
                         let (start, n) = match ity {
-                            IndexType::Bitmap => (row, skip + i),
-                            IndexType::Plain(_) => (row + skip * elem_size, i),
+                            PixelIndexType::Bitmap => (row, skip + i),
+                            PixelIndexType::Plain(_) => (row + skip * elem_size, i),
                         };
                         let v = read_index(data, start, n, ity, u.swap_bytes, u.lsb_first);
                         out.push(if f == DrawPixelsFormat::StencilIndex {
@@ -906,7 +906,7 @@ impl Context {
                         continue;
                     }
                     let set =
-                        read_index(bitmap, row, skip + i, IndexType::Bitmap, false, u.lsb_first)
+                        read_index(bitmap, row, skip + i, PixelIndexType::Bitmap, false, u.lsb_first)
                             != 0;
                     if set {
                         self.shade_pixel_now(&ds, x as i32, y as i32, zr, &planes);
