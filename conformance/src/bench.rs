@@ -256,7 +256,15 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
 
 /// One frame: clear, the workload in immediate mode, glFinish.
 pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
+    let sprites = matches!(data, WorkData::Sprites(_));
+    if sprites {
+        // glClear honours the depth mask: clear with writes on, draw with them off.
+        gl.depth_mask(1);
+    }
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if sprites {
+        gl.depth_mask(0);
+    }
     match data {
         WorkData::Triangles(verts) => {
             gl.begin(GL_TRIANGLES);

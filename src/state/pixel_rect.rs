@@ -905,9 +905,14 @@ impl Context {
                     if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {
                         continue;
                     }
-                    let set =
-                        read_index(bitmap, row, skip + i, PixelIndexType::Bitmap, false, u.lsb_first)
-                            != 0;
+                    let set = read_index(
+                        bitmap,
+                        row,
+                        skip + i,
+                        PixelIndexType::Bitmap,
+                        false,
+                        u.lsb_first,
+                    ) != 0;
                     if set {
                         self.shade_pixel_now(&ds, x as i32, y as i32, zr, &planes);
                     }
