@@ -379,3 +379,54 @@ fn pixel_transfer_applies_to_texture_uploads_and_reads() {
     gl.read_pixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
     assert_eq!(px, [102, q(51.0 / 255.0 * 2.0), 204, q(0.5)]);
 }
+
+#[test]
+fn read_pixels_packs_every_packed_type() {
+    let mut gl = setup();
+    let c = [0.8f32, 0.3, 0.55, 0.4];
+    gl.clear_color(c[0], c[1], c[2], c[3]);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    // The stored 8-bit values, then each field rounded to its own width (section 4.3.2).
+    let stored = c.map(|v| (v * 255.0 + 0.5) as u32 as f32 / 255.0);
+    let field = |v: f32, bits: u32| (v * ((1u32 << bits) - 1) as f32 + 0.5) as u32;
+    let [r, g, b, a] = stored;
+    let mut two = [0u8; 2];
+    gl.read_pixels(0, 0, 1, 1, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &mut two);
+    assert_eq!(
+        u16::from_ne_bytes(two) as u32,
+        field(r, 5) << 11 | field(g, 6) << 5 | field(b, 5)
+    );
+    gl.read_pixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, &mut two);
+    assert_eq!(
+        u16::from_ne_bytes(two) as u32,
+        field(r, 4) << 12 | field(g, 4) << 8 | field(b, 4) << 4 | field(a, 4)
+    );
+    gl.read_pixels(0, 0, 1, 1, GL_BGRA, GL_UNSIGNED_SHORT_1_5_5_5_REV, &mut two);
+    assert_eq!(
+        u16::from_ne_bytes(two) as u32,
+        field(a, 1) << 15 | field(r, 5) << 10 | field(g, 5) << 5 | field(b, 5)
+    );
+    let mut four = [0u8; 4];
+    gl.read_pixels(0, 0, 1, 1, GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, &mut four);
+    assert_eq!(
+        u32::from_ne_bytes(four),
+        field(a, 8) << 24 | field(r, 8) << 16 | field(g, 8) << 8 | field(b, 8)
+    );
+    gl.read_pixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT_10_10_10_2, &mut four);
+    assert_eq!(
+        u32::from_ne_bytes(four),
+        field(r, 10) << 22 | field(g, 10) << 12 | field(b, 10) << 2 | field(a, 2)
+    );
+    let mut one = [0u8; 1];
+    gl.read_pixels(0, 0, 1, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, &mut one);
+    assert_eq!(
+        one[0] as u32,
+        field(r, 3) << 5 | field(g, 3) << 2 | field(b, 2)
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    // A packed type with a format of the wrong size, and a short slice.
+    gl.read_pixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, &mut two);
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    gl.read_pixels(0, 0, 4, 4, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &mut two);
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+}

@@ -429,26 +429,6 @@ pub fn pixel_type(e: GLenum) -> Option<PixelType> {
     })
 }
 
-/// True for the packed pixel types of GL 1.2 (valid enums that `glReadPixels` does not take yet).
-pub fn is_packed_pixel_type(e: GLenum) -> bool {
-    matches!(
-        e,
-        GL_UNSIGNED_BYTE_3_3_2
-            | GL_UNSIGNED_BYTE_2_3_3_REV
-            | GL_UNSIGNED_SHORT_5_6_5
-            | GL_UNSIGNED_SHORT_5_6_5_REV
-            | GL_UNSIGNED_SHORT_4_4_4_4
-            | GL_UNSIGNED_SHORT_4_4_4_4_REV
-            | GL_UNSIGNED_SHORT_5_5_5_1
-            | GL_UNSIGNED_SHORT_1_5_5_5_REV
-            | GL_UNSIGNED_INT_8_8_8_8
-            | GL_UNSIGNED_INT_8_8_8_8_REV
-            | GL_UNSIGNED_INT_10_10_10_2
-            | GL_UNSIGNED_INT_2_10_10_10_REV
-            | GL_BITMAP
-    )
-}
-
 /// `glPixelStore` parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PixelStoreParam {

@@ -1,11 +1,12 @@
 //! `glClear` recording and `glReadPixels`.
 
-use crate::api::convert::{self, ClearMask, PixelFormat, PixelType};
+use crate::api::convert::{self, ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
 use crate::api::enums::*;
 use crate::fragment::span::{color_to_u8, depth_to_fixed};
 use crate::raster::scene::{ClearCommand, Command};
 use crate::raster::setup::Rect;
 use crate::state::Context;
+use crate::texture::pixels as texpix;
 
 impl Context {
     /// Records a clear of the buffers in `mask`, limited by the scissor box and the write masks
@@ -103,12 +104,11 @@ impl Context {
             return;
         };
         let Some(t) = convert::pixel_type(type_) else {
-            // Packed types are valid enums that tilegl does not pack yet.
-            self.record_error(if convert::is_packed_pixel_type(type_) {
-                GL_INVALID_OPERATION
+            if let Some(TexPixelType::Packed(p)) = convert::tex_pixel_type(type_) {
+                self.read_pixels_packed(x, y, width, height, format, p, pixels);
             } else {
-                GL_INVALID_ENUM
-            });
+                self.record_error(GL_INVALID_ENUM);
+            }
             return;
         };
         if width < 0 || height < 0 {
@@ -272,4 +272,59 @@ fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool
         bytes.reverse();
     }
     out.copy_from_slice(&bytes);
+}
+
+impl Context {
+    /// `glReadPixels` with a packed type (`GL_UNSIGNED_SHORT_5_6_5`, ...): colour formats only,
+    /// packed by the texture module's packer with the pack state.
+    fn read_pixels_packed(
+        &mut self,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        packed: PackedType,
+        pixels: &mut [u8],
+    ) {
+        let Some(tf) = convert::tex_pixel_format(format) else {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        };
+        if !packed.accepts(tf) {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let (w, h) = (width as usize, height as usize);
+        let ty = TexPixelType::Packed(packed);
+        let Some(layout) = texpix::layout(&self.pack, 2, [w, h, 1], tf, ty) else {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        if pixels.len() < layout.end {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.flush_scene();
+        let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+        let swap = self.pack.swap_bytes;
+        for row in 0..h {
+            for col in 0..w {
+                let (wx, wy) = (x.saturating_add(col as i32), y.saturating_add(row as i32));
+                let Some(rgba) = self.framebuffer.color_at(wx, wy) else {
+                    continue;
+                };
+                let mut c = rgba.map(|v| v as f32 / 255.0);
+                if let Some(t) = &xfer {
+                    c = t.texel(false, c);
+                }
+                let at = layout.start + row * layout.row_stride + col * layout.group;
+                texpix::pack_group(pixels, at, c, tf, ty, swap);
+            }
+        }
+    }
 }
