@@ -365,3 +365,42 @@ fn extreme_sizes_and_widths_are_clamped_to_the_reported_range() {
     assert_eq!(lit(&mut gl).len(), 16);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn smooth_polygon_coverage_adds_up_to_the_area_and_shared_edges_to_one() {
+    // One triangle: the summed coverage is its area.
+    let mut gl = setup();
+    gl.enable(GL_POLYGON_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    let p = [(5.3f32, 7.1f32), (58.2, 12.6), (21.7, 55.4)];
+    gl.begin(GL_TRIANGLES);
+    for (x, y) in p {
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+    let total: f32 = read_rgba(&mut gl).iter().map(|c| c[3] as f32 / 255.0).sum();
+    let area =
+        ((p[1].0 - p[0].0) * (p[2].1 - p[0].1) - (p[2].0 - p[0].0) * (p[1].1 - p[0].1)).abs() / 2.0;
+    assert!(
+        (total - area).abs() < 0.01 * area,
+        "coverage {total}, area {area}"
+    );
+    // A quad split into two triangles: along the shared diagonal the coverages add up to 1,
+    // so the interior is fully covered and no seam shows.
+    let mut gl = setup();
+    gl.enable(GL_POLYGON_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    gl.begin(GL_QUADS);
+    gl.vertex_2f(10.0, 10.0);
+    gl.vertex_2f(50.0, 14.0);
+    gl.vertex_2f(46.0, 52.0);
+    gl.vertex_2f(12.0, 48.0);
+    gl.end();
+    let px = read_rgba(&mut gl);
+    for (x, y) in [(30, 30), (20, 20), (40, 40), (25, 35), (35, 25)] {
+        let a = px[(y * W + x) as usize][3];
+        assert!(a >= 254, "({x}, {y}): alpha {a}");
+    }
+}

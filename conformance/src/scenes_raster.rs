@@ -30,6 +30,11 @@ pub const RASTER_SCENES: &[Scene] = &[
     // + 10) = 245 pixels = 6.0 % of the picture.
     scene_with("smooth_points", smooth_points, spread(0.060)),
     scene("smooth_lines", smooth_lines),
+    // Mesa 22's llvmpipe and softpipe ignore GL_POLYGON_SMOOTH (aliased polygons); tilegl
+    // applies edge coverage. The pictures differ only where coverage is partial: pixels whose
+    // centres lie within half a pixel of an edge, a band one pixel wide along the outline. The
+    // three triangles' perimeters add up to 286 pixels = 7.0 % of the picture.
+    scene_with("smooth_polygons", smooth_polygons, spread(0.070)),
     scene("accum_motion_blur", accum_motion_blur),
     scene("accum_ops", accum_ops),
     scene("draw_pixels_color", draw_pixels_color),
@@ -619,4 +624,26 @@ fn window_pos_and_invalid_raster(gl: &mut dyn Gl) {
     gl.window_pos_3f(40.0, 10.0, 0.5);
     gl.color_3f(0.0, 1.0, 0.5);
     gl.bitmap(16, 8, 0.0, 0.0, 0.0, 0.0, &bits);
+}
+
+/// `GL_POLYGON_SMOOTH` with blending: separate triangles (no shared edges).
+fn smooth_polygons(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_POLYGON_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.begin(GL_TRIANGLES);
+    pal(gl, 0);
+    gl.vertex_2f(4.3, 3.2);
+    gl.vertex_2f(30.6, 8.1);
+    gl.vertex_2f(12.2, 33.7);
+    pal(gl, 1);
+    gl.vertex_2f(36.1, 5.4);
+    gl.vertex_2f(61.3, 20.2);
+    gl.vertex_2f(40.7, 30.9);
+    pal(gl, 2);
+    gl.vertex_2f(8.8, 40.2);
+    gl.vertex_2f(58.9, 36.6);
+    gl.vertex_2f(30.2, 61.3);
+    gl.end();
 }

@@ -19,6 +19,7 @@ differential!(
     polygon_stipple,
     smooth_points,
     smooth_lines,
+    smooth_polygons,
     accum_motion_blur,
     accum_ops,
     draw_pixels_color,

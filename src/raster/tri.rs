@@ -23,6 +23,10 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
         perspective: t.perspective,
         coverage: 1.0,
     };
+    if ds.raster.polygon_smooth {
+        smooth_rows(t, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
+        return;
+    }
     let half = SUBPIXEL / 2;
     'rows: for y in y_lo..y_hi {
         let py = y as i64 * SUBPIXEL + half;
@@ -47,6 +51,57 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
                 None => (ds.span)(ds, tile, y, lo as i32, hi as i32, &it),
                 Some(pattern) => stippled_row(ds, tile, y, lo as i32, hi as i32, &it, pattern),
             }
+        }
+    }
+}
+
+/// `GL_POLYGON_SMOOTH` (section 3.5.6 and 3.11): every pixel of the (one pixel wider)
+/// bounding box gets the triangle's coverage, approximated by the box-filtered distances of
+/// its centre to the three edges; runs of full coverage are shaded as spans.
+fn smooth_rows(
+    t: &TriangleCommand,
+    ds: &DrawState,
+    it: &Interpolants,
+    tile: &mut Tile,
+    [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
+) {
+    let s = SUBPIXEL as f64;
+    // Edge functions in pixel units: E(p) / |(a, b)| is the signed distance in pixels.
+    let edges = t.edges.map(|e| {
+        let len = ((e.a as f64).powi(2) + (e.b as f64).powi(2))
+            .sqrt()
+            .max(1e-12);
+        (e.a as f64 * s / len, e.b as f64 * s / len, e.c as f64 / len)
+    });
+    let coverage = |x: f64, y: f64| -> f32 {
+        let mut c = 1.0f64;
+        for &(a, b, k) in &edges {
+            let d = (a * x + b * y + k) / s;
+            c *= (d + 0.5).clamp(0.0, 1.0);
+        }
+        c as f32
+    };
+    for y in y_lo..y_hi {
+        let yc = y as f64 + 0.5;
+        let mut x = x_lo;
+        while x < x_hi {
+            let cov = coverage(x as f64 + 0.5, yc);
+            if cov >= 1.0 {
+                let start = x;
+                while x < x_hi && coverage(x as f64 + 0.5, yc) >= 1.0 {
+                    x += 1;
+                }
+                (ds.span)(ds, tile, y, start, x, it);
+                continue;
+            }
+            if cov > 0.0 {
+                let edge = Interpolants {
+                    coverage: cov,
+                    ..*it
+                };
+                (ds.span)(ds, tile, y, x, x + 1, &edge);
+            }
+            x += 1;
         }
     }
 }
@@ -130,7 +185,17 @@ pub fn bin_triangle(
         *ys.iter().min().unwrap_or(&0),
         *ys.iter().max().unwrap_or(&0),
     );
-    let bbox = Rect { x0, y0, x1, y1 }.intersect(&ds.draw_rect);
+    let mut bbox = Rect { x0, y0, x1, y1 };
+    if ds.raster.polygon_smooth {
+        // Partly covered pixels around the edges take part too.
+        bbox = Rect {
+            x0: x0 - 1,
+            y0: y0 - 1,
+            x1: x1 + 1,
+            y1: y1 + 1,
+        };
+    }
+    let bbox = bbox.intersect(&ds.draw_rect);
     if bbox.is_empty() {
         return;
     }

@@ -113,6 +113,8 @@ pub struct RasterDraw {
     pub offset: Option<PolygonOffsetDraw>,
     /// Rows bottom first; bit `1 << (31 - x % 32)` of row `y % 32`. `None` when disabled.
     pub polygon_stipple: Option<[u32; 32]>,
+    /// `GL_POLYGON_SMOOTH`: filled polygons take their coverage into the alpha.
+    pub polygon_smooth: bool,
 }
 
 /// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
@@ -337,6 +339,7 @@ impl Context {
                 enabled: r.offset_enabled,
             }),
             polygon_stipple: r.polygon_stipple.then_some(r.polygon_stipple_pattern),
+            polygon_smooth: r.polygon_smooth,
         }
     }
 }
