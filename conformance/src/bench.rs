@@ -4,7 +4,12 @@
 //! (`--workload NAME`, default `all`):
 //! - `triangles`: 100k random small smooth-shaded, depth-tested triangles per frame;
 //! - `sprites`: 20k alpha-blended, alpha-tested textured sprites with depth writes off;
-//! - `fog`: a lit height-field terrain under exp2 fog in perspective (~130k triangles).
+//! - `fog`: a lit height-field terrain under exp2 fog in perspective (~130k triangles);
+//! - `overdraw`: eight full-screen trilinear-textured, modulated quads per frame;
+//! - `horizon`: a trilinear, repeating ground plane receding to the horizon;
+//! - `ladder`: the horizon under each texture quality setting (nearest, bilinear, trilinear,
+//!   anisotropic 2x-16x), each with its time and its error against a 16x-supersampled
+//!   reference rendered by tilegl, as a table and a PNG chart of error against time.
 //!
 //! Shared by `cargo run --release -p tilegl-conformance --bin bench` and
 //! `cargo bench -p tilegl-conformance --bench triangles`.
@@ -22,6 +27,8 @@ use crate::prng::XorShift;
 #[derive(Clone, Debug)]
 pub struct BenchConfig {
     pub workload: Workload,
+    /// Texture quality for the textured workloads: an index into [`LADDER`].
+    pub quality: usize,
     pub width: i32,
     pub height: i32,
     pub triangles: usize,
@@ -38,6 +45,7 @@ impl Default for BenchConfig {
     fn default() -> Self {
         BenchConfig {
             workload: Workload::Triangles,
+            quality: 2,
             width: 1024,
             height: 768,
             triangles: 100_000,
@@ -54,16 +62,26 @@ pub enum Workload {
     Triangles,
     Sprites,
     Fog,
+    Overdraw,
+    Horizon,
 }
 
 impl Workload {
-    pub const ALL: [Workload; 3] = [Workload::Triangles, Workload::Sprites, Workload::Fog];
+    pub const ALL: [Workload; 5] = [
+        Workload::Triangles,
+        Workload::Sprites,
+        Workload::Fog,
+        Workload::Overdraw,
+        Workload::Horizon,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             Workload::Triangles => "triangles",
             Workload::Sprites => "sprites",
             Workload::Fog => "fog",
+            Workload::Overdraw => "overdraw",
+            Workload::Horizon => "horizon",
         }
     }
 
@@ -93,6 +111,10 @@ pub enum WorkData {
     Sprites(Vec<Sprite>),
     /// Heights of a (cells + 1)^2 grid.
     Terrain(Vec<f32>),
+    /// Full-screen quads (the count of layers).
+    Overdraw(usize),
+    /// The ground plane.
+    Horizon,
 }
 
 /// Generates the workload's data.
@@ -135,7 +157,68 @@ pub fn work_data(cfg: &BenchConfig) -> WorkData {
             }
             WorkData::Terrain(h)
         }
+        Workload::Overdraw => WorkData::Overdraw(8),
+        Workload::Horizon => WorkData::Horizon,
     }
+}
+
+/// A 256x256 RGBA test texture: a checkerboard of colour ramps with fine lines (it aliases
+/// visibly when under-filtered).
+pub fn bench_texture() -> Vec<u8> {
+    let mut p = Vec::with_capacity(256 * 256 * 4);
+    for y in 0..256u32 {
+        for x in 0..256u32 {
+            let check = ((x / 32) + (y / 32)) % 2 == 0;
+            let line = x % 16 == 0 || y % 16 == 0;
+            let (r, g, b) = if line {
+                (20, 20, 20)
+            } else if check {
+                (230, (x % 32 * 6) as u8, 60)
+            } else {
+                (40, 120 + (y % 32 * 4) as u8, 220)
+            };
+            p.extend_from_slice(&[r, g, b, 255]);
+        }
+    }
+    p
+}
+
+/// Texture quality settings of the ladder: (name, min filter, mag filter, max anisotropy).
+pub const LADDER: [(&str, GLenum, GLenum, f32); 7] = [
+    ("nearest", GL_NEAREST, GL_NEAREST, 1.0),
+    ("bilinear", GL_LINEAR, GL_LINEAR, 1.0),
+    ("trilinear", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1.0),
+    ("aniso 2x", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 2.0),
+    ("aniso 4x", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 4.0),
+    ("aniso 8x", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 8.0),
+    ("aniso 16x", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 16.0),
+];
+
+/// Creates and binds the bench texture with the given filtering.
+pub fn bench_texture_setup(gl: &mut dyn Gl, min: GLenum, mag: GLenum, aniso: f32) {
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_2D, name[0]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        256,
+        256,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&bench_texture()),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT as i32);
+    if aniso > 1.0 {
+        gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
+    }
+    gl.enable(GL_TEXTURE_2D);
 }
 
 /// A 64x64 RGBA sprite texture: a soft disc (alpha falls to 0 at the rim) with rings.
@@ -202,12 +285,29 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
             gl.ortho(0.0, cfg.width as f64, 0.0, cfg.height as f64, -1.0, 1.0);
             gl.matrix_mode(GL_MODELVIEW);
         }
-        Workload::Fog => {
+        Workload::Fog | Workload::Horizon => {
             gl.matrix_mode(GL_PROJECTION);
             let aspect = cfg.width as f64 / cfg.height as f64;
-            gl.frustum(-0.1 * aspect, 0.1 * aspect, -0.1, 0.1, 0.2, 40.0);
+            let far = if cfg.workload == Workload::Fog {
+                40.0
+            } else {
+                2000.0
+            };
+            gl.frustum(-0.1 * aspect, 0.1 * aspect, -0.1, 0.1, 0.2, far);
             gl.matrix_mode(GL_MODELVIEW);
         }
+        Workload::Overdraw => {
+            gl.matrix_mode(GL_PROJECTION);
+            gl.ortho(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+            gl.matrix_mode(GL_MODELVIEW);
+        }
+    }
+    if matches!(cfg.workload, Workload::Overdraw | Workload::Horizon) {
+        let (_, min, mag, aniso) = LADDER[cfg.quality.min(LADDER.len() - 1)];
+        bench_texture_setup(gl, min, mag, aniso);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+        gl.disable(GL_DEPTH_TEST);
+        gl.clear_color(0.55, 0.7, 0.9, 1.0);
     }
     if cfg.workload == Workload::Sprites {
         let mut name = [0u32];
@@ -315,6 +415,33 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
                 }
                 gl.end();
             }
+        }
+        WorkData::Overdraw(layers) => {
+            gl.begin(GL_QUADS);
+            for k in 0..*layers {
+                // Each layer a different scale and rotation: minification from 1x to 8x.
+                let scale = 1.0 + k as f32;
+                let a = 0.2 * k as f32;
+                let (c, s) = (a.cos() * scale, a.sin() * scale);
+                gl.color_4f(1.0, 1.0 - 0.05 * k as f32, 0.8 + 0.02 * k as f32, 1.0);
+                for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                    gl.tex_coord_2f(c * x - s * y, s * x + c * y);
+                    gl.vertex_2f(x, y);
+                }
+            }
+            gl.end();
+        }
+        WorkData::Horizon => {
+            gl.load_identity();
+            gl.rotatef(6.0, 1.0, 0.0, 0.0);
+            gl.color_3f(1.0, 1.0, 1.0);
+            gl.begin(GL_QUADS);
+            let (w, near, far) = (400.0f32, -0.3f32, -1500.0f32);
+            for (x, z) in [(-w, near), (w, near), (w, far), (-w, far)] {
+                gl.tex_coord_2f(x / 4.0, z / 4.0);
+                gl.vertex_3f(x, -1.0, z);
+            }
+            gl.end();
         }
     }
     gl.finish();
@@ -438,7 +565,10 @@ pub fn run_mesa_subprocess(
     let tris = cfg.triangles.to_string();
     let budget = cfg.budget.as_secs_f64().to_string();
     let mut args: Vec<&str> = extra_args.to_vec();
+    let quality = cfg.quality.to_string();
     args.extend_from_slice(&[
+        "--quality",
+        &quality,
         "--workload",
         cfg.workload.name(),
         CHILD_ARG,
@@ -477,6 +607,10 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
                     }
                     None => all = v == "all",
                 }
+                i += 1;
+            }
+            ("--quality", Some(v)) => {
+                cfg.quality = v.parse().unwrap_or(cfg.quality);
                 i += 1;
             }
             ("--frames", Some(v)) => {
@@ -548,6 +682,13 @@ fn describe(cfg: &BenchConfig) -> String {
         Workload::Fog => format!(
             "lit {TERRAIN_CELLS}x{TERRAIN_CELLS} height field ({} triangles) under exp2 fog",
             2 * TERRAIN_CELLS * TERRAIN_CELLS
+        ),
+        Workload::Overdraw => {
+            "8 full-screen quads/frame (overdraw 8), trilinear, modulate".to_string()
+        }
+        Workload::Horizon => format!(
+            "a ground plane receding to the horizon, repeat, {}",
+            LADDER[cfg.quality.min(LADDER.len() - 1)].0
         ),
     }
 }
