@@ -9,6 +9,7 @@
 
 use std::path::{Path, PathBuf};
 
+use tilegl::replay::player::Player;
 use tilegl::replay::reference::compare_replay;
 use tilegl::replay::trace::TraceReader;
 
@@ -82,7 +83,9 @@ fn check_capture(name: &str) {
     let frames = dir.join(format!("{name}.frames"));
     let mut reader = TraceReader::open(&trace).expect("open capture");
     // Two workers: the pictures do not depend on the count, and the machine is shared.
-    let report = compare_replay(&mut reader, &frames, 2, None, &mut |_| {}).expect("compare");
+    let mut player = Player::new(2);
+    let report =
+        compare_replay(&mut reader, &mut player, &frames, None, &mut |_| {}).expect("compare");
     let mut text = String::new();
     for p in &report.pictures {
         text.push_str(&format!("  {}\n", p.line()));

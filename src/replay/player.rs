@@ -213,7 +213,13 @@ pub struct Player {
     dispatch: DispatchState,
     stats: ReplayStats,
     threads: usize,
+    /// Create a window of [`DEFAULT_SIZE`] (or the size of a following fake `glViewport`)
+    /// at the first GL call when no context was ever made current (call scripts).
+    pub auto_window: bool,
 }
+
+/// The handle of the context made by [`Player::auto_window`].
+const AUTO_HANDLE: u64 = u64::MAX;
 
 impl Default for Player {
     fn default() -> Self {
@@ -258,6 +264,7 @@ impl Player {
             dispatch: DispatchState::new(),
             stats: ReplayStats::default(),
             threads,
+            auto_window: false,
         }
     }
 
@@ -380,6 +387,13 @@ impl Player {
                     arg(3).clamp(0, 1 << 14) as i32,
                 )
             });
+            if self.auto_window
+                && self.current.is_none()
+                && self.pending.is_none()
+                && self.contexts.is_empty()
+            {
+                self.pending = Some(AUTO_HANDLE);
+            }
             if self.pending.is_some() {
                 self.settle_pending(fake_viewport);
             } else if let (Some(size), Some(ctx)) = (fake_viewport, self.current_context()) {

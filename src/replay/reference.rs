@@ -212,13 +212,13 @@ pub fn tolerance_for(
     )
 }
 
-/// Replays `source` with the pictures listed in `dir/frames.tsv` and compares them. Rendered
-/// pictures are also written into `out` when given. The replay stops after the last listed
-/// picture.
+/// Replays `source` on `player` with the pictures listed in `dir/frames.tsv` and compares
+/// them. Rendered pictures are also written into `out` when given. The replay stops after the
+/// last listed picture.
 pub fn compare_replay(
     source: &mut dyn CallSource,
+    player: &mut Player,
     dir: &Path,
-    threads: usize,
     out: Option<&Path>,
     progress: &mut dyn FnMut(&ReplayStats),
 ) -> Result<CompareReport, String> {
@@ -230,7 +230,6 @@ pub fn compare_replay(
         ));
     }
     let want = want_for(&entries);
-    let mut player = Player::new(threads);
     let mut rendered: Vec<Picture> = Vec::new();
     let mut sink = |p: Picture| -> Result<(), String> {
         if let Some(out) = out {

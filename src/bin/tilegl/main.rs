@@ -3,7 +3,8 @@
 //! With no subcommand (`cargo run --release`) it renders the built-in scenes into `out/` and
 //! prints, for each, the PNG's path and how long it took. `tilegl gallery DIR` does the same
 //! into `DIR`. `replay`, `dump`, `conformance` and `bench` are the interfaces promised in
-//! DESIGN.md; those not available yet say so and exit with a non-zero status.
+//! DESIGN.md; `conformance` and `bench` point to the tilegl-conformance crate and exit with
+//! status 3.
 
 mod scenes;
 
@@ -34,7 +35,8 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Replay an apitrace capture into PNGs, or compare it with reference pictures.
+    /// Replay an apitrace capture or a call script into PNGs, or compare it with reference
+    /// pictures.
     ///
     /// Writes frame-NNNN.png (the back buffer just before swap N) for every frame, or those of
     /// --frames; with --calls, call-NNNNNNNNNN.png (the draw buffer right after call N) for
@@ -56,7 +58,7 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         compare: Option<PathBuf>,
     },
-    /// Dump the calls and state of a trace or call script (not available yet).
+    /// Write an apitrace capture as a call script DIR/NAME.gl (large data in DIR/NAME.blobs/).
     Dump {
         /// An apitrace `.trace` file or a call script.
         file: PathBuf,
@@ -164,16 +166,7 @@ fn main() -> ExitCode {
             out,
             compare,
         }) => replay(&file, frames, &calls, out.as_deref(), compare.as_deref()),
-        Some(Command::Dump { file, .. }) => {
-            if let Err(e) = std::fs::metadata(&file) {
-                eprintln!("tilegl dump: cannot read {}: {e}", file.display());
-                return ExitCode::FAILURE;
-            }
-            not_available(
-                "dump",
-                "the apitrace and call-script readers are not written yet (a later issue)",
-            )
-        }
+        Some(Command::Dump { file, out }) => dump(&file, &out),
         Some(Command::Conformance { filter, report, .. }) => {
             let mut run = String::from("cargo test -p tilegl-conformance");
             if let Some(pattern) = filter {
@@ -243,6 +236,56 @@ fn end_progress() {
     }
 }
 
+/// An apitrace capture or a call script (told apart by the first bytes), and whether it is a
+/// script.
+fn open_source(file: &Path) -> Result<(Box<dyn tilegl::replay::player::CallSource>, bool), String> {
+    use std::io::Read;
+    let mut head = [0u8; 2];
+    let n = std::fs::File::open(file)
+        .and_then(|mut f| f.read(&mut head))
+        .map_err(|e| e.to_string())?;
+    if tilegl::replay::script::looks_like_trace(&head[..n]) {
+        let r = tilegl::replay::trace::TraceReader::open(file).map_err(|e| e.to_string())?;
+        Ok((Box::new(r), false))
+    } else {
+        Ok((
+            Box::new(tilegl::replay::script::ScriptReader::open(file)?),
+            true,
+        ))
+    }
+}
+
+/// `tilegl dump FILE -o DIR`: the capture as a call script `DIR/NAME.gl`.
+fn dump(file: &Path, out: &Path) -> ExitCode {
+    let (mut reader, _) = match open_source(file) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("tilegl dump: {}: {e}", file.display());
+            return ExitCode::from(REPLAY_FAILED);
+        }
+    };
+    let name = file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "dump".into());
+    let header = format!(
+        "tilegl call script, dumped from {} by `tilegl dump`.\n\
+         Replay it with `tilegl replay {name}.gl`; call numbers are those of the capture.",
+        file.display()
+    );
+    match tilegl::replay::script::dump(&mut *reader, out, &name, &header) {
+        Ok((path, n)) => {
+            println!("{}", path.display());
+            eprintln!("tilegl dump: {n} calls");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("tilegl dump: {}: {e}", file.display());
+            ExitCode::from(REPLAY_FAILED)
+        }
+    }
+}
+
 fn replay(
     file: &Path,
     frames: Option<Frames>,
@@ -251,13 +294,17 @@ fn replay(
     compare: Option<&Path>,
 ) -> ExitCode {
     use tilegl::replay::player::{FrameSelection, Player, Want};
-    use tilegl::replay::trace::TraceReader;
-    let mut reader = match TraceReader::open(file) {
+    let (mut reader, is_script) = match open_source(file) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("tilegl replay: {}: {e}", file.display());
             return ExitCode::from(REPLAY_FAILED);
         }
+    };
+    let new_player = || {
+        let mut p = Player::new(0);
+        p.auto_window = is_script;
+        p
     };
     if let Some(out) = out {
         if let Err(e) = std::fs::create_dir_all(out) {
@@ -270,8 +317,13 @@ fn replay(
         if frames.is_some() || !calls.is_empty() {
             eprintln!("tilegl replay: --compare renders the pictures of frames.tsv; --frames and --calls are ignored");
         }
-        let report =
-            tilegl::replay::reference::compare_replay(&mut reader, dir, 0, out, &mut progress);
+        let report = tilegl::replay::reference::compare_replay(
+            &mut *reader,
+            &mut new_player(),
+            dir,
+            out,
+            &mut progress,
+        );
         end_progress();
         let report = match report {
             Ok(r) => r,
@@ -320,8 +372,8 @@ fn replay(
         written += 1;
         Ok(())
     };
-    let mut player = Player::new(0);
-    let result = player.play(&mut reader, &want, &mut sink, &mut progress);
+    let mut player = new_player();
+    let result = player.play(&mut *reader, &want, &mut sink, &mut progress);
     end_progress();
     let stats = match result {
         Ok(s) => s,
