@@ -9,7 +9,8 @@
 //! - **Window size**: apitrace writes a fake `glViewport` with the drawable's size right after
 //!   the first make-current. A context is created at that size (it is double-buffered, as the
 //!   window of every shared capture is); a later fake `glViewport` with another size (a new
-//!   drawable) resizes it. Without one, the context gets [`DEFAULT_SIZE`].
+//!   drawable) resizes it. Without one, the context gets [`DEFAULT_SIZE`]; sides are clamped
+//!   to [`MAX_WINDOW`].
 //! - **Snapshots**: `frame-NNNN.png` is the back buffer just before swap number N (from 0);
 //!   `call-NNNNNNNNNN.png` is the current draw buffer right after call N.
 //! - GL calls go through [`super::dispatch`]; calls it does not know, GL errors (by function
@@ -31,6 +32,10 @@ use super::trace::{Call, TraceReader, Value};
 
 /// Framebuffer size of a context made current without a fake `glViewport` after it.
 pub const DEFAULT_SIZE: (i32, i32) = (256, 256);
+
+/// Largest window side accepted from a fake `glViewport` (larger values are clamped): keeps a
+/// damaged capture from allocating gigabytes of framebuffer.
+pub const MAX_WINDOW: i32 = 4096;
 
 /// Anything that yields calls in order.
 pub trait CallSource {
@@ -476,10 +481,11 @@ impl Player {
                 Ok(Some(c)) => c,
                 Ok(None) => break,
                 Err(message) => {
+                    // The call being read: the one after the last call read.
                     return Err(ReplayError {
-                        call: self.stats.last_call,
-                        message: format!("after this call, the input is bad: {message}"),
-                    })
+                        call: Some(self.stats.last_call.map_or(0, |n| n + 1)),
+                        message: format!("cannot be read: {message}"),
+                    });
                 }
             };
             for p in self.play_call(&call, want)? {
