@@ -54,6 +54,7 @@ impl Context {
                 }
                 fb.make_resident(ColorBuffer::Front);
                 shade(&mut fb.tiles);
+                fb.make_resident(ColorBuffer::Back);
             }
         }
         self.scene.reset();

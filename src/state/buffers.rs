@@ -69,6 +69,7 @@ impl Context {
                 self.flush_scene();
                 self.framebuffer.draw = target;
                 self.buffers.draw = mode;
+                self.make_draw_buffer_resident();
             }
             Err(e) => self.record_error(e),
         }
@@ -84,12 +85,21 @@ impl Context {
         }
     }
 
+    /// Keeps the tiles' colour storage on the draw buffer, so that code writing tiles directly
+    /// (not through the scene) writes the buffer drawn to (the back buffer for
+    /// `GL_FRONT_AND_BACK` and `GL_NONE`).
+    fn make_draw_buffer_resident(&mut self) {
+        let b = self.draw_color_buffer();
+        self.framebuffer.make_resident(b);
+    }
+
     /// Re-applies the draw and read buffer settings to a new framebuffer (after a resize).
     pub(crate) fn apply_buffer_selection(&mut self) {
         let double = self.framebuffer.is_double_buffered();
         if let Ok(t) = draw_target(self.buffers.draw, double) {
             self.framebuffer.draw = t;
         }
+        self.make_draw_buffer_resident();
         if let Ok(s) = read_source(self.buffers.read, double) {
             self.framebuffer.read = s;
         }
