@@ -32,20 +32,12 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
     ),
     ("piglit-fog-modes", "client vertex arrays (glDrawArrays)"),
     (
-        "piglit-gl-1.0-spot-light",
-        "point size: glPointSize(3) is state only, points draw 1 pixel wide",
-    ),
-    (
         "piglit-gl-1.2-texture-base-level",
         "client vertex arrays (glDrawArrays)",
     ),
     (
         "piglit-gl-1.4-polygon-offset",
-        "client vertex arrays (glDrawArrays) and polygon offset in rendering",
-    ),
-    (
-        "piglit-linestipple",
-        "line stipple in rendering (glLineStipple is state only)",
+        "client vertex arrays (glDrawArrays)",
     ),
     ("piglit-lodclamp", "client vertex arrays (glDrawArrays)"),
     (

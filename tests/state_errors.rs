@@ -247,7 +247,7 @@ fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
             GL_INVALID_VALUE,
         ),
         (
-            "unimplemented entry point",
+            "accum without an accumulation buffer",
             none,
             |g| g.accum(GL_ACCUM, 0.5),
             GL_INVALID_OPERATION,

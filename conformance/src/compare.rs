@@ -4,7 +4,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use tilegl::enums::*;
-use tilegl::{Context, Gl};
+use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
 
 use crate::mesa::{self, MesaContext, Oracle, OracleError, OracleInfo};
 use crate::tolerance::Tolerance;
@@ -136,7 +136,16 @@ pub fn run_scene(gl: &mut dyn Gl, scene: &Scene) -> Rendered {
 
 /// Renders a scene on a fresh tilegl context.
 pub fn render_tilegl(scene: &Scene) -> Rendered {
-    let mut ctx = Context::new(scene.width, scene.height);
+    // The same buffers as the Mesa side: 24 depth, 8 stencil, 16 accumulation bits.
+    let mut ctx = Context::with_config(ContextConfig {
+        width: scene.width,
+        height: scene.height,
+        framebuffer: FramebufferConfig {
+            accum_bits: 16,
+            ..FramebufferConfig::default()
+        },
+        ..ContextConfig::default()
+    });
     run_scene(&mut ctx, scene)
 }
 

@@ -215,8 +215,8 @@ impl Oracle for MesaContext {
         }
         let lib = library()?;
         // SAFETY: plain constructor call with the documented argument types; a NULL sharelist
-        // is allowed. GL_RGBA is OSMESA_RGBA.
-        let ctx = unsafe { (lib.create_context_ext)(GL_RGBA, 24, 8, 0, std::ptr::null_mut()) };
+        // is allowed. GL_RGBA is OSMESA_RGBA. 16 accumulation bits, as tilegl's side has.
+        let ctx = unsafe { (lib.create_context_ext)(GL_RGBA, 24, 8, 16, std::ptr::null_mut()) };
         if ctx.is_null() {
             return Err(OracleError::CreateContext);
         }

@@ -989,8 +989,14 @@ pub(crate) const fn spread(max_bad_share: f64) -> Tolerance {
 }
 
 /// Every differential scene, in report order: this file's, then the texturing ones.
-pub static SCENES: std::sync::LazyLock<Vec<Scene>> =
-    std::sync::LazyLock::new(|| [BASE_SCENES, crate::scenes_texture::TEXTURE_SCENES].concat());
+pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(|| {
+    [
+        BASE_SCENES,
+        crate::scenes_texture::TEXTURE_SCENES,
+        crate::scenes_raster::RASTER_SCENES,
+    ]
+    .concat()
+});
 
 /// The scene called `name`.
 pub fn find(name: &str) -> Option<&'static Scene> {

@@ -527,6 +527,7 @@ pub enum Query {
     MaxClipPlanes,
     MaxTextureUnits,
     ColorClearValue,
+    AccumClearValue,
     DepthClearValue,
     StencilClearValue,
     DepthFunc,
@@ -640,6 +641,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_MAX_CLIP_PLANES => MaxClipPlanes,
         GL_MAX_TEXTURE_UNITS => MaxTextureUnits,
         GL_COLOR_CLEAR_VALUE => ColorClearValue,
+        GL_ACCUM_CLEAR_VALUE => AccumClearValue,
         GL_DEPTH_CLEAR_VALUE => DepthClearValue,
         GL_STENCIL_CLEAR_VALUE => StencilClearValue,
         GL_DEPTH_FUNC => DepthFunc,
@@ -1505,5 +1507,26 @@ pub fn color_buffer_name(e: GLenum) -> Option<ColorBufferName> {
         GL_FRONT_AND_BACK => FrontAndBack,
         GL_AUX0..=GL_AUX3 => Aux(e - GL_AUX0),
         _ => return Option::None,
+    })
+}
+
+/// `glAccum` operations (section 4.2.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AccumOp {
+    Accum,
+    Load,
+    Return,
+    Mult,
+    Add,
+}
+
+pub fn accum_op(op: GLenum) -> Option<AccumOp> {
+    Some(match op {
+        GL_ACCUM => AccumOp::Accum,
+        GL_LOAD => AccumOp::Load,
+        GL_RETURN => AccumOp::Return,
+        GL_MULT => AccumOp::Mult,
+        GL_ADD => AccumOp::Add,
+        _ => return None,
     })
 }

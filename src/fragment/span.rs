@@ -21,6 +21,8 @@ pub struct Interpolants<'a> {
     /// Attribute planes: attribute/w when `perspective`, else the attribute itself.
     pub attrs: &'a [Plane],
     pub perspective: bool,
+    /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
+    pub coverage: f32,
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
@@ -137,6 +139,9 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
                     color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
                 }
             }
+        }
+        if it.coverage != 1.0 {
+            color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
         }
         let z_here = z;
         // Step the interpolants now, so that every `continue` below moves to the next pixel.

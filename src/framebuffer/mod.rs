@@ -3,6 +3,7 @@
 //!
 //! Coordinates are GL window coordinates: (0, 0) is the lower-left pixel.
 
+pub mod accum;
 pub mod image;
 pub mod pixels;
 
@@ -41,7 +42,7 @@ pub struct FramebufferConfig {
     pub depth_bits: u32,
     /// Stencil bits: 0 or 8.
     pub stencil_bits: u32,
-    /// Accumulation bits per channel (0 or 16); storage arrives with the accumulation issue.
+    /// Accumulation bits per channel (0 or 16, signed).
     pub accum_bits: u32,
     /// Front and back colour buffers (a GLX/EGL window); `false` is one front buffer (OSMesa).
     pub double_buffer: bool,
@@ -94,6 +95,10 @@ pub struct Framebuffer {
     pub(crate) draw: DrawTarget,
     /// The buffer that reads (`color_at`, `glReadPixels`, `glCopyTexImage`) see.
     pub(crate) read: ColorBuffer,
+    /// The accumulation buffer (empty without accumulation bits): RGBA as signed 16-bit
+    /// fixed point over [-1, 1], row-major from the bottom row. Not tiled: only `glAccum` and
+    /// its clear touch it, after the scene is flushed.
+    pub accum: Vec<[i16; 4]>,
 }
 
 impl Framebuffer {
@@ -125,6 +130,11 @@ impl Framebuffer {
         } else {
             (Vec::new(), ColorBuffer::Front)
         };
+        let accum = if config.accum_bits > 0 {
+            vec![[0; 4]; width as usize * height as usize]
+        } else {
+            Vec::new()
+        };
         Framebuffer {
             width,
             height,
@@ -136,6 +146,7 @@ impl Framebuffer {
             parked,
             draw: DrawTarget::One(initial),
             read: initial,
+            accum,
         }
     }
 
@@ -205,6 +216,11 @@ impl Framebuffer {
     /// the framebuffer.
     pub fn color_at(&self, x: i32, y: i32) -> Option<[u8; 4]> {
         self.color_in(self.read, x, y)
+    }
+
+    /// The colour of window pixel (x, y), for writing.
+    pub fn color_mut(&mut self, x: i32, y: i32) -> Option<&mut [u8; 4]> {
+        self.locate(x, y).map(|(t, i)| &mut self.tiles[t].color[i])
     }
 
     /// Depth of window pixel (x, y) as stored.

@@ -7,8 +7,26 @@ use crate::api::convert::PrimitiveMode;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Primitive {
     Point(usize),
-    Line { v: [usize; 2], provoking: usize },
-    Triangle { v: [usize; 3], provoking: usize },
+    Line {
+        v: [usize; 2],
+        provoking: usize,
+    },
+    /// `edges[k]`: the edge from `v[k]` to `v[(k + 1) % 3]` is an edge of the polygon the
+    /// triangle comes from (not a diagonal added by splitting a quad or polygon).
+    Triangle {
+        v: [usize; 3],
+        provoking: usize,
+        edges: [bool; 3],
+    },
+}
+
+/// Whether the vertex edge flags apply to `mode` (section 2.6.2: independent triangles, quads
+/// and polygons; strips and fans draw every edge).
+pub fn uses_edge_flags(mode: PrimitiveMode) -> bool {
+    matches!(
+        mode,
+        PrimitiveMode::Triangles | PrimitiveMode::Quads | PrimitiveMode::Polygon
+    )
 }
 
 /// Assembles `count` vertices of `mode`. Incomplete trailing primitives are ignored (section
@@ -50,6 +68,7 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v: [i, i + 1, i + 2],
                     provoking: i + 2,
+                    edges: [true; 3],
                 });
             }
         }
@@ -63,6 +82,7 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v,
                     provoking: i + 2,
+                    edges: [true; 3],
                 });
             }
         }
@@ -71,6 +91,7 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v: [0, i, i + 1],
                     provoking: i + 1,
+                    edges: [true; 3],
                 });
             }
         }
@@ -79,10 +100,12 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v: [q, q + 1, q + 2],
                     provoking: q + 3,
+                    edges: [true, true, false],
                 });
                 out.push(Triangle {
                     v: [q, q + 2, q + 3],
                     provoking: q + 3,
+                    edges: [false, true, true],
                 });
             }
         }
@@ -93,10 +116,12 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v: [i, i + 1, i + 3],
                     provoking: i + 3,
+                    edges: [true, true, false],
                 });
                 out.push(Triangle {
                     v: [i, i + 3, i + 2],
                     provoking: i + 3,
+                    edges: [false, true, true],
                 });
                 i += 2;
             }
@@ -106,6 +131,7 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
                 out.push(Triangle {
                     v: [0, i, i + 1],
                     provoking: 0,
+                    edges: [i == 1, true, i + 2 == n],
                 });
             }
         }
@@ -145,7 +171,8 @@ mod tests {
             assemble(QuadStrip, 4)[0],
             Primitive::Triangle {
                 v: [0, 1, 3],
-                provoking: 3
+                provoking: 3,
+                edges: [true, true, false]
             }
         );
         assert_eq!(
@@ -158,5 +185,46 @@ mod tests {
         assert!(assemble(Polygon, 5)
             .iter()
             .all(|p| matches!(p, Primitive::Triangle { provoking: 0, .. })));
+    }
+
+    #[test]
+    fn every_polygon_edge_appears_once_and_no_diagonal() {
+        use std::collections::BTreeSet;
+        use PrimitiveMode::*;
+        // The boundary edges of the triangles are exactly the polygon's edges, each once.
+        let boundary = |m, n| {
+            let mut edges = Vec::new();
+            for p in assemble(m, n) {
+                if let Primitive::Triangle { v, edges: e, .. } = p {
+                    for k in 0..3 {
+                        if e[k] {
+                            let (a, b) = (v[k], v[(k + 1) % 3]);
+                            edges.push((a.min(b), a.max(b)));
+                        }
+                    }
+                }
+            }
+            edges
+        };
+        let polygon: BTreeSet<_> = boundary(Polygon, 6).into_iter().collect();
+        assert_eq!(boundary(Polygon, 6).len(), 6);
+        assert_eq!(
+            polygon,
+            [(0, 1), (1, 2), (2, 3), (3, 4), (4, 5), (0, 5)]
+                .into_iter()
+                .collect()
+        );
+        let quads: BTreeSet<_> = boundary(Quads, 4).into_iter().collect();
+        assert_eq!(
+            quads,
+            [(0, 1), (1, 2), (2, 3), (0, 3)].into_iter().collect()
+        );
+        // A quad strip's quad (0, 1, 3, 2) has edges 0-1, 1-3, 3-2, 2-0.
+        let strip: BTreeSet<_> = boundary(QuadStrip, 4).into_iter().collect();
+        assert_eq!(
+            strip,
+            [(0, 1), (1, 3), (2, 3), (0, 2)].into_iter().collect()
+        );
+        assert_eq!(boundary(Polygon, 3).len(), 3);
     }
 }

@@ -17,6 +17,9 @@ pub struct ClipVertex {
     /// Eye-space position (needed only with user clip planes).
     pub eye: DVec4,
     pub attrs: [f32; MAX_ATTRS],
+    /// Edge flag: the polygon edge starting here is a boundary edge (drawn in line and point
+    /// polygon modes).
+    pub edge: bool,
 }
 
 impl ClipVertex {
@@ -34,6 +37,7 @@ impl ClipVertex {
             pos: self.pos + (o.pos - self.pos) * t,
             eye: self.eye + (o.eye - self.eye) * t,
             attrs,
+            edge: self.edge,
         }
     }
 }
@@ -123,6 +127,9 @@ pub fn clip_polygon(
                     let t = di / (di - d_o);
                     let mut v = inside.lerp(outside, t, n_attrs);
                     snap(&mut v, i);
+                    // Leaving: the new edge runs along the clip plane and is not a boundary
+                    // edge. Entering: the rest of the original edge a-b starts here.
+                    v.edge = da < 0.0 && a.edge;
                     scratch.push(v);
                 }
             }

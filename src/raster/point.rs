@@ -1,50 +1,170 @@
-//! Points of size 1 (section 3.3): the fragment whose pixel contains the point's window
-//! position, i.e. (floor(x), floor(y)). Wider and smooth points arrive with the
-//! fragment-operations issue.
+//! Points (section 3.3). The size is the derived size of GL 1.4's point parameters (distance
+//! attenuation, then clamped to `GL_POINT_SIZE_MIN`/`MAX`). Aliased points cover the square
+//! of side `round(size)` whose pixel centres lie in `[x - w/2, x + w/2)` (for width 1: the
+//! pixel containing the point); antialiased points cover a disc of diameter `size`, each pixel
+//! taking the disc's share of its area as coverage (section 3.11).
+//!
+//! The fade threshold only applies with multisampling (section 3.3.1), which tilegl does not
+//! have, so it is stored and never used.
 
-use super::scene::{Command, PixelCommand, Scene};
+use glam::DVec4;
+
+use super::scene::{Command, RectCommand, Scene};
 use super::setup::{Plane, Rect, SUBPIXEL};
 use crate::primitive::viewport::WindowVertex;
+use crate::state::snapshot::RasterDraw;
+use crate::state::tables::limits;
 use crate::state::DrawState;
 
-pub fn bin_point(ds: &DrawState, state: u32, v: &WindowVertex, attrs: &[f32], scene: &mut Scene) {
-    let x = v.xy[0].div_euclid(SUBPIXEL);
-    let y = v.xy[1].div_euclid(SUBPIXEL);
-    emit_pixel(ds, state, x, y, v.z, attrs, scene);
+/// The derived point size for a vertex at eye position `eye` (section 3.3.1): `size *
+/// sqrt(1 / (a + b d + c d^2))`, clamped to the point-size range. Non-finite or non-positive
+/// attenuation leaves the largest size.
+///
+/// `d` is the eye distance approximated by `|z_eye|`, as for fog: the spec asks for the
+/// Euclidean distance, Mesa (the reference captures are checked against) uses `|z_eye|`, and
+/// the two agree on the view axis. The differential scene `point_attenuation` shows the
+/// difference disappears with this choice.
+pub fn derived_size(r: &RasterDraw, eye: DVec4) -> f64 {
+    let mut size = r.point_size as f64;
+    if let Some([a, b, c]) = r.point_attenuation {
+        let p = if eye.w != 0.0 && eye.w != 1.0 {
+            eye.truncate() / eye.w
+        } else {
+            eye.truncate()
+        };
+        let d = p.z.abs();
+        let k = a as f64 + b as f64 * d + c as f64 * d * d;
+        let scale = (1.0 / k).sqrt();
+        size = if scale.is_finite() {
+            size * scale
+        } else {
+            f64::MAX
+        };
+    }
+    let [lo, hi] = r.point_size_range.map(|v| v as f64);
+    // Written out (not `clamp`) so that min > max cannot panic: the maximum wins.
+    size.max(lo).min(hi)
 }
 
-/// Records one fragment with constant attributes, if it lies in the draw rectangle.
-pub(crate) fn emit_pixel(
+/// Width in pixels of an aliased point of derived size `size`: rounded to the nearest integer
+/// (halves down, as Mesa does; the spec leaves ties open), at least 1, clamped to
+/// `GL_ALIASED_POINT_SIZE_RANGE`.
+pub fn aliased_width(size: f64) -> i64 {
+    let [lo, hi] = limits::POINT_SIZE_RANGE;
+    let w = (size - 0.5).ceil();
+    let w = if w.is_nan() { 1.0 } else { w };
+    w.max(lo as f64).min(hi as f64) as i64
+}
+
+/// Bins one point of derived size `size`; `z_offset` is a polygon offset (points of polygons
+/// drawn in point mode).
+pub fn bin_point(
     ds: &DrawState,
     state: u32,
-    x: i64,
-    y: i64,
-    z: f64,
+    v: &WindowVertex,
+    size: f64,
+    z_offset: f64,
     attrs: &[f32],
     scene: &mut Scene,
 ) {
-    let r = &ds.draw_rect;
-    if x < r.x0 as i64 || x >= r.x1 as i64 || y < r.y0 as i64 || y >= r.y1 as i64 {
+    let s = SUBPIXEL as f64;
+    let (x, y) = (v.xy[0] as f64 / s, v.xy[1] as f64 / s);
+    let z = v.z + z_offset;
+    if !ds.raster.point_smooth {
+        let w = aliased_width(size);
+        let half = (w - 1) as f64 / 2.0;
+        let x0 = (x - half).floor() as i64;
+        let y0 = (y - half).floor() as i64;
+        emit_rect(ds, state, [x0, y0, x0 + w, y0 + w], z, attrs, 1.0, scene);
         return;
     }
-    let (x, y) = (x as i32, y as i32);
+    // Antialiased: a disc of diameter `size` (clamped to the smooth range, which is the
+    // aliased one here).
+    let [lo, hi] = limits::POINT_SIZE_RANGE;
+    let radius = size.max(lo as f64).min(hi as f64) / 2.0;
+    let (px0, px1) = ((x - radius).floor() as i64, (x + radius).floor() as i64);
+    let (py0, py1) = ((y - radius).floor() as i64, (y + radius).floor() as i64);
+    let offset = add_constant_planes(attrs, scene);
+    for py in py0..=py1 {
+        for px in px0..=px1 {
+            let cov = disc_coverage(x, y, radius, px, py);
+            if cov > 0.0 {
+                bin_rect(ds, state, [px, py, px + 1, py + 1], z, offset, cov, scene);
+            }
+        }
+    }
+}
+
+/// Coverage of pixel `(px, py)` by the disc at `(cx, cy)` of radius `r`: the box-filtered
+/// distance of the pixel centre to the circle (an analytic approximation of the covered
+/// area, exact to within a few percent for radii above one pixel).
+pub fn disc_coverage(cx: f64, cy: f64, r: f64, px: i64, py: i64) -> f32 {
+    let (dx, dy) = (px as f64 + 0.5 - cx, py as f64 + 0.5 - cy);
+    let dist = (dx * dx + dy * dy).sqrt();
+    // A disc narrower than a pixel covers at most its own area.
+    let full = (r * r * std::f64::consts::PI).min(1.0);
+    ((r + 0.5 - dist).clamp(0.0, 1.0) * full) as f32
+}
+
+/// Stores `attrs` as constant planes; returns their offset.
+pub(crate) fn add_constant_planes(attrs: &[f32], scene: &mut Scene) -> u32 {
     let offset = scene.planes.len() as u32;
     scene
         .planes
         .extend(attrs.iter().map(|&a| Plane::constant(a as f64)));
+    offset
+}
+
+/// Records the pixels `[x0, x1) x [y0, y1)` (window coordinates, any size) with constant
+/// attributes, limited to the draw rectangle.
+pub(crate) fn emit_rect(
+    ds: &DrawState,
+    state: u32,
+    r: [i64; 4],
+    z: f64,
+    attrs: &[f32],
+    coverage: f32,
+    scene: &mut Scene,
+) {
+    if clip_to_draw_rect(ds, r).is_none() {
+        return;
+    }
+    let offset = add_constant_planes(attrs, scene);
+    bin_rect(ds, state, r, z, offset, coverage, scene);
+}
+
+fn clip_to_draw_rect(ds: &DrawState, r: [i64; 4]) -> Option<Rect> {
+    let d = &ds.draw_rect;
+    let rect = Rect {
+        x0: r[0].max(d.x0 as i64) as i32,
+        y0: r[1].max(d.y0 as i64) as i32,
+        x1: r[2].min(d.x1 as i64) as i32,
+        y1: r[3].min(d.y1 as i64) as i32,
+    };
+    (!rect.is_empty()).then_some(rect)
+}
+
+/// Records a rectangle whose attribute planes are already stored at `attrs`.
+pub(crate) fn bin_rect(
+    ds: &DrawState,
+    state: u32,
+    r: [i64; 4],
+    z: f64,
+    attrs: u32,
+    coverage: f32,
+    scene: &mut Scene,
+) {
+    let Some(rect) = clip_to_draw_rect(ds, r) else {
+        return;
+    };
     scene.bin(
-        Command::Pixel(PixelCommand {
+        Command::Rect(RectCommand {
             state,
-            x,
-            y,
+            rect,
             z,
-            attrs: offset,
+            attrs,
+            coverage,
         }),
-        Rect {
-            x0: x,
-            y0: y,
-            x1: x + 1,
-            y1: y + 1,
-        },
+        rect,
     );
 }

@@ -32,14 +32,18 @@ pub struct TriangleCommand {
     pub perspective: bool,
 }
 
-/// One fragment of a point or line, with its attributes as constant planes.
+/// A rectangle of fragments with constant attributes: a point, a column of a line, or one
+/// pixel of an antialiased point or line with its coverage.
 #[derive(Clone, Copy, Debug)]
-pub struct PixelCommand {
+pub struct RectCommand {
     pub state: u32,
-    pub x: i32,
-    pub y: i32,
+    /// Pixels covered (already inside the draw rectangle).
+    pub rect: Rect,
     pub z: f64,
+    /// Offset of the constant attribute planes in `Scene::planes`.
     pub attrs: u32,
+    /// Coverage multiplied into the fragment alpha (1 when not antialiased; section 3.11).
+    pub coverage: f32,
 }
 
 /// Work recorded for the tiles.
@@ -47,7 +51,7 @@ pub struct PixelCommand {
 pub enum Command {
     Clear(ClearCommand),
     Triangle(TriangleCommand),
-    Pixel(PixelCommand),
+    Rect(RectCommand),
 }
 
 /// Commands recorded since the last flush, per-tile bins, and what they reference.

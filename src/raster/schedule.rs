@@ -78,16 +78,24 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 let planes = &scene.planes[t.attrs as usize..t.attrs as usize + ds.attr_count];
                 raster_triangle(t, ds, planes, tile);
             }
-            Command::Pixel(p) => {
-                let ds = &scene.states[p.state as usize];
-                let attrs = &scene.planes[p.attrs as usize..p.attrs as usize + ds.attr_count];
+            Command::Rect(r) => {
+                let ds = &scene.states[r.state as usize];
+                let attrs = &scene.planes[r.attrs as usize..r.attrs as usize + ds.attr_count];
                 let it = Interpolants {
-                    z: Plane::constant(p.z),
+                    z: Plane::constant(r.z),
                     inv_w: Plane::constant(1.0),
                     attrs,
                     perspective: false,
+                    coverage: r.coverage,
                 };
-                (ds.span)(ds, tile, p.y, p.x, p.x + 1, &it);
+                let t = crate::framebuffer::TILE as i32;
+                let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));
+                let (y0, y1) = (r.rect.y0.max(tile.y0), r.rect.y1.min(tile.y0 + t));
+                if x0 < x1 {
+                    for y in y0..y1 {
+                        (ds.span)(ds, tile, y, x0, x1, &it);
+                    }
+                }
             }
         }
     }

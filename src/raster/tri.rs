@@ -21,6 +21,7 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
         inv_w: t.inv_w,
         attrs,
         perspective: t.perspective,
+        coverage: 1.0,
     };
     let half = SUBPIXEL / 2;
     'rows: for y in y_lo..y_hi {
@@ -42,17 +43,61 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
             }
         }
         if lo < hi {
-            (ds.span)(ds, tile, y, lo as i32, hi as i32, &it);
+            match &ds.raster.polygon_stipple {
+                None => (ds.span)(ds, tile, y, lo as i32, hi as i32, &it),
+                Some(pattern) => stippled_row(ds, tile, y, lo as i32, hi as i32, &it, pattern),
+            }
+        }
+    }
+}
+
+/// Polygon stipple (section 3.5.6): only the runs of pixels whose stipple bit is set.
+fn stippled_row(
+    ds: &DrawState,
+    tile: &mut Tile,
+    y: i32,
+    lo: i32,
+    hi: i32,
+    it: &Interpolants,
+    pattern: &[u32; 32],
+) {
+    let row = pattern[y.rem_euclid(32) as usize];
+    let bit = |x: i32| row & (1 << (31 - x.rem_euclid(32))) != 0;
+    let mut x = lo;
+    while x < hi {
+        while x < hi && !bit(x) {
+            x += 1;
+        }
+        let start = x;
+        while x < hi && bit(x) {
+            x += 1;
+        }
+        if start < x {
+            (ds.span)(ds, tile, y, start, x, it);
         }
     }
 }
 
 use super::scene::{Command, Scene};
 use super::setup::{centre_range, Edge, Rect};
+use crate::api::convert::PolygonMode;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};
 
-/// Sets up one triangle (any winding; facing was decided before) and bins it.
+/// The window-z plane of a triangle (for polygon offset), or `None` when it has no area.
+pub fn depth_plane(v: [&WindowVertex; 3]) -> Option<Plane> {
+    let area2 = (v[1].xy[0] - v[0].xy[0]) * (v[2].xy[1] - v[0].xy[1])
+        - (v[2].xy[0] - v[0].xy[0]) * (v[1].xy[1] - v[0].xy[1]);
+    if area2 == 0 {
+        return None;
+    }
+    let s = SUBPIXEL as f64;
+    let p = v.map(|w| [w.xy[0] as f64 / s, w.xy[1] as f64 / s]);
+    Some(Plane::through(p, v.map(|w| w.z), (s * s) / area2 as f64))
+}
+
+/// Sets up one triangle (any winding; facing was decided before) and bins it, its depth moved
+/// by the polygon offset when `GL_POLYGON_OFFSET_FILL` is on (section 3.5.5).
 pub fn bin_triangle(
     ds: &DrawState,
     state: u32,
@@ -92,7 +137,10 @@ pub fn bin_triangle(
     let s = SUBPIXEL as f64;
     let p = v.map(|w| [w.xy[0] as f64 / s, w.xy[1] as f64 / s]);
     let inv_det = (s * s) / area2.unsigned_abs() as f64;
-    let z = Plane::through(p, v.map(|w| w.z), inv_det);
+    let mut z = Plane::through(p, v.map(|w| w.z), inv_det);
+    if let Some(o) = &ds.raster.offset {
+        z.c += o.for_plane(PolygonMode::Fill, z.a, z.b, ds.depth_max);
+    }
     let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
     let n = ds.attr_count.min(MAX_ATTRS);
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat

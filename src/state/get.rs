@@ -130,6 +130,9 @@ impl Context {
             Query::ColorClearValue => {
                 Normalized(self.clear_values.color.iter().map(|&c| c as f64).collect())
             }
+            Query::AccumClearValue => {
+                Normalized(self.clear_values.accum.iter().map(|&c| c as f64).collect())
+            }
             Query::DepthClearValue => Normalized(vec![self.clear_values.depth]),
             Query::StencilClearValue => int1(self.clear_values.stencil as i64),
             Query::DepthFunc => Enum(ops.depth_func.to_gl()),

@@ -478,6 +478,9 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if mask.accum {
+            self.clear_accum_buffer();
+        }
         self.record_clear(mask);
     }
 
@@ -556,6 +559,8 @@ impl Gl for Context {
     texture_entry_points!();
 
     gl_forward_all!(
+        accum,
+        clear_accum,
         get_string,
         flush,
         finish,

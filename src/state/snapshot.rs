@@ -7,7 +7,7 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::{Face, ShadeModel, Winding};
+use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
 use crate::api::convert::{FogMode, TexGenMode};
 use crate::fragment::cache::select_span;
 use crate::fragment::key::{FragmentKey, Uniforms};
@@ -92,6 +92,61 @@ impl FogDraw {
     }
 }
 
+/// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RasterDraw {
+    /// `glPointSize`, before attenuation and clamping.
+    pub point_size: f32,
+    pub point_smooth: bool,
+    /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
+    pub point_attenuation: Option<[f32; 3]>,
+    /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.
+    pub point_size_range: [f32; 2],
+    pub line_width: f32,
+    pub line_smooth: bool,
+    /// Repeat factor and pattern, when stippling is enabled.
+    pub line_stipple: Option<(u32, u16)>,
+    /// Front, back.
+    pub polygon_mode: [PolygonMode; 2],
+    /// Depth offset (factor, units in resolvable steps) and where it applies (fill, line,
+    /// point); `None` when no mode enables it.
+    pub offset: Option<PolygonOffsetDraw>,
+    /// Rows bottom first; bit `1 << (31 - x % 32)` of row `y % 32`. `None` when disabled.
+    pub polygon_stipple: Option<[u32; 32]>,
+}
+
+/// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
+/// resolvable depth difference (one step of the fixed-point depth buffer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonOffsetDraw {
+    pub factor: f64,
+    pub units: f64,
+    /// Enabled for fill, line, point polygon modes.
+    pub enabled: [bool; 3],
+}
+
+impl PolygonOffsetDraw {
+    /// The window-z offset for a polygon whose depth plane has slopes `dzdx`, `dzdy`
+    /// (section 3.5.5: m is the maximum of their magnitudes), when `mode` is enabled.
+    pub fn for_plane(&self, mode: PolygonMode, dzdx: f64, dzdy: f64, depth_max: u32) -> f64 {
+        let on = match mode {
+            PolygonMode::Fill => self.enabled[0],
+            PolygonMode::Line => self.enabled[1],
+            PolygonMode::Point => self.enabled[2],
+        };
+        if !on {
+            return 0.0;
+        }
+        let m = dzdx.abs().max(dzdy.abs());
+        let o = self.factor * m + self.units / depth_max.max(1) as f64;
+        if o.is_finite() {
+            o
+        } else {
+            0.0
+        }
+    }
+}
+
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]
 pub struct DrawState {
@@ -124,6 +179,7 @@ pub struct DrawState {
     pub normal_transform: NormalTransform,
     pub normalize: bool,
     pub depth_max: u32,
+    pub raster: RasterDraw,
     pub key: FragmentKey,
     pub uniforms: Uniforms,
     /// The fragment function chosen for `key`.
@@ -248,11 +304,39 @@ impl Context {
             ),
             normalize: self.transform.normalize,
             depth_max: self.framebuffer.depth_max(),
+            raster: self.raster_draw(),
             key,
             uniforms,
             span: select_span(&key, self.force_general_path),
         });
         self.draw_state = Some(ds.clone());
         ds
+    }
+}
+
+impl Context {
+    fn raster_draw(&self) -> RasterDraw {
+        let r = &self.raster;
+        let offset_on = r.offset_enabled.iter().any(|&e| e);
+        RasterDraw {
+            point_size: r.point_size,
+            point_smooth: r.point_smooth,
+            point_attenuation: (r.point_attenuation != [1.0, 0.0, 0.0])
+                .then_some(r.point_attenuation),
+            point_size_range: [r.point_size_min, r.point_size_max],
+            line_width: r.line_width,
+            line_smooth: r.line_smooth,
+            line_stipple: r.line_stipple.then_some((
+                r.line_stipple_factor.clamp(1, 256) as u32,
+                r.line_stipple_pattern,
+            )),
+            polygon_mode: r.polygon_mode,
+            offset: offset_on.then_some(PolygonOffsetDraw {
+                factor: r.offset_factor as f64,
+                units: r.offset_units as f64,
+                enabled: r.offset_enabled,
+            }),
+            polygon_stipple: r.polygon_stipple.then_some(r.polygon_stipple_pattern),
+        }
     }
 }

@@ -206,6 +206,8 @@ pub struct ClearValues {
     pub color: [f32; 4],
     pub depth: f64,
     pub stencil: i32,
+    /// `glClearAccum`, clamped to [-1, 1].
+    pub accum: [f32; 4],
 }
 
 impl Default for ClearValues {
@@ -214,6 +216,7 @@ impl Default for ClearValues {
             color: [0.0; 4],
             depth: 1.0,
             stencil: 0,
+            accum: [0.0; 4],
         }
     }
 }

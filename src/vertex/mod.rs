@@ -6,11 +6,12 @@ pub mod lighting;
 pub mod texgen;
 pub mod transform;
 
-use crate::api::convert::PrimitiveMode;
-use crate::primitive::assemble::{assemble, Primitive};
+use crate::api::convert::{PolygonMode, PrimitiveMode};
+use crate::primitive::assemble::{self, assemble, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
+use crate::primitive::viewport::WindowVertex;
 use crate::raster::{line, point, tri};
 use crate::state::snapshot::{attr, MAX_ATTRS};
 use crate::state::{Context, DrawState};
@@ -59,6 +60,12 @@ impl Context {
         let mut scratch = Vec::with_capacity(16);
         let mut win = Vec::with_capacity(16);
         let mut xy = Vec::with_capacity(16);
+        // Line stipple: the counter restarts with each independent segment (GL_LINES) and
+        // runs on along a strip or loop (section 3.4.2).
+        let mut stipple_counter = 0u32;
+        let independent_lines = mode == PrimitiveMode::Lines;
+        let filled = ds.raster.polygon_mode == [PolygonMode::Fill; 2];
+        let edge_flags = assemble::uses_edge_flags(mode);
         for prim in assemble(mode, clip.len()) {
             if self.scene.is_full() {
                 self.flush_scene();
@@ -68,7 +75,16 @@ impl Context {
                 Primitive::Point(i) => {
                     if point_visible(&clip[i], user) {
                         let w = to_window(ds, &clip[i]);
-                        point::bin_point(ds, state, &w, &clip[i].attrs[..n_attrs], &mut self.scene);
+                        let size = point::derived_size(&ds.raster, clip[i].eye);
+                        point::bin_point(
+                            ds,
+                            state,
+                            &w,
+                            size,
+                            0.0,
+                            &clip[i].attrs[..n_attrs],
+                            &mut self.scene,
+                        );
                     }
                 }
                 Primitive::Line { v, provoking } => {
@@ -76,6 +92,9 @@ impl Context {
                     if ds.flat {
                         copy_provoking_colors(ds, &mut a, &clip[provoking]);
                         copy_provoking_colors(ds, &mut b, &clip[provoking]);
+                    }
+                    if independent_lines {
+                        stipple_counter = 0;
                     }
                     if let Some((a, b)) = clip_line(&a, &b, user, clip_attrs) {
                         let wa = to_window(ds, &a);
@@ -85,14 +104,21 @@ impl Context {
                             state,
                             [&wa, &wb],
                             [&a.attrs[..n_attrs], &b.attrs[..n_attrs]],
+                            0.0,
+                            &mut stipple_counter,
                             &mut self.scene,
                         );
                     }
                 }
-                Primitive::Triangle { v, provoking } => {
+                Primitive::Triangle {
+                    v,
+                    provoking,
+                    edges,
+                } => {
                     let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
-                    if !ds.two_sided && tri.iter().all(|c| point_visible(c, user)) {
-                        // Entirely inside every clip plane (the common case): no copies.
+                    if filled && !ds.two_sided && tri.iter().all(|c| point_visible(c, user)) {
+                        // Filled and entirely inside every clip plane (the common case): no
+                        // copies.
                         let w = tri.map(|c| to_window(ds, c));
                         let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
@@ -108,6 +134,10 @@ impl Context {
                     }
                     poly.clear();
                     poly.extend(tri.iter().map(|&c| *c));
+                    for (k, p) in poly.iter_mut().enumerate() {
+                        // Diagonals of split quads and polygons are never boundary edges.
+                        p.edge = edges[k] && (p.edge || !edge_flags);
+                    }
                     if ds.flat {
                         for p in poly.iter_mut() {
                             copy_provoking_colors(ds, p, &clip[provoking]);
@@ -133,6 +163,11 @@ impl Context {
                             use_back_colors(&mut p.attrs);
                         }
                     }
+                    let polygon_mode = ds.raster.polygon_mode[usize::from(!front)];
+                    if polygon_mode != PolygonMode::Fill {
+                        self.draw_polygon_outline(ds, state, polygon_mode, &poly, &win);
+                        continue;
+                    }
                     for k in 1..poly.len() - 1 {
                         tri::bin_triangle(
                             ds,
@@ -146,6 +181,60 @@ impl Context {
                             &mut self.scene,
                         );
                     }
+                }
+            }
+        }
+    }
+
+    /// A polygon in `GL_POINT` or `GL_LINE` mode (section 3.5.4): its boundary vertices as
+    /// points, or its boundary edges as lines, with the polygon's depth offset when the mode's
+    /// offset is enabled.
+    fn draw_polygon_outline(
+        &mut self,
+        ds: &Arc<DrawState>,
+        state: u32,
+        mode: PolygonMode,
+        poly: &[ClipVertex],
+        win: &[WindowVertex],
+    ) {
+        let n_attrs = ds.attr_count;
+        let z_offset = match (
+            &ds.raster.offset,
+            tri::depth_plane([&win[0], &win[1], &win[2]]),
+        ) {
+            (Some(o), Some(z)) => o.for_plane(mode, z.a, z.b, ds.depth_max),
+            _ => 0.0,
+        };
+        let n = poly.len();
+        for k in 0..n {
+            if !poly[k].edge {
+                continue;
+            }
+            match mode {
+                PolygonMode::Point => {
+                    let size = point::derived_size(&ds.raster, poly[k].eye);
+                    point::bin_point(
+                        ds,
+                        state,
+                        &win[k],
+                        size,
+                        z_offset,
+                        &poly[k].attrs[..n_attrs],
+                        &mut self.scene,
+                    );
+                }
+                _ => {
+                    let j = (k + 1) % n;
+                    let mut stipple_counter = 0;
+                    line::bin_line(
+                        ds,
+                        state,
+                        [&win[k], &win[j]],
+                        [&poly[k].attrs[..n_attrs], &poly[j].attrs[..n_attrs]],
+                        z_offset,
+                        &mut stipple_counter,
+                        &mut self.scene,
+                    );
                 }
             }
         }

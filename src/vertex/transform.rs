@@ -13,6 +13,7 @@ use crate::state::DrawState;
 pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
     let pos = (ds.mvp * v.position).as_dvec4();
     let needs_eye = !ds.clip_planes.is_empty()
+        || ds.raster.point_attenuation.is_some()
         || ds.fog.is_some_and(|f| !f.coord_from_vertex)
         || ds
             .units
@@ -55,5 +56,10 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
             (eye.z as f32).abs()
         };
     }
-    ClipVertex { pos, eye, attrs }
+    ClipVertex {
+        pos,
+        eye,
+        attrs,
+        edge: v.edge_flag,
+    }
 }

@@ -1,0 +1,410 @@
+//! Differential scenes for the rasterization controls: point size and parameters, wide and
+//! stippled lines, antialiased points and lines, polygon modes with edge flags, polygon offset
+//! and polygon stipple (the fragment-operations issue).
+
+use crate::compare::Scene;
+use crate::scenes::{clear, pal, pixel_space, scene, scene_with, spread};
+use tilegl::enums::*;
+use tilegl::Gl;
+
+/// Rasterization-control scenes, in report order.
+pub const RASTER_SCENES: &[Scene] = &[
+    scene("wide_points", wide_points),
+    scene("point_attenuation", point_attenuation),
+    scene("wide_lines", wide_lines),
+    // Mesa stipples by splitting each segment into on/off sub-segments (counting ceil(length)
+    // per segment) instead of counting fragments; llvmpipe vs softpipe: 0.757 % and 2.856 % of
+    // pixels off by more than 8 (tilegl vs llvmpipe: 0.098 %, 0.146 %).
+    scene_with("line_stipple", line_stipple, spread(0.00757)),
+    scene_with("line_stipple_wide", line_stipple_wide, spread(0.02856)),
+    scene("polygon_mode_line", polygon_mode_line),
+    scene("polygon_mode_point", polygon_mode_point),
+    scene("edge_flags", edge_flags),
+    scene("polygon_offset_fill", polygon_offset_fill),
+    scene("polygon_offset_line", polygon_offset_line),
+    scene("polygon_stipple", polygon_stipple),
+    // Mesa 22 (llvmpipe and softpipe alike) draws GL_POINT_SMOOTH points as aliased discs
+    // without coverage; tilegl applies the covered area (section 3.11). The pictures can only
+    // differ on the discs' rims: about pi * size pixels per point, 3 * pi * (1.5 + 3 + 4.5 + 7
+    // + 10) = 245 pixels = 6.0 % of the picture.
+    scene_with("smooth_points", smooth_points, spread(0.060)),
+    scene("smooth_lines", smooth_lines),
+    scene("accum_motion_blur", accum_motion_blur),
+    scene("accum_ops", accum_ops),
+];
+
+/// Points of sizes 1..=8 at fractional positions (no rounding ties).
+fn wide_points(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    for (k, size) in [1.0f32, 2.0, 3.0, 4.0, 5.0, 6.0, 7.5, 8.0]
+        .iter()
+        .enumerate()
+    {
+        gl.point_size(*size);
+        gl.begin(GL_POINTS);
+        for j in 0..3 {
+            pal(gl, k + j);
+            gl.vertex_2f(
+                5.3 + 7.6 * k as f32,
+                8.4 + 18.2 * j as f32 + 0.17 * k as f32,
+            );
+        }
+        gl.end();
+    }
+}
+
+/// GL 1.4 point parameters: size attenuated with eye distance, clamped to min/max.
+fn point_attenuation(gl: &mut dyn Gl) {
+    clear(gl);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 20.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.point_size(12.0);
+    gl.point_parameterfv(GL_POINT_DISTANCE_ATTENUATION, &[0.0, 0.5, 0.02]);
+    gl.point_parameterf(GL_POINT_SIZE_MIN, 2.0);
+    gl.point_parameterf(GL_POINT_SIZE_MAX, 9.0);
+    gl.begin(GL_POINTS);
+    for k in 0..12 {
+        pal(gl, k);
+        let z = -1.3 - 1.4 * k as f32;
+        // Points near the view axis: |z| and the full distance stay close.
+        let x = (-0.5 + 0.09 * k as f32) * -z * 0.9;
+        let y = (0.35 - 0.07 * k as f32) * -z * 0.9;
+        gl.vertex_3f(x + 0.013, y + 0.021, z);
+    }
+    gl.end();
+}
+
+/// Lines of widths 2..5 over many slopes.
+fn wide_lines(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    for (k, w) in [2.0f32, 3.0, 4.0, 5.0].iter().enumerate() {
+        gl.line_width(*w);
+        gl.begin(GL_LINES);
+        for j in 0..4 {
+            let a = (k * 4 + j) as f32 * std::f32::consts::PI / 8.0 + 0.21;
+            let (cx, cy) = (16.3 + 31.0 * (k % 2) as f32, 16.2 + 31.0 * (k / 2) as f32);
+            pal(gl, k + j);
+            gl.vertex_2f(cx + 2.1 * a.cos(), cy + 2.1 * a.sin());
+            pal(gl, k + j + 3);
+            gl.vertex_2f(cx + 13.3 * a.cos(), cy + 13.3 * a.sin());
+        }
+        gl.end();
+    }
+}
+
+fn stipple_fan(gl: &mut dyn Gl, mode: GLenum) {
+    gl.begin(mode);
+    for k in 0..9 {
+        let a = k as f32 * 0.37 + 0.11;
+        pal(gl, k);
+        gl.vertex_2f(4.3 + 5.2 * k as f32, 32.2 + 24.1 * a.sin());
+    }
+    gl.end();
+}
+
+/// Stippled lines: a strip (the counter runs on), independent lines (it restarts), and a
+/// repeat factor.
+fn line_stipple(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(1, 0x3F07);
+    stipple_fan(gl, GL_LINE_STRIP);
+    gl.line_stipple(3, 0xA3C5);
+    gl.begin(GL_LINES);
+    for k in 0..6 {
+        pal(gl, k + 2);
+        gl.vertex_2f(2.4, 3.3 + 4.1 * k as f32);
+        gl.vertex_2f(61.2, 5.6 + 4.1 * k as f32);
+    }
+    gl.end();
+    gl.line_stipple(2, 0x0FF0);
+    gl.begin(GL_LINE_LOOP);
+    pal(gl, 5);
+    gl.vertex_2f(40.3, 40.2);
+    gl.vertex_2f(60.7, 44.6);
+    gl.vertex_2f(50.1, 61.4);
+    gl.end();
+}
+
+fn line_stipple_wide(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_LINE_STIPPLE);
+    gl.line_stipple(2, 0x33CF);
+    gl.line_width(3.0);
+    stipple_fan(gl, GL_LINE_STRIP);
+}
+
+fn star_polygon(gl: &mut dyn Gl, cx: f32, cy: f32, r: f32, n: usize) {
+    gl.begin(GL_POLYGON);
+    for k in 0..n {
+        let a = k as f32 * std::f32::consts::TAU / n as f32 + 0.3;
+        pal(gl, k);
+        gl.vertex_2f(cx + r * a.cos(), cy + r * a.sin());
+    }
+    gl.end();
+}
+
+/// `glPolygonMode(GL_LINE)`: the outlines of a polygon, quads and a strip (no diagonals),
+/// front faces filled and back faces outlined.
+fn polygon_mode_line(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    star_polygon(gl, 16.3, 16.2, 12.1, 7);
+    gl.begin(GL_QUADS);
+    pal(gl, 1);
+    gl.vertex_2f(34.3, 4.2);
+    gl.vertex_2f(60.6, 6.1);
+    pal(gl, 2);
+    gl.vertex_2f(58.2, 28.7);
+    gl.vertex_2f(36.1, 26.4);
+    gl.end();
+    gl.polygon_mode(GL_FRONT, GL_FILL);
+    gl.polygon_mode(GL_BACK, GL_LINE);
+    gl.begin(GL_TRIANGLE_STRIP);
+    for k in 0..6 {
+        pal(gl, k);
+        gl.vertex_2f(4.2 + 10.4 * k as f32, if k % 2 == 0 { 36.3 } else { 58.6 });
+    }
+    gl.end();
+}
+
+/// `glPolygonMode(GL_POINT)` with wide points.
+fn polygon_mode_point(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_POINT);
+    gl.point_size(3.0);
+    star_polygon(gl, 20.3, 20.2, 14.1, 9);
+    gl.begin(GL_QUAD_STRIP);
+    for k in 0..8 {
+        pal(gl, k);
+        gl.vertex_2f(
+            6.2 + 7.4 * (k / 2) as f32,
+            if k % 2 == 0 { 44.3 } else { 58.6 },
+        );
+    }
+    gl.end();
+}
+
+/// Edge flags hide marked edges of polygons, triangles and quads in line mode.
+fn edge_flags(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    gl.begin(GL_POLYGON);
+    for k in 0..6 {
+        let a = k as f32 * std::f32::consts::TAU / 6.0 + 0.2;
+        pal(gl, k);
+        gl.edge_flag(u8::from(k % 2 == 0));
+        gl.vertex_2f(18.3 + 13.2 * a.cos(), 18.1 + 13.2 * a.sin());
+    }
+    gl.end();
+    gl.begin(GL_TRIANGLES);
+    gl.edge_flag(1);
+    pal(gl, 3);
+    gl.vertex_2f(36.2, 4.3);
+    gl.edge_flag(0);
+    gl.vertex_2f(60.4, 8.1);
+    gl.edge_flag(1);
+    gl.vertex_2f(48.3, 30.2);
+    gl.end();
+    gl.begin(GL_QUADS);
+    pal(gl, 4);
+    gl.edge_flagv(&[0]);
+    gl.vertex_2f(6.2, 38.3);
+    gl.edge_flagv(&[1]);
+    gl.vertex_2f(58.1, 36.4);
+    gl.vertex_2f(56.3, 60.2);
+    gl.edge_flagv(&[0]);
+    gl.vertex_2f(8.4, 58.1);
+    gl.end();
+}
+
+/// A tilted quad drawn twice at the same depth: the second pass with a polygon offset
+/// towards the viewer wins everywhere under `GL_LESS`, the third (offset away) nowhere.
+fn polygon_offset_fill(gl: &mut dyn Gl) {
+    clear(gl);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.translatef(0.0, 0.0, -3.0);
+    gl.rotatef(55.0, 1.0, 0.3, 0.0);
+    gl.enable(GL_DEPTH_TEST);
+    let quad = |gl: &mut dyn Gl, x0: f32, x1: f32| {
+        gl.begin(GL_QUADS);
+        gl.vertex_3f(x0, -1.5, 0.0);
+        gl.vertex_3f(x1, -1.5, 0.0);
+        gl.vertex_3f(x1, 1.5, 0.0);
+        gl.vertex_3f(x0, 1.5, 0.0);
+        gl.end();
+    };
+    gl.color_3f(0.8, 0.2, 0.2);
+    quad(gl, -1.5, 1.5);
+    gl.enable(GL_POLYGON_OFFSET_FILL);
+    gl.polygon_offset(-1.0, -2.0);
+    gl.color_3f(0.2, 0.8, 0.2);
+    quad(gl, -1.5, 0.2);
+    gl.polygon_offset(1.0, 2.0);
+    gl.color_3f(0.2, 0.2, 0.9);
+    quad(gl, -0.2, 1.5);
+}
+
+/// Hidden-line outlines: a filled pass pushed back with `GL_POLYGON_OFFSET_FILL`, then the
+/// outlines in line mode at the unmodified depth, and point mode pulled forward with
+/// `GL_POLYGON_OFFSET_POINT`.
+fn polygon_offset_line(gl: &mut dyn Gl) {
+    clear(gl);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.translatef(0.1, 0.05, -3.2);
+    gl.rotatef(35.0, 1.0, 0.6, 0.2);
+    gl.enable(GL_DEPTH_TEST);
+    let grid = |gl: &mut dyn Gl| {
+        for j in 0..4 {
+            gl.begin(GL_QUAD_STRIP);
+            for i in 0..5 {
+                for dj in 0..2 {
+                    let (x, y) = (-1.2 + 0.6 * i as f32, -1.2 + 0.6 * (j + dj) as f32);
+                    gl.vertex_3f(x, y, 0.3 * (x * 1.3).sin() * y.cos());
+                }
+            }
+            gl.end();
+        }
+    };
+    gl.enable(GL_POLYGON_OFFSET_FILL);
+    gl.polygon_offset(1.0, 1.0);
+    gl.color_3f(0.3, 0.3, 0.5);
+    grid(gl);
+    gl.disable(GL_POLYGON_OFFSET_FILL);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
+    gl.color_3f(1.0, 1.0, 0.2);
+    gl.depth_func(GL_LEQUAL);
+    grid(gl);
+    gl.polygon_mode(GL_FRONT_AND_BACK, GL_POINT);
+    gl.point_size(3.0);
+    gl.enable(GL_POLYGON_OFFSET_POINT);
+    gl.polygon_offset(-1.0, -4.0);
+    gl.color_3f(1.0, 0.2, 0.2);
+    grid(gl);
+}
+
+/// `glPolygonStipple` over filled polygons, with the pattern unpacked LSB first too.
+fn polygon_stipple(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    let pattern: Vec<u8> = (0..128u32)
+        .map(|k| {
+            let (row, byte) = (k / 4, k % 4);
+            ((row * 7 + byte * 13) as u8).rotate_left(row % 8) ^ 0x5A
+        })
+        .collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 4);
+    gl.enable(GL_POLYGON_STIPPLE);
+    gl.polygon_stipple(&pattern);
+    star_polygon(gl, 20.3, 20.2, 17.1, 7);
+    gl.pixel_storei(GL_UNPACK_LSB_FIRST, 1);
+    gl.polygon_stipple(&pattern);
+    gl.color_3f(0.9, 0.9, 0.2);
+    gl.rectf(30.2, 28.3, 61.6, 61.2);
+    gl.pixel_storei(GL_UNPACK_LSB_FIRST, 0);
+}
+
+/// `GL_POINT_SMOOTH` with blending: coverage in the alpha.
+fn smooth_points(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_POINT_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (k, size) in [1.5f32, 3.0, 4.5, 7.0, 10.0].iter().enumerate() {
+        gl.point_size(*size);
+        gl.begin(GL_POINTS);
+        for j in 0..3 {
+            pal(gl, k + j);
+            gl.vertex_2f(6.3 + 12.6 * k as f32, 10.4 + 20.2 * j as f32);
+        }
+        gl.end();
+    }
+}
+
+/// `GL_LINE_SMOOTH` with blending.
+fn smooth_lines(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_space(gl, 64.0, 64.0);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    for (k, w) in [1.0f32, 2.0, 3.5].iter().enumerate() {
+        gl.line_width(*w);
+        gl.begin(GL_LINES);
+        for j in 0..5 {
+            let a = (k * 5 + j) as f32 * 0.41 + 0.07;
+            pal(gl, k + j);
+            gl.vertex_2f(32.2 + 6.0 * a.cos(), 32.1 + 6.0 * a.sin());
+            gl.vertex_2f(32.2 + 29.0 * a.cos(), 32.1 + 29.0 * a.sin());
+        }
+        gl.end();
+    }
+}
+
+/// Motion blur with the accumulation buffer: eight positions of a moving shape, each
+/// accumulated with weight 1/8, returned once.
+fn accum_motion_blur(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_accum(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_ACCUM_BUFFER_BIT);
+    for k in 0..8 {
+        clear(gl);
+        gl.color_3f(1.0, 0.8 - 0.05 * k as f32, 0.2);
+        let x = 6.3 + 4.1 * k as f32;
+        gl.rectf(x, 20.2, x + 18.4, 44.6);
+        gl.accum(GL_ACCUM, 1.0 / 8.0);
+    }
+    gl.accum(GL_RETURN, 1.0);
+}
+
+/// Every operation: LOAD, ACCUM with a negative weight, MULT, ADD, RETURN with a scale
+/// above 1 (clamped), a scissored accumulation clear, and the colour mask on RETURN.
+fn accum_ops(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    // Values stay inside [-1, 1]: overflow is undefined (Mesa wraps, tilegl saturates).
+    gl.clear_accum(0.25, -0.5, 0.5, 0.75);
+    gl.clear(GL_ACCUM_BUFFER_BIT);
+    gl.begin(GL_QUADS);
+    gl.color_3f(1.0, 0.0, 0.0);
+    gl.vertex_2f(0.0, 0.0);
+    gl.color_3f(0.0, 1.0, 0.0);
+    gl.vertex_2f(64.0, 0.0);
+    gl.color_3f(0.0, 0.0, 1.0);
+    gl.vertex_2f(64.0, 64.0);
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.vertex_2f(0.0, 64.0);
+    gl.end();
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(0, 0, 32, 64);
+    gl.accum(GL_LOAD, 0.75);
+    gl.scissor(32, 0, 32, 32);
+    gl.accum(GL_ACCUM, -0.25);
+    gl.accum(GL_MULT, 0.5);
+    gl.scissor(0, 32, 64, 32);
+    gl.accum(GL_ADD, 0.125);
+    gl.disable(GL_SCISSOR_TEST);
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.color_mask(1, 1, 0, 1);
+    gl.accum(GL_RETURN, 1.5);
+    gl.color_mask(1, 1, 1, 1);
+}

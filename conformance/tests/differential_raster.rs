@@ -1,0 +1,33 @@
+//! Differential tests of the rasterization controls (scenes in
+//! `tilegl_conformance::scenes_raster`): point size and parameters, wide, stippled and
+//! antialiased lines, polygon modes, edge flags, polygon offset and stipple.
+
+use tilegl_conformance::differential;
+use tilegl_conformance::scenes_raster::RASTER_SCENES;
+
+differential!(
+    wide_points,
+    point_attenuation,
+    wide_lines,
+    line_stipple,
+    line_stipple_wide,
+    polygon_mode_line,
+    polygon_mode_point,
+    edge_flags,
+    polygon_offset_fill,
+    polygon_offset_line,
+    polygon_stipple,
+    smooth_points,
+    smooth_lines,
+    accum_motion_blur,
+    accum_ops,
+);
+
+#[test]
+fn every_raster_scene_has_a_test() {
+    let mut names: Vec<&str> = RASTER_SCENES.iter().map(|s| s.name).collect();
+    let mut cases = CASES.to_vec();
+    names.sort_unstable();
+    cases.sort_unstable();
+    assert_eq!(names, cases);
+}
