@@ -360,7 +360,8 @@ fn replay(
     let want = Want {
         frames: frames_sel,
         calls: calls.iter().copied().collect(),
-        stop_early: false,
+        // Stop after the last picture asked for (all frames: play to the end).
+        stop_early: true,
     };
     let mut written = 0u64;
     let mut sink = |p: tilegl::replay::player::Picture| -> Result<(), String> {
