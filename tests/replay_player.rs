@@ -185,3 +185,34 @@ fn a_frame_range_stops_the_replay_early() {
     assert_eq!(stats.frames, 4);
     assert!(stats.calls < 21924 / 2, "{}", stats.calls);
 }
+
+#[test]
+fn each_thread_has_its_own_current_context() {
+    use tilegl::replay::player::CallSource;
+    // Thread 0 draws red into a 4x4 window, thread 1 green into an 8x2 one, interleaved.
+    let text = "glXMakeCurrent(ptr(0x1), 7, ptr(0xa));\n\
+                fake glViewport(0, 0, 4, 4);\n\
+                glXMakeCurrent(ptr(0x1), 8, ptr(0xb));\n\
+                fake glViewport(0, 0, 8, 2);\n\
+                glClearColor(1.0f, 0.0f, 0.0f, 1.0f);\n\
+                glClearColor(0.0f, 1.0f, 0.0f, 1.0f);\n\
+                glClear(GL_COLOR_BUFFER_BIT);\n\
+                glClear(GL_COLOR_BUFFER_BIT);\n\
+                glXSwapBuffers(ptr(0x1), 7);\n\
+                glXSwapBuffers(ptr(0x1), 8);\n";
+    let threads = [0, 0, 1, 1, 0, 1, 0, 1, 0, 1];
+    let mut reader = ScriptReader::new(text, Path::new("."));
+    let mut player = Player::new(1);
+    let mut pictures = Vec::new();
+    let mut i = 0;
+    while let Some(mut call) = reader.next_call().unwrap() {
+        call.thread = threads[i];
+        i += 1;
+        pictures.extend(player.play_call(&call, &all_frames()).unwrap());
+    }
+    assert_eq!(pictures.len(), 2);
+    assert_eq!(pictures[0].image.dimensions(), (4, 4));
+    assert_eq!(pictures[0].image.get_pixel(0, 0).0, [255, 0, 0]);
+    assert_eq!(pictures[1].image.dimensions(), (8, 2));
+    assert_eq!(pictures[1].image.get_pixel(0, 0).0, [0, 255, 0]);
+}

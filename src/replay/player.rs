@@ -4,7 +4,9 @@
 //! - **Window-system calls** (`glX*`, `egl*`, `wgl*`, `CGL*`) are interpreted here, not by the
 //!   dispatch: a make-current selects (and, the first time, creates) the tilegl context that
 //!   stands for the traced context handle; a release (null context) leaves no context current;
-//!   `glXSwapBuffers`/`eglSwapBuffers` end a frame; `*DestroyContext` drops the context. The
+//!   `glXSwapBuffers`/`eglSwapBuffers` end a frame (frames are counted over all contexts and
+//!   threads); `*DestroyContext` drops the context. Each trace thread has its own current
+//!   context. The
 //!   others (visual and config choice, extension strings, ...) are skipped and counted.
 //! - **Window size**: apitrace writes a fake `glViewport` with the drawable's size right after
 //!   the first make-current. A context is created at that size (it is double-buffered, as the
@@ -210,11 +212,15 @@ impl std::error::Error for ReplayError {}
 /// Plays calls on tilegl contexts.
 pub struct Player {
     contexts: HashMap<u64, Context>,
+    /// The context current in the thread of the last call (`current`, `pending`); other
+    /// threads' bindings wait in `other_threads` (GL has one current context per thread).
     current: Option<u64>,
     /// The context most recently made current (kept when released or destroyed).
     last: Option<u64>,
     /// A context made current but not created yet (waiting for the fake `glViewport`).
     pending: Option<u64>,
+    thread: u64,
+    other_threads: HashMap<u64, (Option<u64>, Option<u64>)>,
     dispatch: DispatchState,
     stats: ReplayStats,
     threads: usize,
@@ -266,6 +272,8 @@ impl Player {
             current: None,
             last: None,
             pending: None,
+            thread: 0,
+            other_threads: HashMap::new(),
             dispatch: DispatchState::new(),
             stats: ReplayStats::default(),
             threads,
@@ -346,6 +354,15 @@ impl Player {
     /// snapshot if `call.no` is wanted).
     pub fn play_call(&mut self, call: &Call, want: &Want) -> Result<Vec<Picture>, ReplayError> {
         let mut pictures = Vec::new();
+        if call.thread != self.thread {
+            self.other_threads
+                .insert(self.thread, (self.current, self.pending));
+            (self.current, self.pending) = self
+                .other_threads
+                .remove(&call.thread)
+                .unwrap_or((None, None));
+            self.thread = call.thread;
+        }
         self.stats.calls += 1;
         self.stats.last_call = Some(call.no);
         let name = call.name();
