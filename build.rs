@@ -5,10 +5,11 @@
 //! - `enums.rs`: every GL 1.0-1.5 enum, the two extensions tilegl implements
 //!   (EXT_texture_filter_anisotropic, EXT_texture_compression_s3tc), and the ARB/EXT aliases of
 //!   core enums that legacy programs use; plus name <-> value lookup tables.
-//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point, each defaulting to
-//!   "unsupported"), the `COMMANDS` metadata table with ARB/EXT alias names, and the
-//!   `gl_forward!` macro that implements trait methods by forwarding to inherent methods behind the
-//!   one guard that enforces what is legal between `glBegin` and `glEnd`.
+//! - `commands.rs`: the `Gl` trait (one method per GL 1.5 entry point and the two of
+//!   EXT_compiled_vertex_array, each defaulting to "unsupported"), the `COMMANDS` metadata
+//!   table with ARB/EXT alias names, and the `gl_forward!` macro that implements trait methods
+//!   by forwarding to inherent methods behind the one guard that enforces what is legal between
+//!   `glBegin` and `glEnd`, after the display-list recording prologue (`list_record_code`).
 //! - `capi_exports.rs`: the `extern "C"` entry points with the C signatures of `GL/gl.h`.
 //! - `foreign.rs`: `ForeignGl`, an implementation of `Gl` that calls C function pointers (the
 //!   Mesa oracle).
@@ -57,6 +58,10 @@ const EXTRA_EXTENSIONS: [&str; 6] = [
     "GL_EXT_blend_equation_separate",
     "GL_ARB_texture_swizzle",
 ];
+
+/// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
+/// exports, `ForeignGl` and the replay dispatch get them like core commands.
+const COMMAND_EXTENSIONS: [&str; 1] = ["GL_EXT_compiled_vertex_array"];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -248,6 +253,89 @@ fn allowed_in_begin_end(name: &str) -> bool {
     name == "glEnd" || prefixes.iter().any(|p| name.starts_with(p)) && name != "glEndList"
 }
 
+/// Commands that a display list never holds: section 5.4 of the 1.5 specification lists what
+/// is executed immediately while a list is being compiled. Commands that return a value or
+/// write through a pointer (`glGen*`, `glIs*`, `glGet*`, `glReadPixels`, `glRenderMode`, ...)
+/// and those that retain client pointers (`gl*Pointer`, `glSelectBuffer`, ...) are excluded
+/// by their signatures in `compiled_into_lists`. The vertex-array draw commands are compiled by
+/// their own code (`state::arrays`), which dereferences the arrays at compile time.
+const NOT_COMPILED_INTO_LISTS: &[&str] = &[
+    "glNewList",
+    "glEndList",
+    "glDeleteLists",
+    "glFeedbackBuffer",
+    "glSelectBuffer",
+    "glPixelStoref",
+    "glPixelStorei",
+    "glEnableClientState",
+    "glDisableClientState",
+    "glClientActiveTexture",
+    "glPushClientAttrib",
+    "glPopClientAttrib",
+    "glDeleteTextures",
+    "glDeleteQueries",
+    "glDeleteBuffers",
+    "glBindBuffer",
+    "glBufferData",
+    "glBufferSubData",
+    "glFlush",
+    "glFinish",
+    "glArrayElement",
+    "glDrawArrays",
+    "glDrawElements",
+    "glDrawRangeElements",
+    "glMultiDrawArrays",
+    "glMultiDrawElements",
+    "glLockArraysEXT",
+    "glUnlockArraysEXT",
+];
+
+/// Whether a display list being compiled records the command (instead of executing it).
+fn compiled_into_lists(c: &Command) -> bool {
+    if c.ret_base != "void"
+        || c.ret_depth != 0
+        || NOT_COMPILED_INTO_LISTS.contains(&c.name.as_str())
+    {
+        return false;
+    }
+    c.params
+        .iter()
+        .all(|p| p.depth == 0 || (p.is_const && !is_retained(&c.name, p)))
+}
+
+/// The start of a forwarding method for display-list compilation: while a list is being
+/// compiled, the arguments are copied into a boxed closure that replays the call through the
+/// `Gl` trait (so errors are raised when the list is executed, as section 5.4 asks); in
+/// `GL_COMPILE` mode the call then returns without executing.
+fn list_record_code(c: &Command) -> String {
+    if !compiled_into_lists(c) {
+        return String::new();
+    }
+    let mut owned = String::new();
+    let mut args = Vec::new();
+    for p in &c.params {
+        let n = ident(&p.name);
+        let ty = trait_param_type(&c.name, p);
+        if p.depth == 0 {
+            args.push(n);
+        } else if ty == "Option<&[u8]>" {
+            write!(owned, "let {n} = {n}.map(<[u8]>::to_vec); ").unwrap();
+            args.push(format!("{n}.as_deref()"));
+        } else if ty.starts_with("&[") && ty.contains(';') {
+            write!(owned, "let {n} = *{n}; ").unwrap();
+            args.push(format!("&{n}"));
+        } else {
+            write!(owned, "let {n} = {n}.to_vec(); ").unwrap();
+            args.push(format!("&{n}"));
+        }
+    }
+    format!(
+        "if self.list_recording() {{ {owned}self.list_record(Box::new(move |ctx: &mut Self| {{ crate::api::Gl::{}(ctx, {}); }})); if self.list_compile_only() {{ return; }} }} ",
+        snake(&c.name),
+        args.join(", ")
+    )
+}
+
 /// The expression giving a pointer parameter's element count in the C ABI.
 fn c_len_expr(cmd: &Command, p: &Param) -> String {
     // The registry gives `first` of glMultiDrawArrays the length COMPSIZE(count), where count
@@ -379,7 +467,15 @@ fn main() {
     }
     for x in root.descendants().filter(|n| n.has_tag_name("extension")) {
         let name = x.attribute("name").unwrap_or("");
-        if !EXTENSIONS.contains(&name) && !EXTRA_EXTENSIONS.contains(&name) {
+        if COMMAND_EXTENSIONS.contains(&name) {
+            for c in x.descendants().filter(|n| n.has_tag_name("command")) {
+                if let Some(n) = c.attribute("name") {
+                    if !core_cmds.iter().any(|c| c == n) {
+                        core_cmds.push(n.to_string());
+                    }
+                }
+            }
+        } else if !EXTENSIONS.contains(&name) && !EXTRA_EXTENSIONS.contains(&name) {
             continue;
         }
         for e in x.descendants().filter(|n| n.has_tag_name("enum")) {
@@ -532,9 +628,10 @@ fn main() {
         } else {
             "if self.reject_inside_begin_end() { return Default::default(); } ".into()
         };
+        let record = list_record_code(c);
         writeln!(
             forward_arms,
-            "    ({rname}) => {{ fn {rname}(&mut self, {}){ret} {{ {guard}Self::{rname}(self, {}) }} }};",
+            "    ({rname}) => {{ fn {rname}(&mut self, {}){ret} {{ {record}{guard}Self::{rname}(self, {}) }} }};",
             params.join(", "),
             names.join(", ")
         )

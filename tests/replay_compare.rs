@@ -14,59 +14,29 @@ use tilegl::replay::reference::compare_replay;
 use tilegl::replay::trace::TraceReader;
 
 /// Captures that do not match yet, and why (from the unknown calls and GL errors the replay
-/// reports, and from looking at the pictures). Checked against the vertex-array/display-list
-/// branch as well: merged with it, every capture here matches except copyteximage-2D,
-/// nv_texture_env_combine4, texwrap and flurry, for the further reasons given.
+/// reports, and from looking at the pictures).
 const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
-        "glxgears",
-        "display lists (glNewList/glCallList: GL_INVALID_OPERATION)",
-    ),
-    (
-        "piglit-1-1-linear-texture",
-        "client vertex arrays (glDrawArrays: GL_INVALID_OPERATION)",
-    ),
-    ("piglit-blendminmax", "client vertex arrays (glDrawArrays)"),
-    (
         "piglit-copyteximage-2D",
-        "client vertex arrays (glDrawArrays), glDrawPixels, glCopyTexImage2D of GL 3 formats \
-         (GL_RG, float and compressed internal formats: GL_INVALID_VALUE)",
+        "glCopyTexImage2D into GL 3 internal formats (GL_RED, GL_RG, float and generic \
+         compressed ones: GL_INVALID_VALUE), so those panels stay empty",
     ),
-    ("piglit-fog-modes", "client vertex arrays (glDrawArrays)"),
-    (
-        "piglit-gl-1.2-texture-base-level",
-        "client vertex arrays (glDrawArrays)",
-    ),
-    (
-        "piglit-gl-1.4-polygon-offset",
-        "client vertex arrays (glDrawArrays)",
-    ),
-    ("piglit-lodclamp", "client vertex arrays (glDrawArrays)"),
     (
         "piglit-nv_texture_env_combine4-combine",
-        "client vertex arrays (glDrawArrays); then GL_NV_texture_env_combine4 \
-         (glTexEnvi GL_COMBINE4_NV: GL_INVALID_ENUM)",
+        "GL_NV_texture_env_combine4 (glTexEnvi GL_COMBINE4_NV: GL_INVALID_ENUM)",
     ),
-    (
-        "piglit-s3tc-teximage",
-        "client vertex arrays (glDrawArrays)",
-    ),
-    ("piglit-tex-border-1", "client vertex arrays (glDrawArrays)"),
     (
         "piglit-texwrap-2D-GL_RGBA8",
         "GL_MIRROR_CLAMP_EXT wrap modes and GL_TEXTURE_SWIZZLE_RGBA (extensions Mesa advertised: \
          glTexParameter GL_INVALID_ENUM)",
     ),
-    ("xss-endgame", "display lists (glNewList/glCallList)"),
     (
         "xss-flurry",
-        "client vertex arrays (glDrawArrays); with the arrays branch merged the pictures are \
-         still far darker than Mesa's (17 % of pixels off): each frame's textured additive \
-         quads (MODULATE, mipmapped LUMINANCE_ALPHA sprite, SRC_ALPHA/ONE, faded by a \
+        "the pictures are far darker than Mesa's (17 % of pixels off): each frame's textured \
+         additive quads (MODULATE, mipmapped LUMINANCE_ALPHA sprite, SRC_ALPHA/ONE, faded by a \
          translucent rectangle) add little; the same quads in immediate mode give the same \
          pixels, so not the arrays: texturing or blending precision, to investigate",
     ),
-    ("xss-glblur", "display lists (glNewList/glCallList)"),
 ];
 
 fn traces_dir() -> Option<PathBuf> {

@@ -1,7 +1,10 @@
-//! The triangle benchmark: 100k random small smooth-shaded, depth-tested triangles per frame at
-//! 1024x768, on tilegl (1 and 2 threads) and Mesa (llvmpipe and softpipe, the driver that is
-//! not the one of this process through a child process), with ms/frame, the ratio to tilegl and
-//! the image error between the implementations.
+//! Benchmarks at 1024x768 on tilegl (1 and 2 threads) and Mesa (llvmpipe and softpipe, the
+//! driver that is not the one of this process through a child process), with ms/frame, the
+//! ratio to tilegl and the image error between the implementations. Workloads
+//! (`--workload NAME`, default `all`):
+//! - `triangles`: 100k random small smooth-shaded, depth-tested triangles per frame;
+//! - `sprites`: 20k alpha-blended, alpha-tested textured sprites with depth writes off;
+//! - `fog`: a lit height-field terrain under exp2 fog in perspective (~130k triangles).
 //!
 //! Shared by `cargo run --release -p tilegl-conformance --bin bench` and
 //! `cargo bench -p tilegl-conformance --bench triangles`.
@@ -18,6 +21,7 @@ use crate::prng::XorShift;
 /// Benchmark parameters.
 #[derive(Clone, Debug)]
 pub struct BenchConfig {
+    pub workload: Workload,
     pub width: i32,
     pub height: i32,
     pub triangles: usize,
@@ -33,6 +37,7 @@ pub struct BenchConfig {
 impl Default for BenchConfig {
     fn default() -> Self {
         BenchConfig {
+            workload: Workload::Triangles,
             width: 1024,
             height: 768,
             triangles: 100_000,
@@ -41,6 +46,112 @@ impl Default for BenchConfig {
             seed: 0x5EED_1234_ABCD_0001,
         }
     }
+}
+
+/// What a benchmark frame draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Workload {
+    Triangles,
+    Sprites,
+    Fog,
+}
+
+impl Workload {
+    pub const ALL: [Workload; 3] = [Workload::Triangles, Workload::Sprites, Workload::Fog];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Workload::Triangles => "triangles",
+            Workload::Sprites => "sprites",
+            Workload::Fog => "fog",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Workload> {
+        Workload::ALL.into_iter().find(|w| w.name() == s)
+    }
+}
+
+/// Sprites per frame of the `sprites` workload.
+pub const SPRITES: usize = 20_000;
+/// Height-field cells per side of the `fog` workload.
+pub const TERRAIN_CELLS: usize = 256;
+
+/// One sprite: centre (pixels), z in [-1, 1], half size, colour with alpha.
+#[derive(Clone, Copy, Debug)]
+pub struct Sprite {
+    pub centre: [f32; 2],
+    pub z: f32,
+    pub half: f32,
+    pub color: [f32; 4],
+}
+
+/// The data a workload draws, generated from the seed (a child process regenerates it).
+#[derive(Clone, Debug)]
+pub enum WorkData {
+    Triangles(Vec<BenchVertex>),
+    Sprites(Vec<Sprite>),
+    /// Heights of a (cells + 1)^2 grid.
+    Terrain(Vec<f32>),
+}
+
+/// Generates the workload's data.
+pub fn work_data(cfg: &BenchConfig) -> WorkData {
+    match cfg.workload {
+        Workload::Triangles => WorkData::Triangles(triangles(cfg)),
+        Workload::Sprites => {
+            let mut rng = XorShift::new(cfg.seed ^ 0x5917);
+            WorkData::Sprites(
+                (0..SPRITES)
+                    .map(|_| Sprite {
+                        centre: [
+                            rng.range(0.0, cfg.width as f32),
+                            rng.range(0.0, cfg.height as f32),
+                        ],
+                        z: rng.range(-0.9, 0.9),
+                        half: rng.range(4.0, 16.0),
+                        color: [
+                            rng.range(0.3, 1.0),
+                            rng.range(0.3, 1.0),
+                            rng.range(0.3, 1.0),
+                            rng.range(0.4, 1.0),
+                        ],
+                    })
+                    .collect(),
+            )
+        }
+        Workload::Fog => {
+            let n = TERRAIN_CELLS + 1;
+            let mut h = Vec::with_capacity(n * n);
+            for j in 0..n {
+                for i in 0..n {
+                    let (x, y) = (i as f32 / 16.0, j as f32 / 16.0);
+                    h.push(
+                        0.6 * (x * 0.9).sin() * (y * 0.7).cos()
+                            + 0.25 * (x * 2.3 + y * 1.7).sin()
+                            + 0.08 * (x * 7.1).cos() * (y * 5.3).sin(),
+                    );
+                }
+            }
+            WorkData::Terrain(h)
+        }
+    }
+}
+
+/// A 64x64 RGBA sprite texture: a soft disc (alpha falls to 0 at the rim) with rings.
+fn sprite_texture() -> Vec<u8> {
+    let mut p = Vec::with_capacity(64 * 64 * 4);
+    for y in 0..64 {
+        for x in 0..64 {
+            let (dx, dy) = (x as f32 - 31.5, y as f32 - 31.5);
+            let r = (dx * dx + dy * dy).sqrt() / 32.0;
+            let a = (1.0 - r).clamp(0.0, 1.0);
+            let ring = 0.75 + 0.25 * (r * 20.0).cos();
+            let v = (255.0 * ring) as u8;
+            p.extend_from_slice(&[v, v, 255, (255.0 * a) as u8]);
+        }
+    }
+    p
 }
 
 /// One vertex: window-space position (pixels, z in [-1, 1]) and colour.
@@ -78,7 +189,6 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
     gl.viewport(0, 0, cfg.width, cfg.height);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
-    gl.ortho(0.0, cfg.width as f64, 0.0, cfg.height as f64, -1.0, 1.0);
     gl.matrix_mode(GL_MODELVIEW);
     gl.load_identity();
     gl.enable(GL_DEPTH_TEST);
@@ -86,17 +196,127 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
     gl.shade_model(GL_SMOOTH);
     gl.clear_color(0.0, 0.0, 0.0, 1.0);
     gl.clear_depth(1.0);
+    match cfg.workload {
+        Workload::Triangles | Workload::Sprites => {
+            gl.matrix_mode(GL_PROJECTION);
+            gl.ortho(0.0, cfg.width as f64, 0.0, cfg.height as f64, -1.0, 1.0);
+            gl.matrix_mode(GL_MODELVIEW);
+        }
+        Workload::Fog => {
+            gl.matrix_mode(GL_PROJECTION);
+            let aspect = cfg.width as f64 / cfg.height as f64;
+            gl.frustum(-0.1 * aspect, 0.1 * aspect, -0.1, 0.1, 0.2, 40.0);
+            gl.matrix_mode(GL_MODELVIEW);
+        }
+    }
+    if cfg.workload == Workload::Sprites {
+        let mut name = [0u32];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+        gl.tex_parameteri(
+            GL_TEXTURE_2D,
+            GL_TEXTURE_MIN_FILTER,
+            GL_LINEAR_MIPMAP_LINEAR as i32,
+        );
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8 as i32,
+            64,
+            64,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&sprite_texture()),
+        );
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        gl.enable(GL_ALPHA_TEST);
+        gl.alpha_func(GL_GREATER, 0.05);
+        gl.depth_mask(0);
+        gl.clear_color(0.1, 0.1, 0.15, 1.0);
+    }
+    if cfg.workload == Workload::Fog {
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.3, 1.0, 0.5, 0.0]);
+        gl.enable(GL_COLOR_MATERIAL);
+        gl.enable(GL_NORMALIZE);
+        gl.enable(GL_FOG);
+        gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+        gl.fogf(GL_FOG_DENSITY, 0.09);
+        gl.fogfv(GL_FOG_COLOR, &[0.6, 0.65, 0.75, 1.0]);
+        gl.clear_color(0.6, 0.65, 0.75, 1.0);
+    }
 }
 
-/// One frame: clear, all triangles in immediate mode, glFinish.
-pub fn frame(gl: &mut dyn Gl, verts: &[BenchVertex]) {
-    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.begin(GL_TRIANGLES);
-    for v in verts {
-        gl.color_3fv(&v.color);
-        gl.vertex_3fv(&v.pos);
+/// One frame: clear, the workload in immediate mode, glFinish.
+pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
+    let sprites = matches!(data, WorkData::Sprites(_));
+    if sprites {
+        // glClear honours the depth mask: clear with writes on, draw with them off.
+        gl.depth_mask(1);
     }
-    gl.end();
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if sprites {
+        gl.depth_mask(0);
+    }
+    match data {
+        WorkData::Triangles(verts) => {
+            gl.begin(GL_TRIANGLES);
+            for v in verts {
+                gl.color_3fv(&v.color);
+                gl.vertex_3fv(&v.pos);
+            }
+            gl.end();
+        }
+        WorkData::Sprites(sprites) => {
+            gl.begin(GL_QUADS);
+            for s in sprites {
+                let [x, y] = s.centre;
+                let h = s.half;
+                gl.color_4fv(&s.color);
+                gl.tex_coord_2f(0.0, 0.0);
+                gl.vertex_3f(x - h, y - h, s.z);
+                gl.tex_coord_2f(1.0, 0.0);
+                gl.vertex_3f(x + h, y - h, s.z);
+                gl.tex_coord_2f(1.0, 1.0);
+                gl.vertex_3f(x + h, y + h, s.z);
+                gl.tex_coord_2f(0.0, 1.0);
+                gl.vertex_3f(x - h, y + h, s.z);
+            }
+            gl.end();
+        }
+        WorkData::Terrain(h) => {
+            let n = TERRAIN_CELLS + 1;
+            let step = 24.0 / TERRAIN_CELLS as f32;
+            gl.load_identity();
+            gl.rotatef(18.0, 1.0, 0.0, 0.0);
+            gl.translatef(-12.0, -1.6, -26.0);
+            let at = |i: usize, j: usize| h[j * n + i];
+            let normal = |i: usize, j: usize| {
+                let dx = at((i + 1).min(n - 1), j) - at(i.saturating_sub(1), j);
+                let dz = at(i, (j + 1).min(n - 1)) - at(i, j.saturating_sub(1));
+                [-dx, 2.0 * step, -dz]
+            };
+            for j in 0..TERRAIN_CELLS {
+                gl.begin(GL_TRIANGLE_STRIP);
+                for i in 0..n {
+                    for jj in [j + 1, j] {
+                        let y = at(i, jj);
+                        gl.color_3f(0.35 + 0.3 * y, 0.55 + 0.2 * y, 0.3);
+                        gl.normal_3fv(&normal(i, jj));
+                        gl.vertex_3f(i as f32 * step, y, jj as f32 * step);
+                    }
+                }
+                gl.end();
+            }
+        }
+    }
     gl.finish();
 }
 
@@ -128,19 +348,14 @@ impl BenchResult {
 }
 
 /// Runs the warm-up and timed frames on `gl`.
-pub fn run_frames(
-    name: &str,
-    gl: &mut dyn Gl,
-    cfg: &BenchConfig,
-    verts: &[BenchVertex],
-) -> BenchResult {
+pub fn run_frames(name: &str, gl: &mut dyn Gl, cfg: &BenchConfig, data: &WorkData) -> BenchResult {
     setup(gl, cfg);
-    frame(gl, verts);
+    frame(gl, data);
     let mut frame_ms = Vec::new();
     let start = Instant::now();
     while frame_ms.len() < cfg.frames.max(1) {
         let t = Instant::now();
-        frame(gl, verts);
+        frame(gl, data);
         frame_ms.push(t.elapsed().as_secs_f64() * 1000.0);
         if start.elapsed() > cfg.budget {
             break;
@@ -157,24 +372,21 @@ pub fn run_frames(
 }
 
 /// tilegl with `threads` worker threads.
-pub fn run_tilegl(cfg: &BenchConfig, verts: &[BenchVertex], threads: usize) -> BenchResult {
+pub fn run_tilegl(cfg: &BenchConfig, data: &WorkData, threads: usize) -> BenchResult {
     let mut ctx = Context::with_config(ContextConfig {
         width: cfg.width,
         height: cfg.height,
         threads,
         ..ContextConfig::default()
     });
-    run_frames(&format!("tilegl {threads}T"), &mut ctx, cfg, verts)
+    run_frames(&format!("tilegl {threads}T"), &mut ctx, cfg, data)
 }
 
 /// Mesa in this process (its driver is fixed by `GALLIUM_DRIVER` at the first context).
-pub fn run_mesa(
-    cfg: &BenchConfig,
-    verts: &[BenchVertex],
-) -> Result<(BenchResult, OracleInfo), String> {
+pub fn run_mesa(cfg: &BenchConfig, data: &WorkData) -> Result<(BenchResult, OracleInfo), String> {
     let mut mesa = MesaContext::create(cfg.width, cfg.height).map_err(|e| e.to_string())?;
     let info = mesa.info().clone();
-    let mut r = run_frames("mesa", &mut *mesa, cfg, verts);
+    let mut r = run_frames("mesa", &mut *mesa, cfg, data);
     r.name = format!("mesa {}", info.driver());
     Ok((r, info))
 }
@@ -227,6 +439,8 @@ pub fn run_mesa_subprocess(
     let budget = cfg.budget.as_secs_f64().to_string();
     let mut args: Vec<&str> = extra_args.to_vec();
     args.extend_from_slice(&[
+        "--workload",
+        cfg.workload.name(),
         CHILD_ARG,
         &out_s,
         "--frames",
@@ -242,14 +456,27 @@ pub fn run_mesa_subprocess(
     decode_result(&bytes).ok_or_else(|| "bad result from bench child".to_string())
 }
 
-fn parse_args(args: &[String], cfg: &mut BenchConfig) -> Option<String> {
+/// Parses the options into `cfg`; returns the child-output path (child mode) and whether
+/// every workload was asked for.
+fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) {
     let mut child_out = None;
+    let mut all = true;
     let mut i = 0;
     while i < args.len() {
         let next = args.get(i + 1);
         match (args[i].as_str(), next) {
             (CHILD_ARG, Some(p)) => {
                 child_out = Some(p.clone());
+                i += 1;
+            }
+            ("--workload", Some(v)) => {
+                match Workload::parse(v) {
+                    Some(w) => {
+                        cfg.workload = w;
+                        all = false;
+                    }
+                    None => all = v == "all",
+                }
                 i += 1;
             }
             ("--frames", Some(v)) => {
@@ -270,19 +497,20 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> Option<String> {
         }
         i += 1;
     }
-    child_out
+    (child_out, all)
 }
 
-/// The benchmark's command line: `[--frames N] [--triangles N] [--budget SECONDS]`. Prints the
-/// table and returns the process exit code.
+/// The benchmark's command line: `[--workload triangles|sprites|fog|all] [--frames N]
+/// [--triangles N] [--budget SECONDS]`. Prints one table per workload and returns the process
+/// exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut cfg = BenchConfig::default();
-    let child_out = parse_args(&args, &mut cfg);
-    let verts = triangles(&cfg);
+    let (child_out, all) = parse_args(&args, &mut cfg);
     if let Some(out) = child_out {
         // Child mode: Mesa with the driver the parent selected.
-        return match run_mesa(&cfg, &verts) {
+        let data = work_data(&cfg);
+        return match run_mesa(&cfg, &data) {
             Ok((r, _)) => match std::fs::write(&out, encode_result(&r)) {
                 Ok(()) => 0,
                 Err(e) => {
@@ -296,14 +524,47 @@ pub fn run_cli() -> i32 {
             }
         };
     }
+    let workloads: Vec<Workload> = if all {
+        Workload::ALL.to_vec()
+    } else {
+        vec![cfg.workload]
+    };
+    for w in workloads {
+        cfg.workload = w;
+        run_workload(&cfg, &args);
+    }
+    0
+}
 
+fn describe(cfg: &BenchConfig) -> String {
+    match cfg.workload {
+        Workload::Triangles => format!(
+            "{} smooth-shaded depth-tested triangles/frame",
+            cfg.triangles
+        ),
+        Workload::Sprites => format!(
+            "{SPRITES} alpha-blended, alpha-tested, trilinear-textured sprites/frame, depth writes off"
+        ),
+        Workload::Fog => format!(
+            "lit {TERRAIN_CELLS}x{TERRAIN_CELLS} height field ({} triangles) under exp2 fog",
+            2 * TERRAIN_CELLS * TERRAIN_CELLS
+        ),
+    }
+}
+
+fn run_workload(cfg: &BenchConfig, args: &[String]) {
+    let data = work_data(cfg);
+    println!();
     println!(
-        "tilegl triangle benchmark: {} smooth-shaded depth-tested triangles/frame at {}x{}, \
-         median of up to {} frames (after 1 warm-up), each ending in glFinish",
-        cfg.triangles, cfg.width, cfg.height, cfg.frames
+        "== {}: {} at {}x{}, median of up to {} frames (after 1 warm-up), each ending in glFinish",
+        cfg.workload.name(),
+        describe(cfg),
+        cfg.width,
+        cfg.height,
+        cfg.frames
     );
-    let mut results = vec![run_tilegl(&cfg, &verts, 1), run_tilegl(&cfg, &verts, 2)];
-    match run_mesa(&cfg, &verts) {
+    let mut results = vec![run_tilegl(cfg, &data, 1), run_tilegl(cfg, &data, 2)];
+    match run_mesa(cfg, &data) {
         Ok((r, info)) => {
             let other = if info.driver() == "softpipe" {
                 "llvmpipe"
@@ -318,7 +579,7 @@ pub fn run_cli() -> i32 {
                 .filter(|a| a.as_str() == "--bench")
                 .map(|s| s.as_str())
                 .collect();
-            match run_mesa_subprocess(other, &cfg, &extra) {
+            match run_mesa_subprocess(other, cfg, &extra) {
                 Ok(r) => results.push(r),
                 Err(e) => println!("mesa {other}: unavailable ({e})"),
             }
@@ -327,7 +588,6 @@ pub fn run_cli() -> i32 {
     }
 
     let base = results[0].median_ms();
-    println!();
     println!(
         "{:<16} {:>10} {:>10} {:>8}  frames(ms)",
         "implementation", "ms/frame", "vs tilegl1", "glError"
@@ -345,7 +605,17 @@ pub fn run_cli() -> i32 {
                 .collect::<Vec<_>>()
         );
     }
-    println!();
+    if let Some(dir) = std::env::var_os("TILEGL_BENCH_DUMP") {
+        // Pictures for a closer look: DIR/WORKLOAD-IMPLEMENTATION.ppm.
+        let dir = std::path::PathBuf::from(dir);
+        let _ = std::fs::create_dir_all(&dir);
+        for r in &results {
+            let file = format!("{}-{}.ppm", cfg.workload.name(), r.name.replace(' ', "_"));
+            if let Err(e) = r.image.write_ppm(&dir.join(file)) {
+                println!("cannot write picture: {e}");
+            }
+        }
+    }
     println!("image error (per pair; bad = pixels with a channel difference > 8):");
     for i in 0..results.len() {
         for j in i + 1..results.len() {
@@ -353,5 +623,4 @@ pub fn run_cli() -> i32 {
             println!("  {:<14} vs {:<14} {}", results[i].name, results[j].name, d);
         }
     }
-    0
 }

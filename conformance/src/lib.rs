@@ -8,6 +8,7 @@ pub mod known_failures;
 pub mod mesa;
 pub mod prng;
 pub mod scenes;
+pub mod scenes_arrays;
 pub mod scenes_raster;
 pub mod scenes_texture;
 pub mod tolerance;

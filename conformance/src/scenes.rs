@@ -988,11 +988,13 @@ pub(crate) const fn spread(max_bad_share: f64) -> Tolerance {
     }
 }
 
-/// Every differential scene, in report order: this file's, then the texturing ones.
+/// Every differential scene, in report order: this file's, the texturing ones, the
+/// vertex-array and display-list ones, then the rasterization-control ones.
 pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(|| {
     [
         BASE_SCENES,
         crate::scenes_texture::TEXTURE_SCENES,
+        crate::scenes_arrays::ARRAY_SCENES,
         crate::scenes_raster::RASTER_SCENES,
     ]
     .concat()

@@ -3,6 +3,7 @@
 //! and polygon stipple (the fragment-operations issue).
 
 use crate::compare::Scene;
+use crate::prng::XorShift;
 use crate::scenes::{clear, pal, pixel_space, scene, scene_with, spread};
 use tilegl::enums::*;
 use tilegl::Gl;
@@ -31,6 +32,15 @@ pub const RASTER_SCENES: &[Scene] = &[
     scene("smooth_lines", smooth_lines),
     scene("accum_motion_blur", accum_motion_blur),
     scene("accum_ops", accum_ops),
+    scene("draw_pixels_color", draw_pixels_color),
+    scene("draw_pixels_zoom_transfer", draw_pixels_zoom_transfer),
+    scene("draw_pixels_depth_stencil", draw_pixels_depth_stencil),
+    scene("bitmap_text", bitmap_text),
+    scene("copy_pixels", copy_pixels),
+    scene(
+        "window_pos_and_invalid_raster",
+        window_pos_and_invalid_raster,
+    ),
 ];
 
 /// Points of sizes 1..=8 at fractional positions (no rounding ties).
@@ -407,4 +417,206 @@ fn accum_ops(gl: &mut dyn Gl) {
     gl.color_mask(1, 1, 0, 1);
     gl.accum(GL_RETURN, 1.5);
     gl.color_mask(1, 1, 1, 1);
+}
+
+/// An RGBA test image: colour ramps with a varying alpha.
+fn rgba_image(w: usize, h: usize) -> Vec<u8> {
+    let mut p = Vec::with_capacity(w * h * 4);
+    for y in 0..h {
+        for x in 0..w {
+            p.extend_from_slice(&[
+                (x * 255 / w.max(1)) as u8,
+                (y * 255 / h.max(1)) as u8,
+                ((x ^ y) * 37 % 256) as u8,
+                (128 + (x * y) % 128) as u8,
+            ]);
+        }
+    }
+    p
+}
+
+/// `glDrawPixels` of RGBA, RGB (unaligned rows), luminance and packed-type images at several
+/// raster positions, with blending on the last.
+fn draw_pixels_color(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let img = rgba_image(20, 14);
+    gl.raster_pos_2f(2.3, 3.6);
+    gl.draw_pixels(20, 14, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    // RGB rows of 3 * 13 = 39 bytes, alignment 1.
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    let rgb: Vec<u8> = (0..13 * 11 * 3).map(|k| (k * 7 % 256) as u8).collect();
+    gl.raster_pos_2i(30, 4);
+    gl.draw_pixels(13, 11, GL_RGB, GL_UNSIGNED_BYTE, Some(&rgb));
+    let lum: Vec<u8> = (0..16 * 9).map(|k| (k * 5 % 256) as u8).collect();
+    gl.raster_pos_2f(46.3, 20.2);
+    gl.draw_pixels(16, 9, GL_LUMINANCE, GL_UNSIGNED_BYTE, Some(&lum));
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 4);
+    let packed: Vec<u8> = (0..12 * 10)
+        .flat_map(|k: u16| (k.wrapping_mul(2654) ^ 0x5a5a).to_ne_bytes())
+        .collect();
+    gl.raster_pos_2f(4.2, 30.3);
+    gl.draw_pixels(12, 10, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, Some(&packed));
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.raster_pos_2f(24.4, 26.7);
+    gl.draw_pixels(20, 14, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+}
+
+/// Zoom (2, 1.6, negative, fractional) and scale/bias on the way in. The zoom
+/// factors are even tenths, so no zoomed pixel edge falls exactly on a pixel centre (a tie
+/// implementations break differently).
+fn draw_pixels_zoom_transfer(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let img = rgba_image(8, 6);
+    gl.pixel_zoom(2.0, 1.6);
+    gl.raster_pos_2f(1.3, 1.2);
+    gl.draw_pixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    gl.pixel_zoom(-1.4, -2.0);
+    gl.raster_pos_2f(40.6, 30.4);
+    gl.draw_pixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    gl.pixel_zoom(2.2, 0.8);
+    gl.pixel_transferf(GL_RED_SCALE, 0.5);
+    gl.pixel_transferf(GL_GREEN_BIAS, 0.25);
+    gl.pixel_transferf(GL_BLUE_SCALE, -1.0);
+    gl.pixel_transferf(GL_BLUE_BIAS, 1.0);
+    gl.raster_pos_2f(20.2, 34.3);
+    gl.draw_pixels(8, 6, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    gl.pixel_zoom(1.0, 1.0);
+    gl.pixel_transferf(GL_RED_SCALE, 1.0);
+    gl.pixel_transferf(GL_GREEN_BIAS, 0.0);
+    gl.pixel_transferf(GL_BLUE_SCALE, 1.0);
+    gl.pixel_transferf(GL_BLUE_BIAS, 0.0);
+    // GL_MAP_COLOR is left out here: Mesa 22 looks the maps up through a texture (index
+    // by truncation, some entries off by several steps) where section 3.6.5 rounds
+    // `c * (size - 1)`; tests/pixel_rect.rs checks tilegl's maps against the equations.
+    let big = rgba_image(24, 20);
+    gl.pixel_transferf(GL_ALPHA_SCALE, 0.5);
+    gl.pixel_transferf(GL_RED_BIAS, -0.25);
+    gl.raster_pos_2f(38.1, 40.2);
+    gl.draw_pixels(24, 20, GL_RGBA, GL_UNSIGNED_BYTE, Some(&big));
+    gl.pixel_transferf(GL_ALPHA_SCALE, 1.0);
+    gl.pixel_transferf(GL_RED_BIAS, 0.0);
+}
+
+/// Depth and stencil rectangles, then geometry tested against them.
+fn draw_pixels_depth_stencil(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_stencil(0);
+    gl.clear(GL_STENCIL_BUFFER_BIT);
+    gl.enable(GL_DEPTH_TEST);
+    gl.depth_func(GL_ALWAYS);
+    gl.color_mask(0, 0, 0, 0);
+    // A depth ramp written as floats.
+    let depth: Vec<u8> = (0..40 * 40)
+        .flat_map(|k| ((k % 40) as f32 / 40.0).to_ne_bytes())
+        .collect();
+    gl.raster_pos_2i(4, 4);
+    gl.draw_pixels(40, 40, GL_DEPTH_COMPONENT, GL_FLOAT, Some(&depth));
+    gl.color_mask(1, 1, 1, 1);
+    gl.depth_func(GL_LESS);
+    // A flat quad at window z = 0.5 shows where the ramp is farther.
+    gl.color_3f(0.9, 0.4, 0.1);
+    gl.rectf(0.0, 0.0, 64.0, 64.0);
+    gl.disable(GL_DEPTH_TEST);
+    // Stencil: a checker of bytes, then a stencil test. (No index offset: Mesa 22 ignores
+    // GL_INDEX_SHIFT/OFFSET for stencil in glDrawPixels, which section 3.6.5 applies;
+    // tests/pixel_rect.rs checks tilegl's index arithmetic.)
+    let st: Vec<u8> = (0..32 * 32)
+        .map(|k| (((k % 32) / 4 + (k / 32) / 4) % 2) as u8)
+        .collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.raster_pos_2i(28, 28);
+    gl.draw_pixels(32, 32, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, Some(&st));
+    gl.enable(GL_STENCIL_TEST);
+    gl.stencil_func(GL_EQUAL, 1, 0xFF);
+    gl.color_3f(0.2, 0.3, 1.0);
+    gl.rectf(0.0, 0.0, 64.0, 64.0);
+    gl.disable(GL_STENCIL_TEST);
+}
+
+/// Text with `glBitmap`: glyphs from a small procedural font, the raster position advancing,
+/// colours taken at `glRasterPos` time, LSB-first data, and a scissor.
+fn bitmap_text(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let mut rng = XorShift::new(7);
+    let glyphs: Vec<Vec<u8>> = (0..8)
+        .map(|_| (0..10).map(|_| (rng.next_u64() & 0xFE) as u8).collect())
+        .collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    for line in 0..4 {
+        pal(gl, line);
+        gl.raster_pos_2f(2.4, 52.7 - 13.0 * line as f32);
+        if line == 2 {
+            gl.pixel_storei(GL_UNPACK_LSB_FIRST, 1);
+        }
+        if line == 3 {
+            gl.enable(GL_SCISSOR_TEST);
+            gl.scissor(10, 0, 30, 64);
+        }
+        for k in 0..8 {
+            gl.bitmap(7, 10, 0.5, 1.5, 7.5, 0.25, &glyphs[(k + line) % 8]);
+        }
+        gl.pixel_storei(GL_UNPACK_LSB_FIRST, 0);
+    }
+    gl.disable(GL_SCISSOR_TEST);
+    // A bitmap with no bits only moves the raster position.
+    gl.raster_pos_2f(50.0, 4.0);
+    gl.bitmap(0, 0, 0.0, 0.0, -40.0, 2.0, &[]);
+    gl.bitmap(7, 10, 0.0, 0.0, 0.0, 0.0, &glyphs[0]);
+}
+
+/// `glCopyPixels` of colour (overlapping, zoomed) and of depth.
+fn copy_pixels(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.begin(GL_TRIANGLES);
+    for k in 0..3 {
+        pal(gl, k);
+        gl.vertex_2f([2.2, 28.4, 10.1][k], [2.3, 6.1, 27.7][k]);
+    }
+    gl.end();
+    gl.raster_pos_2i(12, 8);
+    gl.copy_pixels(0, 0, 30, 30, GL_COLOR);
+    gl.pixel_zoom(1.0, -1.0);
+    gl.raster_pos_2i(34, 63);
+    gl.copy_pixels(0, 0, 30, 30, GL_COLOR);
+    gl.pixel_zoom(1.0, 1.0);
+    // Depth: a tilted quad, its depth copied to the right, then a flat quad tested against it.
+    gl.enable(GL_DEPTH_TEST);
+    gl.color_3f(0.3, 0.3, 0.3);
+    gl.begin(GL_QUADS);
+    gl.vertex_3f(0.0, 40.0, -0.9);
+    gl.vertex_3f(30.0, 40.0, 0.9);
+    gl.vertex_3f(30.0, 64.0, 0.9);
+    gl.vertex_3f(0.0, 64.0, -0.9);
+    gl.end();
+    gl.raster_pos_2i(34, 2);
+    gl.copy_pixels(0, 40, 30, 24, GL_DEPTH);
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.rectf(34.0, 2.0, 64.0, 26.0);
+}
+
+/// `glWindowPos` ignores the transforms; a raster position outside the view volume is
+/// invalid and draws nothing; lighting colours the raster position.
+fn window_pos_and_invalid_raster(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let img = rgba_image(10, 10);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.translatef(100.0, 0.0, 0.0);
+    gl.window_pos_2f(3.3, 3.4);
+    gl.draw_pixels(10, 10, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    // Translated out of the view volume: invalid, nothing drawn.
+    gl.raster_pos_2f(5.0, 5.0);
+    gl.draw_pixels(10, 10, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
+    gl.load_identity();
+    // The raster colour is lit when lighting is on.
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.normal_3f(0.0, 0.0, 1.0);
+    gl.raster_pos_2f(30.2, 30.7);
+    gl.disable(GL_LIGHTING);
+    let bits = [0xAAu8; 8 * 4]; // rows of 2 bytes padded to the alignment of 4
+    gl.bitmap(16, 8, 0.0, 0.0, 0.0, 0.0, &bits);
+    gl.window_pos_3f(40.0, 10.0, 0.5);
+    gl.color_3f(0.0, 1.0, 0.5);
+    gl.bitmap(16, 8, 0.0, 0.0, 0.0, 0.0, &bits);
 }

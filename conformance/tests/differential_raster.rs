@@ -21,6 +21,12 @@ differential!(
     smooth_lines,
     accum_motion_blur,
     accum_ops,
+    draw_pixels_color,
+    draw_pixels_zoom_transfer,
+    draw_pixels_depth_stencil,
+    bitmap_text,
+    copy_pixels,
+    window_pos_and_invalid_raster,
 );
 
 #[test]

@@ -5,7 +5,10 @@
 use super::enums::*;
 use super::types::GLenum;
 
+mod arrays;
 mod texture;
+#[allow(unused_imports)]
+pub use arrays::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -608,6 +611,9 @@ pub enum Query {
     AliasedPointSizeRange,
     AliasedLineWidthRange,
     PointParam(PointParam),
+    PixelRect(PixelRectQuery),
+    /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
+    Arrays(ArrayQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -621,6 +627,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(p) = pixel_store_param(e) {
         return Some(PixelStore(p));
+    }
+    if let Some(q) = array_query(e) {
+        return Some(Arrays(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,
@@ -713,6 +722,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_COLOR_MATERIAL_FACE => ColorMaterialFace,
         e if fog_param(e).is_some() => Fog(fog_param(e)?),
         e if point_param(e).is_some() => PointParam(point_param(e)?),
+        e if pixel_rect_query(e).is_some() => PixelRect(pixel_rect_query(e)?),
         GL_POLYGON_MODE => PolygonMode,
         GL_POLYGON_OFFSET_FACTOR => PolygonOffsetFactor,
         GL_POLYGON_OFFSET_UNITS => PolygonOffsetUnits,
@@ -1529,4 +1539,205 @@ pub fn accum_op(op: GLenum) -> Option<AccumOp> {
         GL_ADD => AccumOp::Add,
         _ => return None,
     })
+}
+
+/// `glPixelTransfer` parameters (section 3.6.3, table 3.2; the imaging subset is absent).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelTransferParam {
+    MapColor,
+    MapStencil,
+    IndexShift,
+    IndexOffset,
+    /// RGBA component index.
+    Scale(usize),
+    Bias(usize),
+    DepthScale,
+    DepthBias,
+}
+
+pub fn pixel_transfer_param(e: GLenum) -> Option<PixelTransferParam> {
+    use PixelTransferParam::*;
+    Some(match e {
+        GL_MAP_COLOR => MapColor,
+        GL_MAP_STENCIL => MapStencil,
+        GL_INDEX_SHIFT => IndexShift,
+        GL_INDEX_OFFSET => IndexOffset,
+        GL_RED_SCALE => Scale(0),
+        GL_GREEN_SCALE => Scale(1),
+        GL_BLUE_SCALE => Scale(2),
+        GL_ALPHA_SCALE => Scale(3),
+        GL_RED_BIAS => Bias(0),
+        GL_GREEN_BIAS => Bias(1),
+        GL_BLUE_BIAS => Bias(2),
+        GL_ALPHA_BIAS => Bias(3),
+        GL_DEPTH_SCALE => DepthScale,
+        GL_DEPTH_BIAS => DepthBias,
+        _ => return None,
+    })
+}
+
+/// The ten pixel maps of `glPixelMap` (table 3.3), in this order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelMap {
+    IToI,
+    SToS,
+    IToR,
+    IToG,
+    IToB,
+    IToA,
+    RToR,
+    GToG,
+    BToB,
+    AToA,
+}
+
+impl PixelMap {
+    pub const ALL: [PixelMap; 10] = [
+        PixelMap::IToI,
+        PixelMap::SToS,
+        PixelMap::IToR,
+        PixelMap::IToG,
+        PixelMap::IToB,
+        PixelMap::IToA,
+        PixelMap::RToR,
+        PixelMap::GToG,
+        PixelMap::BToB,
+        PixelMap::AToA,
+    ];
+
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Maps indexed by a colour or stencil index: their size must be a power of two.
+    pub fn indexed_by_index(self) -> bool {
+        matches!(
+            self,
+            PixelMap::IToI
+                | PixelMap::SToS
+                | PixelMap::IToR
+                | PixelMap::IToG
+                | PixelMap::IToB
+                | PixelMap::IToA
+        )
+    }
+
+    /// Maps whose values are indices (integers) rather than colour components.
+    pub fn holds_indices(self) -> bool {
+        matches!(self, PixelMap::IToI | PixelMap::SToS)
+    }
+}
+
+pub fn pixel_map(e: GLenum) -> Option<PixelMap> {
+    use PixelMap::*;
+    Some(match e {
+        GL_PIXEL_MAP_I_TO_I => IToI,
+        GL_PIXEL_MAP_S_TO_S => SToS,
+        GL_PIXEL_MAP_I_TO_R => IToR,
+        GL_PIXEL_MAP_I_TO_G => IToG,
+        GL_PIXEL_MAP_I_TO_B => IToB,
+        GL_PIXEL_MAP_I_TO_A => IToA,
+        GL_PIXEL_MAP_R_TO_R => RToR,
+        GL_PIXEL_MAP_G_TO_G => GToG,
+        GL_PIXEL_MAP_B_TO_B => BToB,
+        GL_PIXEL_MAP_A_TO_A => AToA,
+        _ => return None,
+    })
+}
+
+/// Pixel-rectangle state queries (tables 6.5, 6.17, 6.18).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelRectQuery {
+    Transfer(PixelTransferParam),
+    MapSize(PixelMap),
+    MaxPixelMapTable,
+    ZoomX,
+    ZoomY,
+    RasterPosition,
+    RasterPositionValid,
+    RasterColor,
+    RasterTextureCoords,
+    RasterDistance,
+    RasterIndex,
+}
+
+pub fn pixel_rect_query(e: GLenum) -> Option<PixelRectQuery> {
+    use PixelRectQuery::*;
+    if let Some(p) = pixel_transfer_param(e) {
+        return Some(Transfer(p));
+    }
+    Some(match e {
+        GL_PIXEL_MAP_I_TO_I_SIZE => MapSize(PixelMap::IToI),
+        GL_PIXEL_MAP_S_TO_S_SIZE => MapSize(PixelMap::SToS),
+        GL_PIXEL_MAP_I_TO_R_SIZE => MapSize(PixelMap::IToR),
+        GL_PIXEL_MAP_I_TO_G_SIZE => MapSize(PixelMap::IToG),
+        GL_PIXEL_MAP_I_TO_B_SIZE => MapSize(PixelMap::IToB),
+        GL_PIXEL_MAP_I_TO_A_SIZE => MapSize(PixelMap::IToA),
+        GL_PIXEL_MAP_R_TO_R_SIZE => MapSize(PixelMap::RToR),
+        GL_PIXEL_MAP_G_TO_G_SIZE => MapSize(PixelMap::GToG),
+        GL_PIXEL_MAP_B_TO_B_SIZE => MapSize(PixelMap::BToB),
+        GL_PIXEL_MAP_A_TO_A_SIZE => MapSize(PixelMap::AToA),
+        GL_MAX_PIXEL_MAP_TABLE => MaxPixelMapTable,
+        GL_ZOOM_X => ZoomX,
+        GL_ZOOM_Y => ZoomY,
+        GL_CURRENT_RASTER_POSITION => RasterPosition,
+        GL_CURRENT_RASTER_POSITION_VALID => RasterPositionValid,
+        GL_CURRENT_RASTER_COLOR => RasterColor,
+        GL_CURRENT_RASTER_TEXTURE_COORDS => RasterTextureCoords,
+        GL_CURRENT_RASTER_DISTANCE => RasterDistance,
+        GL_CURRENT_RASTER_INDEX => RasterIndex,
+        _ => return None,
+    })
+}
+
+/// `glCopyPixels` types (section 4.3.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CopyPixelsType {
+    Color,
+    Depth,
+    Stencil,
+}
+
+pub fn copy_pixels_type(e: GLenum) -> Option<CopyPixelsType> {
+    Some(match e {
+        GL_COLOR => CopyPixelsType::Color,
+        GL_DEPTH => CopyPixelsType::Depth,
+        GL_STENCIL => CopyPixelsType::Stencil,
+        _ => return None,
+    })
+}
+
+/// Client data of `glDrawPixels`: a colour/depth format the texture path unpacks, or indices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawPixelsFormat {
+    Color(texture::TexPixelFormat),
+    Depth,
+    StencilIndex,
+    ColorIndex,
+}
+
+pub fn draw_pixels_format(e: GLenum) -> Option<DrawPixelsFormat> {
+    Some(match e {
+        GL_DEPTH_COMPONENT => DrawPixelsFormat::Depth,
+        GL_STENCIL_INDEX => DrawPixelsFormat::StencilIndex,
+        GL_COLOR_INDEX => DrawPixelsFormat::ColorIndex,
+        e => DrawPixelsFormat::Color(texture::tex_pixel_format(e)?),
+    })
+}
+
+/// Component types of index data (`GL_BITMAP` is one bit per index).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelIndexType {
+    Bitmap,
+    Plain(texture::TexPixelType),
+}
+
+pub fn pixel_index_type(e: GLenum) -> Option<PixelIndexType> {
+    if e == GL_BITMAP {
+        return Some(PixelIndexType::Bitmap);
+    }
+    match texture::tex_pixel_type(e)? {
+        texture::TexPixelType::Packed(_) => None,
+        t => Some(PixelIndexType::Plain(t)),
+    }
 }

@@ -32,6 +32,8 @@ pub fn size(ctx: &Context, command: &str, param: &str, args: &[i64]) -> usize {
                 _ => 0,
             }
         }
+        // `count` of the multi-draw calls: one count per draw.
+        "glMultiDrawArrays" | "glMultiDrawElements" => arg(0).clamp(0, i32::MAX as i64) as usize,
         _ if args.len() == 1 => pname_count(arg(0) as u32),
         _ => 0,
     }

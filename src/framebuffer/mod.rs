@@ -218,6 +218,11 @@ impl Framebuffer {
         self.color_in(self.read, x, y)
     }
 
+    /// The tile holding window pixel (x, y).
+    pub fn tile_index(&self, x: i32, y: i32) -> Option<usize> {
+        self.locate(x, y).map(|(t, _)| t)
+    }
+
     /// The colour of window pixel (x, y), for writing.
     pub fn color_mut(&mut self, x: i32, y: i32) -> Option<&mut [u8; 4]> {
         self.locate(x, y).map(|(t, i)| &mut self.tiles[t].color[i])

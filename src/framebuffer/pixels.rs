@@ -144,6 +144,9 @@ impl Context {
             + self.pack.skip_pixels.max(0) as usize * bpp;
         let depth_max = self.framebuffer.depth_max() as f64;
         let swap = self.pack.swap_bytes;
+        let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+        let xf = &self.pixel_transfer;
+        let index_ops = xf.index_shift != 0 || xf.index_offset != 0 || xf.map_stencil;
         for row in 0..height {
             for col in 0..width {
                 let (wx, wy) = (x.saturating_add(col), y.saturating_add(row));
@@ -152,7 +155,11 @@ impl Context {
                 let Some(rgba) = fb.color_at(wx, wy) else {
                     continue;
                 };
-                let c = rgba.map(|v| v as f64 / 255.0);
+                let mut c = rgba.map(|v| v as f64 / 255.0);
+                if let Some(t) = &xfer {
+                    // Pixel transfer on the way out (section 4.3.2), then clamped.
+                    c = t.texel(false, c.map(|v| v as f32)).map(|v| v as f64);
+                }
                 let lum = (c[0] + c[1] + c[2]).min(1.0);
                 let comps: [f64; 4];
                 let values: &[f64] = match f {
@@ -180,7 +187,10 @@ impl Context {
                     }
                     PixelFormat::DepthComponent => {
                         comps = [
-                            fb.depth_at(wx, wy).unwrap_or(0) as f64 / depth_max,
+                            {
+                                let d = fb.depth_at(wx, wy).unwrap_or(0) as f64 / depth_max;
+                                xfer.as_ref().map_or(d, |t| t.depth(d))
+                            },
                             0.0,
                             0.0,
                             0.0,
@@ -188,7 +198,13 @@ impl Context {
                         &comps[..1]
                     }
                     PixelFormat::StencilIndex => {
-                        comps = [fb.stencil_at(wx, wy).unwrap_or(0) as f64, 0.0, 0.0, 0.0];
+                        let st = fb.stencil_at(wx, wy).unwrap_or(0);
+                        let st = if xfer.is_some() || index_ops {
+                            self.pixel_transfer.stencil(st as i64)
+                        } else {
+                            st
+                        };
+                        comps = [st as f64, 0.0, 0.0, 0.0];
                         &comps[..1]
                     }
                 };

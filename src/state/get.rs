@@ -130,6 +130,7 @@ impl Context {
             Query::ColorClearValue => {
                 Normalized(self.clear_values.color.iter().map(|&c| c as f64).collect())
             }
+            Query::PixelRect(q) => self.pixel_rect_value(q),
             Query::AccumClearValue => {
                 Normalized(self.clear_values.accum.iter().map(|&c| c as f64).collect())
             }
@@ -299,6 +300,7 @@ impl Context {
             }
             Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),
             Query::ColorMaterialParameter => Enum(self.lighting.color_material_mode.to_gl()),
+            Query::Arrays(q) => self.array_state_value(q),
         }
     }
 

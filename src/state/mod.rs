@@ -3,12 +3,15 @@
 
 #[macro_use]
 mod textures;
+pub mod arrays;
 pub mod buffers;
 pub mod fog;
 pub mod get;
 pub mod lighting;
+pub mod lists;
 pub mod matrices;
 pub mod per_fragment;
+pub mod pixel_rect;
 pub mod rasterization;
 pub mod snapshot;
 pub mod tables;
@@ -73,6 +76,10 @@ pub struct Context {
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
     pub(crate) client_active_texture: usize,
     pub(crate) fog: fog::FogState,
+    /// The current raster position (`glRasterPos`, `glWindowPos`).
+    pub(crate) raster_pos: pixel_rect::RasterPos,
+    /// Pixel transfer modes, maps and zoom.
+    pub(crate) pixel_transfer: pixel_rect::PixelTransfer,
     /// Per-unit texture coordinate generation.
     pub(crate) tex_gen: [texgen::TexGenUnit; tables::limits::MAX_TEXTURE_UNITS],
     /// Per-unit texture environments.
@@ -95,6 +102,10 @@ pub struct Context {
     present_requested: bool,
     /// Forces the general fragment path (used by the fast-path twin tests).
     pub(crate) force_general_path: bool,
+    /// Vertex arrays, buffer objects and the client attribute stack.
+    pub(crate) client: arrays::ClientState,
+    /// Display lists.
+    pub(crate) lists: lists::ListState,
 }
 
 impl Context {
@@ -153,6 +164,8 @@ impl Context {
             tex_env: Default::default(),
             tex_gen: std::array::from_fn(|_| texgen::default_unit()),
             fog: Default::default(),
+            raster_pos: Default::default(),
+            pixel_transfer: Default::default(),
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
@@ -164,6 +177,8 @@ impl Context {
             strings: HashMap::new(),
             present_requested: false,
             force_general_path: false,
+            client: Default::default(),
+            lists: Default::default(),
         }
     }
 
@@ -354,6 +369,9 @@ impl Context {
 
     pub(crate) fn is_enabled(&mut self, cap: GLenum) -> GLboolean {
         let Some(cap) = convert::capability(cap) else {
+            if let Some(on) = self.client_array_enabled(cap) {
+                return on as GLboolean;
+            }
             self.record_error(GL_INVALID_ENUM);
             return GL_FALSE as GLboolean;
         };
@@ -559,6 +577,58 @@ impl Gl for Context {
     texture_entry_points!();
 
     gl_forward_all!(
+        raster_pos_2s,
+        raster_pos_2sv,
+        raster_pos_2i,
+        raster_pos_2iv,
+        raster_pos_2f,
+        raster_pos_2fv,
+        raster_pos_2d,
+        raster_pos_2dv,
+        raster_pos_3s,
+        raster_pos_3sv,
+        raster_pos_3i,
+        raster_pos_3iv,
+        raster_pos_3f,
+        raster_pos_3fv,
+        raster_pos_3d,
+        raster_pos_3dv,
+        raster_pos_4s,
+        raster_pos_4sv,
+        raster_pos_4i,
+        raster_pos_4iv,
+        raster_pos_4f,
+        raster_pos_4fv,
+        raster_pos_4d,
+        raster_pos_4dv,
+        window_pos_2s,
+        window_pos_2sv,
+        window_pos_2i,
+        window_pos_2iv,
+        window_pos_2f,
+        window_pos_2fv,
+        window_pos_2d,
+        window_pos_2dv,
+        window_pos_3s,
+        window_pos_3sv,
+        window_pos_3i,
+        window_pos_3iv,
+        window_pos_3f,
+        window_pos_3fv,
+        window_pos_3d,
+        window_pos_3dv,
+        pixel_transferf,
+        pixel_transferi,
+        pixel_zoom,
+        pixel_mapfv,
+        pixel_mapuiv,
+        pixel_mapusv,
+        get_pixel_mapfv,
+        get_pixel_mapuiv,
+        get_pixel_mapusv,
+        draw_pixels,
+        copy_pixels,
+        bitmap,
         accum,
         clear_accum,
         get_string,
@@ -841,6 +911,49 @@ impl Gl for Context {
         recti,
         rectiv,
         rects,
-        rectsv
+        rectsv,
+        // vertex arrays and buffer objects
+        vertex_pointer,
+        normal_pointer,
+        color_pointer,
+        secondary_color_pointer,
+        fog_coord_pointer,
+        tex_coord_pointer,
+        edge_flag_pointer,
+        index_pointer,
+        interleaved_arrays,
+        enable_client_state,
+        disable_client_state,
+        get_pointerv,
+        array_element,
+        draw_arrays,
+        draw_elements,
+        draw_range_elements,
+        multi_draw_arrays,
+        multi_draw_elements,
+        gen_buffers,
+        bind_buffer,
+        delete_buffers,
+        is_buffer,
+        buffer_data,
+        buffer_sub_data,
+        get_buffer_sub_data,
+        map_buffer,
+        unmap_buffer,
+        get_buffer_parameteriv,
+        get_buffer_pointerv,
+        push_client_attrib,
+        pop_client_attrib,
+        lock_arrays_ext,
+        unlock_arrays_ext,
+        // display lists
+        gen_lists,
+        new_list,
+        end_list,
+        call_list,
+        call_lists,
+        list_base,
+        delete_lists,
+        is_list
     );
 }

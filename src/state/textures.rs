@@ -415,7 +415,11 @@ impl Context {
             .map_err(|_| GL_OUT_OF_MEMORY)?;
         if let (Some(data), false) = (pixels, target.is_proxy()) {
             let swap = self.unpack.swap_bytes;
+            // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
+            let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            let depth = pf == TexPixelFormat::DepthComponent;
             pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
+                let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
                 img.store(x as i32, y as i32, z as i32, rgba)
             });
             img.encode_region(0, 0, img.width, img.height);
@@ -466,6 +470,8 @@ impl Context {
                 return Err(GL_INVALID_VALUE);
             }
             let swap = self.unpack.swap_bytes;
+            let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            let depth = pf == TexPixelFormat::DepthComponent;
             let face = target.face();
             let obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
@@ -475,6 +481,7 @@ impl Context {
                     if dims >= 3 { offset[2] + b[2] } else { 0 },
                 ];
                 pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
+                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
                     img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
                 });
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);

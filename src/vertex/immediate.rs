@@ -118,7 +118,7 @@ impl Context {
     }
 
     /// The lighting inputs for the current state (built on first use after a change).
-    fn light_setup(&mut self) -> std::sync::Arc<super::lighting::LightSetup> {
+    pub(crate) fn light_setup(&mut self) -> std::sync::Arc<super::lighting::LightSetup> {
         if let Some(s) = &self.light_setup {
             return s.clone();
         }

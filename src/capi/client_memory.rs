@@ -1,0 +1,45 @@
+//! The one bridge from a [`ClientPtr`] (an address in the calling process that GL retained,
+//! e.g. from `glVertexPointer`) to memory: reading client vertex arrays and index arrays at
+//! draw time, and storing a pointer value for `glGetPointerv`/`glGetBufferPointerv`.
+//!
+//! # The contract
+//!
+//! OpenGL's client-array contract (section 2.8 of the 1.5 specification) is that the
+//! application keeps the memory named by `gl*Pointer`, `glInterleavedArrays` and client
+//! `glDrawElements` indices valid and readable for every element a draw command uses, for as
+//! long as the draw runs, and that `glGetPointerv` is given room for one pointer. C callers of
+//! `libtilegl.so`, Mesa-style, and the trace replayer (which passes addresses of bytes it keeps
+//! alive) meet it. A Rust caller that hands a [`ClientPtr`] to the `Gl` trait makes the same
+//! promise; Rust code that wants no such promise sources its arrays from buffer objects
+//! (`glBindBuffer(GL_ARRAY_BUFFER, ..)`, where the "pointer" is an offset into memory the
+//! context owns) and reads pointers with `Context::array_pointer`.
+//!
+//! A null address is never dereferenced: reads give nothing, writes are skipped.
+
+use crate::api::types::ClientPtr;
+
+/// Calls `f` with the `len` bytes at `ptr` (an empty slice for a null pointer or `len == 0`).
+pub(crate) fn with_client_bytes<R>(ptr: ClientPtr, len: usize, f: impl FnOnce(&[u8]) -> R) -> R {
+    if ptr.0 == 0 || len == 0 || len > isize::MAX as usize {
+        return f(&[]);
+    }
+    // SAFETY: by the GL client-array contract (module docs) the application guarantees that
+    // the `len` bytes starting at `ptr` (the elements the current draw uses, from the smallest
+    // to the largest index, as computed by the caller from the array's size, type and stride,
+    // or the draw's indices) are valid and readable
+    // and not written during the draw; the slice lives only for the duration of `f`, i.e. the
+    // draw command. Bytes have no alignment requirement.
+    let bytes = unsafe { std::slice::from_raw_parts(ptr.0 as *const u8, len) };
+    f(bytes)
+}
+
+/// Stores the pointer value `value` at `dest` (`glGetPointerv(pname, params)`: `params` is a
+/// `void **`), unless `dest` is null.
+pub(crate) fn store_pointer(dest: ClientPtr, value: usize) {
+    if dest.0 == 0 {
+        return;
+    }
+    // SAFETY: by the GL contract of `glGetPointerv`/`glGetBufferPointerv` the application passes
+    // the address of storage for one `void *`; `write_unaligned` needs no alignment.
+    unsafe { std::ptr::write_unaligned(dest.0 as *mut usize, value) }
+}
