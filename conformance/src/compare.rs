@@ -101,96 +101,20 @@ impl Image {
     }
 }
 
-/// How far two pictures differ. Channel figures are over all four channels (R, G, B, A).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Diff {
-    /// PSNR in dB over RGBA (infinite when identical).
-    pub psnr: f64,
-    /// Largest channel difference (0-255).
-    pub max: u8,
-    /// Mean absolute channel difference.
-    pub mean: f64,
-    /// Share (0-1) of pixels whose largest channel difference exceeds the threshold.
-    pub bad_share: f64,
-    /// Number of such pixels.
-    pub bad_pixels: usize,
-    /// The threshold `bad_share` was computed with.
-    pub threshold: u8,
-    /// The first pixel (x, y) over the threshold, for reports.
-    pub first_bad: Option<(i32, i32)>,
-}
+pub use tilegl::compare::Diff;
 
-impl fmt::Display for Diff {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "PSNR {:.2} dB, max {}, mean {:.4}, bad(>{}) {:.3}% ({} px)",
-            self.psnr,
-            self.max,
-            self.mean,
-            self.threshold,
-            self.bad_share * 100.0,
-            self.bad_pixels
-        )?;
-        if let Some((x, y)) = self.first_bad {
-            write!(f, ", first at ({x},{y})")?;
-        }
-        Ok(())
-    }
-}
-
-/// Compares two pictures of the same size; `threshold` is the per-channel difference above
-/// which a pixel counts as bad. Pictures of different sizes compare as totally different.
+/// Compares two pictures of the same size over all four channels (R, G, B, A); `threshold` is
+/// the per-channel difference above which a pixel counts as bad. Pictures of different sizes
+/// compare as totally different.
 pub fn diff(a: &Image, b: &Image, threshold: u8) -> Diff {
     if a.width != b.width || a.height != b.height || a.pixels.len() != b.pixels.len() {
-        return Diff {
-            psnr: 0.0,
-            max: 255,
-            mean: 255.0,
-            bad_share: 1.0,
-            bad_pixels: (a.width.max(b.width) * a.height.max(b.height)) as usize,
+        return Diff::total(
+            a.width.max(b.width).max(0) as u32,
+            a.height.max(b.height).max(0) as u32,
             threshold,
-            first_bad: Some((0, 0)),
-        };
+        );
     }
-    let mut sq = 0u64;
-    let mut sum = 0u64;
-    let mut max = 0u8;
-    let mut bad = 0usize;
-    let mut first_bad = None;
-    for (i, (pa, pb)) in a.pixels.chunks(4).zip(b.pixels.chunks(4)).enumerate() {
-        let mut pmax = 0u8;
-        for c in 0..4 {
-            let d = pa[c].abs_diff(pb[c]);
-            pmax = pmax.max(d);
-            sum += d as u64;
-            sq += d as u64 * d as u64;
-        }
-        max = max.max(pmax);
-        if pmax > threshold {
-            bad += 1;
-            if first_bad.is_none() {
-                first_bad = Some((i as i32 % a.width, i as i32 / a.width));
-            }
-        }
-    }
-    let n = a.pixels.len().max(1) as f64;
-    let mse = sq as f64 / n;
-    let psnr = if mse == 0.0 {
-        f64::INFINITY
-    } else {
-        10.0 * (255.0f64 * 255.0 / mse).log10()
-    };
-    let px = (a.pixels.len() / 4).max(1);
-    Diff {
-        psnr,
-        max,
-        mean: sum as f64 / n,
-        bad_share: bad as f64 / px as f64,
-        bad_pixels: bad,
-        threshold,
-        first_bad,
-    }
+    tilegl::compare::diff_pixels(&a.pixels, &b.pixels, 4, a.width.max(1) as u32, threshold)
 }
 
 /// A picture plus the error state GL reported after drawing it.

@@ -545,6 +545,8 @@ pub enum Query {
     PixelStore(PixelStoreParam),
     Doublebuffer,
     Stereo,
+    DrawBuffer,
+    ReadBuffer,
     RgbaMode,
     IndexMode,
     PointSize,
@@ -660,6 +662,8 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_SUBPIXEL_BITS => SubpixelBits,
         GL_AUX_BUFFERS => AuxBuffers,
         GL_DOUBLEBUFFER => Doublebuffer,
+        GL_DRAW_BUFFER => DrawBuffer,
+        GL_READ_BUFFER => ReadBuffer,
         GL_STEREO => Stereo,
         GL_RGBA_MODE => RgbaMode,
         GL_INDEX_MODE => IndexMode,
@@ -1458,6 +1462,41 @@ pub fn point_param(e: GLenum) -> Option<PointParam> {
         GL_POINT_FADE_THRESHOLD_SIZE => PointParam::FadeThresholdSize,
         GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
         _ => return None,
+    })
+}
+
+/// The colour buffer names of `glDrawBuffer` / `glReadBuffer` (table 4.4 of the GL 1.5 spec).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorBufferName {
+    None,
+    FrontLeft,
+    FrontRight,
+    BackLeft,
+    BackRight,
+    Front,
+    Back,
+    Left,
+    Right,
+    FrontAndBack,
+    /// `GL_AUXi`.
+    Aux(u32),
+}
+
+pub fn color_buffer_name(e: GLenum) -> Option<ColorBufferName> {
+    use ColorBufferName::*;
+    Some(match e {
+        GL_NONE => None,
+        GL_FRONT_LEFT => FrontLeft,
+        GL_FRONT_RIGHT => FrontRight,
+        GL_BACK_LEFT => BackLeft,
+        GL_BACK_RIGHT => BackRight,
+        GL_FRONT => Front,
+        GL_BACK => Back,
+        GL_LEFT => Left,
+        GL_RIGHT => Right,
+        GL_FRONT_AND_BACK => FrontAndBack,
+        GL_AUX0..=GL_AUX3 => Aux(e - GL_AUX0),
+        _ => return Option::None,
     })
 }
 

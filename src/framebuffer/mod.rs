@@ -44,6 +44,8 @@ pub struct FramebufferConfig {
     pub stencil_bits: u32,
     /// Accumulation bits per channel (0 or 16, signed).
     pub accum_bits: u32,
+    /// Front and back colour buffers (a GLX/EGL window); `false` is one front buffer (OSMesa).
+    pub double_buffer: bool,
 }
 
 impl Default for FramebufferConfig {
@@ -52,8 +54,27 @@ impl Default for FramebufferConfig {
             depth_bits: 24,
             stencil_bits: 8,
             accum_bits: 0,
+            double_buffer: false,
         }
     }
+}
+
+/// One of the colour buffers of a window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorBuffer {
+    Front,
+    Back,
+}
+
+/// Where drawing goes (`glDrawBuffer` resolved against the buffers that exist).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawTarget {
+    /// `GL_NONE`: no colour buffer is written (depth and stencil still are).
+    None,
+    /// One colour buffer.
+    One(ColorBuffer),
+    /// Both front and back (`GL_FRONT_AND_BACK`, `GL_LEFT` on a double-buffered window).
+    Both,
 }
 
 /// The tiled colour/depth/stencil buffers of one context.
@@ -65,6 +86,15 @@ pub struct Framebuffer {
     pub tiles_y: usize,
     pub tiles: Vec<Tile>,
     pub config: FramebufferConfig,
+    /// Which colour buffer the tiles' `color` storage holds at the moment.
+    pub(crate) resident: ColorBuffer,
+    /// The other colour buffer of a double-buffered framebuffer, per tile (empty otherwise).
+    /// Switching buffers exchanges these vectors with the tiles' ones (no pixel copies).
+    pub(crate) parked: Vec<Vec<[u8; 4]>>,
+    /// Where the next flushed drawing goes.
+    pub(crate) draw: DrawTarget,
+    /// The buffer that reads (`color_at`, `glReadPixels`, `glCopyTexImage`) see.
+    pub(crate) read: ColorBuffer,
     /// The accumulation buffer (empty without accumulation bits): RGBA as signed 16-bit
     /// fixed point over [-1, 1], row-major from the bottom row. Not tiled: only `glAccum` and
     /// its clear touch it, after the scene is flushed.
@@ -92,6 +122,14 @@ impl Framebuffer {
                 });
             }
         }
+        let (parked, initial) = if config.double_buffer {
+            (
+                vec![vec![[0; 4]; TILE_PIXELS]; tiles.len()],
+                ColorBuffer::Back,
+            )
+        } else {
+            (Vec::new(), ColorBuffer::Front)
+        };
         let accum = if config.accum_bits > 0 {
             vec![[0; 4]; width as usize * height as usize]
         } else {
@@ -104,8 +142,57 @@ impl Framebuffer {
             tiles_y,
             tiles,
             config,
+            resident: initial,
+            parked,
+            draw: DrawTarget::One(initial),
+            read: initial,
             accum,
         }
+    }
+
+    /// Whether there are front and back colour buffers.
+    pub fn is_double_buffered(&self) -> bool {
+        self.config.double_buffer
+    }
+
+    /// Makes the tiles' colour storage hold `buffer` (exchanging it with the parked one).
+    /// Single-buffered framebuffers only have the front buffer: nothing changes.
+    pub(crate) fn make_resident(&mut self, buffer: ColorBuffer) {
+        if self.resident == buffer || self.parked.len() != self.tiles.len() {
+            return;
+        }
+        for (tile, parked) in self.tiles.iter_mut().zip(self.parked.iter_mut()) {
+            std::mem::swap(&mut tile.color, parked);
+        }
+        self.resident = buffer;
+    }
+
+    /// Presents the back buffer: its content is copied to the front buffer and stays in the
+    /// back buffer, which is what Mesa's software (xlib/drisw) `glXSwapBuffers` and
+    /// `eglSwapBuffers` do (GLX leaves the back buffer undefined; programs that draw over
+    /// the previous frame, like xscreensaver's flurry, rely on this copy). No-op when
+    /// single-buffered.
+    pub fn swap_buffers(&mut self) {
+        if self.parked.len() != self.tiles.len() {
+            return;
+        }
+        for (tile, parked) in self.tiles.iter_mut().zip(self.parked.iter_mut()) {
+            match self.resident {
+                ColorBuffer::Back => parked.copy_from_slice(&tile.color),
+                ColorBuffer::Front => tile.color.copy_from_slice(parked),
+            }
+        }
+    }
+
+    /// Colour of window pixel (x, y) in `buffer` (the front buffer when single-buffered).
+    pub fn color_in(&self, buffer: ColorBuffer, x: i32, y: i32) -> Option<[u8; 4]> {
+        self.locate(x, y).map(|(t, i)| {
+            if buffer == self.resident || self.parked.len() != self.tiles.len() {
+                self.tiles[t].color[i]
+            } else {
+                self.parked[t][i]
+            }
+        })
     }
 
     /// The largest stored depth value.
@@ -125,9 +212,10 @@ impl Framebuffer {
         ))
     }
 
-    /// Colour of window pixel (x, y), or `None` outside the framebuffer.
+    /// Colour of window pixel (x, y) in the read buffer (`glReadBuffer`), or `None` outside
+    /// the framebuffer.
     pub fn color_at(&self, x: i32, y: i32) -> Option<[u8; 4]> {
-        self.locate(x, y).map(|(t, i)| self.tiles[t].color[i])
+        self.color_in(self.read, x, y)
     }
 
     /// The tile holding window pixel (x, y).
@@ -150,14 +238,16 @@ impl Framebuffer {
         self.locate(x, y).map(|(t, i)| self.tiles[t].stencil[i])
     }
 
-    /// Overwrites the colour of window pixel (x, y) (used by the C ABI to adopt a caller's buffer).
+    /// Overwrites the colour of window pixel (x, y) in the buffer the tiles hold (used by the C
+    /// ABI, single-buffered, to adopt a caller's buffer).
     pub fn set_color(&mut self, x: i32, y: i32, rgba: [u8; 4]) {
         if let Some((t, i)) = self.locate(x, y) {
             self.tiles[t].color[i] = rgba;
         }
     }
 
-    /// The colour buffer as tightly packed RGBA8 rows, bottom row first.
+    /// The colour buffer the tiles hold (the only one of a single-buffered framebuffer) as
+    /// tightly packed RGBA8 rows, bottom row first.
     pub fn color_rows_bottom_up(&self) -> Vec<u8> {
         let w = self.width.max(0) as usize;
         let mut out = Vec::with_capacity(w * self.height.max(0) as usize * 4);

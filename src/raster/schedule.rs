@@ -7,7 +7,7 @@ use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
 use super::tri::raster_triangle;
 use crate::fragment::span::Interpolants;
-use crate::framebuffer::Tile;
+use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
 
 impl Context {
@@ -17,11 +17,45 @@ impl Context {
         if self.scene.is_empty() {
             return;
         }
+        let fb = &mut self.framebuffer;
         let scene = &self.scene;
-        let tiles = &mut self.framebuffer.tiles;
-        match &self.pool {
+        let pool = &self.pool;
+        let shade = |tiles: &mut [Tile]| match pool {
             Some(pool) => pool.install(|| shade_all(scene, tiles)),
             None => shade_all(scene, tiles),
+        };
+        match fb.draw {
+            DrawTarget::One(buffer) => {
+                fb.make_resident(buffer);
+                shade(&mut fb.tiles);
+            }
+            DrawTarget::None => {
+                // Depth and stencil are still written; the colour is put back afterwards.
+                let saved: Vec<Vec<[u8; 4]>> = fb.tiles.iter().map(|t| t.color.clone()).collect();
+                shade(&mut fb.tiles);
+                for (tile, color) in fb.tiles.iter_mut().zip(saved) {
+                    tile.color = color;
+                }
+            }
+            DrawTarget::Both => {
+                // Each colour buffer gets the same fragments and blends with its own content.
+                // Depth and stencil results do not depend on the colour buffer, so the second
+                // pass starts from the same depth/stencil as the first and ends identically.
+                let saved: Vec<(Vec<u32>, Vec<u8>)> = fb
+                    .tiles
+                    .iter()
+                    .map(|t| (t.depth.clone(), t.stencil.clone()))
+                    .collect();
+                fb.make_resident(ColorBuffer::Back);
+                shade(&mut fb.tiles);
+                for (tile, (depth, stencil)) in fb.tiles.iter_mut().zip(saved) {
+                    tile.depth = depth;
+                    tile.stencil = stencil;
+                }
+                fb.make_resident(ColorBuffer::Front);
+                shade(&mut fb.tiles);
+                fb.make_resident(ColorBuffer::Back);
+            }
         }
         self.scene.reset();
     }

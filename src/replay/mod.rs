@@ -3,5 +3,7 @@
 //! dispatch ([`dispatch`]).
 
 pub mod dispatch;
+pub mod player;
+pub mod reference;
 pub mod script;
 pub mod trace;

@@ -211,7 +211,10 @@ impl Context {
                     LsbFirst { pack } => bool1(s(pack).lsb_first),
                 }
             }
-            Query::Doublebuffer | Query::Stereo | Query::IndexMode => bool1(false),
+            Query::Doublebuffer => bool1(cfg.double_buffer),
+            Query::DrawBuffer => Enum(self.buffers.draw),
+            Query::ReadBuffer => Enum(self.buffers.read),
+            Query::Stereo | Query::IndexMode => bool1(false),
             Query::RgbaMode => bool1(true),
             Query::PointSize => Floats(vec![self.raster.point_size as f64]),
             Query::PointSizeRange => Floats(limits::POINT_SIZE_RANGE.map(|v| v as f64).to_vec()),

@@ -4,6 +4,7 @@
 #[macro_use]
 mod textures;
 pub mod arrays;
+pub mod buffers;
 pub mod fog;
 pub mod get;
 pub mod lighting;
@@ -89,6 +90,8 @@ pub struct Context {
     /// Texture objects, bindings and per-unit enables.
     pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
+    /// `glDrawBuffer` / `glReadBuffer` settings.
+    pub(crate) buffers: buffers::BufferSelection,
     pub(crate) scene: Scene,
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
     pub(crate) draw_state: Option<Arc<DrawState>>,
@@ -166,6 +169,7 @@ impl Context {
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
+            buffers: buffers::BufferSelection::new(config.framebuffer.double_buffer),
             framebuffer,
             scene,
             draw_state: None,
@@ -188,6 +192,7 @@ impl Context {
             return;
         }
         self.framebuffer = Framebuffer::new(width, height, self.framebuffer.config);
+        self.apply_buffer_selection();
         self.scene = Scene::new(&self.framebuffer);
         self.draw_state = None;
     }
@@ -647,6 +652,8 @@ impl Gl for Context {
         clear,
         pixel_storei,
         pixel_storef,
+        draw_buffer,
+        read_buffer,
         // matrices
         matrix_mode,
         load_identity,

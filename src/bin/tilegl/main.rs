@@ -3,7 +3,8 @@
 //! With no subcommand (`cargo run --release`) it renders the built-in scenes into `out/` and
 //! prints, for each, the PNG's path and how long it took. `tilegl gallery DIR` does the same
 //! into `DIR`. `replay`, `dump`, `conformance` and `bench` are the interfaces promised in
-//! DESIGN.md; those not available yet say so and exit with a non-zero status.
+//! DESIGN.md; `conformance` and `bench` point to the tilegl-conformance crate and exit with
+//! status 3.
 
 mod scenes;
 
@@ -34,7 +35,13 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Replay an apitrace capture or a call script into PNGs (not available yet).
+    /// Replay an apitrace capture or a call script into PNGs, or compare it with reference
+    /// pictures.
+    ///
+    /// Writes frame-NNNN.png (the back buffer just before swap N) for every frame, or those of
+    /// --frames; with --calls, call-NNNNNNNNNN.png (the draw buffer right after call N) for
+    /// each listed call (and frames only when --frames is given too). A capture that never
+    /// swaps, replayed without --calls, gives the picture after its last call.
     Replay {
         /// An apitrace `.trace` file or a call script.
         file: PathBuf,
@@ -51,7 +58,7 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         compare: Option<PathBuf>,
     },
-    /// Dump the calls and state of a trace or call script (not available yet).
+    /// Write an apitrace capture as a call script DIR/NAME.gl (large data in DIR/NAME.blobs/).
     Dump {
         /// An apitrace `.trace` file or a call script.
         file: PathBuf,
@@ -152,27 +159,14 @@ fn main() -> ExitCode {
                 gallery(&dir, &scenes, threads)
             }
         }
-        Some(Command::Replay { file, .. }) => {
-            if let Err(e) = std::fs::metadata(&file) {
-                eprintln!("tilegl replay: cannot read {}: {e}", file.display());
-                return ExitCode::FAILURE;
-            }
-            not_available(
-                "replay",
-                "the apitrace and call-script readers are not written yet (a later issue); \
-                 tilegl can render its built-in scenes meanwhile: `tilegl gallery`",
-            )
-        }
-        Some(Command::Dump { file, .. }) => {
-            if let Err(e) = std::fs::metadata(&file) {
-                eprintln!("tilegl dump: cannot read {}: {e}", file.display());
-                return ExitCode::FAILURE;
-            }
-            not_available(
-                "dump",
-                "the apitrace and call-script readers are not written yet (a later issue)",
-            )
-        }
+        Some(Command::Replay {
+            file,
+            frames,
+            calls,
+            out,
+            compare,
+        }) => replay(&file, frames, &calls, out.as_deref(), compare.as_deref()),
+        Some(Command::Dump { file, out }) => dump(&file, &out),
         Some(Command::Conformance { filter, report, .. }) => {
             let mut run = String::from("cargo test -p tilegl-conformance");
             if let Some(pattern) = filter {
@@ -217,6 +211,209 @@ fn shell_word(s: &str) -> String {
     } else {
         format!("'{}'", s.replace('\'', r"'\''"))
     }
+}
+
+/// Exit status of `replay --compare` when a picture is out of tolerance.
+const OUT_OF_TOLERANCE: u8 = 1;
+/// Exit status when the replay itself failed (bad input, unwritable output).
+const REPLAY_FAILED: u8 = 2;
+
+/// A progress line on stderr, only when stderr is a terminal.
+fn progress_printer() -> impl FnMut(&tilegl::replay::player::ReplayStats) {
+    use std::io::IsTerminal;
+    let on = std::io::stderr().is_terminal();
+    move |s| {
+        if on {
+            eprint!("\r{} calls, {} frames ", s.calls, s.frames);
+        }
+    }
+}
+
+fn end_progress() {
+    use std::io::IsTerminal;
+    if std::io::stderr().is_terminal() {
+        eprint!("\r\x1b[K");
+    }
+}
+
+/// An apitrace capture or a call script (told apart by the first bytes), and whether it is a
+/// script.
+fn open_source(file: &Path) -> Result<(Box<dyn tilegl::replay::player::CallSource>, bool), String> {
+    use std::io::Read;
+    let mut head = [0u8; 2];
+    let n = std::fs::File::open(file)
+        .and_then(|mut f| f.read(&mut head))
+        .map_err(|e| e.to_string())?;
+    if tilegl::replay::script::looks_like_trace(&head[..n]) {
+        let r = tilegl::replay::trace::TraceReader::open(file).map_err(|e| e.to_string())?;
+        Ok((Box::new(r), false))
+    } else {
+        Ok((
+            Box::new(tilegl::replay::script::ScriptReader::open(file)?),
+            true,
+        ))
+    }
+}
+
+/// `tilegl dump FILE -o DIR`: the capture as a call script `DIR/NAME.gl`.
+fn dump(file: &Path, out: &Path) -> ExitCode {
+    let (mut reader, _) = match open_source(file) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("tilegl dump: {}: {e}", file.display());
+            return ExitCode::from(REPLAY_FAILED);
+        }
+    };
+    let name = file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "dump".into());
+    let header = format!(
+        "tilegl call script, dumped from {} by `tilegl dump`.\n\
+         Replay it with `tilegl replay {name}.gl`; call numbers are those of the capture.",
+        file.display()
+    );
+    match tilegl::replay::script::dump(&mut *reader, out, &name, &header) {
+        Ok((path, n)) => {
+            println!("{}", path.display());
+            eprintln!("tilegl dump: {n} calls");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("tilegl dump: {}: {e}", file.display());
+            ExitCode::from(REPLAY_FAILED)
+        }
+    }
+}
+
+fn replay(
+    file: &Path,
+    frames: Option<Frames>,
+    calls: &[u64],
+    out: Option<&Path>,
+    compare: Option<&Path>,
+) -> ExitCode {
+    use tilegl::replay::player::{FrameSelection, Player, Want};
+    let (mut reader, is_script) = match open_source(file) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("tilegl replay: {}: {e}", file.display());
+            return ExitCode::from(REPLAY_FAILED);
+        }
+    };
+    let new_player = || {
+        let mut p = Player::new(0);
+        p.auto_window = is_script;
+        p
+    };
+    if let Some(out) = out {
+        if let Err(e) = std::fs::create_dir_all(out) {
+            eprintln!("tilegl replay: cannot create {}: {e}", out.display());
+            return ExitCode::from(REPLAY_FAILED);
+        }
+    }
+    let mut progress = progress_printer();
+    if let Some(dir) = compare {
+        if frames.is_some() || !calls.is_empty() {
+            eprintln!("tilegl replay: --compare renders the pictures of frames.tsv; --frames and --calls are ignored");
+        }
+        let report = tilegl::replay::reference::compare_replay(
+            &mut *reader,
+            &mut new_player(),
+            dir,
+            out,
+            &mut progress,
+        );
+        end_progress();
+        let report = match report {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("tilegl replay: {e}");
+                return ExitCode::from(REPLAY_FAILED);
+            }
+        };
+        for p in &report.pictures {
+            println!("{}", p.line());
+        }
+        for line in report.stats.report_lines() {
+            eprintln!("tilegl replay: {line}");
+        }
+        if let Some(e) = &report.error {
+            eprintln!("tilegl replay: {}: {e}", file.display());
+        }
+        println!("{}", report.summary());
+        return if report.all_ok() {
+            ExitCode::SUCCESS
+        } else {
+            ExitCode::from(OUT_OF_TOLERANCE)
+        };
+    }
+    let out = out.unwrap_or(Path::new("."));
+    let frames_sel = match frames {
+        Some(f) => FrameSelection::Range {
+            start: f.start,
+            end: f.end,
+        },
+        None if calls.is_empty() => FrameSelection::All,
+        None => FrameSelection::None,
+    };
+    let want = Want {
+        frames: frames_sel,
+        calls: calls.iter().copied().collect(),
+        // Stop after the last picture asked for (all frames: play to the end).
+        stop_early: true,
+    };
+    let mut written = 0u64;
+    let mut sink = |p: tilegl::replay::player::Picture| -> Result<(), String> {
+        let path = out.join(&p.file);
+        p.image
+            .save_with_format(&path, image::ImageFormat::Png)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        println!("{}", path.display());
+        written += 1;
+        Ok(())
+    };
+    let mut player = new_player();
+    let result = player.play(&mut *reader, &want, &mut sink, &mut progress);
+    end_progress();
+    let stats = match result {
+        Ok(s) => s,
+        Err(e) => {
+            for line in player.stats().report_lines() {
+                eprintln!("tilegl replay: {line}");
+            }
+            eprintln!("tilegl replay: {}: {e}", file.display());
+            return ExitCode::from(REPLAY_FAILED);
+        }
+    };
+    // A capture that never swaps (piglit -auto): the picture after the last call.
+    if stats.frames == 0 && calls.is_empty() && frames.is_none() {
+        if let Some(last) = stats.last_call {
+            if let Some(ctx) = player.last_context() {
+                let rgba = ctx.color_image(ctx.draw_color_buffer());
+                let image = image::DynamicImage::ImageRgba8(rgba).to_rgb8();
+                let path = out.join(tilegl::replay::player::call_file(last));
+                match image.save_with_format(&path, image::ImageFormat::Png) {
+                    Ok(()) => {
+                        println!("{}", path.display());
+                        written += 1;
+                    }
+                    Err(e) => {
+                        eprintln!("tilegl replay: cannot write {}: {e}", path.display());
+                        return ExitCode::from(REPLAY_FAILED);
+                    }
+                }
+            }
+        }
+    }
+    for line in stats.report_lines() {
+        eprintln!("tilegl replay: {line}");
+    }
+    eprintln!(
+        "tilegl replay: {} calls, {} frames, {written} pictures",
+        stats.calls, stats.frames
+    );
+    ExitCode::SUCCESS
 }
 
 fn not_available(command: &str, why: &str) -> ExitCode {

@@ -1,0 +1,147 @@
+//! `tilegl replay` end to end: the compare path on a capture that matches and on one that does
+//! not (exit status and one line per picture), writing frames, and bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn traces_dir() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!("shared captures not found at {}; skipping", dir.display());
+        None
+    }
+}
+
+fn tilegl() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tilegl"))
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("tilegl-replay-cli-{}-{tag}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn compare_reports_each_picture_and_passes_within_tolerance() {
+    let Some(dir) = traces_dir() else { return };
+    let out = temp_dir("compare");
+    let o = tilegl()
+        .arg("replay")
+        .arg(dir.join("xss-timetunnel.trace"))
+        .arg("--compare")
+        .arg(dir.join("xss-timetunnel.frames"))
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines.len(), 4, "{stdout}");
+    for (line, f) in lines
+        .iter()
+        .zip(["frame-0007.png", "frame-0008.png", "frame-0009.png"])
+    {
+        assert!(
+            line.starts_with(f) && line.contains("PSNR") && line.ends_with("ok"),
+            "{line}"
+        );
+        let png = image::open(out.join(f)).unwrap();
+        assert_eq!((png.width(), png.height()), (320, 240));
+    }
+    assert!(
+        lines[3].starts_with("3/3 pictures within tolerance"),
+        "{}",
+        lines[3]
+    );
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn compare_fails_when_a_picture_is_out_of_tolerance() {
+    let Some(dir) = traces_dir() else { return };
+    // The NV_texture_env_combine4 test uses an extension tilegl does not have.
+    let name = "piglit-nv_texture_env_combine4-combine";
+    let o = tilegl()
+        .arg("replay")
+        .arg(dir.join(format!("{name}.trace")))
+        .arg("--compare")
+        .arg(dir.join(format!("{name}.frames")))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{stdout}\n{stderr}");
+    assert!(
+        stdout.lines().filter(|l| l.ends_with("FAIL")).count() == 3,
+        "{stdout}"
+    );
+    // Each GL error source is reported once, with its first call.
+    assert_eq!(stderr.matches("glTexEnvi raised").count(), 1, "{stderr}");
+    assert!(stderr.contains("first at call 329"), "{stderr}");
+}
+
+#[test]
+fn replay_writes_the_requested_frames_and_calls() {
+    let Some(dir) = traces_dir() else { return };
+    let out = temp_dir("frames");
+    let o = tilegl()
+        .arg("replay")
+        .arg(dir.join("xss-cage.trace"))
+        .args(["--frames", "28..30", "--calls", "100", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let mut files: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    assert_eq!(
+        files,
+        ["call-0000000100.png", "frame-0028.png", "frame-0029.png"]
+    );
+    // The frame is the reference picture (within tolerance, checked in replay_compare.rs).
+    let ours = image::open(out.join("frame-0029.png")).unwrap().to_rgb8();
+    let reference = image::open(dir.join("xss-cage.frames/frame-0029.png"))
+        .unwrap()
+        .to_rgb8();
+    let d = tilegl::replay::reference::diff_rgb(&ours, &reference, 8);
+    assert!(d.bad_share < 0.001, "{d}");
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn bad_input_fails_with_a_message_naming_the_call() {
+    let Some(dir) = traces_dir() else { return };
+    let tmp = temp_dir("bad");
+    // Several snappy chunks: the cut falls after many good calls.
+    let bytes = std::fs::read(dir.join("xss-atlantis.trace")).unwrap();
+    let cut = tmp.join("cut.trace");
+    std::fs::write(&cut, &bytes[..bytes.len() * 9 / 10]).unwrap();
+    let o = tilegl()
+        .arg("replay")
+        .arg(&cut)
+        .arg("-o")
+        .arg(&tmp)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains(": call "), "{stderr}");
+    let missing = tilegl()
+        .args(["replay", "/nonexistent.trace"])
+        .output()
+        .unwrap();
+    assert_eq!(missing.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&tmp);
+}
