@@ -994,6 +994,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         BASE_SCENES,
         crate::scenes_texture::TEXTURE_SCENES,
         crate::scenes_raster::RASTER_SCENES,
+        crate::scenes_examples::EXAMPLE_SCENES,
     ]
     .concat()
 });
