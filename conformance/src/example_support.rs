@@ -229,7 +229,9 @@ pub fn diff_image(a: &Image, b: &Image) -> Image {
 }
 
 /// One implementation's run of a scene: the picture, the stages, the `glGetError` result and
-/// the time the GL calls took (best of a few runs, up to `glFinish`).
+/// the time the GL calls took (best of a few runs, each on a fresh context, up to `glFinish`;
+/// it includes the scene's own CPU work such as building procedural textures, the same on both
+/// sides, and on Mesa llvmpipe's shader compilation for each new state).
 pub struct Run {
     pub image: Image,
     pub stages: Vec<Stage>,
@@ -402,7 +404,8 @@ pub fn run(example: &str, scenes: &[&str]) {
             }
         }
         println!(
-            "  error against run time: tilegl {:.2} ms, Mesa {:.2} ms, PSNR {:.2} dB",
+            "  error against run time: tilegl {:.2} ms, Mesa {:.2} ms, PSNR {:.2} dB \
+             (fresh context per run: Mesa's time includes llvmpipe compiling its shaders)",
             ms(t.time),
             ms(m.time),
             d.psnr

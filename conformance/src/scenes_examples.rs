@@ -70,6 +70,13 @@ pub const EXAMPLE_SCENES: &[Scene] = &[
     ex("ex_gloss_map", ex_gloss_map, 128, 128, DIFFERENTIAL),
     ex("ex_sphere_map", ex_sphere_map, 128, 128, DIFFERENTIAL),
     ex("ex_cube_map", ex_cube_map, 128, 128, DIFFERENTIAL),
+    ex(
+        "ex_cube_map_dynamic",
+        ex_cube_map_dynamic,
+        128,
+        128,
+        DIFFERENTIAL,
+    ),
     ex("ex_emboss_bump", ex_emboss_bump, 128, 128, DIFFERENTIAL),
     ex("ex_dot3_bump", ex_dot3_bump, 128, 128, DIFFERENTIAL),
     ex(
@@ -771,6 +778,145 @@ fn ex_cube_map(gl: &mut dyn Gl) {
     gl.enable(GL_TEXTURE_GEN_T);
     gl.enable(GL_TEXTURE_GEN_R);
     torus(gl, 1.0, 0.42, 40, 20);
+}
+
+/// The world of the dynamic cube map: a lit checkered floor and coloured boxes in a ring.
+fn dyn_world(gl: &mut dyn Gl, checker: u32) {
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.7, 0.0]);
+    material(gl, [1.0, 1.0, 1.0, 1.0], 0.0, 1.0);
+    gl.bind_texture(GL_TEXTURE_2D, checker);
+    gl.enable(GL_TEXTURE_2D);
+    grid(gl, 8, &|gl, u, v| {
+        gl.normal_3f(0.0, 1.0, 0.0);
+        gl.tex_coord_2f(6.0 * u, 6.0 * v);
+        gl.vertex_3f(-4.0 + 8.0 * u, 0.0, 4.0 - 8.0 * v);
+    });
+    gl.disable(GL_TEXTURE_2D);
+    // Boxes in a ring, leaving a gap towards the camera (+z).
+    let colours = [
+        [0.9, 0.2, 0.2],
+        [0.9, 0.8, 0.2],
+        [0.2, 0.8, 0.3],
+        [0.2, 0.7, 0.9],
+        [0.3, 0.3, 0.9],
+        [0.8, 0.3, 0.8],
+    ];
+    for (k, c) in colours.iter().enumerate() {
+        let a = (10.0 + 40.0 * k as f32).to_radians() + std::f32::consts::PI;
+        material(gl, [c[0], c[1], c[2], 1.0], 0.0, 1.0);
+        let h = 0.4 + 0.15 * k as f32;
+        cuboid(gl, [2.07 * a.cos(), h, 2.07 * a.sin()], [0.3, h, 0.3]);
+    }
+    gl.disable(GL_LIGHTING);
+}
+
+const DYN_CENTRE: V3 = [0.0, 0.6, 0.0];
+const DYN_EYE: V3 = [0.3, 1.9, 3.3];
+
+/// A dynamic cube map: the world is rendered six times from the reflecting object's centre
+/// (90-degree frustum, one view per face) and each view copied into its face with
+/// glCopyTexSubImage2D; the sphere then reflects it with GL_REFLECTION_MAP texgen, the texture
+/// matrix turning the eye-space reflection vector back into world space.
+fn ex_cube_map_dynamic(gl: &mut dyn Gl) {
+    clear_to(gl, [0.45, 0.6, 0.85]);
+    gl.enable(GL_DEPTH_TEST);
+    let checker_px = paint(32, 32, 3, |u, v| {
+        if ((u * 8.0) as i32 + (v * 8.0) as i32) % 2 == 0 {
+            [0.85, 0.85, 0.8, 1.0]
+        } else {
+            [0.35, 0.35, 0.4, 1.0]
+        }
+    });
+    let checker = tex2d(gl, 32, 32, GL_RGB, &checker_px);
+    sampling(gl, GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_REPEAT);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_CUBE_MAP, name[0]);
+    const N: i32 = 64;
+    for i in 0..6 {
+        let face = GL_TEXTURE_CUBE_MAP_POSITIVE_X + i;
+        gl.tex_image_2d(
+            face,
+            0,
+            GL_RGB as i32,
+            N,
+            N,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+    }
+    sampling(
+        gl,
+        GL_TEXTURE_CUBE_MAP,
+        GL_LINEAR,
+        GL_LINEAR,
+        GL_CLAMP_TO_EDGE,
+    );
+    // The six views: looking along +x, -x, +y, -y, +z, -z with the "up" vectors that make
+    // window coordinates match the faces' (s, t) orientation (GL 1.5 table 3.19).
+    let views: [(V3, V3); 6] = [
+        ([1.0, 0.0, 0.0], [0.0, -1.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [0.0, -1.0, 0.0]),
+        ([0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
+        ([0.0, -1.0, 0.0], [0.0, 0.0, -1.0]),
+        ([0.0, 0.0, 1.0], [0.0, -1.0, 0.0]),
+        ([0.0, 0.0, -1.0], [0.0, -1.0, 0.0]),
+    ];
+    gl.viewport(0, 0, N, N);
+    for (i, (dir, up)) in views.into_iter().enumerate() {
+        gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.load_identity();
+        perspective(gl, 90.0, 1.0, 0.1, 20.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.load_identity();
+        let c = DYN_CENTRE;
+        look_at(gl, c, [c[0] + dir[0], c[1] + dir[1], c[2] + dir[2]], up);
+        dyn_world(gl, checker);
+        let face = GL_TEXTURE_CUBE_MAP_POSITIVE_X + i as GLenum;
+        gl.bind_texture(GL_TEXTURE_CUBE_MAP, name[0]);
+        gl.copy_tex_sub_image_2d(face, 0, 0, 0, 0, 0, N, N);
+    }
+    for (i, face) in ["px", "nx", "py", "ny", "pz", "nz"].iter().enumerate() {
+        snap_texture(
+            gl,
+            &format!("face_{face}"),
+            GL_TEXTURE_CUBE_MAP_POSITIVE_X + i as GLenum,
+            0,
+            [N, N, 1],
+        );
+    }
+    // The camera's view: the world, then the mirror sphere.
+    gl.viewport(0, 0, 128, 128);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    camera(gl, 50.0, 1.0, DYN_EYE, DYN_CENTRE);
+    dyn_world(gl, checker);
+    // Texture matrix: the inverse of the camera's rotation (its transpose).
+    let f = norm(sub(DYN_CENTRE, DYN_EYE));
+    let s = norm(cross(f, [0.0, 1.0, 0.0]));
+    let u = cross(s, f);
+    gl.matrix_mode(GL_TEXTURE);
+    gl.load_matrixf(&[
+        s[0], s[1], s[2], 0.0, u[0], u[1], u[2], 0.0, -f[0], -f[1], -f[2], 0.0, 0.0, 0.0, 0.0, 1.0,
+    ]);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_CUBE_MAP);
+    for c in [GL_S, GL_T, GL_R] {
+        gl.tex_geni(c, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP as i32);
+    }
+    gl.enable(GL_TEXTURE_GEN_S);
+    gl.enable(GL_TEXTURE_GEN_T);
+    gl.enable(GL_TEXTURE_GEN_R);
+    gl.enable(GL_NORMALIZE);
+    gl.translatef(DYN_CENTRE[0], DYN_CENTRE[1], DYN_CENTRE[2]);
+    gl.scalef(0.6, 0.6, 0.6);
+    crate::scenes::sphere(gl, 24, 32);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -13,6 +13,7 @@ differential!(
     ex_gloss_map,
     ex_sphere_map,
     ex_cube_map,
+    ex_cube_map_dynamic,
     ex_emboss_bump,
     ex_dot3_bump,
     ex_projective_texture,
