@@ -147,20 +147,45 @@ pub fn snap_texture(gl: &mut dyn Gl, name: &str, target: GLenum, level: i32, siz
     let mut q = [0i32];
     gl.get_tex_level_parameteriv(target, level, GL_TEXTURE_INTERNAL_FORMAT, &mut q);
     let fmt = q[0];
-    let image = if [
+    let fmt = fmt as GLenum;
+    let is = |list: &[GLenum]| list.contains(&fmt);
+    let floats = |bytes: &[u8]| -> Vec<f32> {
+        bytes
+            .chunks(4)
+            .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+            .collect()
+    };
+    let image = if is(&[
         GL_DEPTH_COMPONENT,
         GL_DEPTH_COMPONENT16,
         GL_DEPTH_COMPONENT24,
         GL_DEPTH_COMPONENT32,
-    ]
-    .contains(&(fmt as GLenum))
-    {
+    ]) {
         gl.get_tex_image(target, level, GL_DEPTH_COMPONENT, GL_FLOAT, &mut bytes);
-        let v: Vec<f32> = bytes
-            .chunks(4)
-            .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-            .collect();
-        grey(&v, w, h * d, true)
+        grey(&floats(&bytes), w, h * d, true)
+    } else if is(&[
+        GL_LUMINANCE,
+        GL_LUMINANCE4,
+        GL_LUMINANCE8,
+        GL_LUMINANCE12,
+        GL_LUMINANCE16,
+        GL_INTENSITY,
+        GL_INTENSITY4,
+        GL_INTENSITY8,
+        GL_INTENSITY12,
+        GL_INTENSITY16,
+        GL_ALPHA,
+        GL_ALPHA4,
+        GL_ALPHA8,
+        GL_ALPHA12,
+        GL_ALPHA16,
+    ]) {
+        // One-channel textures: read that channel as floats and show it in grey (read as RGBA
+        // they would come back as (L, 0, 0, 1) or (0, 0, 0, A), GL 1.5 section 6.1.4).
+        let alpha = is(&[GL_ALPHA, GL_ALPHA4, GL_ALPHA8, GL_ALPHA12, GL_ALPHA16]);
+        let format = if alpha { GL_ALPHA } else { GL_LUMINANCE };
+        gl.get_tex_image(target, level, format, GL_FLOAT, &mut bytes);
+        grey(&floats(&bytes), w, h * d, false)
     } else {
         gl.get_tex_image(target, level, GL_RGBA, GL_UNSIGNED_BYTE, &mut bytes);
         Image {

@@ -968,6 +968,8 @@ fn ex_emboss_bump(gl: &mut dyn Gl) {
     gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE as i32);
     gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_CONSTANT as i32);
     gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_PRIMARY_COLOR as i32);
+    // The third operand defaults to GL_SRC_ALPHA (which is 1 here): use the colour.
+    gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND2_RGB, GL_SRC_COLOR as i32);
     gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[1.0, 1.0, 1.0, 1.0]);
     gl.color_3f(0.5, 0.5, 0.5);
     floor_quad(gl, BUMP_X, BUMP_Z, &[(GL_TEXTURE0, 2.0, 2.0)]);
