@@ -10,8 +10,8 @@
 //!   direction.
 //! - The map is view-dependent (it is only right for the view direction it was made for) and the
 //!   texture coordinates are interpolated linearly between vertices, which is why the torus is
-//!   finely tessellated. The red marker is on +x, the blue one on -z (behind the viewer's back
-//!   on the ball's rim).
+//!   finely tessellated. The red marker is on +x; the blue one is on -z, straight ahead of the
+//!   viewer behind the ball, which the sphere map squeezes into its rim.
 //!
 //! Stage: the generated sphere map.
 //!
