@@ -4,11 +4,13 @@
 
 pub mod bench;
 pub mod compare;
+pub mod example_support;
 pub mod known_failures;
 pub mod mesa;
 pub mod prng;
 pub mod scenes;
 pub mod scenes_arrays;
+pub mod scenes_examples;
 pub mod scenes_raster;
 pub mod scenes_texture;
 pub mod tolerance;
