@@ -30,13 +30,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
         "GL_MIRROR_CLAMP_EXT wrap modes and GL_TEXTURE_SWIZZLE_RGBA (extensions Mesa advertised: \
          glTexParameter GL_INVALID_ENUM)",
     ),
-    (
-        "xss-flurry",
-        "the pictures are far darker than Mesa's (17 % of pixels off): each frame's textured \
-         additive quads (MODULATE, mipmapped LUMINANCE_ALPHA sprite, SRC_ALPHA/ONE, faded by a \
-         translucent rectangle) add little; the same quads in immediate mode give the same \
-         pixels, so not the arrays: texturing or blending precision, to investigate",
-    ),
 ];
 
 fn traces_dir() -> Option<PathBuf> {

@@ -20,6 +20,8 @@ differential!(
     smooth_points,
     smooth_lines,
     smooth_polygons,
+    additive_faint_layers,
+    flat_textured_fogged,
     accum_motion_blur,
     accum_ops,
     draw_pixels_color,
