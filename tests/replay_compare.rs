@@ -22,10 +22,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
          compressed ones: GL_INVALID_VALUE), so those panels stay empty",
     ),
     (
-        "piglit-nv_texture_env_combine4-combine",
-        "GL_NV_texture_env_combine4 (glTexEnvi GL_COMBINE4_NV: GL_INVALID_ENUM)",
-    ),
-    (
         "piglit-texwrap-2D-GL_RGBA8",
         "GL_MIRROR_CLAMP_EXT wrap modes and GL_TEXTURE_SWIZZLE_RGBA (extensions Mesa advertised: \
          glTexParameter GL_INVALID_ENUM)",

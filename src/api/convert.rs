@@ -1099,6 +1099,8 @@ pub enum TexEnvMode {
     Blend,
     Add,
     Combine,
+    /// NV_texture_env_combine4: `GL_COMBINE` with a fourth argument.
+    Combine4,
 }
 
 impl TexEnvMode {
@@ -1110,6 +1112,7 @@ impl TexEnvMode {
             TexEnvMode::Blend => GL_BLEND,
             TexEnvMode::Add => GL_ADD,
             TexEnvMode::Combine => GL_COMBINE,
+            TexEnvMode::Combine4 => GL_COMBINE4_NV,
         }
     }
 }
@@ -1122,6 +1125,7 @@ pub fn tex_env_mode(e: GLenum) -> Option<TexEnvMode> {
         GL_BLEND => TexEnvMode::Blend,
         GL_ADD => TexEnvMode::Add,
         GL_COMBINE => TexEnvMode::Combine,
+        GL_COMBINE4_NV => TexEnvMode::Combine4,
         _ => return None,
     })
 }
@@ -1178,6 +1182,8 @@ pub enum CombineSource {
     Constant,
     PrimaryColor,
     Previous,
+    /// `GL_ZERO` (NV_texture_env_combine4).
+    Zero,
 }
 
 impl CombineSource {
@@ -1188,6 +1194,7 @@ impl CombineSource {
             CombineSource::Constant => GL_CONSTANT,
             CombineSource::PrimaryColor => GL_PRIMARY_COLOR,
             CombineSource::Previous => GL_PREVIOUS,
+            CombineSource::Zero => GL_ZERO,
         }
     }
 }
@@ -1198,6 +1205,7 @@ pub fn combine_source(e: GLenum) -> Option<CombineSource> {
         GL_CONSTANT => CombineSource::Constant,
         GL_PRIMARY_COLOR => CombineSource::PrimaryColor,
         GL_PREVIOUS => CombineSource::Previous,
+        GL_ZERO => CombineSource::Zero,
         e if (GL_TEXTURE0..GL_TEXTURE0 + 8).contains(&e) => {
             CombineSource::TextureUnit((e - GL_TEXTURE0) as u8)
         }
@@ -1271,15 +1279,19 @@ pub fn tex_env_param(target: GLenum, pname: GLenum) -> Option<TexEnvParam> {
             GL_SOURCE0_RGB => Source { rgb: true, n: 0 },
             GL_SOURCE1_RGB => Source { rgb: true, n: 1 },
             GL_SOURCE2_RGB => Source { rgb: true, n: 2 },
+            GL_SOURCE3_RGB_NV => Source { rgb: true, n: 3 },
             GL_SOURCE0_ALPHA => Source { rgb: false, n: 0 },
             GL_SOURCE1_ALPHA => Source { rgb: false, n: 1 },
             GL_SOURCE2_ALPHA => Source { rgb: false, n: 2 },
+            GL_SOURCE3_ALPHA_NV => Source { rgb: false, n: 3 },
             GL_OPERAND0_RGB => Operand { rgb: true, n: 0 },
             GL_OPERAND1_RGB => Operand { rgb: true, n: 1 },
             GL_OPERAND2_RGB => Operand { rgb: true, n: 2 },
+            GL_OPERAND3_RGB_NV => Operand { rgb: true, n: 3 },
             GL_OPERAND0_ALPHA => Operand { rgb: false, n: 0 },
             GL_OPERAND1_ALPHA => Operand { rgb: false, n: 1 },
             GL_OPERAND2_ALPHA => Operand { rgb: false, n: 2 },
+            GL_OPERAND3_ALPHA_NV => Operand { rgb: false, n: 3 },
             GL_RGB_SCALE => RgbScale,
             GL_ALPHA_SCALE => AlphaScale,
             _ => return None,
