@@ -118,3 +118,42 @@ fn add_products_follow_the_extension() {
     let want: Vec<u8> = (0..3).map(|i| q(t[i] * p[i])).collect();
     assert_eq!(&got[..3], &want[..]);
 }
+
+#[test]
+fn texture_swizzle_routes_components() {
+    // EXT_texture_swizzle: each sampled component comes from the named one, zero or one.
+    let mut gl = Context::new(8, 8);
+    window_ortho(&mut gl);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[10, 20, 30, 40]),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteriv(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_SWIZZLE_RGBA,
+        &[
+            GL_ALPHA as i32,
+            GL_ZERO as i32,
+            GL_RED as i32,
+            GL_ONE as i32,
+        ],
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, GL_BLUE as i32);
+    let mut q = [0i32; 4];
+    gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, &mut q);
+    assert_eq!(q, [GL_ALPHA, GL_BLUE, GL_RED, GL_ONE].map(|e| e as i32));
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.rectf(0.0, 0.0, 8.0, 8.0);
+    assert_eq!(pixel(&mut gl, 3, 3), [40, 30, 10, 255]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_R, GL_TEXTURE_2D as i32);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+}

@@ -67,7 +67,8 @@ GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secon
 GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
-GL_EXT_texture_lod_bias GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
+GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle \
+GL_ATI_texture_mirror_once GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
 GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context: the state machine, its framebuffer and the deferred scene of binned work.

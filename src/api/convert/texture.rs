@@ -154,6 +154,11 @@ pub enum WrapMode {
     ClampToEdge,
     ClampToBorder,
     MirroredRepeat,
+    /// EXT_texture_mirror_clamp (ATI_texture_mirror_once): the coordinate's magnitude, then
+    /// clamped like `GL_CLAMP`, `GL_CLAMP_TO_EDGE` or `GL_CLAMP_TO_BORDER`.
+    MirrorClamp,
+    MirrorClampToEdge,
+    MirrorClampToBorder,
 }
 
 impl WrapMode {
@@ -164,6 +169,9 @@ impl WrapMode {
             WrapMode::ClampToEdge => GL_CLAMP_TO_EDGE,
             WrapMode::ClampToBorder => GL_CLAMP_TO_BORDER,
             WrapMode::MirroredRepeat => GL_MIRRORED_REPEAT,
+            WrapMode::MirrorClamp => GL_MIRROR_CLAMP_EXT,
+            WrapMode::MirrorClampToEdge => GL_MIRROR_CLAMP_TO_EDGE_EXT,
+            WrapMode::MirrorClampToBorder => GL_MIRROR_CLAMP_TO_BORDER_EXT,
         }
     }
 }
@@ -175,6 +183,9 @@ pub fn wrap_mode(e: GLenum) -> Option<WrapMode> {
         GL_CLAMP_TO_EDGE => WrapMode::ClampToEdge,
         GL_CLAMP_TO_BORDER => WrapMode::ClampToBorder,
         GL_MIRRORED_REPEAT => WrapMode::MirroredRepeat,
+        GL_MIRROR_CLAMP_EXT => WrapMode::MirrorClamp,
+        GL_MIRROR_CLAMP_TO_EDGE_EXT => WrapMode::MirrorClampToEdge,
+        GL_MIRROR_CLAMP_TO_BORDER_EXT => WrapMode::MirrorClampToBorder,
         _ => return None,
     })
 }
@@ -246,6 +257,53 @@ pub enum TexParam {
     MaxAnisotropy,
     /// Query only.
     Resident,
+    /// `GL_TEXTURE_SWIZZLE_R/G/B/A` (EXT_texture_swizzle): the component index.
+    Swizzle(usize),
+    /// `GL_TEXTURE_SWIZZLE_RGBA`: all four.
+    SwizzleRgba,
+}
+
+/// Where a swizzled texture component comes from (EXT_texture_swizzle).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SwizzleSource {
+    Red,
+    Green,
+    Blue,
+    Alpha,
+    Zero,
+    One,
+}
+
+impl SwizzleSource {
+    pub const IDENTITY: [SwizzleSource; 4] = [
+        SwizzleSource::Red,
+        SwizzleSource::Green,
+        SwizzleSource::Blue,
+        SwizzleSource::Alpha,
+    ];
+
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            SwizzleSource::Red => GL_RED,
+            SwizzleSource::Green => GL_GREEN,
+            SwizzleSource::Blue => GL_BLUE,
+            SwizzleSource::Alpha => GL_ALPHA,
+            SwizzleSource::Zero => GL_ZERO,
+            SwizzleSource::One => GL_ONE,
+        }
+    }
+}
+
+pub fn swizzle_source(e: GLenum) -> Option<SwizzleSource> {
+    Some(match e {
+        GL_RED => SwizzleSource::Red,
+        GL_GREEN => SwizzleSource::Green,
+        GL_BLUE => SwizzleSource::Blue,
+        GL_ALPHA => SwizzleSource::Alpha,
+        GL_ZERO => SwizzleSource::Zero,
+        GL_ONE => SwizzleSource::One,
+        _ => return None,
+    })
 }
 
 pub fn tex_param(e: GLenum) -> Option<TexParam> {
@@ -269,6 +327,11 @@ pub fn tex_param(e: GLenum) -> Option<TexParam> {
         GL_DEPTH_TEXTURE_MODE => DepthTextureMode,
         GL_TEXTURE_MAX_ANISOTROPY_EXT => MaxAnisotropy,
         GL_TEXTURE_RESIDENT => Resident,
+        GL_TEXTURE_SWIZZLE_R => Swizzle(0),
+        GL_TEXTURE_SWIZZLE_G => Swizzle(1),
+        GL_TEXTURE_SWIZZLE_B => Swizzle(2),
+        GL_TEXTURE_SWIZZLE_A => Swizzle(3),
+        GL_TEXTURE_SWIZZLE_RGBA => SwizzleRgba,
         _ => return None,
     })
 }
