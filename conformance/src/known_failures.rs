@@ -4,26 +4,9 @@
 
 /// (case name, what goes wrong). Each entry is described in the conformance report.
 pub const KNOWN_FAILURES: &[(&str, &str)] = &[
-    // The line-endpoint cases (line_endpoints, lines, line_strip, flat_lines) were fixed by
-    // the exact diamond-exit test in src/raster/line.rs.
-    ("texmat_nml_repeat", LAMBDA_PER_PIXEL),
-    ("texmat_nml_clamp", LAMBDA_PER_PIXEL),
-    ("texmat_nml_edge", LAMBDA_PER_PIXEL),
-    ("texmat_nml_mirror", LAMBDA_PER_PIXEL),
-    ("texmat_lml_repeat", LAMBDA_PER_PIXEL),
-    ("texmat_lml_edge", LAMBDA_PER_PIXEL),
-    ("texmat_lml_mirror", LAMBDA_PER_PIXEL),
+    // Empty: the line-endpoint cases (line_endpoints, lines, line_strip, flat_lines) were
+    // fixed by the exact diamond-exit test in src/raster/line.rs.
 ];
-
-/// Why the seven `*_MIPMAP_LINEAR` texture-matrix cases differ from llvmpipe by more than the
-/// drivers' own spread. Not a sampler error (the spec lets ρ be approximated either way), but
-/// listed rather than absorbed into the tolerance. Checked by experiment: with one λ per 2x2
-/// quad from finite differences, tilegl lands inside the spread on all of them (nml 2.0-2.3 %,
-/// lml 0.0-1.4 %) and `tex_floor_trilinear` drops from 6.0 % to 0.000 %.
-const LAMBDA_PER_PIXEL: &str = "tilegl takes λ per pixel from the exact derivatives of the \
-    perspective-correct coordinates; llvmpipe and softpipe take one λ per 2x2 quad from finite \
-    differences. Under *_MIPMAP_LINEAR the level blend weight frac(λ) follows λ, so bands along \
-    the λ contours differ by up to 30 (see TOLERANCE.md, texture-matrix scenes)";
 
 /// The reason a case is listed, if it is.
 pub fn known_failure(case: &str) -> Option<&'static str> {

@@ -168,20 +168,23 @@ fn horizon_projection(gl: &mut dyn Gl) {
     gl.load_identity();
 }
 
-/// A ground plane y = -1 from just in front of the near plane to z = -380, its texture
-/// coordinates affine in object space: s in about [-0.8, 1.8] across the nearest row (texels
-/// magnified there), |s| up to ~100 and t up to ~190 at the horizon (strong minification).
-/// `r` is given as a function of t (3D textures).
+/// A ground plane y = -1 from just in front of the near plane to z = -150, its texture
+/// coordinates affine in object space: s in about [-0.3, 1.3] across the nearest row and t
+/// from -0.15 there to 1 at mid-height (texels magnified, the whole [0, 1] square in the lower
+/// half, flanked by the wrapped or clamped coordinates), |s| up to ~60 and t up to ~105 at the
+/// far edge (strong minification). `r` is given as a function of t (3D textures).
 fn horizon_plane(gl: &mut dyn Gl, r_of_t: Option<(f32, f32)>) {
     gl.begin(GL_QUADS);
     for (x, z) in [
         (-80.0f32, -1.05f32),
         (80.0, -1.05),
-        (80.0, -380.0),
-        (-80.0, -380.0),
+        (80.0, -150.0),
+        (-80.0, -150.0),
     ] {
-        let s = 0.5 + 1.2 * x;
-        let t = -0.4 + 0.5 * (-z - 1.05);
+        // Coefficients off round numbers: with s = 0.5 + 0.75 x the pixel centres of whole
+        // rows and columns landed exactly on texel boundaries (ties, which GL leaves open).
+        let s = 0.5137 + 0.7519 * x;
+        let t = -0.1437 + 0.7093 * (-z - 1.05);
         match r_of_t {
             Some((r0, dr)) => gl.tex_coord_3f(s, t, r0 + dr * t),
             None => gl.tex_coord_2f(s, t),
@@ -231,36 +234,36 @@ macro_rules! matrix {
 
 // The figures are the llvmpipe-vs-softpipe bad(>8) shares measured by `calibrate`.
 matrix! {
-    texmat_nearest_repeat = GL_NEAREST, GL_REPEAT, 0.00033;
+    texmat_nearest_repeat = GL_NEAREST, GL_REPEAT, 0.00004;
     texmat_nearest_clamp = GL_NEAREST, GL_CLAMP, 0.0;
     texmat_nearest_edge = GL_NEAREST, GL_CLAMP_TO_EDGE, 0.0;
     texmat_nearest_border = GL_NEAREST, GL_CLAMP_TO_BORDER, 0.0;
-    texmat_nearest_mirror = GL_NEAREST, GL_MIRRORED_REPEAT, 0.00033;
+    texmat_nearest_mirror = GL_NEAREST, GL_MIRRORED_REPEAT, 0.00004;
     texmat_linear_repeat = GL_LINEAR, GL_REPEAT, 0.0;
     texmat_linear_clamp = GL_LINEAR, GL_CLAMP, 0.0;
     texmat_linear_edge = GL_LINEAR, GL_CLAMP_TO_EDGE, 0.0;
     texmat_linear_border = GL_LINEAR, GL_CLAMP_TO_BORDER, 0.0;
     texmat_linear_mirror = GL_LINEAR, GL_MIRRORED_REPEAT, 0.0;
-    texmat_nmn_repeat = GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, 0.02478;
-    texmat_nmn_clamp = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP, 0.02441;
-    texmat_nmn_edge = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP_TO_EDGE, 0.02441;
-    texmat_nmn_border = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP_TO_BORDER, 0.00366;
-    texmat_nmn_mirror = GL_NEAREST_MIPMAP_NEAREST, GL_MIRRORED_REPEAT, 0.02441;
-    texmat_lmn_repeat = GL_LINEAR_MIPMAP_NEAREST, GL_REPEAT, 0.02596;
-    texmat_lmn_clamp = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP, 0.02515;
-    texmat_lmn_edge = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP_TO_EDGE, 0.02771;
-    texmat_lmn_border = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP_TO_BORDER, 0.00427;
-    texmat_lmn_mirror = GL_LINEAR_MIPMAP_NEAREST, GL_MIRRORED_REPEAT, 0.02588;
-    texmat_nml_repeat = GL_NEAREST_MIPMAP_LINEAR, GL_REPEAT, 0.04256;
-    texmat_nml_clamp = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP, 0.04443;
-    texmat_nml_edge = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP_TO_EDGE, 0.04199;
-    texmat_nml_border = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP_TO_BORDER, 0.00098;
-    texmat_nml_mirror = GL_NEAREST_MIPMAP_LINEAR, GL_MIRRORED_REPEAT, 0.04451;
-    texmat_lml_repeat = GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, 0.00667;
-    texmat_lml_clamp = GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP, 0.0;
-    texmat_lml_edge = GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP_TO_EDGE, 0.03337;
+    texmat_nmn_repeat = GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, 0.03821;
+    texmat_nmn_clamp = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP, 0.03898;
+    texmat_nmn_edge = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP_TO_EDGE, 0.03898;
+    texmat_nmn_border = GL_NEAREST_MIPMAP_NEAREST, GL_CLAMP_TO_BORDER, 0.0;
+    texmat_nmn_mirror = GL_NEAREST_MIPMAP_NEAREST, GL_MIRRORED_REPEAT, 0.03796;
+    texmat_lmn_repeat = GL_LINEAR_MIPMAP_NEAREST, GL_REPEAT, 0.0363;
+    texmat_lmn_clamp = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP, 0.03377;
+    texmat_lmn_edge = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP_TO_EDGE, 0.03882;
+    texmat_lmn_border = GL_LINEAR_MIPMAP_NEAREST, GL_CLAMP_TO_BORDER, 0.0;
+    texmat_lmn_mirror = GL_LINEAR_MIPMAP_NEAREST, GL_MIRRORED_REPEAT, 0.03707;
+    texmat_nml_repeat = GL_NEAREST_MIPMAP_LINEAR, GL_REPEAT, 0.08724;
+    texmat_nml_clamp = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP, 0.09733;
+    texmat_nml_edge = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP_TO_EDGE, 0.09627;
+    texmat_nml_border = GL_NEAREST_MIPMAP_LINEAR, GL_CLAMP_TO_BORDER, 0.0;
+    texmat_nml_mirror = GL_NEAREST_MIPMAP_LINEAR, GL_MIRRORED_REPEAT, 0.08915;
+    texmat_lml_repeat = GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, 0.0592;
+    texmat_lml_clamp = GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP, 0.01701;
+    texmat_lml_edge = GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP_TO_EDGE, 0.09652;
     texmat_lml_border = GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP_TO_BORDER, 0.0;
-    texmat_lml_mirror = GL_LINEAR_MIPMAP_LINEAR, GL_MIRRORED_REPEAT, 0.0107;
+    texmat_lml_mirror = GL_LINEAR_MIPMAP_LINEAR, GL_MIRRORED_REPEAT, 0.06185;
     ;
     extra: [
         sized("cube_reflection_sphere", 64, 64, cube_reflection_sphere, 0.0),
@@ -268,8 +271,8 @@ matrix! {
         sized("cube_faces_nearest", 96, 64, cube_faces_nearest, 0.0),
         sized("cube_faces_linear", 96, 64, cube_faces_linear, 0.0),
         sized("tex3d_linear_slices", 64, 64, tex3d_linear_slices, 0.0),
-        sized("tex3d_mipmap_linear", 64, 64, tex3d_mipmap_linear, 0.0896),
-        sized("tex3d_mipmap_nearest", 64, 64, tex3d_mipmap_nearest, 0.05664),
+        sized("tex3d_mipmap_linear", 64, 64, tex3d_mipmap_linear, 0.07861),
+        sized("tex3d_mipmap_nearest", 64, 64, tex3d_mipmap_nearest, 0.05176),
         sized("tex3d_wrap_r", 96, 64, tex3d_wrap_r, 0.0),
         sized("depth_cmp_nearest_luminance", 64, 64, depth_cmp_nearest_luminance, 0.0),
         sized("depth_cmp_nearest_intensity", 64, 64, depth_cmp_nearest_intensity, 0.0),
