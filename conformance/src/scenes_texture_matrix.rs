@@ -285,6 +285,7 @@ matrix! {
         sized("dxt_compressed_nearest", 64, 64, dxt_compressed_nearest, 0.0),
         sized("dxt_compressed_linear", 64, 64, dxt_compressed_linear, 0.0),
         sized("dxt_uncompressed_upload", 64, 64, dxt_uncompressed_upload, 0.0),
+        sized("dxt_compressed_mipmaps", 192, 128, dxt_compressed_mipmaps, 0.0),
     ]
 }
 
@@ -907,5 +908,92 @@ fn dxt_uncompressed_upload(gl: &mut dyn Gl) {
                 [0.0, 1.0, 0.0],
             ],
         );
+    }
+}
+
+/// One hand-built block of format `f` for block `b` of mipmap level `level`: endpoints and
+/// alphas vary with both, so each level looks different; the colour mode alternates.
+fn mip_block(f: GLenum, level: usize, b: usize) -> Vec<u8> {
+    const ENDS: [(u16, u16); 6] = [
+        (0xF800, 0x07E0),
+        (0x001F, 0xFFE0),
+        (0xF81F, 0x07FF),
+        (0x8410, 0xFC00),
+        (0x041F, 0xA145),
+        (0xFFFF, 0x39E7),
+    ];
+    let (mut c0, mut c1) = ENDS[(level + b) % 6];
+    if (level + b) % 2 == 1 {
+        // Three-colour mode (color0 <= color1) for DXT1.
+        (c0, c1) = (c0.min(c1), c0.max(c1));
+    } else {
+        (c0, c1) = (c0.max(c1), c0.min(c1).saturating_sub(1));
+    }
+    let color = color_block(c0, c1, |k| ((k * 3 + k / 4 + level + b) % 4) as u32);
+    let mut out = Vec::new();
+    match f {
+        GL_COMPRESSED_RGBA_S3TC_DXT3_EXT => {
+            let mut a = 0u64;
+            for k in 0..16u64 {
+                a |= ((k * 7 + 3 * level as u64 + b as u64) % 16) << (4 * k);
+            }
+            out.extend_from_slice(&a.to_le_bytes());
+            out.extend_from_slice(&color);
+        }
+        GL_COMPRESSED_RGBA_S3TC_DXT5_EXT => {
+            let a0 = (40 * level + 30) as u8;
+            let a1 = (250 - 35 * level) as u8;
+            let mut bits = 0u64;
+            for k in 0..16u64 {
+                bits |= ((k * 5 + b as u64) % 8) << (3 * k);
+            }
+            out.extend_from_slice(&[a0, a1]);
+            out.extend_from_slice(&bits.to_le_bytes()[..6]);
+            out.extend_from_slice(&color);
+        }
+        _ => out.extend_from_slice(&color),
+    }
+    out
+}
+
+/// Compressed mipmap chains (32x32 down to 1x1, the 2x2 and 1x1 levels partial blocks) through
+/// glCompressedTexImage2D, one row per S3TC format (192x128). Column k is a 32x32 quad with s
+/// and t over [0, 2^k] under NEAREST_MIPMAP_NEAREST: λ = k exactly and every pixel centre falls
+/// on a texel centre of level k, so each column shows one whole level.
+fn dxt_compressed_mipmaps(gl: &mut dyn Gl) {
+    clear(gl);
+    pixel_ortho(gl, 192.0, 128.0);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    for (row, &f) in DXT_FORMATS.iter().enumerate() {
+        new_texture(gl, GL_TEXTURE_2D);
+        for level in 0..6usize {
+            let n = 32usize >> level;
+            let blocks = n.div_ceil(4) * n.div_ceil(4);
+            let data: Vec<u8> = (0..blocks).flat_map(|b| mip_block(f, level, b)).collect();
+            gl.compressed_tex_image_2d(
+                GL_TEXTURE_2D,
+                level as i32,
+                f,
+                n as i32,
+                n as i32,
+                0,
+                data.len() as i32,
+                Some(&data),
+            );
+        }
+        filters_and_wrap(gl, GL_TEXTURE_2D, GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT);
+        for k in 0..6 {
+            let (x0, y0) = (32.0 * k as f32, 32.0 * row as f32);
+            let e = (1u32 << k) as f32;
+            patch(
+                gl,
+                x0,
+                y0,
+                x0 + 32.0,
+                y0 + 32.0,
+                [[0.0, 0.0, 0.0], [e, 0.0, 0.0], [e, e, 0.0], [0.0, e, 0.0]],
+            );
+        }
     }
 }

@@ -54,6 +54,7 @@ differential!(
     dxt_compressed_nearest,
     dxt_compressed_linear,
     dxt_uncompressed_upload,
+    dxt_compressed_mipmaps,
 );
 
 #[test]
