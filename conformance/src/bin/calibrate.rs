@@ -1,7 +1,8 @@
 //! `cargo run --release -p tilegl-conformance --bin calibrate`: measures how far Mesa llvmpipe
 //! and softpipe differ on every differential scene (the driver of this process against the
 //! other one, rendered in a child process), and how far tilegl is from each, as a Markdown table
-//! for `conformance/TOLERANCE.md`.
+//! for `conformance/TOLERANCE.md`. `--filter PREFIX` (repeatable) limits it to the scenes whose
+//! names start with PREFIX; `--dump DIR` also writes the pictures.
 
 use tilegl_conformance::compare::{self, diff, Diff};
 use tilegl_conformance::mesa;
