@@ -28,11 +28,10 @@ const fn ex(name: &'static str, draw: fn(&mut dyn Gl), w: i32, h: i32, tol: Tole
 }
 
 /// The mipmapping scenes' tolerances: channel threshold 24 and the bad-pixel share llvmpipe and
-/// softpipe show at that threshold (`--bin calibrate`). tilegl evaluates the level of detail per
-/// pixel from exact derivatives, both Mesa drivers per 2x2 quad from finite differences, so
-/// the level-blend weights differ by a few percent everywhere (up to 25/255 with levels of
-/// distinct colours) and level switches move by a row; whole-level or whole-texel errors exceed
-/// 24. Reasoning and figures in `conformance/TOLERANCE.md` ("Example scenes").
+/// softpipe show at that threshold (`--bin calibrate`), set when tilegl still took λ per pixel;
+/// with λ per 2x2 quad (as Mesa) the level-blend weights agree to within 10/255 and a few
+/// level switches remain; whole-level or whole-texel errors exceed 24. Reasoning and figures in
+/// `conformance/TOLERANCE.md` ("Example scenes").
 const MIP_FILTERS: Tolerance = Tolerance {
     channel: 24,
     max_bad_share: 0.00537,

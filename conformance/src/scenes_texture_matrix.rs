@@ -12,9 +12,9 @@
 //! 2. cube maps (`cube_*`), 3D textures (`tex3d_*`), depth textures with
 //!    `GL_TEXTURE_COMPARE_MODE` (`depth_cmp_*`) and S3TC (`dxt_*`).
 //!
-//! Tolerances: the llvmpipe-versus-softpipe spread measured on each scene with
-//! `--bin calibrate --filter` (see the texture-matrix section of `conformance/TOLERANCE.md`),
-//! or the normal rule where that spread is below it.
+//! Tolerances: the normal rule, except `cube_reflection_mipmap`, held to the
+//! llvmpipe-versus-softpipe spread measured with `--bin calibrate --filter` (see the
+//! texture-matrix section of `conformance/TOLERANCE.md`).
 
 use crate::compare::Scene;
 use crate::scenes::{clear, scene_with, sphere, spread};
@@ -226,7 +226,10 @@ macro_rules! matrix {
         /// The texture-matrix scenes, in report order: part 1 (filter x wrap, six formats
         /// each), then part 2.
         pub const TEXTURE_MATRIX_SCENES: &[Scene] = &[
-            $( sized(stringify!($name), 192, 128, $name, $measured), )*
+            // With λ per 2x2 quad (as Mesa computes it) every plane scene is within the
+            // normal rule of llvmpipe; the measured llvmpipe-vs-softpipe figures stay in the
+            // table for reference (and in conformance/TOLERANCE.md).
+            $( sized(stringify!($name), 192, 128, $name, { let _ = $measured; 0.0 }), )*
             $( $extra, )*
         ];
     };
@@ -271,8 +274,9 @@ matrix! {
         sized("cube_faces_nearest", 96, 64, cube_faces_nearest, 0.0),
         sized("cube_faces_linear", 96, 64, cube_faces_linear, 0.0),
         sized("tex3d_linear_slices", 64, 64, tex3d_linear_slices, 0.0),
-        sized("tex3d_mipmap_linear", 64, 64, tex3d_mipmap_linear, 0.07861),
-        sized("tex3d_mipmap_nearest", 64, 64, tex3d_mipmap_nearest, 0.05176),
+        // Within the rule since λ is taken per 2x2 quad (spread 7.861 % and 5.176 %).
+        sized("tex3d_mipmap_linear", 64, 64, tex3d_mipmap_linear, 0.0),
+        sized("tex3d_mipmap_nearest", 64, 64, tex3d_mipmap_nearest, 0.0),
         sized("tex3d_wrap_r", 96, 64, tex3d_wrap_r, 0.0),
         sized("depth_cmp_nearest_luminance", 64, 64, depth_cmp_nearest_luminance, 0.0),
         sized("depth_cmp_nearest_intensity", 64, 64, depth_cmp_nearest_intensity, 0.0),
