@@ -733,11 +733,11 @@ pub fn run_ladder(cfg: &BenchConfig) {
         downsample(&r.image, 4)
     };
     let mut rows = Vec::new();
-    for q in 0..LADDER.len() {
+    for (q, setting) in LADDER.iter().enumerate() {
         c.quality = q;
         let t = run_tilegl(&c, &data, 2);
         let m = run_mesa(&c, &data).ok().map(|(r, _)| r);
-        rows.push((LADDER[q].0, t, m));
+        rows.push((setting.0, t, m));
     }
     println!(
         "{:<10} {:>12} {:>14} {:>12} {:>14}",
