@@ -16,12 +16,6 @@ use tilegl::replay::trace::TraceReader;
 /// Captures that do not match yet, and why.
 const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
-        "piglit-dlist-color-material",
-        "glMaterial on a parameter that GL_COLOR_MATERIAL tracks (here from a display list) \
-         changes the material in tilegl; Mesa ignores such calls, so the material stays the \
-         current colour (piglit expects green, tilegl draws red: 50 % of pixels off)",
-    ),
-    (
         "xss-polyhedra",
         "the flat-shaded Utah teapot of glEvalMesh2(GL_FILL): tilegl draws the quad strips the \
          specification defines, Mesa draws triangle strips, so its flat colours change per \
