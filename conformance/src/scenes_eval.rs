@@ -17,6 +17,7 @@ pub const EVAL_SCENES: &[Scene] = &[
         eval_rational_patch_normal_map,
     ),
     scene_128("eval_grid_meshes", eval_grid_meshes),
+    scene_128("eval_other_targets", eval_other_targets),
 ];
 
 const fn scene_128(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
@@ -324,4 +325,220 @@ fn eval_grid_meshes(gl: &mut dyn Gl) {
     // A grid over a wider domain than the map's: extrapolated.
     gl.map_grid_2f(6, -0.1, 1.1, 5, 0.0, 1.0);
     gl.eval_mesh_2(GL_LINE, 0, 6, 0, 5);
+}
+
+/// The remaining map targets: `MAP2_TEXTURE_COORD_1` into a 1D texture,
+/// `MAP2_TEXTURE_COORD_3` into a 3D texture, `MAP2_TEXTURE_COORD_4` (projective) into a 2D
+/// texture, `MAP1_NORMAL` and `MAP1_COLOR_4` (with `COLOR_MATERIAL`) on lit curves,
+/// `MAP1_TEXTURE_COORD_2` on a curve, and `MAP1_INDEX`/`MAP2_INDEX` (no effect in RGBA mode).
+fn eval_other_targets(gl: &mut dyn Gl) {
+    clear(gl);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 128.0, 0.0, 128.0, -100.0, 100.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    let mut tex = [0u32; 3];
+    gl.gen_textures(3, &mut tex);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    // 1D: eight colour bands.
+    let bands: Vec<u8> = (0..8u8)
+        .flat_map(|i| [i * 32, 255 - i * 32, (i % 2) * 255, 255])
+        .collect();
+    gl.bind_texture(GL_TEXTURE_1D, tex[0]);
+    gl.tex_image_1d(
+        GL_TEXTURE_1D,
+        0,
+        GL_RGBA as i32,
+        8,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&bands),
+    );
+    gl.tex_parameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    // 3D: 4 x 4 x 2 cells.
+    let cells: Vec<u8> = (0..32u8)
+        .flat_map(|i| [(i % 4) * 80, ((i / 4) % 4) * 80, (i / 16) * 255, 255])
+        .collect();
+    gl.bind_texture(GL_TEXTURE_3D, tex[1]);
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_RGBA as i32,
+        4,
+        4,
+        2,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&cells),
+    );
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    // 2D: a checker.
+    let checker: Vec<u8> = (0..64)
+        .flat_map(|i| {
+            if (i % 8 + i / 8) % 2 == 0 {
+                [250u8, 250, 250, 255]
+            } else {
+                [40, 90, 160, 255]
+            }
+        })
+        .collect();
+    gl.bind_texture(GL_TEXTURE_2D, tex[2]);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        8,
+        8,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&checker),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+
+    // A flat bilinear square of 56 x 56, placed three times.
+    let square = [
+        0.0, 0.0, 0.0, 0.0, 56.0, 0.0, 56.0, 0.0, 0.0, 56.0, 56.0, 0.0f32,
+    ];
+    gl.map_2f(GL_MAP2_VERTEX_3, 0.0, 1.0, 6, 2, 0.0, 1.0, 3, 2, &square);
+    gl.enable(GL_MAP2_VERTEX_3);
+    gl.map_2f(GL_MAP2_INDEX, 0.0, 1.0, 1, 1, 0.0, 1.0, 1, 1, &[5.0]);
+    gl.enable(GL_MAP2_INDEX);
+    gl.map_grid_2f(14, 0.0, 1.0, 14, 0.0, 1.0);
+
+    gl.push_matrix();
+    gl.translatef(4.0, 68.0, 0.0);
+    gl.enable(GL_TEXTURE_1D);
+    // s quadratic in u alone (uorder 3, vorder 1): bands of varying width. The texture-
+    // coordinate maps here have no twist (no uv term), so the picture does not depend on how
+    // a quad of the mesh is split into triangles (Mesa: triangle strips; tilegl: quad strips).
+    let s1 = [0.0, 1.6, 0.4f32];
+    gl.map_2f(GL_MAP2_TEXTURE_COORD_1, 0.0, 1.0, 1, 3, 0.0, 1.0, 1, 1, &s1);
+    gl.enable(GL_MAP2_TEXTURE_COORD_1);
+    gl.eval_mesh_2(GL_FILL, 0, 14, 0, 14);
+    gl.disable(GL_MAP2_TEXTURE_COORD_1);
+    gl.disable(GL_TEXTURE_1D);
+    gl.pop_matrix();
+
+    gl.push_matrix();
+    gl.translatef(68.0, 68.0, 0.0);
+    gl.enable(GL_TEXTURE_3D);
+    let s3 = [
+        0.0, 0.0, 0.1, 0.0, 1.0, 0.9, 1.0, 0.0, 0.1, 1.0, 1.0, 0.9f32,
+    ];
+    gl.map_2f(GL_MAP2_TEXTURE_COORD_3, 0.0, 1.0, 6, 2, 0.0, 1.0, 3, 2, &s3);
+    gl.enable(GL_MAP2_TEXTURE_COORD_3);
+    gl.eval_mesh_2(GL_FILL, 0, 14, 0, 14);
+    gl.disable(GL_MAP2_TEXTURE_COORD_3);
+    gl.disable(GL_TEXTURE_3D);
+    gl.pop_matrix();
+
+    gl.push_matrix();
+    gl.translatef(4.0, 4.0, 0.0);
+    gl.enable(GL_TEXTURE_2D);
+    // Projective: q grows along u, so the checker compresses towards u = 1.
+    let s4 = [
+        0.0, 0.0, 0.0, 1.0, 0.0, 4.0, 0.0, 1.0, 4.0, 0.0, 0.0, 2.0, 4.0, 4.0, 0.0, 2.0f32,
+    ];
+    gl.map_2f(GL_MAP2_TEXTURE_COORD_4, 0.0, 1.0, 8, 2, 0.0, 1.0, 4, 2, &s4);
+    gl.enable(GL_MAP2_TEXTURE_COORD_4);
+    // Also enabled, lower dimension: ignored.
+    gl.map_2f(
+        GL_MAP2_TEXTURE_COORD_2,
+        0.0,
+        1.0,
+        2,
+        1,
+        0.0,
+        1.0,
+        2,
+        1,
+        &[0.5, 0.5],
+    );
+    gl.enable(GL_MAP2_TEXTURE_COORD_2);
+    gl.eval_mesh_2(GL_FILL, 0, 14, 0, 14);
+    gl.disable(GL_MAP2_TEXTURE_COORD_4);
+    // Curves textured by MAP1_TEXTURE_COORD_2 along the square's top edge.
+    gl.map_1f(
+        GL_MAP1_VERTEX_3,
+        0.0,
+        1.0,
+        3,
+        3,
+        &[0.0, 58.0, 0.0, 28.0, 66.0, 0.0, 56.0, 58.0, 0.0],
+    );
+    gl.map_1f(
+        GL_MAP1_TEXTURE_COORD_2,
+        0.0,
+        1.0,
+        2,
+        2,
+        &[0.0, 0.5, 1.0, 0.5],
+    );
+    gl.enable(GL_MAP1_VERTEX_3);
+    gl.enable(GL_MAP1_TEXTURE_COORD_2);
+    gl.map_grid_1f(16, 0.0, 1.0);
+    gl.eval_mesh_1(GL_LINE, 0, 16);
+    gl.disable(GL_MAP1_TEXTURE_COORD_2);
+    gl.disable(GL_TEXTURE_2D);
+    gl.pop_matrix();
+
+    // Lit curves: normals from MAP1_NORMAL, diffuse colour from MAP1_COLOR_4 through
+    // COLOR_MATERIAL, index map enabled (no effect).
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.enable(GL_COLOR_MATERIAL);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.0, 0.0, 1.0, 0.0]);
+    gl.map_1f(
+        GL_MAP1_NORMAL,
+        0.0,
+        1.0,
+        3,
+        3,
+        &[-1.0, 0.0, 0.2, 0.0, 0.0, 1.0, 1.0, 0.0, 0.2],
+    );
+    gl.map_1f(
+        GL_MAP1_COLOR_4,
+        0.0,
+        1.0,
+        4,
+        2,
+        &[1.0, 1.0, 0.2, 1.0, 0.2, 1.0, 1.0, 1.0],
+    );
+    gl.map_1f(GL_MAP1_INDEX, 0.0, 1.0, 1, 1, &[3.0]);
+    gl.enable(GL_MAP1_NORMAL);
+    gl.enable(GL_MAP1_COLOR_4);
+    gl.enable(GL_MAP1_INDEX);
+    gl.enable(GL_NORMALIZE);
+    for k in 0..5 {
+        let y = 8.0 + 12.0 * k as f32;
+        gl.map_1f(
+            GL_MAP1_VERTEX_3,
+            0.0,
+            1.0,
+            3,
+            4,
+            &[
+                68.0,
+                y,
+                0.0,
+                84.0,
+                y + 20.0,
+                0.0,
+                108.0,
+                y - 10.0,
+                0.0,
+                124.0,
+                y + 4.0,
+                0.0,
+            ],
+        );
+        gl.eval_mesh_1(GL_LINE, 0, 16);
+    }
 }

@@ -10,6 +10,7 @@ differential!(
     eval_color_texture_patch,
     eval_rational_patch_normal_map,
     eval_grid_meshes,
+    eval_other_targets,
 );
 
 #[test]
