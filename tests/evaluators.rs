@@ -233,14 +233,17 @@ fn grid(i: i32, n: i32, a: f64, b: f64) -> f64 {
 fn eval_mesh_2_is_the_specification_loop_bit_for_bit() {
     let (n, m) = (11, 8);
     let (u1, u2, v1, v2) = (0.1, 0.95, 0.0, 1.0);
-    for (mode, poly) in [
-        (GL_FILL, GL_FILL),
-        (GL_LINE, GL_FILL),
-        (GL_POINT, GL_FILL),
-        (GL_FILL, GL_LINE),
+    for (mode, poly, shade) in [
+        (GL_FILL, GL_FILL, GL_SMOOTH),
+        (GL_LINE, GL_FILL, GL_SMOOTH),
+        (GL_POINT, GL_FILL, GL_SMOOTH),
+        (GL_FILL, GL_LINE, GL_SMOOTH),
+        // Flat shading: one colour per quad of the quad strips (the provoking vertex).
+        (GL_FILL, GL_FILL, GL_FLAT),
     ] {
         let mut a = context(80, 80);
         patch_state(&mut a);
+        a.shade_model(shade);
         a.polygon_mode(GL_FRONT_AND_BACK, poly);
         a.map_grid_2d(n, u1, u2, m, v1, v2);
         a.eval_mesh_2(mode, 1, n, 0, m - 1);
@@ -248,6 +251,7 @@ fn eval_mesh_2_is_the_specification_loop_bit_for_bit() {
 
         let mut b = context(80, 80);
         patch_state(&mut b);
+        b.shade_model(shade);
         b.polygon_mode(GL_FRONT_AND_BACK, poly);
         b.map_grid_2d(n, u1, u2, m, v1, v2);
         let (p1, p2, q1, q2) = (1, n, 0, m - 1);
@@ -297,7 +301,10 @@ fn eval_mesh_2_is_the_specification_loop_bit_for_bit() {
             pa.iter().filter(|p| p[0] > 0).count() > 50,
             "mode {mode:#x}"
         );
-        assert!(pa == pb, "mode {mode:#x} polygon mode {poly:#x}");
+        assert!(
+            pa == pb,
+            "mode {mode:#x} polygon mode {poly:#x} shading {shade:#x}"
+        );
     }
 }
 
