@@ -427,10 +427,12 @@ fn auto_normal_is_the_normalized_cross_product_of_the_partials() {
         let m: f64 = (0.25f64 + 0.0625 + 1.0).sqrt();
         [-0.5 / m, -0.25 / m, 1.0 / m]
     };
-    for (target, k, swap) in [
-        (GL_MAP2_VERTEX_3, 3, false),
-        (GL_MAP2_VERTEX_4, 4, false),
-        (GL_MAP2_VERTEX_3, 3, true),
+    // (target, k, u and v swapped, u domain reversed)
+    for (target, k, swap, reversed) in [
+        (GL_MAP2_VERTEX_3, 3, false, false),
+        (GL_MAP2_VERTEX_4, 4, false, false),
+        (GL_MAP2_VERTEX_3, 3, true, false),
+        (GL_MAP2_VERTEX_3, 3, false, true),
     ] {
         let mut gl = context(32, 32);
         gl.matrix_mode(GL_PROJECTION);
@@ -464,10 +466,14 @@ fn auto_normal_is_the_normalized_cross_product_of_the_partials() {
                 ctrl.extend_from_slice(&[x * w, y * w, z * w, w][..k]);
             }
         }
+        // A domain from 1 to 0 walks the same points, but dp/du changes sign (the chain
+        // rule's 1 / (u2 - u1)), and so does the normal. Mesa differentiates in the
+        // normalized u' instead and keeps the normal.
+        let (u1, u2) = if reversed { (1.0, 0.0) } else { (0.0, 1.0) };
         gl.map_2f(
             target,
-            0.0,
-            1.0,
+            u1,
+            u2,
             3 * k as i32,
             3,
             0.0,
@@ -478,11 +484,11 @@ fn auto_normal_is_the_normalized_cross_product_of_the_partials() {
         );
         gl.enable(target);
         gl.enable(GL_AUTO_NORMAL);
-        gl.map_grid_2f(6, 0.0, 1.0, 6, 0.0, 1.0);
+        gl.map_grid_2f(6, u1, u2, 6, 0.0, 1.0);
         gl.eval_mesh_2(GL_FILL, 0, 6, 0, 6);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         // Swapping u and v reverses the cross product: the normal faces away, unlit.
-        let expect = if swap {
+        let expect = if swap || reversed {
             diffuse([-want_n[0], -want_n[1], -want_n[2]], l)
         } else {
             diffuse(want_n, l)
@@ -490,7 +496,7 @@ fn auto_normal_is_the_normalized_cross_product_of_the_partials() {
         let p = pixel(&mut gl, 16, 16);
         assert!(
             (p[0] as i32 - expect as i32).abs() <= 1,
-            "{target:#x} swap {swap}: {p:?} want {expect}"
+            "{target:#x} swap {swap} reversed {reversed}: {p:?} want {expect}"
         );
     }
 }

@@ -13,7 +13,9 @@
 //! for the generated vertex only: the current values stay what they were ("the evaluated
 //! values do not update the current values"). With no vertex map enabled no vertex results.
 //! `GL_AUTO_NORMAL` gives two-dimensional vertex maps the normal
-//! m / |m|, m = dp/du x dp/dv (for `GL_MAP2_VERTEX_4` of p = (x/w, y/w, z/w)).
+//! m / |m|, m = dp/du x dp/dv (for `GL_MAP2_VERTEX_4` of p = (x/w, y/w, z/w)). The partial
+//! derivatives are in the domain coordinates u and v, so a reversed domain (u2 < u1) reverses
+//! the normal; Mesa 22 differentiates in the normalized u', v' and does not.
 //!
 //! `glEvalMesh*` and `glEvalPoint*` are the `glBegin`/`glEvalCoord`/`glEnd` loops the
 //! specification defines them as, over the grid of `glMapGrid*` (u = i * du + u1, exactly u2 at
