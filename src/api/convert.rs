@@ -6,9 +6,11 @@ use super::enums::*;
 use super::types::GLenum;
 
 mod arrays;
+mod eval;
 mod texture;
 #[allow(unused_imports)]
 pub use arrays::*;
+pub use eval::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -255,6 +257,11 @@ pub enum Capability {
     PolygonOffsetFill,
     PolygonOffsetLine,
     PolygonOffsetPoint,
+    /// `GL_MAP1_*` evaluator enables.
+    Map1(EvalTarget),
+    /// `GL_MAP2_*` evaluator enables.
+    Map2(EvalTarget),
+    AutoNormal,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -288,6 +295,9 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_TEXTURE_GEN_R => Capability::TexGen(2),
         GL_TEXTURE_GEN_Q => Capability::TexGen(3),
         e if light_index(e).is_some() => Capability::Light(light_index(e)?),
+        GL_AUTO_NORMAL => Capability::AutoNormal,
+        e if map1_target(e).is_some() => Capability::Map1(map1_target(e)?),
+        e if map2_target(e).is_some() => Capability::Map2(map2_target(e)?),
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }
@@ -594,6 +604,8 @@ pub enum Query {
     PixelRect(PixelRectQuery),
     /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
     Arrays(ArrayQuery),
+    /// Evaluator grids and limits (`convert::eval`).
+    Eval(EvalQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -610,6 +622,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(q) = array_query(e) {
         return Some(Arrays(q));
+    }
+    if let Some(q) = eval_query(e) {
+        return Some(Eval(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,

@@ -3,6 +3,8 @@
 
 #[macro_use]
 mod textures;
+#[macro_use]
+pub mod evaluators;
 pub mod arrays;
 pub mod buffers;
 pub mod fog;
@@ -123,6 +125,8 @@ pub struct Context {
     pub(crate) client: arrays::ClientState,
     /// Display lists.
     pub(crate) lists: lists::ListState,
+    /// Evaluator maps, enables and grids.
+    pub(crate) eval: evaluators::EvalState,
 }
 
 impl Context {
@@ -196,6 +200,7 @@ impl Context {
             force_general_path: false,
             client: Default::default(),
             lists: Default::default(),
+            eval: Default::default(),
         }
     }
 
@@ -372,6 +377,9 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0] = on,
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1] = on,
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2] = on,
+            Capability::Map1(t) => self.eval.map1_enabled[t.index()] = on,
+            Capability::Map2(t) => self.eval.map2_enabled[t.index()] = on,
+            Capability::AutoNormal => self.eval.auto_normal = on,
         }
         self.invalidate();
     }
@@ -424,6 +432,9 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0],
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1],
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2],
+            Capability::Map1(t) => self.eval.map1_enabled[t.index()],
+            Capability::Map2(t) => self.eval.map2_enabled[t.index()],
+            Capability::AutoNormal => self.eval.auto_normal,
         }
     }
 
@@ -592,6 +603,7 @@ impl Gl for Context {
     }
 
     texture_entry_points!();
+    evaluator_entry_points!();
 
     gl_forward_all!(
         raster_pos_2s,
