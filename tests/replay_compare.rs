@@ -15,11 +15,8 @@ use tilegl::replay::trace::TraceReader;
 
 /// Captures that do not match yet, and why (from the unknown calls and GL errors the replay
 /// reports, and from looking at the pictures).
-const KNOWN_FAILURES: &[(&str, &str)] = &[(
-    "piglit-copyteximage-2D",
-    "glCopyTexImage2D into GL 3 internal formats (GL_RED, GL_RG, float and generic \
-         compressed ones: GL_INVALID_VALUE), so those panels stay empty",
-)];
+/// Empty: every shared capture matches.
+const KNOWN_FAILURES: &[(&str, &str)] = &[];
 
 fn traces_dir() -> Option<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");

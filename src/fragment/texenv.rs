@@ -32,7 +32,7 @@ pub fn apply(
     use BaseFormat::*;
     let (has_color, has_alpha) = match base {
         Alpha => (false, true),
-        Luminance | Rgb | DepthComponent => (true, false),
+        Luminance | Rgb | DepthComponent | Red | Rg => (true, false),
         LuminanceAlpha | Rgba => (true, true),
         Intensity => (true, true),
     };

@@ -599,6 +599,8 @@ impl BaseFormat {
             BaseFormat::Rgb => GL_RGB,
             BaseFormat::Rgba => GL_RGBA,
             BaseFormat::DepthComponent => GL_DEPTH_COMPONENT,
+            BaseFormat::Red => GL_RED,
+            BaseFormat::Rg => GL_RG,
         }
     }
 }
@@ -656,6 +658,25 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT16 => (DepthComponent, 16),
         GL_DEPTH_COMPONENT24 => (DepthComponent, 24),
         GL_DEPTH_COMPONENT32 => (DepthComponent, 32),
+        // Beyond GL 1.5, for captures of programs run on newer drivers: ARB_texture_rg and its
+        // generic compressed forms (stored uncompressed), the float formats of
+        // ARB_texture_float (stored as 16- or 32-bit normalised values: what they receive from
+        // an 8-bit framebuffer or [0, 1] data is kept exactly), and the depth-stencil formats'
+        // depth (the stencil part is not kept).
+        GL_RED | GL_COMPRESSED_RED | GL_R8 => (Red, 8),
+        GL_R16 => (Red, 16),
+        GL_RG | GL_COMPRESSED_RG | GL_RG8 => (Rg, 8),
+        GL_RG16 => (Rg, 16),
+        GL_R16F => (Red, 16),
+        GL_R32F => (Red, 32),
+        GL_RG16F => (Rg, 16),
+        GL_RG32F => (Rg, 32),
+        GL_RGB16F_ARB => (Rgb, 16),
+        GL_RGB32F_ARB => (Rgb, 32),
+        GL_RGBA16F_ARB => (Rgba, 16),
+        GL_RGBA32F_ARB => (Rgba, 32),
+        GL_DEPTH24_STENCIL8_EXT => (DepthComponent, 24),
+        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (DepthComponent, 32),
         GL_COMPRESSED_RGB => {
             return Some(if dims == 2 {
                 InternalFormat::s3tc(value, S3tcFormat::RgbDxt1)
