@@ -69,7 +69,10 @@ const EXTRA_ENUMS: [&str; 2] = ["GL_COMPRESSED_RED", "GL_COMPRESSED_RG"];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands.
-const COMMAND_EXTENSIONS: [&str; 1] = ["GL_EXT_compiled_vertex_array"];
+const COMMAND_EXTENSIONS: [&str; 2] = [
+    "GL_EXT_compiled_vertex_array",
+    "GL_EXT_blend_equation_separate",
+];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -521,6 +524,18 @@ fn main() {
                     .entry(target.clone())
                     .or_default()
                     .push(c.name.clone());
+            }
+        }
+    }
+    // Extension entry points that later became core (glBlendEquationSeparateEXT, core in
+    // GL 2.0): the core name is an alias of the extension one, for programs that call it.
+    for c in commands.values() {
+        if let Some(target) = &c.alias_of {
+            if core_cmd_set.contains(&c.name) && !core_cmd_set.contains(target) {
+                cmd_aliases
+                    .entry(c.name.clone())
+                    .or_default()
+                    .push(target.clone());
             }
         }
     }

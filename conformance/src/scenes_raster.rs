@@ -36,6 +36,7 @@ pub const RASTER_SCENES: &[Scene] = &[
     // three triangles' perimeters add up to 286 pixels = 7.0 % of the picture.
     scene_with("smooth_polygons", smooth_polygons, spread(0.070)),
     scene("additive_faint_layers", additive_faint_layers),
+    scene("blend_equation_separate", blend_equation_separate),
     scene("flat_textured_fogged", flat_textured_fogged),
     scene("accum_motion_blur", accum_motion_blur),
     scene("accum_ops", accum_ops),
@@ -754,4 +755,30 @@ fn flat_textured_fogged(gl: &mut dyn Gl) {
         gl.vertex_2f(x, y);
     }
     gl.end();
+}
+
+/// EXT_blend_equation_separate: different equations for colour and alpha, alpha shown by a
+/// second pass that writes destination alpha as colour.
+fn blend_equation_separate(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_color(0.3, 0.5, 0.2, 0.6);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    let modes = [
+        (GL_FUNC_ADD, GL_MIN),
+        (GL_FUNC_SUBTRACT, GL_MAX),
+        (GL_FUNC_REVERSE_SUBTRACT, GL_FUNC_ADD),
+        (GL_MAX, GL_FUNC_SUBTRACT),
+    ];
+    for (k, (rgb, alpha)) in modes.into_iter().enumerate() {
+        gl.blend_equation_separate_ext(rgb, alpha);
+        gl.color_4f(0.6, 0.2 + 0.1 * k as f32, 0.5, 0.2 + 0.2 * k as f32);
+        gl.rectf(16.0 * k as f32, 0.0, 16.0 * k as f32 + 16.0, 64.0);
+    }
+    // Show destination alpha in the upper half: colour = dst alpha (blend DST_ALPHA, ZERO).
+    gl.blend_equation(GL_FUNC_ADD);
+    gl.blend_func(GL_DST_ALPHA, GL_ZERO);
+    gl.color_4f(1.0, 1.0, 1.0, 1.0);
+    gl.rectf(0.0, 32.0, 64.0, 64.0);
 }

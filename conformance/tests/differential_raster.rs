@@ -21,6 +21,7 @@ differential!(
     smooth_lines,
     smooth_polygons,
     additive_faint_layers,
+    blend_equation_separate,
     flat_textured_fogged,
     accum_motion_blur,
     accum_ops,

@@ -63,7 +63,8 @@ GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_text
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
 GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra \
-GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract \
+GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
+GL_EXT_blend_minmax GL_EXT_blend_subtract \
 GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
 GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color \
 GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
@@ -723,6 +724,7 @@ impl Gl for Context {
         blend_func_separate,
         blend_color,
         blend_equation,
+        blend_equation_separate_ext,
         logic_op,
         // lighting
         lightf,
