@@ -22,6 +22,7 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
         attrs,
         perspective: t.perspective,
         coverage: 1.0,
+        fast_lambda: Default::default(),
     };
     let half = SUBPIXEL / 2;
     'rows: for y in y_lo..y_hi {
