@@ -14,7 +14,7 @@ use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan};
-use crate::texture::simd::{self, lerp8, Level8};
+use crate::texture::simd::{self, lerp8, Level8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
 #[derive(Clone, Debug)]
@@ -151,6 +151,68 @@ fn shade<
         }
         _ => None,
     };
+    if TEX == tex_mode::FAST_RGBA
+        && (BLEND == blend_mode::ALPHA_OVER || key.blend.is_none())
+        && key.logic_op.is_none()
+        && key.stencil.is_none()
+        && !key.color_sum
+        && key.fog.is_none()
+        && it.coverage == 1.0
+    {
+        if let Some(f) = &fast {
+            if f.affine.as_ref().is_some_and(|a| a.simd.is_some()) && simd::available() {
+                let tail = Tail8 {
+                    modulate: f.modulate,
+                    alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
+                    blend_over: key.blend.is_some(),
+                    color_mask: u32::from_le_bytes(
+                        key.color_mask.map(|m| if m { 0xFF } else { 0 }),
+                    ),
+                };
+                let mut i = 0;
+                while i < n {
+                    let count = (n - i).min(8);
+                    let mut primary = [[0f32; 8]; 4];
+                    let mut depth = [0u32; 8];
+                    let mut pass = 0u8;
+                    for j in 0..count {
+                        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+                        for c in 0..4 {
+                            primary[c][j] = attr[c] * w;
+                        }
+                        let d = depth_to_fixed(z, ds.depth_max);
+                        z += dz;
+                        inv_w += dinv_w;
+                        for c in 0..4 {
+                            attr[c] += dattr[c];
+                        }
+                        depth[j] = d;
+                        let ok = match key.depth_func {
+                            None | Some(CompareFunc::Always) => true,
+                            Some(func) => func.test(d, tile.depth[row + i + j]),
+                        };
+                        pass |= u8::from(ok) << j;
+                    }
+                    let tex = f.texels_soa(it, x0 as f64 + i as f64 + 0.5, yc, count);
+                    let mut dst = [0u32; 8];
+                    for (j, d) in dst.iter_mut().enumerate().take(count) {
+                        *d = u32::from_le_bytes(tile.color[row + i + j]);
+                    }
+                    // Always answers: AVX2 was detected above.
+                    if let Some((words, passed)) = simd::shade8(&tail, &primary, &tex, &dst, pass) {
+                        for j in 0..count {
+                            tile.color[row + i + j] = words[j].to_le_bytes();
+                            if key.depth_write && passed & (1 << j) != 0 {
+                                tile.depth[row + i + j] = depth[j];
+                            }
+                        }
+                    }
+                    i += count;
+                }
+                return;
+            }
+        }
+    }
     let mut texel_buf = [[0f32; 4]; 8];
     for i in 0..n {
         let idx = row + i;
@@ -526,6 +588,39 @@ impl<'a> FastUnit<'a> {
         for (j, o) in out.iter_mut().enumerate().take(count) {
             *o = self.texel::<C>(it, x + j as f64, y);
         }
+    }
+
+    /// The texels of the `count` (at most 8) pixels from centre `x` on row `y` of an RGBA
+    /// texture, as channel arrays (lanes from `count` on are unspecified).
+    #[inline(always)]
+    fn texels_soa(&self, it: &Interpolants, x: f64, y: f64, count: usize) -> Texels8 {
+        if let Some(a) = &self.affine {
+            if let Some(levels) = &a.simd {
+                let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
+                let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
+                if let Some([s, t]) = simd::coords8(planes, a.w, a.q, x, count) {
+                    let t1 = simd::filter8(&levels[0], a.linear, &s, &t);
+                    let ct = match (t1, a.weight) {
+                        (Some(t1), None) => Some(t1),
+                        (Some(t1), Some(w)) => {
+                            simd::filter8(&levels[1], a.linear, &s, &t).map(|t2| lerp8(&t1, &t2, w))
+                        }
+                        _ => None,
+                    };
+                    if let Some(ct) = ct {
+                        return ct;
+                    }
+                }
+            }
+        }
+        let mut out = [[0f32; 8]; 4];
+        for j in 0..count {
+            let t = self.texel::<4>(it, x + j as f64, y);
+            for c in 0..4 {
+                out[c][j] = t[c];
+            }
+        }
+        out
     }
 
     /// The environment (`REPLACE` or `MODULATE`) on primary colour `primary` and texel `ct`,

@@ -6,7 +6,7 @@
 //! `textured_fast_paths_match_the_general_path` checks it.
 
 use super::sample::FastLevel;
-use crate::api::convert::WrapMode;
+use crate::api::convert::{CompareFunc, WrapMode};
 
 /// Eight pixels' texels as four channel arrays (R, G, B, A).
 pub type Texels8 = [[f32; 8]; 4];
@@ -102,6 +102,46 @@ pub fn coords8(
     None
 }
 
+/// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
+/// [`shade8`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Tail8 {
+    /// `MODULATE` (else `REPLACE`) with an RGBA texture.
+    pub modulate: bool,
+    /// The alpha test's function and reference, when it applies.
+    pub alpha_test: Option<(CompareFunc, f32)>,
+    /// Blend `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA` with `FUNC_ADD` (else no blending).
+    pub blend_over: bool,
+    /// Bytes of the colour words that may be written (the colour mask).
+    pub color_mask: u32,
+}
+
+/// Eight fragments of a textured span after the texture lookup, as the general fragment path
+/// computes them one by one: the environment on the primary colour `primary` (each channel
+/// clamped to [0, 1]) and texel `tex`, the alpha test, conversion to 8 bits, blending with
+/// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
+/// bit j set for fragments that exist and pass the depth test. Answers the new colour words
+/// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
+/// `None` without AVX2.
+#[inline]
+pub fn shade8(
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    tex: &Texels8,
+    dst: &[u32; 8],
+    pass: u8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass) });
+        }
+    }
+    let _ = (tail, primary, tex, dst, pass);
+    None
+}
+
 /// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
 #[inline]
 pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
@@ -118,7 +158,8 @@ pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Level8, Texels8};
+    use super::{Level8, Tail8, Texels8};
+    use crate::api::convert::CompareFunc;
 
     /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
     const MAX_INDEX: f64 = (1 << 30) as f64;
@@ -183,6 +224,99 @@ mod x86 {
     #[target_feature(enable = "avx2")]
     fn lerp(a: __m256, b: __m256, w: __m256) -> __m256 {
         _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), w))
+    }
+
+    /// `color_to_u8` per lane: `c * 255 + 0.5` clamped to [0, 255] (NaN as 0), truncated.
+    #[target_feature(enable = "avx2")]
+    fn to_u8(c: __m256) -> __m256i {
+        let v = _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
+        // max_ps answers its second operand (0) when v is NaN.
+        let v = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(255.0));
+        _mm256_cvttps_epi32(v)
+    }
+
+    #[target_feature(enable = "avx2")]
+    pub fn shade8(
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        tex: &Texels8,
+        dst: &[u32; 8],
+        pass: u8,
+    ) -> ([u32; 8], u8) {
+        // SAFETY: each array holds eight f32; unaligned loads.
+        let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        // c.max(0.0).min(1.0): max_ps answers 0 for NaN.
+        let cf: [__m256; 4] =
+            std::array::from_fn(|c| _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one));
+        let ct: [__m256; 4] = std::array::from_fn(|c| load(&tex[c]));
+        let color: [__m256; 4] = if tail.modulate {
+            std::array::from_fn(|c| _mm256_mul_ps(cf[c], ct[c]))
+        } else {
+            ct
+        };
+        let lanes = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        let live = _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(pass as i32), lanes),
+            lanes,
+        );
+        let mut keep = _mm256_castsi256_ps(live);
+        if let Some((func, reference)) = tail.alpha_test {
+            // alpha.clamp(0.0, 1.0), keeping NaN (min_ps and max_ps answer their second
+            // operand for NaN), then `alpha OP reference` as `CompareFunc::test`.
+            let a = _mm256_max_ps(zero, _mm256_min_ps(one, color[3]));
+            let r = _mm256_set1_ps(reference);
+            let ok = match func {
+                CompareFunc::Never => zero,
+                CompareFunc::Less => _mm256_cmp_ps::<_CMP_LT_OQ>(a, r),
+                CompareFunc::Equal => _mm256_cmp_ps::<_CMP_EQ_OQ>(a, r),
+                CompareFunc::LessEqual => _mm256_cmp_ps::<_CMP_LE_OQ>(a, r),
+                CompareFunc::Greater => _mm256_cmp_ps::<_CMP_GT_OQ>(a, r),
+                CompareFunc::NotEqual => _mm256_cmp_ps::<_CMP_NEQ_UQ>(a, r),
+                CompareFunc::GreaterEqual => _mm256_cmp_ps::<_CMP_GE_OQ>(a, r),
+                CompareFunc::Always => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+            };
+            keep = _mm256_and_ps(keep, ok);
+        }
+        // SAFETY: `dst` holds eight u32; unaligned load.
+        let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
+        let src: [__m256i; 4] = std::array::from_fn(|c| to_u8(color[c]));
+        let out: [__m256i; 4] = if tail.blend_over {
+            let k = _mm256_set1_ps(255.0);
+            let byte = _mm256_set1_epi32(0xFF);
+            let s: [__m256; 4] =
+                std::array::from_fn(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
+            let d: [__m256; 4] = [
+                old,
+                _mm256_srli_epi32::<8>(old),
+                _mm256_srli_epi32::<16>(old),
+                _mm256_srli_epi32::<24>(old),
+            ]
+            .map(|v| _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k));
+            let inv = _mm256_sub_ps(one, s[3]);
+            std::array::from_fn(|c| {
+                to_u8(_mm256_add_ps(
+                    _mm256_mul_ps(s[c], s[3]),
+                    _mm256_mul_ps(d[c], inv),
+                ))
+            })
+        } else {
+            src
+        };
+        let word = _mm256_or_si256(
+            _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
+            _mm256_or_si256(
+                _mm256_slli_epi32::<16>(out[2]),
+                _mm256_slli_epi32::<24>(out[3]),
+            ),
+        );
+        let cm = _mm256_set1_epi32(tail.color_mask as i32);
+        let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));
+        let word = _mm256_blendv_epi8(old, word, _mm256_castps_si256(keep));
+        let mut res = [0u32; 8];
+        // SAFETY: `res` holds eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(res.as_mut_ptr() as *mut __m256i, word) };
+        (res, _mm256_movemask_ps(keep) as u8)
     }
 
     #[target_feature(enable = "avx2")]
