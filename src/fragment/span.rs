@@ -14,7 +14,7 @@ use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan};
-use crate::texture::simd::{self, lerp8, Level8, Tail8, Texels8};
+use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
 #[derive(Clone, Debug)]
@@ -169,6 +169,24 @@ fn shade<
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
                     ),
                 };
+                // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
+                // values from the second pixel on are those of the second pixel (adding a zero
+                // changes at most the sign of a zero, and only once): two pixels are stepped.
+                let steady = dz == 0.0 && dinv_w == 0.0 && dattr[..4].iter().all(|&d| d == 0.0);
+                let mut steady_values = [([0f32; 4], 0u32); 2];
+                if steady {
+                    for v in &mut steady_values {
+                        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+                        v.0 = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+                        v.1 = depth_to_fixed(z, ds.depth_max);
+                        z += dz;
+                        inv_w += dinv_w;
+                        for c in 0..4 {
+                            attr[c] += dattr[c];
+                        }
+                    }
+                }
+                let sampling = f.sampling8(it);
                 let mut i = 0;
                 while i < n {
                     let count = (n - i).min(8);
@@ -176,16 +194,25 @@ fn shade<
                     let mut depth = [0u32; 8];
                     let mut pass = 0u8;
                     for j in 0..count {
-                        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-                        for c in 0..4 {
-                            primary[c][j] = attr[c] * w;
-                        }
-                        let d = depth_to_fixed(z, ds.depth_max);
-                        z += dz;
-                        inv_w += dinv_w;
-                        for c in 0..4 {
-                            attr[c] += dattr[c];
-                        }
+                        let d = if steady {
+                            let (color, d) = steady_values[(i + j).min(1)];
+                            for c in 0..4 {
+                                primary[c][j] = color[c];
+                            }
+                            d
+                        } else {
+                            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+                            for c in 0..4 {
+                                primary[c][j] = attr[c] * w;
+                            }
+                            let d = depth_to_fixed(z, ds.depth_max);
+                            z += dz;
+                            inv_w += dinv_w;
+                            for c in 0..4 {
+                                attr[c] += dattr[c];
+                            }
+                            d
+                        };
                         depth[j] = d;
                         let ok = match key.depth_func {
                             None | Some(CompareFunc::Always) => true,
@@ -193,13 +220,20 @@ fn shade<
                         };
                         pass |= u8::from(ok) << j;
                     }
-                    let tex = f.texels_soa(it, x0 as f64 + i as f64 + 0.5, yc, count);
+                    let x = x0 as f64 + i as f64 + 0.5;
                     let mut dst = [0u32; 8];
                     for (j, d) in dst.iter_mut().enumerate().take(count) {
                         *d = u32::from_le_bytes(tile.color[row + i + j]);
                     }
-                    // Always answers: AVX2 was detected above.
-                    if let Some((words, passed)) = simd::shade8(&tail, &primary, &tex, &dst, pass) {
+                    // `shade8` always answers: AVX2 was detected above.
+                    let shaded = sampling
+                        .as_ref()
+                        .and_then(|sm| simd::textured8(sm, x, count, &tail, &primary, &dst, pass))
+                        .or_else(|| {
+                            let tex = f.texels_scalar(it, x, yc, count);
+                            simd::shade8(&tail, &primary, &tex, &dst, pass)
+                        });
+                    if let Some((words, passed)) = shaded {
                         for j in 0..count {
                             tile.color[row + i + j] = words[j].to_le_bytes();
                             if key.depth_write && passed & (1 << j) != 0 {
@@ -590,29 +624,25 @@ impl<'a> FastUnit<'a> {
         }
     }
 
+    /// The span's sampling for [`simd::textured8`], when it is affine and the eight-pixel
+    /// filter applies.
+    fn sampling8(&self, it: &Interpolants) -> Option<Sampling8<'a>> {
+        let a = self.affine.as_ref()?;
+        let levels = a.simd?;
+        let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
+        Some(Sampling8 {
+            planes: [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]],
+            w: a.w,
+            q: a.q,
+            levels,
+            linear: a.linear,
+            weight: a.weight,
+        })
+    }
+
     /// The texels of the `count` (at most 8) pixels from centre `x` on row `y` of an RGBA
-    /// texture, as channel arrays (lanes from `count` on are unspecified).
-    #[inline(always)]
-    fn texels_soa(&self, it: &Interpolants, x: f64, y: f64, count: usize) -> Texels8 {
-        if let Some(a) = &self.affine {
-            if let Some(levels) = &a.simd {
-                let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
-                let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
-                if let Some([s, t]) = simd::coords8(planes, a.w, a.q, x, count) {
-                    let t1 = simd::filter8(&levels[0], a.linear, &s, &t);
-                    let ct = match (t1, a.weight) {
-                        (Some(t1), None) => Some(t1),
-                        (Some(t1), Some(w)) => {
-                            simd::filter8(&levels[1], a.linear, &s, &t).map(|t2| lerp8(&t1, &t2, w))
-                        }
-                        _ => None,
-                    };
-                    if let Some(ct) = ct {
-                        return ct;
-                    }
-                }
-            }
-        }
+    /// texture, one by one, as channel arrays (lanes from `count` on are 0).
+    fn texels_scalar(&self, it: &Interpolants, x: f64, y: f64, count: usize) -> Texels8 {
         let mut out = [[0f32; 8]; 4];
         for j in 0..count {
             let t = self.texel::<4>(it, x + j as f64, y);

@@ -142,8 +142,46 @@ pub fn shade8(
     None
 }
 
-/// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
+/// What [`textured8`] needs besides the fragments: an affine span's coordinate planes and
+/// level selection.
+#[derive(Clone, Copy, Debug)]
+pub struct Sampling8<'a> {
+    /// The s and t planes as `[a, b * y, c]` for the row.
+    pub planes: [[f64; 3]; 2],
+    /// 1/w and q, constant over the span.
+    pub w: f64,
+    pub q: f64,
+    /// The first level and, with a weight, the second.
+    pub levels: [Level8<'a>; 2],
+    pub linear: bool,
+    pub weight: Option<f32>,
+}
+
+/// [`coords8`], [`filter8`] on one or two levels and [`shade8`] in one go, for the `count`
+/// pixels from centre `x`; `None` when [`coords8`] or [`filter8`] would answer `None`.
 #[inline]
+pub fn textured8(
+    sampling: &Sampling8,
+    x: f64,
+    count: usize,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    dst: &[u32; 8],
+    pass: u8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass) };
+        }
+    }
+    let _ = (sampling, x, count, tail, primary, dst, pass);
+    None
+}
+
+/// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
+#[inline(always)]
 pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
     let mut out = [[0f32; 8]; 4];
     for c in 0..4 {
@@ -158,7 +196,7 @@ pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Level8, Tail8, Texels8};
+    use super::{Level8, Sampling8, Tail8, Texels8};
     use crate::api::convert::CompareFunc;
 
     /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
@@ -235,6 +273,7 @@ mod x86 {
         _mm256_cvttps_epi32(v)
     }
 
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub fn shade8(
         tail: &Tail8,
@@ -247,14 +286,18 @@ mod x86 {
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
         let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
         // c.max(0.0).min(1.0): max_ps answers 0 for NaN.
-        let cf: [__m256; 4] =
-            std::array::from_fn(|c| _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one));
-        let ct: [__m256; 4] = std::array::from_fn(|c| load(&tex[c]));
-        let color: [__m256; 4] = if tail.modulate {
-            std::array::from_fn(|c| _mm256_mul_ps(cf[c], ct[c]))
-        } else {
-            ct
-        };
+        // (Loops rather than `array::from_fn`/`map`: closures passed to functions without
+        // AVX2 would not be inlined.)
+        let mut color = [zero; 4];
+        for c in 0..4 {
+            let ct = load(&tex[c]);
+            color[c] = if tail.modulate {
+                let cf = _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one);
+                _mm256_mul_ps(cf, ct)
+            } else {
+                ct
+            };
+        }
         let lanes = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
         let live = _mm256_cmpeq_epi32(
             _mm256_and_si256(_mm256_set1_epi32(pass as i32), lanes),
@@ -280,26 +323,28 @@ mod x86 {
         }
         // SAFETY: `dst` holds eight u32; unaligned load.
         let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
-        let src: [__m256i; 4] = std::array::from_fn(|c| to_u8(color[c]));
+        let mut src = [_mm256_setzero_si256(); 4];
+        for c in 0..4 {
+            src[c] = to_u8(color[c]);
+        }
         let out: [__m256i; 4] = if tail.blend_over {
             let k = _mm256_set1_ps(255.0);
             let byte = _mm256_set1_epi32(0xFF);
-            let s: [__m256; 4] =
-                std::array::from_fn(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
-            let d: [__m256; 4] = [
+            let d = [
                 old,
                 _mm256_srli_epi32::<8>(old),
                 _mm256_srli_epi32::<16>(old),
                 _mm256_srli_epi32::<24>(old),
-            ]
-            .map(|v| _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k));
-            let inv = _mm256_sub_ps(one, s[3]);
-            std::array::from_fn(|c| {
-                to_u8(_mm256_add_ps(
-                    _mm256_mul_ps(s[c], s[3]),
-                    _mm256_mul_ps(d[c], inv),
-                ))
-            })
+            ];
+            let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
+            let inv = _mm256_sub_ps(one, sa);
+            let mut out = [_mm256_setzero_si256(); 4];
+            for c in 0..4 {
+                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
+                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
+                out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
+            }
+            out
         } else {
             src
         };
@@ -319,6 +364,26 @@ mod x86 {
         (res, _mm256_movemask_ps(keep) as u8)
     }
 
+    #[target_feature(enable = "avx2")]
+    pub fn textured8(
+        sm: &Sampling8,
+        x: f64,
+        count: usize,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        pass: u8,
+    ) -> Option<([u32; 8], u8)> {
+        let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
+        let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
+        if let Some(w) = sm.weight {
+            let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
+            ct = super::lerp8(&ct, &t2, w);
+        }
+        Some(shade8(tail, primary, &ct, dst, pass))
+    }
+
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub fn coords8(
         planes: [[f64; 3]; 2],
@@ -372,6 +437,7 @@ mod x86 {
         Some(out)
     }
 
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub fn filter8(lvl: &Level8, linear: bool, s: &[f32; 8], t: &[f32; 8]) -> Option<Texels8> {
         // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
@@ -392,11 +458,13 @@ mod x86 {
             let t10 = fetch8(lvl, x1, y0);
             let t01 = fetch8(lvl, x0, y1);
             let t11 = fetch8(lvl, x1, y1);
-            std::array::from_fn(|c| {
+            let mut out = [_mm256_setzero_ps(); 4];
+            for c in 0..4 {
                 let row0 = lerp(t00[c], t10[c], wx);
                 let row1 = lerp(t01[c], t11[c], wx);
-                lerp(row0, row1, wy)
-            })
+                out[c] = lerp(row0, row1, wy);
+            }
+            out
         };
         let mut res = [[0f32; 8]; 4];
         for c in 0..4 {
