@@ -28,14 +28,14 @@ pub struct Interpolants<'a> {
     pub perspective: bool,
     /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
     pub coverage: f32,
-    /// λ of the fast textured path's unit where the primitive's 1/w and q are constant (then
-    /// λ is the same at every fragment with finite coordinates): computed by the first span
-    /// that needs it and reused by the others. Start with `None`.
-    pub fast_lambda: Cell<Option<f32>>,
+    /// The fast textured path's level selection where the primitive's 1/w and q are constant
+    /// (then λ is the same at every fragment with finite coordinates): prepared by the first
+    /// span that needs it and reused by the others. Start with `None`.
+    pub fast: Cell<Option<AffineSpan<'a>>>,
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
-pub type SpanFn = fn(&DrawState, &mut Tile, i32, i32, i32, &Interpolants);
+pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
 
 /// Converts window z to a stored depth value (round to nearest, clamped).
 #[inline(always)]
@@ -110,18 +110,19 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
 /// the blending ([`tex_mode`], [`blend_mode`]); the key must agree with them.
 #[inline(always)]
 fn shade<
+    'a,
     const DEPTH: u8,
     const FULL_MASK: bool,
     const SIMPLE: bool,
     const TEX: u8,
     const BLEND: u8,
 >(
-    ds: &DrawState,
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     x0: i32,
     x1: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
 ) {
     let key = &ds.key;
     let u = &ds.uniforms;
@@ -440,7 +441,8 @@ struct FastUnit<'a> {
 /// A span whose 1/w and q planes are constant (as under an orthographic projection): the
 /// derivatives of s and t, hence λ and the levels, are the same at every pixel where s and t
 /// (before the division by q) are finite.
-struct AffineSpan<'a> {
+#[derive(Clone, Copy, Debug)]
+pub struct AffineSpan<'a> {
     /// 1/w and q (after the division by w), non-zero and finite.
     w: f64,
     q: f64,
@@ -466,7 +468,7 @@ fn finite_or_zero(x: f32) -> f32 {
 }
 
 impl<'a> FastUnit<'a> {
-    fn new(u: &'a TextureUnitDraw, it: &Interpolants, xc0: f64, yc: f64) -> FastUnit<'a> {
+    fn new(u: &'a TextureUnitDraw, it: &Interpolants<'a>, xc0: f64, yc: f64) -> FastUnit<'a> {
         let base = attr::TEX + 4 * u.unit;
         FastUnit {
             unit: u,
@@ -478,15 +480,20 @@ impl<'a> FastUnit<'a> {
 
     /// The span's shared level selection, when its 1/w and q planes are constant and its
     /// first pixel's s and t are finite (then every pixel with finite s and t has the first
-    /// pixel's derivatives, up to the sign of zeros, which λ squares away).
+    /// pixel's derivatives, up to the sign of zeros, which λ squares away). Prepared once per
+    /// primitive (`Interpolants::fast`).
     fn affine(
         u: &'a TextureUnitDraw,
-        it: &Interpolants,
+        it: &Interpolants<'a>,
         base: usize,
         xc0: f64,
         yc: f64,
     ) -> Option<AffineSpan<'a>> {
         let p = &it.attrs[base..base + 4];
+        if let Some(mut a) = it.fast.get() {
+            a.by = [p[0].b * yc, p[1].b * yc];
+            return Some(a);
+        }
         if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
             return None;
         }
@@ -502,15 +509,8 @@ impl<'a> FastUnit<'a> {
             return None;
         }
         let tex = &u.texture;
-        let lambda = match it.fast_lambda.get() {
-            Some(lambda) => lambda,
-            None => {
-                let (_, dx, dy) = unit_coords(it, base, xc0, yc);
-                let lambda = tex.isotropic_lambda(dx, dy, u.env.lod_bias);
-                it.fast_lambda.set(Some(lambda));
-                lambda
-            }
-        };
+        let (_, dx, dy) = unit_coords(it, base, xc0, yc);
+        let lambda = tex.isotropic_lambda(dx, dy, u.env.lod_bias);
         let (levels, linear, weight) = match tex.level_plan(lambda) {
             LevelPlan::One { level, linear } => ([level, level], linear, None),
             LevelPlan::Two {
@@ -529,7 +529,7 @@ impl<'a> FastUnit<'a> {
         } else {
             None
         };
-        Some(AffineSpan {
+        let a = AffineSpan {
             w,
             q,
             by: [p[0].b * yc, p[1].b * yc],
@@ -537,7 +537,9 @@ impl<'a> FastUnit<'a> {
             linear,
             weight,
             simd,
-        })
+        };
+        it.fast.set(Some(a));
+        Some(a)
     }
 
     /// The texel at pixel centre (x, y), as the general path samples it.
@@ -699,7 +701,14 @@ fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
 }
 
 /// The general path: every decision read from the key at run time.
-pub fn span_general(ds: &DrawState, tile: &mut Tile, y: i32, x0: i32, x1: i32, it: &Interpolants) {
+pub fn span_general<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
     shade::<{ depth_mode::DYNAMIC }, false, false, { tex_mode::DYNAMIC }, { blend_mode::DYNAMIC }>(
         ds, tile, y, x0, x1, it,
     )
@@ -708,26 +717,26 @@ pub fn span_general(ds: &DrawState, tile: &mut Tile, y: i32, x0: i32, x1: i32, i
 /// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
 /// the colour mask by `FULL_MASK`; everything else read from the key (which must have
 /// `fast_texture` of `TEX`'s layout, no stencil test and no logic op).
-pub fn span_textured<const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
-    ds: &DrawState,
+pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     x0: i32,
     x1: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
 ) {
     shade::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
 /// mode and full colour mask fixed at compile time.
-pub fn span_specialised<const DEPTH: u8, const FULL_MASK: bool>(
-    ds: &DrawState,
+pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     x0: i32,
     x1: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
 ) {
     shade::<DEPTH, FULL_MASK, true, { tex_mode::DYNAMIC }, { blend_mode::DYNAMIC }>(
         ds, tile, y, x0, x1, it,

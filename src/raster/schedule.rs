@@ -53,7 +53,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     attrs,
                     perspective: false,
                     coverage: r.coverage,
-                    fast_lambda: Default::default(),
+                    fast: Default::default(),
                 };
                 let t = crate::framebuffer::TILE as i32;
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));

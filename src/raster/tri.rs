@@ -22,7 +22,7 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
         attrs,
         perspective: t.perspective,
         coverage: 1.0,
-        fast_lambda: Default::default(),
+        fast: Default::default(),
     };
     let half = SUBPIXEL / 2;
     'rows: for y in y_lo..y_hi {
@@ -53,13 +53,13 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
 }
 
 /// Polygon stipple (section 3.5.6): only the runs of pixels whose stipple bit is set.
-fn stippled_row(
-    ds: &DrawState,
+fn stippled_row<'a>(
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     lo: i32,
     hi: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
     pattern: &[u32; 32],
 ) {
     let row = pattern[y.rem_euclid(32) as usize];

@@ -578,7 +578,7 @@ impl Context {
             attrs: planes,
             perspective: false,
             coverage: 1.0,
-            fast_lambda: Default::default(),
+            fast: Default::default(),
         };
         (ds.span)(ds, &mut self.framebuffer.tiles[t], y, x, x + 1, &it);
     }
