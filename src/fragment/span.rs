@@ -106,10 +106,151 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
 /// The per-fragment pipeline in the specification's order: alpha test, stencil test, depth
 /// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
 /// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
+/// by `DEPTH` and the colour mask by `FULL_MASK`.
+#[inline(always)]
+fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants,
+) {
+    let key = &ds.key;
+    let u = &ds.uniforms;
+    let yc = y as f64 + 0.5;
+    let row = tile.index(x0, y);
+    let n = (x1 - x0) as usize;
+    let xc0 = x0 as f64 + 0.5;
+    let mut z = it.z.at(xc0, yc);
+    let dz = it.z.a;
+    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
+    let dinv_w = it.inv_w.a as f32;
+    // Primary colour, then the secondary colour when the colour sum needs it.
+    let na = if !SIMPLE && (key.color_sum || key.texturing) {
+        8
+    } else {
+        4
+    };
+    let mut attr = [0f32; 8];
+    let mut dattr = [0f32; 8];
+    for c in 0..na {
+        attr[c] = it.attrs[c].at(xc0, yc) as f32;
+        dattr[c] = it.attrs[c].a as f32;
+    }
+    for i in 0..n {
+        let idx = row + i;
+        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+        let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        if !SIMPLE && key.texturing {
+            color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
+        }
+        if !SIMPLE && key.color_sum {
+            for c in 0..3 {
+                color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
+            }
+        }
+        if !SIMPLE && key.fog.is_some() {
+            if let Some(f) = &ds.fog {
+                let xc = x0 as f64 + i as f64 + 0.5;
+                let p = &it.attrs[attr::FOG];
+                let c = if it.perspective {
+                    (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
+                } else {
+                    p.at(xc, yc) as f32
+                };
+                let k = f.factor(c);
+                for ch in 0..3 {
+                    color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+                }
+            }
+        }
+        if it.coverage != 1.0 {
+            color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
+        }
+        let z_here = z;
+        // Step the interpolants now, so that every `continue` below moves to the next pixel.
+        z += dz;
+        inv_w += dinv_w;
+        for c in 0..na {
+            attr[c] += dattr[c];
+        }
+        if !SIMPLE {
+            if let Some(f) = key.alpha_func {
+                if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
+                    continue;
+                }
+            }
+        }
+        let depth = depth_to_fixed(z_here, ds.depth_max);
+        let depth_pass = match DEPTH {
+            depth_mode::NONE => true,
+            depth_mode::LESS_WRITE => depth < tile.depth[idx],
+            depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
+            _ => match key.depth_func {
+                None => true,
+                Some(CompareFunc::Always) => true,
+                Some(f) => f.test(depth, tile.depth[idx]),
+            },
+        };
+        if !SIMPLE {
+            if let Some(st) = key.stencil {
+                let old = tile.stencil[idx];
+                let mask = u.stencil_value_mask;
+                let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
+                    tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
+                    continue;
+                } else if depth_pass {
+                    st.depth_pass
+                } else {
+                    st.depth_fail
+                };
+                tile.stencil[idx] = apply_stencil_op(action, old, u);
+            }
+        }
+        if !depth_pass {
+            continue;
+        }
+        let write_depth = match DEPTH {
+            depth_mode::NONE => false,
+            depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
+            _ => key.depth_write,
+        };
+        if write_depth {
+            tile.depth[idx] = depth;
+        }
+        let mut rgba = color.map(color_to_u8);
+        if !SIMPLE {
+            let dst = tile.color[idx];
+            if let Some(op) = key.logic_op {
+                for c in 0..4 {
+                    rgba[c] = op.apply(rgba[c], dst[c]);
+                }
+            } else if let Some(b) = &key.blend {
+                rgba = blend(b, rgba, dst, u.blend_color);
+            }
+        }
+        if FULL_MASK {
+            tile.color[idx] = rgba;
+        } else {
+            let dst = &mut tile.color[idx];
+            for c in 0..4 {
+                if key.color_mask[c] {
+                    dst[c] = rgba[c];
+                }
+            }
+        }
+    }
+}
+
+/// [`shade`] with the texturing and blending fixed at compile time ([`tex_mode`],
+/// [`blend_mode`]) for `span_textured`: the same per-fragment pipeline in the specification's order: alpha test, stencil test, depth
+/// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
+/// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
 /// by `DEPTH` and the colour mask by `FULL_MASK`. `TEX` and `BLEND` fix the texturing and
 /// the blending ([`tex_mode`], [`blend_mode`]); the key must agree with them.
 #[inline(always)]
-fn shade<
+fn shade_textured<
     'a,
     const DEPTH: u8,
     const FULL_MASK: bool,
@@ -709,9 +850,7 @@ pub fn span_general<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<{ depth_mode::DYNAMIC }, false, false, { tex_mode::DYNAMIC }, { blend_mode::DYNAMIC }>(
-        ds, tile, y, x0, x1, it,
-    )
+    shade::<{ depth_mode::DYNAMIC }, false, false>(ds, tile, y, x0, x1, it)
 }
 
 /// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
@@ -725,7 +864,7 @@ pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
+    shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
@@ -738,9 +877,7 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<DEPTH, FULL_MASK, true, { tex_mode::DYNAMIC }, { blend_mode::DYNAMIC }>(
-        ds, tile, y, x0, x1, it,
-    )
+    shade::<DEPTH, FULL_MASK, true>(ds, tile, y, x0, x1, it)
 }
 
 /// Draws nothing (a key whose fragments change no buffer).
