@@ -30,8 +30,9 @@ pub struct Interpolants<'a> {
     pub coverage: f32,
     /// The fast textured path's level selection where the primitive's 1/w and q are constant
     /// (then λ is the same at every fragment with finite coordinates): prepared by the first
-    /// span that needs it and reused by the others. Start with `None`.
-    pub fast: Cell<Option<AffineSpan<'a>>>,
+    /// span that needs it and reused by the others. Start with `None`. (A reference: a larger
+    /// `Interpolants` measurably slows the other paths.)
+    pub fast: &'a Cell<Option<AffineSpan<'a>>>,
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).

@@ -16,13 +16,14 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
     if x_lo >= x_hi || y_lo >= y_hi {
         return;
     }
+    let fast = std::cell::Cell::new(None);
     let it = Interpolants {
         z: t.z,
         inv_w: t.inv_w,
         attrs,
         perspective: t.perspective,
         coverage: 1.0,
-        fast: Default::default(),
+        fast: &fast,
     };
     let half = SUBPIXEL / 2;
     'rows: for y in y_lo..y_hi {
