@@ -381,6 +381,220 @@ fn fast_paths_match_the_general_path() {
     }
 }
 
+/// One textured configuration of `textured_fast_paths_match_the_general_path`.
+struct TexCase {
+    size: (i32, i32),
+    format: GLenum,
+    min: GLenum,
+    mag: GLenum,
+    wrap: GLenum,
+    env: GLenum,
+    blend: Option<(GLenum, GLenum)>,
+    alpha_test: bool,
+    depth_mask: u8,
+    color_mask: [u8; 4],
+    lod_bias: f32,
+}
+
+/// Textured primitives of every kind the fast path must reproduce: window-aligned quads (1/w
+/// constant), quads with a varying q, perspective triangles, coordinates far outside [0, 1]
+/// and huge or infinite ones.
+fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
+    let mut rng = Rng(seed);
+    let (w, h) = c.size;
+    let comps = if c.format == GL_RGB { 3 } else { 4 };
+    let texels: Vec<u8> = (0..w * h * comps)
+        .map(|_| (rng.next_u64() >> 56) as u8)
+        .collect();
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_2D, name[0]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, c.min as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, c.mag as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, c.wrap as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT as i32);
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, c.lod_bias);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        c.format as i32,
+        w,
+        h,
+        0,
+        c.format,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, c.env as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.enable(GL_DEPTH_TEST);
+    gl.depth_func(GL_LESS);
+    gl.clear_color(0.2, 0.3, 0.4, 0.5);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if let Some((src, dst)) = c.blend {
+        gl.enable(GL_BLEND);
+        gl.blend_func(src, dst);
+    }
+    if c.alpha_test {
+        gl.enable(GL_ALPHA_TEST);
+        gl.alpha_func(GL_GREATER, 0.3);
+    }
+    gl.depth_mask(c.depth_mask);
+    let m = c.color_mask;
+    gl.color_mask(m[0], m[1], m[2], m[3]);
+    window_ortho(gl);
+    let color = |gl: &mut Context, rng: &mut Rng| {
+        gl.color_4f(
+            rng.range(0.0, 1.2),
+            rng.range(0.0, 1.0),
+            rng.range(-0.1, 1.0),
+            rng.range(0.2, 1.0),
+        );
+    };
+    // Window-aligned quads with random coordinate scales and offsets.
+    gl.begin(GL_QUADS);
+    for i in 0..150 {
+        let (x, y) = (rng.range(-10.0, 100.0), rng.range(-10.0, 100.0));
+        let half = rng.range(0.5, 30.0);
+        let z = rng.range(-0.9, 0.9);
+        let scale = rng.range(0.05, 6.0);
+        let (s0, t0) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+        let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+        for (k, (dx, dy)) in corners.into_iter().enumerate() {
+            color(gl, &mut rng);
+            let (s, t) = (s0 + scale * (dx + 1.0) / 2.0, t0 + scale * (dy + 1.0) / 2.0);
+            match i % 10 {
+                // q varies per vertex: 1/w is constant, q is not.
+                7 => gl.tex_coord_4f(s, t, 0.0, 1.0 + k as f32 * 0.5),
+                // Huge and non-finite coordinates.
+                8 => gl.tex_coord_2f(s * 1e30, t),
+                9 if k == 2 => gl.tex_coord_2f(f32::INFINITY, t),
+                _ => gl.tex_coord_2f(s, t),
+            }
+            gl.vertex_3f(x + dx * half, y + dy * half, z);
+        }
+    }
+    gl.end();
+    // Perspective triangles.
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.begin(GL_TRIANGLES);
+    for _ in 0..60 {
+        let (cx, cy, cz) = (
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -1.5),
+        );
+        for _ in 0..3 {
+            color(gl, &mut rng);
+            gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+            gl.vertex_3f(
+                cx + rng.range(-2.0, 2.0),
+                cy + rng.range(-2.0, 2.0),
+                cz + rng.range(-1.0, 1.0),
+            );
+        }
+    }
+    gl.end();
+}
+
+#[test]
+fn textured_fast_paths_match_the_general_path() {
+    let over = Some((GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA));
+    let base = TexCase {
+        size: (64, 64),
+        format: GL_RGBA,
+        min: GL_LINEAR_MIPMAP_LINEAR,
+        mag: GL_LINEAR,
+        wrap: GL_REPEAT,
+        env: GL_MODULATE,
+        blend: over,
+        alpha_test: true,
+        depth_mask: 0,
+        color_mask: [1; 4],
+        lod_bias: 0.0,
+    };
+    let cases = [
+        TexCase { ..base },
+        TexCase {
+            depth_mask: 1,
+            alpha_test: false,
+            ..base
+        },
+        TexCase {
+            env: GL_REPLACE,
+            blend: Some((GL_ONE, GL_ONE)),
+            ..base
+        },
+        TexCase {
+            blend: None,
+            color_mask: [1, 0, 1, 1],
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            size: (32, 16),
+            format: GL_RGB,
+            min: GL_NEAREST_MIPMAP_NEAREST,
+            mag: GL_NEAREST,
+            wrap: GL_MIRRORED_REPEAT,
+            ..base
+        },
+        TexCase {
+            size: (48, 20),
+            format: GL_RGB,
+            min: GL_LINEAR_MIPMAP_NEAREST,
+            wrap: GL_CLAMP_TO_EDGE,
+            env: GL_REPLACE,
+            color_mask: [0, 1, 1, 0],
+            ..base
+        },
+        TexCase {
+            size: (20, 48),
+            min: GL_NEAREST_MIPMAP_LINEAR,
+            lod_bias: 0.7,
+            ..base
+        },
+        TexCase {
+            size: (16, 64),
+            min: GL_LINEAR,
+            mag: GL_NEAREST,
+            ..base
+        },
+        TexCase {
+            min: GL_NEAREST,
+            lod_bias: -1.5,
+            blend: Some((GL_SRC_ALPHA, GL_ONE)),
+            ..base
+        },
+        // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
+        TexCase {
+            wrap: GL_CLAMP,
+            ..base
+        },
+        TexCase {
+            env: GL_DECAL,
+            ..base
+        },
+    ];
+    for (i, c) in cases.iter().enumerate() {
+        let render = |general| {
+            let mut gl = Context::new(96, 96);
+            gl.set_force_general_path(general);
+            textured_scene(&mut gl, c, 0x7E57 + i as u64);
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+            read_rgba(&mut gl)
+        };
+        let (general, fast) = (render(true), render(false));
+        let differ = general.iter().zip(&fast).filter(|(a, b)| a != b).count();
+        assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
+    }
+}
+
 fn busy_scene_again(gl: &mut Context) {
     let mut rng = Rng(11);
     gl.begin(GL_TRIANGLE_STRIP);

@@ -67,3 +67,41 @@ pub fn blend(key: &BlendKey, src: [u8; 4], dst: [u8; 4], constant: [f32; 4]) -> 
     }
     out
 }
+
+/// `v / 255` for every 8-bit value, as [`blend`] converts its inputs.
+static UNORM8: [f32; 256] = {
+    let mut t = [0f32; 256];
+    let mut i = 0;
+    while i < 256 {
+        t[i] = i as f32 / 255.0;
+        i += 1;
+    }
+    t
+};
+
+impl BlendKey {
+    /// `FUNC_ADD` with `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA` for colour and alpha: the usual
+    /// "over" blend that [`blend_alpha_over`] computes.
+    pub fn is_alpha_over(&self) -> bool {
+        self.equation == BlendEquation::Add
+            && self.equation_alpha == BlendEquation::Add
+            && self.src_rgb == BlendFactor::SrcAlpha
+            && self.src_alpha == BlendFactor::SrcAlpha
+            && self.dst_rgb == BlendFactor::OneMinusSrcAlpha
+            && self.dst_alpha == BlendFactor::OneMinusSrcAlpha
+    }
+}
+
+/// [`blend`] for a key with [`BlendKey::is_alpha_over`]: the same arithmetic, without the
+/// per-channel choice of factors.
+#[inline(always)]
+pub fn blend_alpha_over(src: [u8; 4], dst: [u8; 4]) -> [u8; 4] {
+    let s = src.map(|v| UNORM8[v as usize]);
+    let d = dst.map(|v| UNORM8[v as usize]);
+    let inv = 1.0 - s[3];
+    let mut out = [0u8; 4];
+    for ch in 0..4 {
+        out[ch] = color_to_u8(s[ch] * s[3] + d[ch] * inv);
+    }
+    out
+}

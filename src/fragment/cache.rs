@@ -1,8 +1,11 @@
 //! Picks the span function for a `FragmentKey`. The set of keys is small and closed today, so
 //! the "cache" is a match over monomorphised functions.
 
-use super::key::FragmentKey;
-use super::span::{depth_mode, span_general, span_nothing, span_specialised, SpanFn};
+use super::key::{FastTexture, FragmentKey};
+use super::span::{
+    blend_mode, depth_mode, span_general, span_nothing, span_specialised, span_textured, tex_mode,
+    SpanFn,
+};
 use crate::api::convert::CompareFunc;
 
 /// The span function for `key`; `force_general` always answers the general path.
@@ -10,7 +13,15 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
     if key.writes_nothing() {
         return span_nothing;
     }
-    if force_general || !key.is_simple() {
+    if force_general {
+        return span_general;
+    }
+    if let Some(layout) = key.fast_texture {
+        if key.stencil.is_none() && key.logic_op.is_none() {
+            return select_textured(key, layout);
+        }
+    }
+    if !key.is_simple() {
         return span_general;
     }
     let full = key.color_mask == [true; 4];
@@ -24,5 +35,23 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
             span_specialised::<{ depth_mode::LEQUAL_WRITE }, true>
         }
         _ => span_general,
+    }
+}
+
+/// The textured span for a key with `fast_texture` (no stencil test, no logic op).
+fn select_textured(key: &FragmentKey, layout: FastTexture) -> SpanFn {
+    use blend_mode::{ALPHA_OVER, DYNAMIC};
+    use tex_mode::{FAST_RGB, FAST_RGBA};
+    let over = key.blend.is_some_and(|b| b.is_alpha_over());
+    let full = key.color_mask == [true; 4];
+    match (layout, over, full) {
+        (FastTexture::Rgba, true, true) => span_textured::<FAST_RGBA, ALPHA_OVER, true>,
+        (FastTexture::Rgba, true, false) => span_textured::<FAST_RGBA, ALPHA_OVER, false>,
+        (FastTexture::Rgba, false, true) => span_textured::<FAST_RGBA, DYNAMIC, true>,
+        (FastTexture::Rgba, false, false) => span_textured::<FAST_RGBA, DYNAMIC, false>,
+        (FastTexture::Rgb, true, true) => span_textured::<FAST_RGB, ALPHA_OVER, true>,
+        (FastTexture::Rgb, true, false) => span_textured::<FAST_RGB, ALPHA_OVER, false>,
+        (FastTexture::Rgb, false, true) => span_textured::<FAST_RGB, DYNAMIC, true>,
+        (FastTexture::Rgb, false, false) => span_textured::<FAST_RGB, DYNAMIC, false>,
     }
 }

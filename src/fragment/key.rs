@@ -27,6 +27,13 @@ pub struct BlendKey {
     pub dst_alpha: BlendFactor,
 }
 
+/// The texel layout of a texture on the fast 2D path (unsigned bytes, no border).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FastTexture {
+    Rgb,
+    Rgba,
+}
+
 /// What the fragment stage must do, with redundant state folded away.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct FragmentKey {
@@ -48,6 +55,10 @@ pub struct FragmentKey {
     pub color_sum: bool,
     /// At least one texture unit applies (the units themselves are in the `DrawState`).
     pub texturing: bool,
+    /// Texturing is one unit that the fast 2D sampler handles
+    /// (`BoundTexture::fast_2d`) under a `REPLACE` or `MODULATE` environment, with texels of
+    /// this base format.
+    pub fast_texture: Option<FastTexture>,
     /// Fog, after the colour sum (parameters in the `DrawState`).
     pub fog: Option<FogMode>,
 }
@@ -123,6 +134,7 @@ impl FragmentKey {
             color_mask: ops.color_mask,
             color_sum,
             texturing: false,
+            fast_texture: None,
             fog: None,
         }
     }

@@ -2,17 +2,22 @@
 //! reads the key at run time; specialised paths are the same code monomorphised on the key,
 //! so a disabled stage is compiled out instead of skipped by a branch.
 
-use super::blend::blend;
+use std::cell::Cell;
+
+use super::blend::{blend, blend_alpha_over};
 use super::key::Uniforms;
 use super::texenv::{self, CombineInputs};
-use crate::api::convert::{CompareFunc, StencilOp};
+use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
-use crate::state::snapshot::attr;
+use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::DrawState;
+use crate::texture::format::BaseFormat;
+use crate::texture::sample::{FastLevel, LevelPlan};
+use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Interpolants<'a> {
     /// Window z in [0, 1].
     pub z: Plane,
@@ -23,10 +28,15 @@ pub struct Interpolants<'a> {
     pub perspective: bool,
     /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
     pub coverage: f32,
+    /// The fast textured path's level selection where the primitive's 1/w and q are constant
+    /// (then λ is the same at every fragment with finite coordinates): prepared by the first
+    /// span that needs it and reused by the others. Start with `None`. (A reference: a larger
+    /// `Interpolants` measurably slows the other paths.)
+    pub fast: &'a Cell<Option<AffineSpan<'a>>>,
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
-pub type SpanFn = fn(&DrawState, &mut Tile, i32, i32, i32, &Interpolants);
+pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
 
 /// Converts window z to a stored depth value (round to nearest, clamped).
 #[inline(always)]
@@ -60,6 +70,22 @@ pub mod depth_mode {
     pub const NONE: u8 = 1;
     pub const LESS_WRITE: u8 = 2;
     pub const LEQUAL_WRITE: u8 = 3;
+}
+
+/// Texturing chosen at compile time: `DYNAMIC` reads the key (every unit through the general
+/// sampler); `FAST_RGB` and `FAST_RGBA` are the one-unit fast 2D path for keys with
+/// `fast_texture` (texels of 3 or 4 unsigned bytes).
+pub mod tex_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const FAST_RGB: u8 = 3;
+    pub const FAST_RGBA: u8 = 4;
+}
+
+/// Blending chosen at compile time: `DYNAMIC` reads the key; `ALPHA_OVER` is a key whose
+/// blending `BlendKey::is_alpha_over`.
+pub mod blend_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const ALPHA_OVER: u8 = 1;
 }
 
 /// Applies a stencil action to `old` under the write mask (section 4.1.5; 8-bit buffer).
@@ -218,6 +244,276 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
     }
 }
 
+/// [`shade`] with the texturing and blending fixed at compile time ([`tex_mode`],
+/// [`blend_mode`]) for `span_textured`: the same per-fragment pipeline in the specification's order: alpha test, stencil test, depth
+/// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
+/// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
+/// by `DEPTH` and the colour mask by `FULL_MASK`. `TEX` and `BLEND` fix the texturing and
+/// the blending ([`tex_mode`], [`blend_mode`]); the key must agree with them.
+#[inline(always)]
+fn shade_textured<
+    'a,
+    const DEPTH: u8,
+    const FULL_MASK: bool,
+    const SIMPLE: bool,
+    const TEX: u8,
+    const BLEND: u8,
+>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    let key = &ds.key;
+    let u = &ds.uniforms;
+    let yc = y as f64 + 0.5;
+    let row = tile.index(x0, y);
+    let n = (x1 - x0) as usize;
+    let xc0 = x0 as f64 + 0.5;
+    let mut z = it.z.at(xc0, yc);
+    let dz = it.z.a;
+    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
+    let dinv_w = it.inv_w.a as f32;
+    // Primary colour, then the secondary colour when the colour sum needs it.
+    let na = if !SIMPLE && (key.color_sum || key.texturing) {
+        8
+    } else {
+        4
+    };
+    let mut attr = [0f32; 8];
+    let mut dattr = [0f32; 8];
+    for c in 0..na {
+        attr[c] = it.attrs[c].at(xc0, yc) as f32;
+        dattr[c] = it.attrs[c].a as f32;
+    }
+    let fast = match TEX {
+        tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
+            ds.units.first().map(|u| FastUnit::new(u, it, xc0, yc))
+        }
+        _ => None,
+    };
+    if TEX == tex_mode::FAST_RGBA
+        && (BLEND == blend_mode::ALPHA_OVER || key.blend.is_none())
+        && key.logic_op.is_none()
+        && key.stencil.is_none()
+        && !key.color_sum
+        && key.fog.is_none()
+        && it.coverage == 1.0
+    {
+        if let Some(f) = &fast {
+            if f.affine.as_ref().is_some_and(|a| a.simd.is_some()) && simd::available() {
+                let tail = Tail8 {
+                    modulate: f.modulate,
+                    alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
+                    blend_over: key.blend.is_some(),
+                    color_mask: u32::from_le_bytes(
+                        key.color_mask.map(|m| if m { 0xFF } else { 0 }),
+                    ),
+                };
+                // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
+                // values from the second pixel on are those of the second pixel (adding a zero
+                // changes at most the sign of a zero, and only once): two pixels are stepped.
+                let steady = dz == 0.0 && dinv_w == 0.0 && dattr[..4].iter().all(|&d| d == 0.0);
+                let mut steady_values = [([0f32; 4], 0u32); 2];
+                if steady {
+                    for v in &mut steady_values {
+                        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+                        v.0 = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+                        v.1 = depth_to_fixed(z, ds.depth_max);
+                        z += dz;
+                        inv_w += dinv_w;
+                        for c in 0..4 {
+                            attr[c] += dattr[c];
+                        }
+                    }
+                }
+                let sampling = f.sampling8(it);
+                let mut i = 0;
+                while i < n {
+                    let count = (n - i).min(8);
+                    let mut primary = [[0f32; 8]; 4];
+                    let mut depth = [0u32; 8];
+                    let mut pass = 0u8;
+                    for j in 0..count {
+                        let d = if steady {
+                            let (color, d) = steady_values[(i + j).min(1)];
+                            for c in 0..4 {
+                                primary[c][j] = color[c];
+                            }
+                            d
+                        } else {
+                            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+                            for c in 0..4 {
+                                primary[c][j] = attr[c] * w;
+                            }
+                            let d = depth_to_fixed(z, ds.depth_max);
+                            z += dz;
+                            inv_w += dinv_w;
+                            for c in 0..4 {
+                                attr[c] += dattr[c];
+                            }
+                            d
+                        };
+                        depth[j] = d;
+                        let ok = match key.depth_func {
+                            None | Some(CompareFunc::Always) => true,
+                            Some(func) => func.test(d, tile.depth[row + i + j]),
+                        };
+                        pass |= u8::from(ok) << j;
+                    }
+                    let x = x0 as f64 + i as f64 + 0.5;
+                    let mut dst = [0u32; 8];
+                    for (j, d) in dst.iter_mut().enumerate().take(count) {
+                        *d = u32::from_le_bytes(tile.color[row + i + j]);
+                    }
+                    // `shade8` always answers: AVX2 was detected above.
+                    let shaded = sampling
+                        .as_ref()
+                        .and_then(|sm| simd::textured8(sm, x, count, &tail, &primary, &dst, pass))
+                        .or_else(|| {
+                            let tex = f.texels_scalar(it, x, yc, count);
+                            simd::shade8(&tail, &primary, &tex, &dst, pass)
+                        });
+                    if let Some((words, passed)) = shaded {
+                        for j in 0..count {
+                            tile.color[row + i + j] = words[j].to_le_bytes();
+                            if key.depth_write && passed & (1 << j) != 0 {
+                                tile.depth[row + i + j] = depth[j];
+                            }
+                        }
+                    }
+                    i += count;
+                }
+                return;
+            }
+        }
+    }
+    let mut texel_buf = [[0f32; 4]; 8];
+    for i in 0..n {
+        let idx = row + i;
+        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+        let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        match (TEX, &fast) {
+            (tex_mode::FAST_RGB, Some(f)) => {
+                color = f.fragment::<3>(it, x0 as f64 + i as f64 + 0.5, yc, color);
+            }
+            (tex_mode::FAST_RGBA, Some(f)) => {
+                if i % 8 == 0 {
+                    let x = x0 as f64 + i as f64 + 0.5;
+                    f.texels8::<4>(it, x, yc, (n - i).min(8), &mut texel_buf);
+                }
+                color = f.env::<4>(color, texel_buf[i % 8]);
+            }
+            _ => {
+                if !SIMPLE && key.texturing {
+                    color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
+                }
+            }
+        }
+        if !SIMPLE && key.color_sum {
+            for c in 0..3 {
+                color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
+            }
+        }
+        if !SIMPLE && key.fog.is_some() {
+            if let Some(f) = &ds.fog {
+                let xc = x0 as f64 + i as f64 + 0.5;
+                let p = &it.attrs[attr::FOG];
+                let c = if it.perspective {
+                    (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
+                } else {
+                    p.at(xc, yc) as f32
+                };
+                let k = f.factor(c);
+                for ch in 0..3 {
+                    color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+                }
+            }
+        }
+        if it.coverage != 1.0 {
+            color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
+        }
+        let z_here = z;
+        // Step the interpolants now, so that every `continue` below moves to the next pixel.
+        z += dz;
+        inv_w += dinv_w;
+        for c in 0..na {
+            attr[c] += dattr[c];
+        }
+        if !SIMPLE {
+            if let Some(f) = key.alpha_func {
+                if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
+                    continue;
+                }
+            }
+        }
+        let depth = depth_to_fixed(z_here, ds.depth_max);
+        let depth_pass = match DEPTH {
+            depth_mode::NONE => true,
+            depth_mode::LESS_WRITE => depth < tile.depth[idx],
+            depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
+            _ => match key.depth_func {
+                None => true,
+                Some(CompareFunc::Always) => true,
+                Some(f) => f.test(depth, tile.depth[idx]),
+            },
+        };
+        if !SIMPLE {
+            if let Some(st) = key.stencil {
+                let old = tile.stencil[idx];
+                let mask = u.stencil_value_mask;
+                let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
+                    tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
+                    continue;
+                } else if depth_pass {
+                    st.depth_pass
+                } else {
+                    st.depth_fail
+                };
+                tile.stencil[idx] = apply_stencil_op(action, old, u);
+            }
+        }
+        if !depth_pass {
+            continue;
+        }
+        let write_depth = match DEPTH {
+            depth_mode::NONE => false,
+            depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
+            _ => key.depth_write,
+        };
+        if write_depth {
+            tile.depth[idx] = depth;
+        }
+        let mut rgba = color.map(color_to_u8);
+        if !SIMPLE {
+            let dst = tile.color[idx];
+            if let Some(op) = key.logic_op {
+                for c in 0..4 {
+                    rgba[c] = op.apply(rgba[c], dst[c]);
+                }
+            } else if let Some(b) = &key.blend {
+                rgba = if BLEND == blend_mode::ALPHA_OVER {
+                    blend_alpha_over(rgba, dst)
+                } else {
+                    blend(b, rgba, dst, u.blend_color)
+                };
+            }
+        }
+        if FULL_MASK {
+            tile.color[idx] = rgba;
+        } else {
+            let dst = &mut tile.color[idx];
+            for c in 0..4 {
+                if key.color_mask[c] {
+                    dst[c] = rgba[c];
+                }
+            }
+        }
+    }
+}
+
 /// Texture coordinates (s, t, r divided by q) of one unit at window point (x, y), in f64.
 #[inline(always)]
 fn coords_at(it: &Interpolants, base: usize, x: f64, y: f64) -> [f64; 3] {
@@ -287,20 +583,313 @@ fn texture_fragment(
     color
 }
 
-/// The general path: every decision read from the key at run time.
-pub fn span_general(ds: &DrawState, tile: &mut Tile, y: i32, x0: i32, x1: i32, it: &Interpolants) {
-    shade::<{ depth_mode::DYNAMIC }, false, false>(ds, tile, y, x0, x1, it)
+/// One unit on the fast 2D path over one span: the texture, the coordinate planes and, for
+/// an affine span, the level selection shared by all its pixels.
+struct FastUnit<'a> {
+    unit: &'a TextureUnitDraw,
+    /// Index of the unit's s plane.
+    base: usize,
+    modulate: bool,
+    affine: Option<AffineSpan<'a>>,
 }
 
-/// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
-/// mode and full colour mask fixed at compile time.
-pub fn span_specialised<const DEPTH: u8, const FULL_MASK: bool>(
-    ds: &DrawState,
+/// A span whose 1/w and q planes are constant (as under an orthographic projection): the
+/// derivatives of s and t, hence λ and the levels, are the same at every pixel where s and t
+/// (before the division by q) are finite.
+#[derive(Clone, Copy, Debug)]
+pub struct AffineSpan<'a> {
+    /// 1/w and q (after the division by w), non-zero and finite.
+    w: f64,
+    q: f64,
+    /// `b * y` of the s and t planes on the span's row.
+    by: [f64; 2],
+    levels: [FastLevel<'a>; 2],
+    linear: bool,
+    /// The second level's weight, when two levels are mixed.
+    weight: Option<f32>,
+    /// The levels for the eight-pixel filter, when the processor, format and wrap modes
+    /// allow it.
+    simd: Option<[Level8<'a>; 2]>,
+}
+
+/// The general path's fix-up of a coordinate that is not finite (q = 0 and the like).
+#[inline(always)]
+fn finite_or_zero(x: f32) -> f32 {
+    if x.is_finite() {
+        x
+    } else {
+        0.0
+    }
+}
+
+impl<'a> FastUnit<'a> {
+    fn new(u: &'a TextureUnitDraw, it: &Interpolants<'a>, xc0: f64, yc: f64) -> FastUnit<'a> {
+        let base = attr::TEX + 4 * u.unit;
+        FastUnit {
+            unit: u,
+            base,
+            modulate: u.env.mode == TexEnvMode::Modulate,
+            affine: Self::affine(u, it, base, xc0, yc),
+        }
+    }
+
+    /// The span's shared level selection, when its 1/w and q planes are constant and its
+    /// first pixel's s and t are finite (then every pixel with finite s and t has the first
+    /// pixel's derivatives, up to the sign of zeros, which λ squares away). Prepared once per
+    /// primitive (`Interpolants::fast`).
+    fn affine(
+        u: &'a TextureUnitDraw,
+        it: &Interpolants<'a>,
+        base: usize,
+        xc0: f64,
+        yc: f64,
+    ) -> Option<AffineSpan<'a>> {
+        let p = &it.attrs[base..base + 4];
+        if let Some(mut a) = it.fast.get() {
+            a.by = [p[0].b * yc, p[1].b * yc];
+            return Some(a);
+        }
+        if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
+            return None;
+        }
+        let w = it.inv_w.at(xc0, yc);
+        if !w.is_finite() || w == 0.0 {
+            return None;
+        }
+        let q = p[3].at(xc0, yc) / w;
+        if !q.is_finite() || q == 0.0 {
+            return None;
+        }
+        if !(p[0].at(xc0, yc) / w).is_finite() || !(p[1].at(xc0, yc) / w).is_finite() {
+            return None;
+        }
+        let tex = &u.texture;
+        let (_, dx, dy) = unit_coords(it, base, xc0, yc);
+        let lambda = tex.isotropic_lambda(dx, dy, u.env.lod_bias);
+        let (levels, linear, weight) = match tex.level_plan(lambda) {
+            LevelPlan::One { level, linear } => ([level, level], linear, None),
+            LevelPlan::Two {
+                levels,
+                linear,
+                weight,
+            } => (levels, linear, Some(weight)),
+        };
+        let levels = [tex.fast_level(levels[0])?, tex.fast_level(levels[1])?];
+        let simd = if u.base == BaseFormat::Rgba && simd::available() {
+            let wrap = tex.wrap_st();
+            match (Level8::new(&levels[0], wrap), Level8::new(&levels[1], wrap)) {
+                (Some(a), Some(b)) => Some([a, b]),
+                _ => None,
+            }
+        } else {
+            None
+        };
+        let a = AffineSpan {
+            w,
+            q,
+            by: [p[0].b * yc, p[1].b * yc],
+            levels,
+            linear,
+            weight,
+            simd,
+        };
+        it.fast.set(Some(a));
+        Some(a)
+    }
+
+    /// The texel at pixel centre (x, y), as the general path samples it.
+    #[inline(always)]
+    fn texel<const C: usize>(&self, it: &Interpolants, x: f64, y: f64) -> [f32; 4] {
+        let tex = &self.unit.texture;
+        if let Some(a) = &self.affine {
+            let (s, t) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
+            let vs = (s.a * x + a.by[0] + s.c) / a.w;
+            let vt = (t.a * x + a.by[1] + t.c) / a.w;
+            if vs.is_finite() && vt.is_finite() {
+                let c = [
+                    finite_or_zero((vs / a.q) as f32),
+                    finite_or_zero((vt / a.q) as f32),
+                ];
+                let t1 = tex.filter_fast::<C>(&a.levels[0], a.linear, c);
+                return match a.weight {
+                    None => t1,
+                    Some(w) => {
+                        let t2 = tex.filter_fast::<C>(&a.levels[1], a.linear, c);
+                        lerp4(t1, t2, w)
+                    }
+                };
+            }
+        }
+        let (c, dx, dy) = unit_coords(it, self.base, x, y);
+        let lambda = tex.isotropic_lambda(dx, dy, self.unit.env.lod_bias);
+        let c2 = [c[0], c[1]];
+        match tex.level_plan(lambda) {
+            LevelPlan::One { level, linear } => match tex.fast_level(level) {
+                Some(l) => tex.filter_fast::<C>(&l, linear, c2),
+                None => tex.sample_grad(c, dx, dy, self.unit.env.lod_bias),
+            },
+            LevelPlan::Two {
+                levels,
+                linear,
+                weight,
+            } => match (tex.fast_level(levels[0]), tex.fast_level(levels[1])) {
+                (Some(l1), Some(l2)) => {
+                    let t1 = tex.filter_fast::<C>(&l1, linear, c2);
+                    let t2 = tex.filter_fast::<C>(&l2, linear, c2);
+                    lerp4(t1, t2, weight)
+                }
+                _ => tex.sample_grad(c, dx, dy, self.unit.env.lod_bias),
+            },
+        }
+    }
+
+    /// The texels of the `count` (at most 8) pixels from centre `x` on row `y`, into
+    /// `out[..count]`: eight at once when the span allows it, else one by one.
+    #[inline(always)]
+    fn texels8<const C: usize>(
+        &self,
+        it: &Interpolants,
+        x: f64,
+        y: f64,
+        count: usize,
+        out: &mut [[f32; 4]; 8],
+    ) {
+        if let Some(a) = &self.affine {
+            if let Some(levels) = &a.simd {
+                let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
+                let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
+                if let Some([s, t]) = simd::coords8(planes, a.w, a.q, x, count) {
+                    let t1 = simd::filter8(&levels[0], a.linear, &s, &t);
+                    let ct = match (t1, a.weight) {
+                        (Some(t1), None) => Some(t1),
+                        (Some(t1), Some(w)) => {
+                            simd::filter8(&levels[1], a.linear, &s, &t).map(|t2| lerp8(&t1, &t2, w))
+                        }
+                        _ => None,
+                    };
+                    if let Some(ct) = ct {
+                        for (j, o) in out.iter_mut().enumerate().take(count) {
+                            *o = [ct[0][j], ct[1][j], ct[2][j], ct[3][j]];
+                        }
+                        return;
+                    }
+                }
+            }
+        }
+        for (j, o) in out.iter_mut().enumerate().take(count) {
+            *o = self.texel::<C>(it, x + j as f64, y);
+        }
+    }
+
+    /// The span's sampling for [`simd::textured8`], when it is affine and the eight-pixel
+    /// filter applies.
+    fn sampling8(&self, it: &Interpolants) -> Option<Sampling8<'a>> {
+        let a = self.affine.as_ref()?;
+        let levels = a.simd?;
+        let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
+        Some(Sampling8 {
+            planes: [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]],
+            w: a.w,
+            q: a.q,
+            levels,
+            linear: a.linear,
+            weight: a.weight,
+        })
+    }
+
+    /// The texels of the `count` (at most 8) pixels from centre `x` on row `y` of an RGBA
+    /// texture, one by one, as channel arrays (lanes from `count` on are 0).
+    fn texels_scalar(&self, it: &Interpolants, x: f64, y: f64, count: usize) -> Texels8 {
+        let mut out = [[0f32; 8]; 4];
+        for j in 0..count {
+            let t = self.texel::<4>(it, x + j as f64, y);
+            for c in 0..4 {
+                out[c][j] = t[c];
+            }
+        }
+        out
+    }
+
+    /// The environment (`REPLACE` or `MODULATE`) on primary colour `primary` and texel `ct`,
+    /// as [`texenv::apply`] computes it for RGB (`C` = 3) and RGBA (`C` = 4) textures.
+    #[inline(always)]
+    fn env<const C: usize>(&self, primary: [f32; 4], ct: [f32; 4]) -> [f32; 4] {
+        let cf = primary.map(|c| c.max(0.0).min(1.0));
+        let a = if C == 4 {
+            if self.modulate {
+                cf[3] * ct[3]
+            } else {
+                ct[3]
+            }
+        } else {
+            cf[3]
+        };
+        if self.modulate {
+            [cf[0] * ct[0], cf[1] * ct[1], cf[2] * ct[2], a]
+        } else {
+            [ct[0], ct[1], ct[2], a]
+        }
+    }
+
+    /// [`texture_fragment`] for this unit: the texel combined with the primary colour by a
+    /// `REPLACE` or `MODULATE` environment (RGB texels keep the fragment's alpha).
+    #[inline(always)]
+    fn fragment<const C: usize>(
+        &self,
+        it: &Interpolants,
+        x: f64,
+        y: f64,
+        primary: [f32; 4],
+    ) -> [f32; 4] {
+        self.env::<C>(primary, self.texel::<C>(it, x, y))
+    }
+}
+
+#[inline(always)]
+fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+    [
+        a[0] + (b[0] - a[0]) * w,
+        a[1] + (b[1] - a[1]) * w,
+        a[2] + (b[2] - a[2]) * w,
+        a[3] + (b[3] - a[3]) * w,
+    ]
+}
+
+/// The general path: every decision read from the key at run time.
+pub fn span_general<'a>(
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     x0: i32,
     x1: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
+) {
+    shade::<{ depth_mode::DYNAMIC }, false, false>(ds, tile, y, x0, x1, it)
+}
+
+/// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
+/// the colour mask by `FULL_MASK`; everything else read from the key (which must have
+/// `fast_texture` of `TEX`'s layout, no stencil test and no logic op).
+pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
+}
+
+/// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
+/// mode and full colour mask fixed at compile time.
+pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
 ) {
     shade::<DEPTH, FULL_MASK, true>(ds, tile, y, x0, x1, it)
 }

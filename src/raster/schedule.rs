@@ -81,12 +81,14 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];
                 let attrs = &scene.planes[r.attrs as usize..r.attrs as usize + ds.attr_count];
+                let fast = std::cell::Cell::new(None);
                 let it = Interpolants {
                     z: Plane::constant(r.z),
                     inv_w: Plane::constant(1.0),
                     attrs,
                     perspective: false,
                     coverage: r.coverage,
+                    fast: &fast,
                 };
                 let t = crate::framebuffer::TILE as i32;
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));

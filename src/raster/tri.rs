@@ -16,12 +16,14 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
     if x_lo >= x_hi || y_lo >= y_hi {
         return;
     }
+    let fast = std::cell::Cell::new(None);
     let it = Interpolants {
         z: t.z,
         inv_w: t.inv_w,
         attrs,
         perspective: t.perspective,
         coverage: 1.0,
+        fast: &fast,
     };
     if ds.raster.polygon_smooth {
         smooth_rows(t, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
@@ -58,10 +60,10 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
 /// `GL_POLYGON_SMOOTH` (section 3.5.6 and 3.11): every pixel of the (one pixel wider)
 /// bounding box gets the triangle's coverage, approximated by the box-filtered distances of
 /// its centre to the three edges; runs of full coverage are shaded as spans.
-fn smooth_rows(
+fn smooth_rows<'a>(
     t: &TriangleCommand,
-    ds: &DrawState,
-    it: &Interpolants,
+    ds: &'a DrawState,
+    it: &Interpolants<'a>,
     tile: &mut Tile,
     [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
 ) {
@@ -107,13 +109,13 @@ fn smooth_rows(
 }
 
 /// Polygon stipple (section 3.5.6): only the runs of pixels whose stipple bit is set.
-fn stippled_row(
-    ds: &DrawState,
+fn stippled_row<'a>(
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     lo: i32,
     hi: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
     pattern: &[u32; 32],
 ) {
     let row = pattern[y.rem_euclid(32) as usize];

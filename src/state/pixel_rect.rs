@@ -572,12 +572,14 @@ impl Context {
         let Some(t) = self.framebuffer.tile_index(x, y) else {
             return;
         };
+        let fast = std::cell::Cell::new(None);
         let it = Interpolants {
             z: Plane::constant(z),
             inv_w: Plane::constant(1.0),
             attrs: planes,
             perspective: false,
             coverage: 1.0,
+            fast: &fast,
         };
         (ds.span)(ds, &mut self.framebuffer.tiles[t], y, x, x + 1, &it);
     }

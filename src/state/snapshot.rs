@@ -8,9 +8,9 @@ use glam::{DVec4, Mat4};
 
 use super::Context;
 use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
-use crate::api::convert::{FogMode, TexGenMode};
+use crate::api::convert::{FogMode, TexEnvMode, TexGenMode};
 use crate::fragment::cache::select_span;
-use crate::fragment::key::{FragmentKey, Uniforms};
+use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
 use crate::fragment::span::SpanFn;
 use crate::raster::setup::Rect;
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
@@ -277,6 +277,18 @@ impl Context {
         let mut key =
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
         key.texturing = !units.is_empty();
+        key.fast_texture = match units.as_slice() {
+            [u] if matches!(u.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
+                && u.texture.fast_2d() =>
+            {
+                match u.base {
+                    BaseFormat::Rgb => Some(FastTexture::Rgb),
+                    BaseFormat::Rgba => Some(FastTexture::Rgba),
+                    _ => None,
+                }
+            }
+            _ => None,
+        };
         key.fog = fog.map(|f| f.mode);
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {

@@ -18,6 +18,7 @@ pub mod object;
 pub mod pixels;
 pub mod s3tc;
 pub mod sample;
+pub mod simd;
 
 use std::collections::{HashMap, HashSet};
 

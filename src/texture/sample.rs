@@ -16,7 +16,7 @@
 use std::sync::Arc;
 
 use super::format::{BaseFormat, InternalFormat};
-use super::image::TexImage;
+use super::image::{TexImage, Texels};
 use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
 use crate::api::convert::{
     DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
@@ -50,6 +50,20 @@ fn mirror_once(i: i64) -> i64 {
     } else {
         i
     }
+}
+
+/// The levels one λ selects (see [`BoundTexture::level_plan`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LevelPlan {
+    /// One level, filtered LINEAR (`linear`) or NEAREST.
+    One { level: usize, linear: bool },
+    /// Two adjacent levels (the same one at the end of the chain), each filtered, then mixed
+    /// as `first + (second - first) * weight`.
+    Two {
+        levels: [usize; 2],
+        linear: bool,
+        weight: f32,
+    },
 }
 
 /// Wraps an integer texel coordinate (section 3.8.8; -1 and `size` mean "border").
@@ -280,6 +294,15 @@ impl BoundTexture {
         self.lambda_from_rho(rho, unit_lod_bias)
     }
 
+    /// λ as [`BoundTexture::sample_grad`] computes it without anisotropy, from derivatives in
+    /// the sampled face's coordinates: `log2` of the larger length of the derivatives scaled
+    /// to texels, plus biases, clamped ([`BoundTexture::lambda_from_rho`]).
+    #[inline]
+    pub fn isotropic_lambda(&self, d_dx: [f32; 3], d_dy: [f32; 3], unit_lod_bias: f32) -> f32 {
+        let (px, py) = (length(self.scaled(d_dx)), length(self.scaled(d_dy)));
+        self.lambda_from_rho(px.max(py), unit_lod_bias)
+    }
+
     /// Samples at `coords` (s, t, r already divided by q; for cube maps the direction) with a
     /// given λ: magnification when λ <= c ([`BoundTexture::switch_over`]), otherwise the
     /// minification filter's level selection (section 3.8.8).
@@ -352,12 +375,12 @@ impl BoundTexture {
         } else {
             (0, coords, d_dx, d_dy)
         };
-        let (px, py) = (length(self.scaled(dx)), length(self.scaled(dy)));
         let max_aniso = self.inner.params.max_anisotropy;
         if max_aniso <= 1.0 {
-            let lambda = self.lambda_from_rho(px.max(py), unit_lod_bias);
+            let lambda = self.isotropic_lambda(dx, dy, unit_lod_bias);
             return self.sample_face(face, c, lambda);
         }
+        let (px, py) = (length(self.scaled(dx)), length(self.scaled(dy)));
         let (pmax, pmin, axis) = if px >= py { (px, py, dx) } else { (py, px, dy) };
         let n = if !pmax.is_finite() || pmax <= 0.0 {
             1.0
@@ -389,44 +412,75 @@ impl BoundTexture {
         let Some(levels) = self.inner.levels.get(face) else {
             return [0.0, 0.0, 0.0, 1.0];
         };
-        let Some(base) = levels.first() else {
+        if levels.is_empty() {
             return [0.0, 0.0, 0.0, 1.0];
-        };
-        let p = &self.inner.params;
-        let q = levels.len() - 1;
-        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
-        let raw = if lambda <= self.switch_over() {
-            self.filter(base, p.mag_filter == MagFilter::Linear, coords)
-        } else {
-            let linear = matches!(
-                p.min_filter,
-                MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
-            );
-            match p.min_filter {
-                MinFilter::Nearest | MinFilter::Linear => self.filter(base, linear, coords),
-                MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
-                    let d = if lambda <= 0.5 {
-                        0
-                    } else {
-                        ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
-                    };
-                    self.filter(&levels[d.min(q)], linear, coords)
-                }
-                MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
-                    if lambda >= q as f32 {
-                        self.filter(&levels[q], linear, coords)
-                    } else {
-                        let (fl, w) = floor_frac(lambda as f64);
-                        let d1 = (fl.max(0) as usize).min(q);
-                        let d2 = (d1 + 1).min(q);
-                        let t1 = self.filter(&levels[d1], linear, coords);
-                        let t2 = self.filter(&levels[d2], linear, coords);
-                        lerp4(t1, t2, w)
-                    }
-                }
+        }
+        let raw = match self.plan_for(lambda, levels.len() - 1) {
+            LevelPlan::One { level, linear } => self.filter(&levels[level], linear, coords),
+            LevelPlan::Two {
+                levels: [d1, d2],
+                linear,
+                weight,
+            } => {
+                let t1 = self.filter(&levels[d1], linear, coords);
+                let t2 = self.filter(&levels[d2], linear, coords);
+                lerp4(t1, t2, weight)
             }
         };
         self.finish(raw)
+    }
+
+    /// Level selection for λ (section 3.8.8): magnification when λ <= c
+    /// ([`BoundTexture::switch_over`]), otherwise the minification filter's choice of one
+    /// level or two levels and the weight of the second. A NaN λ counts as 0. Levels are
+    /// indices from the base level, within [`BoundTexture::level_count`] (0 when it is 0).
+    pub fn level_plan(&self, lambda: f32) -> LevelPlan {
+        self.plan_for(lambda, self.level_count().saturating_sub(1))
+    }
+
+    /// [`BoundTexture::level_plan`] for a chain whose last level is `q`.
+    #[inline]
+    fn plan_for(&self, lambda: f32, q: usize) -> LevelPlan {
+        let p = &self.inner.params;
+        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        if lambda <= self.switch_over() {
+            return LevelPlan::One {
+                level: 0,
+                linear: p.mag_filter == MagFilter::Linear,
+            };
+        }
+        let linear = matches!(
+            p.min_filter,
+            MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
+        );
+        match p.min_filter {
+            MinFilter::Nearest | MinFilter::Linear => LevelPlan::One { level: 0, linear },
+            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                let d = if lambda <= 0.5 {
+                    0
+                } else {
+                    ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
+                };
+                LevelPlan::One {
+                    level: d.min(q),
+                    linear,
+                }
+            }
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                if lambda >= q as f32 {
+                    LevelPlan::One { level: q, linear }
+                } else {
+                    let (fl, w) = floor_frac(lambda as f64);
+                    let d1 = (fl.max(0) as usize).min(q);
+                    let d2 = (d1 + 1).min(q);
+                    LevelPlan::Two {
+                        levels: [d1, d2],
+                        linear,
+                        weight: w,
+                    }
+                }
+            }
+        }
     }
 
     /// Internal RGBA after filtering -> texture source colour.
@@ -548,6 +602,126 @@ impl BoundTexture {
                 lerp4(slice(i0[2]), slice(i1[2]), w[2])
             }
         }
+    }
+}
+
+/// One mipmap level as the fast 2D path reads it: unsigned-byte texels with 3 (RGB) or 4
+/// (RGBA) components, rows bottom to top, no border (see [`BoundTexture::fast_2d`]).
+#[derive(Clone, Copy, Debug)]
+pub struct FastLevel<'a> {
+    texels: &'a [u8],
+    width: i64,
+    height: i64,
+}
+
+impl<'a> FastLevel<'a> {
+    /// The texel bytes, `components` per texel, rows bottom to top.
+    pub fn texels(&self) -> &'a [u8] {
+        self.texels
+    }
+
+    /// Width and height in texels.
+    pub fn size(&self) -> [i64; 2] {
+        [self.width, self.height]
+    }
+}
+
+/// The texel at (x, y) of `lvl` as internal RGBA, as [`TexImage::fetch`] converts it.
+#[inline(always)]
+fn fast_texel<const C: usize>(lvl: &FastLevel, x: i64, y: i64) -> [f32; 4] {
+    let i = ((y * lvl.width + x) as usize) * C;
+    let conv = |c: u8| c as f32 * (1.0 / 255.0);
+    match lvl.texels.get(i..i + C) {
+        Some(t) if C == 4 => [conv(t[0]), conv(t[1]), conv(t[2]), conv(t[3])],
+        Some(t) => [conv(t[0]), conv(t[1]), conv(t[2]), 1.0],
+        None => [0.0, 0.0, 0.0, 1.0],
+    }
+}
+
+impl BoundTexture {
+    /// Whether the fast 2D path ([`BoundTexture::fast_level`], [`BoundTexture::filter_fast`])
+    /// can sample this texture: a 2D texture whose levels all hold unsigned-byte RGB or RGBA
+    /// texels without a border, s and t wrapped by `REPEAT`, `CLAMP_TO_EDGE` or
+    /// `MIRRORED_REPEAT` (which never select a border texel), without anisotropy. Depth
+    /// comparison does not apply to colour formats. The fast path's results are those of
+    /// [`BoundTexture::sample_grad`], bit for bit.
+    pub fn fast_2d(&self) -> bool {
+        let i = &*self.inner;
+        let wrap_ok = |w: WrapMode| {
+            matches!(
+                w,
+                WrapMode::Repeat | WrapMode::ClampToEdge | WrapMode::MirroredRepeat
+            )
+        };
+        i.target == TextureTarget::T2D
+            && matches!(i.base, BaseFormat::Rgb | BaseFormat::Rgba)
+            && i.params.max_anisotropy <= 1.0
+            && i.params.swizzle == SwizzleSource::IDENTITY
+            && wrap_ok(i.params.wrap[0])
+            && wrap_ok(i.params.wrap[1])
+            && i.levels.len() == 1
+            && i.levels[0].iter().all(|l| {
+                l.border == 0
+                    && l.format.base == i.base
+                    && l.width > 0
+                    && l.height > 0
+                    && matches!(&*l.texels, Texels::U8(_))
+            })
+    }
+
+    /// Level `level` (from the base level) for the fast 2D path, or `None` when the texture is
+    /// not eligible ([`BoundTexture::fast_2d`]) or the level does not exist.
+    #[inline]
+    pub fn fast_level(&self, level: usize) -> Option<FastLevel<'_>> {
+        let l = self.inner.levels.first()?.get(level)?;
+        match &*l.texels {
+            Texels::U8(v) if l.border == 0 => Some(FastLevel {
+                texels: v,
+                width: l.width.max(1) as i64,
+                height: l.height.max(1) as i64,
+            }),
+            _ => None,
+        }
+    }
+
+    /// The s and t wrap modes.
+    pub fn wrap_st(&self) -> [WrapMode; 2] {
+        [self.inner.params.wrap[0], self.inner.params.wrap[1]]
+    }
+
+    /// NEAREST or LINEAR filtering of a fast level at (s, t), `C` components per texel (3 or
+    /// 4, the base format's): the arithmetic of the general filter for a 2D image without
+    /// border, and the texture source colour it finishes into.
+    #[inline(always)]
+    pub fn filter_fast<const C: usize>(
+        &self,
+        lvl: &FastLevel,
+        linear: bool,
+        coords: [f32; 2],
+    ) -> [f32; 4] {
+        let wrap = self.inner.params.wrap;
+        let size = [lvl.width, lvl.height];
+        if !linear {
+            let i = [0, 1].map(|d| {
+                let u = coords[d] as f64 * size[d] as f64;
+                wrap_index(floor_frac(u).0, size[d], wrap[d], false)
+            });
+            return fast_texel::<C>(lvl, i[0], i[1]);
+        }
+        let mut i0 = [0i64; 2];
+        let mut i1 = [0i64; 2];
+        let mut w = [0f32; 2];
+        for d in 0..2 {
+            let u = coords[d] as f64 * size[d] as f64;
+            let (f, frac) = floor_frac(u - 0.5);
+            w[d] = frac;
+            i0[d] = wrap_index(f, size[d], wrap[d], true);
+            i1[d] = wrap_index(f.saturating_add(1), size[d], wrap[d], true);
+        }
+        let t = |i: i64, j: i64| fast_texel::<C>(lvl, i, j);
+        let row0 = lerp4(t(i0[0], i0[1]), t(i1[0], i0[1]), w[0]);
+        let row1 = lerp4(t(i0[0], i1[1]), t(i1[0], i1[1]), w[0]);
+        lerp4(row0, row1, w[1])
     }
 }
 

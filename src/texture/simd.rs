@@ -1,0 +1,476 @@
+//! The fast 2D path's filter for eight pixels at once with AVX2 (x86-64, detected at run
+//! time): RGBA8 texels, `REPEAT` on power-of-two sizes or `CLAMP_TO_EDGE`. Every lane does
+//! the arithmetic of [`BoundTexture::filter_fast`](super::sample::BoundTexture::filter_fast)
+//! in the same order and precision (f64 scaling and floor, f32 weights and lerps, no fused
+//! multiply-add), so the results are identical; `tests/raster.rs`
+//! `textured_fast_paths_match_the_general_path` checks it.
+
+use super::sample::FastLevel;
+use crate::api::convert::{CompareFunc, WrapMode};
+
+/// Eight pixels' texels as four channel arrays (R, G, B, A).
+pub type Texels8 = [[f32; 8]; 4];
+
+/// One level prepared for [`filter8`]: RGBA8 texels and per-axis wrapping.
+#[derive(Clone, Copy, Debug)]
+pub struct Level8<'a> {
+    texels: &'a [u8],
+    size: [i32; 2],
+    /// Per axis: `Some(mask)` for power-of-two `REPEAT`, `None` for `CLAMP_TO_EDGE`.
+    repeat_mask: [Option<i32>; 2],
+}
+
+impl<'a> Level8<'a> {
+    /// `lvl` (4 components per texel) under wrap modes `wrap`, or `None` when the modes or
+    /// the size are not ones [`filter8`] handles.
+    pub fn new(lvl: &FastLevel<'a>, wrap: [WrapMode; 2]) -> Option<Level8<'a>> {
+        let size = lvl.size();
+        if size[0] < 1 || size[1] < 1 || size[0] > 1 << 15 || size[1] > 1 << 15 {
+            return None;
+        }
+        let size = [size[0] as i32, size[1] as i32];
+        let texels = lvl.texels();
+        if texels.len() < size[0] as usize * size[1] as usize * 4 {
+            return None;
+        }
+        let mut repeat_mask = [None; 2];
+        for d in 0..2 {
+            repeat_mask[d] = match wrap[d] {
+                WrapMode::Repeat if size[d] & (size[d] - 1) == 0 => Some(size[d] - 1),
+                WrapMode::ClampToEdge => None,
+                _ => return None,
+            };
+        }
+        Some(Level8 {
+            texels,
+            size,
+            repeat_mask,
+        })
+    }
+}
+
+/// Whether [`filter8`] may run on this processor.
+#[inline]
+pub fn available() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx2")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// NEAREST or LINEAR filtering of `lvl` at eight (s, t) pairs (finite), or `None` when the
+/// processor lacks AVX2 or a coordinate is too large for 32-bit texel indices (the caller
+/// then filters those pixels one by one).
+#[inline]
+pub fn filter8(lvl: &Level8, linear: bool, s: &[f32; 8], t: &[f32; 8]) -> Option<Texels8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::filter8(lvl, linear, s, t) };
+        }
+    }
+    let _ = (lvl, linear, s, t);
+    None
+}
+
+/// The s and t of pixels at centres `x + j` (j < `count` <= 8) on a row of an affine span,
+/// as the fragment stage computes them one by one: each plane `[a, b * y, c]` evaluated as
+/// `(a * x + b * y) + c` in f64, divided by 1/w (`w`) then by q, rounded to f32, a coordinate
+/// that is not finite replaced by 0. Lanes from `count` on are 0. `None` when a lane's plane
+/// value divided by `w` is not finite (the caller takes the one-by-one path) or without AVX2.
+#[inline]
+pub fn coords8(
+    planes: [[f64; 3]; 2],
+    w: f64,
+    q: f64,
+    x: f64,
+    count: usize,
+) -> Option<[[f32; 8]; 2]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::coords8(planes, w, q, x, count) };
+        }
+    }
+    let _ = (planes, w, q, x, count);
+    None
+}
+
+/// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
+/// [`shade8`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Tail8 {
+    /// `MODULATE` (else `REPLACE`) with an RGBA texture.
+    pub modulate: bool,
+    /// The alpha test's function and reference, when it applies.
+    pub alpha_test: Option<(CompareFunc, f32)>,
+    /// Blend `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA` with `FUNC_ADD` (else no blending).
+    pub blend_over: bool,
+    /// Bytes of the colour words that may be written (the colour mask).
+    pub color_mask: u32,
+}
+
+/// Eight fragments of a textured span after the texture lookup, as the general fragment path
+/// computes them one by one: the environment on the primary colour `primary` (each channel
+/// clamped to [0, 1]) and texel `tex`, the alpha test, conversion to 8 bits, blending with
+/// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
+/// bit j set for fragments that exist and pass the depth test. Answers the new colour words
+/// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
+/// `None` without AVX2.
+#[inline]
+pub fn shade8(
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    tex: &Texels8,
+    dst: &[u32; 8],
+    pass: u8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass) });
+        }
+    }
+    let _ = (tail, primary, tex, dst, pass);
+    None
+}
+
+/// What [`textured8`] needs besides the fragments: an affine span's coordinate planes and
+/// level selection.
+#[derive(Clone, Copy, Debug)]
+pub struct Sampling8<'a> {
+    /// The s and t planes as `[a, b * y, c]` for the row.
+    pub planes: [[f64; 3]; 2],
+    /// 1/w and q, constant over the span.
+    pub w: f64,
+    pub q: f64,
+    /// The first level and, with a weight, the second.
+    pub levels: [Level8<'a>; 2],
+    pub linear: bool,
+    pub weight: Option<f32>,
+}
+
+/// [`coords8`], [`filter8`] on one or two levels and [`shade8`] in one go, for the `count`
+/// pixels from centre `x`; `None` when [`coords8`] or [`filter8`] would answer `None`.
+#[inline]
+pub fn textured8(
+    sampling: &Sampling8,
+    x: f64,
+    count: usize,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    dst: &[u32; 8],
+    pass: u8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass) };
+        }
+    }
+    let _ = (sampling, x, count, tail, primary, dst, pass);
+    None
+}
+
+/// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
+#[inline(always)]
+pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
+    let mut out = [[0f32; 8]; 4];
+    for c in 0..4 {
+        for i in 0..8 {
+            out[c][i] = t1[c][i] + (t2[c][i] - t1[c][i]) * w;
+        }
+    }
+    out
+}
+
+#[cfg(target_arch = "x86_64")]
+mod x86 {
+    use std::arch::x86_64::*;
+
+    use super::{Level8, Sampling8, Tail8, Texels8};
+    use crate::api::convert::CompareFunc;
+
+    /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
+    const MAX_INDEX: f64 = (1 << 30) as f64;
+
+    /// Integer floor and fraction of `s * size - offset` for eight lanes (each lane as
+    /// `floor_frac` in the sampler), or `None` when a floor exceeds [`MAX_INDEX`].
+    #[target_feature(enable = "avx2")]
+    fn floor_frac8(s: __m256, size: i32, offset: f64) -> Option<(__m256i, __m256)> {
+        let n = _mm256_set1_pd(size as f64);
+        let off = _mm256_set1_pd(offset);
+        let limit = _mm256_set1_pd(MAX_INDEX);
+        let sign = _mm256_set1_pd(-0.0);
+        let half = |v: __m128| {
+            let u = _mm256_sub_pd(_mm256_mul_pd(_mm256_cvtps_pd(v), n), off);
+            let f = _mm256_floor_pd(u);
+            let too_big = _mm256_cmp_pd::<_CMP_GE_OQ>(_mm256_andnot_pd(sign, f), limit);
+            (
+                _mm256_cvttpd_epi32(f),
+                _mm256_cvtpd_ps(_mm256_sub_pd(u, f)),
+                _mm256_movemask_pd(too_big),
+            )
+        };
+        let (i_lo, f_lo, big_lo) = half(_mm256_castps256_ps128(s));
+        let (i_hi, f_hi, big_hi) = half(_mm256_extractf128_ps::<1>(s));
+        if big_lo | big_hi != 0 {
+            return None;
+        }
+        Some((_mm256_set_m128i(i_hi, i_lo), _mm256_set_m128(f_hi, f_lo)))
+    }
+
+    /// Wraps integer texel coordinates: a power-of-two mask, or a clamp to [0, size - 1].
+    #[target_feature(enable = "avx2")]
+    fn wrap8(i: __m256i, size: i32, mask: Option<i32>) -> __m256i {
+        match mask {
+            Some(m) => _mm256_and_si256(i, _mm256_set1_epi32(m)),
+            None => _mm256_min_epi32(
+                _mm256_max_epi32(i, _mm256_setzero_si256()),
+                _mm256_set1_epi32(size - 1),
+            ),
+        }
+    }
+
+    /// The texels at (x, y) as four channel vectors, each `byte as f32 * (1 / 255)`.
+    #[target_feature(enable = "avx2")]
+    fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
+        let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(lvl.size[0])), x);
+        // SAFETY: wrapping keeps 0 <= x < width and 0 <= y < height, so 0 <= idx < width *
+        // height; `Level8::new` checked that `texels` holds width * height * 4 bytes, so each
+        // 4-byte read at byte offset idx * 4 lies inside it. Gathers need no alignment.
+        let texels = unsafe { _mm256_i32gather_epi32::<4>(lvl.texels.as_ptr() as *const i32, idx) };
+        let byte = _mm256_set1_epi32(0xFF);
+        let k = _mm256_set1_ps(1.0 / 255.0);
+        let ch = |v: __m256i| _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k);
+        [
+            ch(texels),
+            ch(_mm256_srli_epi32::<8>(texels)),
+            ch(_mm256_srli_epi32::<16>(texels)),
+            ch(_mm256_srli_epi32::<24>(texels)),
+        ]
+    }
+
+    #[target_feature(enable = "avx2")]
+    fn lerp(a: __m256, b: __m256, w: __m256) -> __m256 {
+        _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), w))
+    }
+
+    /// `color_to_u8` per lane: `c * 255 + 0.5` clamped to [0, 255] (NaN as 0), truncated.
+    #[target_feature(enable = "avx2")]
+    fn to_u8(c: __m256) -> __m256i {
+        let v = _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
+        // max_ps answers its second operand (0) when v is NaN.
+        let v = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(255.0));
+        _mm256_cvttps_epi32(v)
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn shade8(
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        tex: &Texels8,
+        dst: &[u32; 8],
+        pass: u8,
+    ) -> ([u32; 8], u8) {
+        // SAFETY: each array holds eight f32; unaligned loads.
+        let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        // c.max(0.0).min(1.0): max_ps answers 0 for NaN.
+        // (Loops rather than `array::from_fn`/`map`: closures passed to functions without
+        // AVX2 would not be inlined.)
+        let mut color = [zero; 4];
+        for c in 0..4 {
+            let ct = load(&tex[c]);
+            color[c] = if tail.modulate {
+                let cf = _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one);
+                _mm256_mul_ps(cf, ct)
+            } else {
+                ct
+            };
+        }
+        let lanes = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        let live = _mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(pass as i32), lanes),
+            lanes,
+        );
+        let mut keep = _mm256_castsi256_ps(live);
+        if let Some((func, reference)) = tail.alpha_test {
+            // alpha.clamp(0.0, 1.0), keeping NaN (min_ps and max_ps answer their second
+            // operand for NaN), then `alpha OP reference` as `CompareFunc::test`.
+            let a = _mm256_max_ps(zero, _mm256_min_ps(one, color[3]));
+            let r = _mm256_set1_ps(reference);
+            let ok = match func {
+                CompareFunc::Never => zero,
+                CompareFunc::Less => _mm256_cmp_ps::<_CMP_LT_OQ>(a, r),
+                CompareFunc::Equal => _mm256_cmp_ps::<_CMP_EQ_OQ>(a, r),
+                CompareFunc::LessEqual => _mm256_cmp_ps::<_CMP_LE_OQ>(a, r),
+                CompareFunc::Greater => _mm256_cmp_ps::<_CMP_GT_OQ>(a, r),
+                CompareFunc::NotEqual => _mm256_cmp_ps::<_CMP_NEQ_UQ>(a, r),
+                CompareFunc::GreaterEqual => _mm256_cmp_ps::<_CMP_GE_OQ>(a, r),
+                CompareFunc::Always => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+            };
+            keep = _mm256_and_ps(keep, ok);
+        }
+        // SAFETY: `dst` holds eight u32; unaligned load.
+        let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
+        let mut src = [_mm256_setzero_si256(); 4];
+        for c in 0..4 {
+            src[c] = to_u8(color[c]);
+        }
+        let out: [__m256i; 4] = if tail.blend_over {
+            let k = _mm256_set1_ps(255.0);
+            let byte = _mm256_set1_epi32(0xFF);
+            let d = [
+                old,
+                _mm256_srli_epi32::<8>(old),
+                _mm256_srli_epi32::<16>(old),
+                _mm256_srli_epi32::<24>(old),
+            ];
+            let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
+            let inv = _mm256_sub_ps(one, sa);
+            let mut out = [_mm256_setzero_si256(); 4];
+            for c in 0..4 {
+                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
+                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
+                out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
+            }
+            out
+        } else {
+            src
+        };
+        let word = _mm256_or_si256(
+            _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
+            _mm256_or_si256(
+                _mm256_slli_epi32::<16>(out[2]),
+                _mm256_slli_epi32::<24>(out[3]),
+            ),
+        );
+        let cm = _mm256_set1_epi32(tail.color_mask as i32);
+        let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));
+        let word = _mm256_blendv_epi8(old, word, _mm256_castps_si256(keep));
+        let mut res = [0u32; 8];
+        // SAFETY: `res` holds eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(res.as_mut_ptr() as *mut __m256i, word) };
+        (res, _mm256_movemask_ps(keep) as u8)
+    }
+
+    #[target_feature(enable = "avx2")]
+    pub fn textured8(
+        sm: &Sampling8,
+        x: f64,
+        count: usize,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        pass: u8,
+    ) -> Option<([u32; 8], u8)> {
+        let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
+        let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
+        if let Some(w) = sm.weight {
+            let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
+            ct = super::lerp8(&ct, &t2, w);
+        }
+        Some(shade8(tail, primary, &ct, dst, pass))
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn coords8(
+        planes: [[f64; 3]; 2],
+        w: f64,
+        q: f64,
+        x: f64,
+        count: usize,
+    ) -> Option<[[f32; 8]; 2]> {
+        let lanes =
+            |first: f64| _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
+        let xs = [lanes(x), lanes(x + 4.0)];
+        // Lanes before `count`, per half.
+        let live = |half: i64| {
+            let j = _mm256_set_epi64x(half + 3, half + 2, half + 1, half);
+            _mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(count as i64), j))
+        };
+        let live = [live(0), live(4)];
+        let (wv, qv, zero) = (_mm256_set1_pd(w), _mm256_set1_pd(q), _mm256_setzero_pd());
+        let mut out = [[0f32; 8]; 2];
+        for (k, p) in planes.iter().enumerate() {
+            let (a, by, c) = (
+                _mm256_set1_pd(p[0]),
+                _mm256_set1_pd(p[1]),
+                _mm256_set1_pd(p[2]),
+            );
+            let mut halves = [_mm_setzero_ps(); 2];
+            for h in 0..2 {
+                let v = _mm256_div_pd(
+                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c),
+                    wv,
+                );
+                // v - v is 0 exactly when v is finite.
+                let finite = _mm256_cmp_pd::<_CMP_EQ_OQ>(_mm256_sub_pd(v, v), zero);
+                if _mm256_movemask_pd(_mm256_andnot_pd(finite, live[h])) != 0 {
+                    return None;
+                }
+                let f = _mm256_cvtpd_ps(_mm256_div_pd(v, qv));
+                let ok = _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps());
+                let j = 4 * h as i32;
+                let live32 = _mm_cmpgt_epi32(
+                    _mm_set1_epi32(count as i32),
+                    _mm_set_epi32(j + 3, j + 2, j + 1, j),
+                );
+                let ok = _mm_and_ps(ok, _mm_castsi128_ps(live32));
+                halves[h] = _mm_and_ps(f, ok);
+            }
+            let v = _mm256_set_m128(halves[1], halves[0]);
+            // SAFETY: `out[k]` holds eight f32; unaligned store.
+            unsafe { _mm256_storeu_ps(out[k].as_mut_ptr(), v) };
+        }
+        Some(out)
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn filter8(lvl: &Level8, linear: bool, s: &[f32; 8], t: &[f32; 8]) -> Option<Texels8> {
+        // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
+        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        let [w, h] = lvl.size;
+        let [mx, my] = lvl.repeat_mask;
+        let out: [__m256; 4] = if !linear {
+            let (x, _) = floor_frac8(s, w, 0.0)?;
+            let (y, _) = floor_frac8(t, h, 0.0)?;
+            fetch8(lvl, wrap8(x, w, mx), wrap8(y, h, my))
+        } else {
+            let (x, wx) = floor_frac8(s, w, 0.5)?;
+            let (y, wy) = floor_frac8(t, h, 0.5)?;
+            let one = _mm256_set1_epi32(1);
+            let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
+            let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
+            let t00 = fetch8(lvl, x0, y0);
+            let t10 = fetch8(lvl, x1, y0);
+            let t01 = fetch8(lvl, x0, y1);
+            let t11 = fetch8(lvl, x1, y1);
+            let mut out = [_mm256_setzero_ps(); 4];
+            for c in 0..4 {
+                let row0 = lerp(t00[c], t10[c], wx);
+                let row1 = lerp(t01[c], t11[c], wx);
+                out[c] = lerp(row0, row1, wy);
+            }
+            out
+        };
+        let mut res = [[0f32; 8]; 4];
+        for c in 0..4 {
+            // SAFETY: `res[c]` holds eight f32; unaligned store.
+            unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
+        }
+        Some(res)
+    }
+}
