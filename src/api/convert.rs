@@ -6,9 +6,12 @@ use super::enums::*;
 use super::types::GLenum;
 
 mod arrays;
+mod state_ext;
 mod texture;
 #[allow(unused_imports)]
 pub use arrays::*;
+#[allow(unused_imports)]
+pub use state_ext::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -255,9 +258,14 @@ pub enum Capability {
     PolygonOffsetFill,
     PolygonOffsetLine,
     PolygonOffsetPoint,
+    /// `GL_MULTISAMPLE` and the sample coverage enables (`convert::state_ext`).
+    Multisample(MultisampleCap),
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
+    if let Some(m) = multisample_cap(e) {
+        return Some(Capability::Multisample(m));
+    }
     Some(match e {
         GL_DEPTH_TEST => Capability::DepthTest,
         GL_CULL_FACE => Capability::CullFace,
@@ -594,6 +602,8 @@ pub enum Query {
     PixelRect(PixelRectQuery),
     /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
     Arrays(ArrayQuery),
+    /// Attribute stack, multisample, selection and feedback (`convert::state_ext`).
+    StateExt(StateExtQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -610,6 +620,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(q) = array_query(e) {
         return Some(Arrays(q));
+    }
+    if let Some(q) = state_ext_query(e) {
+        return Some(StateExt(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,

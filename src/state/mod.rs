@@ -4,6 +4,7 @@
 #[macro_use]
 mod textures;
 pub mod arrays;
+pub mod attrib;
 pub mod buffers;
 pub mod fog;
 pub mod get;
@@ -13,6 +14,7 @@ pub mod matrices;
 pub mod per_fragment;
 pub mod pixel_rect;
 pub mod rasterization;
+pub mod select;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
@@ -106,6 +108,10 @@ pub struct Context {
     pub(crate) client: arrays::ClientState,
     /// Display lists.
     pub(crate) lists: lists::ListState,
+    /// The server attribute stack (`glPushAttrib`).
+    pub(crate) attrib_stack: Vec<Box<attrib::AttribEntry>>,
+    /// Multisample enables and sample coverage.
+    pub(crate) multisample: attrib::MultisampleState,
 }
 
 impl Context {
@@ -179,6 +185,8 @@ impl Context {
             force_general_path: false,
             client: Default::default(),
             lists: Default::default(),
+            attrib_stack: Vec::new(),
+            multisample: Default::default(),
         }
     }
 
@@ -355,6 +363,7 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0] = on,
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1] = on,
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2] = on,
+            Capability::Multisample(m) => *self.multisample.enable(m) = on,
         }
         self.invalidate();
     }
@@ -407,6 +416,7 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0],
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1],
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2],
+            Capability::Multisample(m) => self.multisample.enabled(m),
         }
     }
 
@@ -954,6 +964,10 @@ impl Gl for Context {
         call_lists,
         list_base,
         delete_lists,
-        is_list
+        is_list,
+        // attribute stack, multisample
+        push_attrib,
+        pop_attrib,
+        sample_coverage
     );
 }
