@@ -13,6 +13,7 @@ pub mod lists;
 pub mod matrices;
 pub mod per_fragment;
 pub mod pixel_rect;
+pub mod queries;
 pub mod rasterization;
 pub mod select;
 pub mod snapshot;
@@ -112,6 +113,8 @@ pub struct Context {
     pub(crate) attrib_stack: Vec<Box<attrib::AttribEntry>>,
     /// Multisample enables and sample coverage.
     pub(crate) multisample: attrib::MultisampleState,
+    /// Occlusion query objects and the active query.
+    pub(crate) queries: queries::QueryState,
 }
 
 impl Context {
@@ -187,6 +190,7 @@ impl Context {
             lists: Default::default(),
             attrib_stack: Vec::new(),
             multisample: Default::default(),
+            queries: Default::default(),
         }
     }
 
@@ -968,6 +972,15 @@ impl Gl for Context {
         // attribute stack, multisample
         push_attrib,
         pop_attrib,
-        sample_coverage
+        sample_coverage,
+        // occlusion queries
+        gen_queries,
+        delete_queries,
+        is_query,
+        begin_query,
+        end_query,
+        get_queryiv,
+        get_query_objectiv,
+        get_query_objectuiv
     );
 }

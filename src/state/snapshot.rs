@@ -278,6 +278,7 @@ impl Context {
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
         key.texturing = !units.is_empty();
         key.fog = fog.map(|f| f.mode);
+        key.count_samples = self.queries.active.is_some();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,
