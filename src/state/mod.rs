@@ -115,6 +115,8 @@ pub struct Context {
     pub(crate) multisample: attrib::MultisampleState,
     /// Occlusion query objects and the active query.
     pub(crate) queries: queries::QueryState,
+    /// Render mode, name stack, selection and feedback buffers.
+    pub(crate) select: select::SelectState,
 }
 
 impl Context {
@@ -191,6 +193,7 @@ impl Context {
             attrib_stack: Vec::new(),
             multisample: Default::default(),
             queries: Default::default(),
+            select: Default::default(),
         }
     }
 
@@ -510,6 +513,10 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if self.select.mode != convert::RenderMode::Render {
+            // Selection and feedback modes change no buffer (as in Mesa).
+            return;
+        }
         if mask.accum {
             self.clear_accum_buffer();
         }
@@ -981,6 +988,15 @@ impl Gl for Context {
         end_query,
         get_queryiv,
         get_query_objectiv,
-        get_query_objectuiv
+        get_query_objectuiv,
+        // selection and feedback
+        render_mode,
+        select_buffer,
+        init_names,
+        push_name,
+        pop_name,
+        load_name,
+        feedback_buffer,
+        pass_through
     );
 }

@@ -687,6 +687,9 @@ impl Context {
             self.record_error(GL_INVALID_OPERATION);
             return;
         }
+        if self.pixel_op_feedback(convert::FeedbackToken::DrawPixel) {
+            return;
+        }
         let (w, h) = (width as usize, height as usize);
         if w == 0 || h == 0 {
             return;
@@ -816,6 +819,9 @@ impl Context {
             self.record_error(GL_INVALID_OPERATION);
             return;
         }
+        if self.pixel_op_feedback(convert::FeedbackToken::CopyPixel) {
+            return;
+        }
         if !self.raster_pos.valid || width == 0 || height == 0 {
             return;
         }
@@ -870,8 +876,9 @@ impl Context {
         if !self.raster_pos.valid {
             return;
         }
+        let elsewhere = self.pixel_op_feedback(convert::FeedbackToken::Bitmap);
         let (w, h) = (width as usize, height as usize);
-        if w > 0 && h > 0 {
+        if !elsewhere && w > 0 && h > 0 {
             let u = self.unpack;
             let row_len = if u.row_length > 0 {
                 u.row_length as usize
@@ -930,7 +937,9 @@ macro_rules! raster_pos_entry_points {
         impl Context {
             $(
                 pub(crate) fn $name(&mut self, $($arg: $ty),*) {
-                    self.set_raster_pos(Vec4::new($x as f32, $y as f32, $z as f32, $w as f32));
+                    let p = Vec4::new($x as f32, $y as f32, $z as f32, $w as f32);
+                    self.set_raster_pos(p);
+                    self.raster_pos_feedback(Some(p));
                 }
             )*
         }
@@ -943,6 +952,7 @@ macro_rules! window_pos_entry_points {
             $(
                 pub(crate) fn $name(&mut self, $($arg: $ty),*) {
                     self.set_window_pos($x as f64, $y as f64, $z as f64);
+                    self.raster_pos_feedback(None);
                 }
             )*
         }
