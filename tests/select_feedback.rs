@@ -351,3 +351,18 @@ fn client_buffers_are_written_when_the_mode_ends() {
     assert_eq!(gl.render_mode(GL_RENDER), 2);
     assert_eq!(&feedback[..2], &[GL_PASS_THROUGH_TOKEN as f32, 5.0]);
 }
+
+#[test]
+fn far_plane_depth_scales_to_the_largest_unsigned_integer() {
+    let mut gl = context();
+    gl.select_buffer(8, NULL);
+    gl.render_mode(GL_SELECT);
+    gl.push_name(1);
+    // Window z 1 (on the far plane) and 0 (near plane).
+    gl.begin(GL_POINTS);
+    gl.vertex_3f(8.0, 8.0, -1.0);
+    gl.vertex_3f(9.0, 8.0, 1.0);
+    gl.end();
+    assert_eq!(gl.render_mode(GL_RENDER), 1);
+    assert_eq!(gl.select_buffer_contents(), &[1, 0, u32::MAX, 1]);
+}

@@ -12,6 +12,7 @@ pub mod scenes;
 pub mod scenes_arrays;
 pub mod scenes_examples;
 pub mod scenes_raster;
+pub mod scenes_state;
 pub mod scenes_texture;
 pub mod tolerance;
 
