@@ -525,3 +525,28 @@ fn multisample_state_without_multisample_buffers() {
     assert_eq!(draw(&mut gl), with);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn popping_the_draw_buffer_sends_earlier_work_to_the_buffer_it_was_drawn_for() {
+    let mut gl = Context::with_config(tilegl::ContextConfig {
+        width: 16,
+        height: 16,
+        framebuffer: tilegl::FramebufferConfig {
+            double_buffer: true,
+            ..tilegl::FramebufferConfig::default()
+        },
+        threads: 1,
+    });
+    assert_eq!(integer(&mut gl, GL_DRAW_BUFFER), GL_BACK as i32);
+    gl.push_attrib(GL_COLOR_BUFFER_BIT);
+    gl.draw_buffer(GL_FRONT);
+    gl.color_3f(1.0, 0.0, 0.0);
+    gl.rectf(-1.0, -1.0, 1.0, 1.0);
+    gl.pop_attrib();
+    assert_eq!(integer(&mut gl, GL_DRAW_BUFFER), GL_BACK as i32);
+    gl.read_buffer(GL_FRONT);
+    assert_eq!(common::pixel(&mut gl, 8, 8), [255, 0, 0, 255]);
+    gl.read_buffer(GL_BACK);
+    assert_eq!(common::pixel(&mut gl, 8, 8), [0, 0, 0, 0]);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}

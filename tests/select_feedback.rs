@@ -366,3 +366,21 @@ fn far_plane_depth_scales_to_the_largest_unsigned_integer() {
     assert_eq!(gl.render_mode(GL_RENDER), 1);
     assert_eq!(gl.select_buffer_contents(), &[1, 0, u32::MAX, 1]);
 }
+
+#[test]
+fn buffer_pointers_are_queryable() {
+    let mut gl = context();
+    gl.select_buffer(4, ClientPtr(0x1000));
+    gl.feedback_buffer(4, GL_2D, ClientPtr(0x2000));
+    let mut p = [0usize; 2];
+    gl.get_pointerv(
+        GL_SELECTION_BUFFER_POINTER,
+        ClientPtr(p.as_mut_ptr() as usize),
+    );
+    gl.get_pointerv(
+        GL_FEEDBACK_BUFFER_POINTER,
+        ClientPtr(p[1..].as_mut_ptr() as usize),
+    );
+    assert_eq!(p, [0x1000, 0x2000]);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}

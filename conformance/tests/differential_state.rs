@@ -449,6 +449,16 @@ fn state_selection_hits(gl: &mut dyn Gl, out: &mut Answers) {
     let r = gl.render_mode(GL_RENDER);
     exact(out, "render mode after the error".into(), vec![r as f64]);
     gl.select_buffer(128, ClientPtr(buf.as_mut_ptr() as usize));
+    let mut p = 0usize;
+    gl.get_pointerv(
+        GL_SELECTION_BUFFER_POINTER,
+        ClientPtr(&mut p as *mut usize as usize),
+    );
+    exact(
+        out,
+        "selection buffer pointer".into(),
+        vec![(p == buf.as_ptr() as usize) as i32 as f64],
+    );
     gl.render_mode(GL_SELECT);
     gl.load_name(1);
     err(gl, out, "load name with an empty stack");
@@ -597,6 +607,45 @@ fn state_feedback_buffer(gl: &mut dyn Gl, out: &mut Answers) {
         });
         err(gl, out, "feedback");
     }
+    // A quad and a pentagon are reported as triangles; which triangles is the
+    // implementation's choice (Mesa 22 splits a quad along the other diagonal than tilegl), so
+    // only the number of values and the set of distinct vertices are compared.
+    let mut buf = vec![0f32; 256];
+    gl.feedback_buffer(256, GL_2D, ClientPtr(buf.as_mut_ptr() as usize));
+    gl.render_mode(GL_FEEDBACK);
+    gl.begin(GL_QUADS);
+    gl.vertex_2f(40.0, 40.0);
+    gl.vertex_2f(60.0, 40.0);
+    gl.vertex_2f(60.0, 60.0);
+    gl.vertex_2f(40.0, 60.0);
+    gl.end();
+    gl.begin(GL_POLYGON);
+    for k in 0..5 {
+        let a = k as f32 * 1.2566371;
+        gl.vertex_2f(20.0 + 10.0 * a.cos(), 20.0 + 10.0 * a.sin());
+    }
+    gl.end();
+    let n = gl.render_mode(GL_RENDER).max(0) as usize;
+    let mut vertices: Vec<(i64, i64)> = buf[..n]
+        .chunks(8)
+        .flat_map(|t| {
+            t[2..]
+                .chunks(2)
+                .map(|v| ((v[0] * 256.0).round() as i64, (v[1] * 256.0).round() as i64))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    vertices.sort_unstable();
+    vertices.dedup();
+    exact(out, "quad and polygon value count".into(), vec![n as f64]);
+    exact(
+        out,
+        "quad and polygon vertices".into(),
+        vertices
+            .iter()
+            .flat_map(|&(x, y)| [x as f64, y as f64])
+            .collect(),
+    );
     // Overflow keeps what fits and returns -1.
     let mut buf = vec![0f32; 3];
     gl.feedback_buffer(3, GL_2D, ClientPtr(buf.as_mut_ptr() as usize));

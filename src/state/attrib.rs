@@ -157,6 +157,10 @@ impl Context {
             return;
         };
         let g = e.groups;
+        if g.color_buffer && e.buffers.draw != self.buffers.draw {
+            // Work recorded so far goes to the buffer it was drawn for (as `glDrawBuffer`).
+            self.flush_scene();
+        }
         let r = &mut self.raster;
         let ops = &mut self.fragment_ops;
         if g.current {

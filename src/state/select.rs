@@ -269,6 +269,14 @@ impl Context {
         &self.select.feedback_data
     }
 
+    /// `GL_SELECTION_BUFFER_POINTER` and `GL_FEEDBACK_BUFFER_POINTER` for `glGetPointerv`.
+    pub(crate) fn select_buffer_pointer(&self, pname: GLenum) -> Option<ClientPtr> {
+        Some(match convert::render_buffer_pointer(pname)? {
+            RenderMode::Select => self.select.select_ptr,
+            _ => self.select.feedback_ptr,
+        })
+    }
+
     pub(crate) fn select_state_value(&self, q: StateExtQuery) -> super::get::StateValue {
         use super::get::StateValue::*;
         let s = &self.select;

@@ -113,6 +113,15 @@ pub fn state_ext_query(e: GLenum) -> Option<StateExtQuery> {
     })
 }
 
+/// `glGetPointerv` names of the selection and feedback buffers.
+pub fn render_buffer_pointer(e: GLenum) -> Option<RenderMode> {
+    Some(match e {
+        GL_SELECTION_BUFFER_POINTER => RenderMode::Select,
+        GL_FEEDBACK_BUFFER_POINTER => RenderMode::Feedback,
+        _ => return None,
+    })
+}
+
 /// `glBeginQuery` targets: only `GL_SAMPLES_PASSED` in GL 1.5.
 pub fn query_target(e: GLenum) -> Option<()> {
     (e == GL_SAMPLES_PASSED).then_some(())
