@@ -315,8 +315,8 @@ fn state_occlusion_queries(gl: &mut dyn Gl, out: &mut Answers) {
     gl.matrix_mode(GL_MODELVIEW);
     gl.enable(GL_DEPTH_TEST);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    let mut ids = [0u32; 8];
-    gl.gen_queries(8, &mut ids);
+    let mut ids = [0u32; 10];
+    gl.gen_queries(10, &mut ids);
     err(gl, out, "glGenQueries");
     exact(
         out,
@@ -329,7 +329,7 @@ fn state_occlusion_queries(gl: &mut dyn Gl, out: &mut Answers) {
     err(gl, out, "glBeginQuery(0)");
     gl.begin_query(GL_TEXTURE_2D, ids[0]);
     err(gl, out, "glBeginQuery(bad target)");
-    let draws: [fn(&mut dyn Gl); 6] = [
+    let draws: [fn(&mut dyn Gl); 8] = [
         |gl| gl.rectf(3.3, 4.6, 40.2, 30.7),
         |gl| {
             gl.begin(GL_TRIANGLES);
@@ -383,6 +383,22 @@ fn state_occlusion_queries(gl: &mut dyn Gl, out: &mut Answers) {
             gl.color_mask(1, 1, 1, 1);
             gl.depth_mask(1);
         },
+        |gl| {
+            gl.window_pos_3f(3.0, 5.0, 0.0);
+            gl.draw_pixels(9, 7, GL_RGBA, GL_UNSIGNED_BYTE, Some(&[200u8; 9 * 7 * 4]));
+        },
+        |gl| {
+            gl.window_pos_3f(40.0, 45.0, 0.0);
+            gl.bitmap(
+                16,
+                2,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                &[0xA5, 0x0F, 0, 0, 0xFF, 0x81, 0, 0],
+            );
+        },
     ];
     for (i, draw) in draws.iter().enumerate() {
         gl.begin_query(GL_SAMPLES_PASSED, ids[i]);
@@ -393,7 +409,7 @@ fn state_occlusion_queries(gl: &mut dyn Gl, out: &mut Answers) {
             format!("current query {i}"),
             vec![(cur[0] as u32 == ids[i]) as i32 as f64],
         );
-        gl.begin_query(GL_SAMPLES_PASSED, ids[7]);
+        gl.begin_query(GL_SAMPLES_PASSED, ids[9]);
         err(gl, out, "nested glBeginQuery");
         draw(gl);
         gl.end_query(GL_SAMPLES_PASSED);
@@ -414,14 +430,14 @@ fn state_occlusion_queries(gl: &mut dyn Gl, out: &mut Answers) {
         vec![gl.is_query(ids[0]) as f64],
     );
     let mut v = [0i32];
-    gl.get_query_objectiv(ids[7], GL_QUERY_RESULT, &mut v);
+    gl.get_query_objectiv(ids[9], GL_QUERY_RESULT, &mut v);
     err(gl, out, "result of a never-begun name");
     gl.get_query_objectiv(ids[0], GL_TEXTURE_2D, &mut v);
     err(gl, out, "bad query object pname");
     gl.get_queryiv(GL_SAMPLES_PASSED, GL_QUERY_RESULT, &mut v);
     err(gl, out, "bad query pname");
-    gl.begin_query(GL_SAMPLES_PASSED, ids[6]);
-    gl.get_query_objectiv(ids[6], GL_QUERY_RESULT, &mut v);
+    gl.begin_query(GL_SAMPLES_PASSED, ids[8]);
+    gl.get_query_objectiv(ids[8], GL_QUERY_RESULT, &mut v);
     err(gl, out, "result of the active query");
     gl.end_query(GL_SAMPLES_PASSED);
     gl.delete_queries(1, &ids[..1]);
