@@ -384,3 +384,56 @@ fn buffer_pointers_are_queryable() {
     assert_eq!(p, [0x1000, 0x2000]);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn extreme_vertices_never_panic_in_either_mode() {
+    let values = [
+        0.0,
+        1.0,
+        -1.0,
+        1e30,
+        -1e30,
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        0.5,
+    ];
+    let mut rng = common::Rng(7);
+    let pick = |rng: &mut common::Rng| values[(rng.next_u64() % values.len() as u64) as usize];
+    for mode in [GL_SELECT, GL_FEEDBACK] {
+        let mut gl = context();
+        gl.select_buffer(1000, NULL);
+        gl.feedback_buffer(1000, GL_4D_COLOR_TEXTURE, NULL);
+        gl.enable(GL_CLIP_PLANE0);
+        gl.clip_plane(GL_CLIP_PLANE0, &[1.0, 0.5, 0.0, -3.0]);
+        gl.render_mode(mode);
+        gl.push_name(1);
+        for (i, prim) in [
+            GL_POINTS,
+            GL_LINE_LOOP,
+            GL_TRIANGLE_FAN,
+            GL_QUAD_STRIP,
+            GL_POLYGON,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            gl.polygon_mode(GL_FRONT_AND_BACK, [GL_FILL, GL_LINE, GL_POINT][i % 3]);
+            gl.begin(prim);
+            for _ in 0..9 {
+                gl.vertex_4f(
+                    pick(&mut rng),
+                    pick(&mut rng),
+                    pick(&mut rng),
+                    pick(&mut rng),
+                );
+            }
+            gl.end();
+        }
+        gl.raster_pos_4f(f32::NAN, 1.0, 0.0, 0.0);
+        gl.bitmap(0, 0, 0.0, 0.0, 1.0, 1.0, &[]);
+        let n = gl.render_mode(GL_RENDER);
+        assert!(n >= -1);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+    }
+}

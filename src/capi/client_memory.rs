@@ -1,6 +1,7 @@
 //! The one bridge from a [`ClientPtr`] (an address in the calling process that GL retained,
 //! e.g. from `glVertexPointer`) to memory: reading client vertex arrays and index arrays at
-//! draw time, and storing a pointer value for `glGetPointerv`/`glGetBufferPointerv`.
+//! draw time, storing a pointer value for `glGetPointerv`/`glGetBufferPointerv`, and writing
+//! the selection and feedback records into the buffers of `glSelectBuffer`/`glFeedbackBuffer`.
 //!
 //! # The contract
 //!

@@ -484,7 +484,7 @@ impl Context {
                         }
                     }
                     let mut scratch = Vec::new();
-                    if !clip_polygon(&mut poly, &mut scratch, &user, n_attrs) {
+                    if !clip_polygon(&mut poly, &mut scratch, &user, n_attrs) || poly.len() < 3 {
                         continue;
                     }
                     let xy: Vec<[i64; 2]> = poly.iter().map(|p| to_window(&ds, p).xy).collect();
