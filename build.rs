@@ -50,18 +50,29 @@ const EXTENSIONS: [&str; 2] = [
     "GL_EXT_texture_compression_s3tc",
 ];
 /// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see README).
-const EXTRA_EXTENSIONS: [&str; 6] = [
+const EXTRA_EXTENSIONS: [&str; 10] = [
     "GL_NV_texture_env_combine4",
     "GL_ARB_texture_rectangle",
     "GL_ATI_texture_mirror_once",
     "GL_EXT_texture_mirror_clamp",
     "GL_EXT_blend_equation_separate",
     "GL_ARB_texture_swizzle",
+    // Internal formats captures from newer drivers copy into (texture/format.rs).
+    "GL_ARB_texture_rg",
+    "GL_ARB_texture_float",
+    "GL_ARB_depth_buffer_float",
+    "GL_EXT_packed_depth_stencil",
 ];
+
+/// Enums of later core versions that captures use, generated like the others.
+const EXTRA_ENUMS: [&str; 2] = ["GL_COMPRESSED_RED", "GL_COMPRESSED_RG"];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands.
-const COMMAND_EXTENSIONS: [&str; 1] = ["GL_EXT_compiled_vertex_array"];
+const COMMAND_EXTENSIONS: [&str; 2] = [
+    "GL_EXT_compiled_vertex_array",
+    "GL_EXT_blend_equation_separate",
+];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -484,6 +495,10 @@ fn main() {
             }
         }
     }
+    // Single later-core enums captures use (generic compressed RED/RG of GL 3.0).
+    for n in EXTRA_ENUMS {
+        ext_enums.insert(n.to_string());
+    }
     core_cmds.sort();
 
     // ARB/EXT aliases: enums whose unsuffixed name is core with the same value.
@@ -509,6 +524,18 @@ fn main() {
                     .entry(target.clone())
                     .or_default()
                     .push(c.name.clone());
+            }
+        }
+    }
+    // Extension entry points that later became core (glBlendEquationSeparateEXT, core in
+    // GL 2.0): the core name is an alias of the extension one, for programs that call it.
+    for c in commands.values() {
+        if let Some(target) = &c.alias_of {
+            if core_cmd_set.contains(&c.name) && !core_cmd_set.contains(target) {
+                cmd_aliases
+                    .entry(c.name.clone())
+                    .or_default()
+                    .push(target.clone());
             }
         }
     }

@@ -18,9 +18,9 @@
 //!
 //! Stages: the checkerboard's level 0 and level 2 as `glGetTexImage` returns them.
 //!
-//! Drivers may compute ρ differently (the spec allows an approximation): llvmpipe and softpipe use
-//! 2x2 finite differences, tilegl the exact derivatives, so the level boundaries move by a pixel
-//! or two; the tolerance is the measured llvmpipe-vs-softpipe spread (`conformance/TOLERANCE.md`).
+//! Drivers may compute ρ differently (the spec allows an approximation): tilegl, llvmpipe and
+//! softpipe all use finite differences over 2x2 pixel quads, one λ per quad; the remaining
+//! differences are within the measured llvmpipe-vs-softpipe spread (`conformance/TOLERANCE.md`).
 //!
 //! Run: `cargo run --release -p tilegl-conformance --example mipmapping [OUT_DIR]`
 //! (default `out/mipmapping/`). The scenes `ex_mipmap_filters`, `ex_mipmap_levels` (in

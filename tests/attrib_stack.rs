@@ -213,7 +213,7 @@ fn change_everything(gl: &mut Context) {
     // colour buffer
     gl.alpha_func(GL_GREATER, 0.5);
     gl.blend_func_separate(GL_SRC_ALPHA, GL_ONE, GL_ZERO, GL_DST_COLOR);
-    gl.blend_equation(GL_FUNC_SUBTRACT);
+    gl.blend_equation_separate_ext(GL_FUNC_SUBTRACT, GL_MAX);
     gl.blend_color(0.1, 0.2, 0.3, 0.4);
     gl.logic_op(GL_XOR);
     gl.clear_color(0.9, 0.8, 0.7, 0.6);
@@ -239,6 +239,12 @@ fn change_everything(gl: &mut Context) {
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
     gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_DOT3_RGB as i32);
     gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.2, 0.4, 0.6, 0.8]);
+    // evaluators: enables and grids (the maps themselves are in no group)
+    gl.enable(GL_MAP1_VERTEX_3);
+    gl.enable(GL_MAP2_TEXTURE_COORD_2);
+    gl.enable(GL_AUTO_NORMAL);
+    gl.map_grid_1d(7, 0.25, 0.75);
+    gl.map_grid_2f(3, 0.0, 2.0, 5, -1.0, 1.0);
     // scissor, multisample
     gl.scissor(1, 2, 3, 4);
     gl.sample_coverage(0.5, 1);

@@ -428,3 +428,42 @@ fn fog_equations() {
         }
     }
 }
+
+#[test]
+fn blend_equation_separate_applies_one_equation_to_colour_and_one_to_alpha() {
+    // EXT_blend_equation_separate: RGB = src - dst (FUNC_SUBTRACT), A = max(src, dst).
+    let mut gl = tilegl::Context::new(4, 4);
+    gl.clear_color(0.2, 0.3, 0.1, 0.6);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    gl.blend_equation_separate_ext(GL_FUNC_SUBTRACT, GL_MAX);
+    let mut q = [0i32; 2];
+    gl.get_integerv(GL_BLEND_EQUATION, &mut q[..1]);
+    gl.get_integerv(GL_BLEND_EQUATION_ALPHA_EXT, &mut q[1..]);
+    assert_eq!(q, [GL_FUNC_SUBTRACT as i32, GL_MAX as i32]);
+    gl.color_4f(0.7, 0.2, 0.5, 0.4);
+    gl.rectf(-1.0, -1.0, 1.0, 1.0);
+    let mut px = [0u8; 4];
+    gl.read_pixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    let q8 = |v: f32| (v.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
+    let d = [0.2f32, 0.3, 0.1, 0.6].map(|c| q8(c) as f32 / 255.0);
+    let s = [0.7f32, 0.2, 0.5, 0.4].map(|c| q8(c) as f32 / 255.0);
+    assert_eq!(
+        px,
+        [
+            q8(s[0] - d[0]),
+            q8(s[1] - d[1]),
+            q8(s[2] - d[2]),
+            q8(s[3].max(d[3]))
+        ]
+    );
+    // glBlendEquation sets both again; a bad mode changes nothing.
+    gl.blend_equation_separate_ext(GL_FUNC_ADD, GL_TEXTURE_2D);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    gl.get_integerv(GL_BLEND_EQUATION_ALPHA_EXT, &mut q[1..]);
+    assert_eq!(q[1], GL_MAX as i32);
+    gl.blend_equation(GL_MIN);
+    gl.get_integerv(GL_BLEND_EQUATION_ALPHA_EXT, &mut q[1..]);
+    assert_eq!(q[1], GL_MIN as i32);
+}

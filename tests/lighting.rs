@@ -394,3 +394,25 @@ fn light_position_is_transformed_at_specification_time() {
     gl.get_lightfv(GL_LIGHT0, GL_SPOT_CUTOFF, &mut c);
     assert_eq!(c[0], 180.0);
 }
+
+#[test]
+fn material_calls_do_not_change_parameters_color_material_tracks() {
+    // Section 2.14.3: tracked material parameters follow the current colour at all times.
+    let mut gl = Context::new(8, 8);
+    gl.color_material(GL_FRONT_AND_BACK, GL_DIFFUSE);
+    gl.enable(GL_COLOR_MATERIAL);
+    gl.color_4f(0.0, 1.0, 0.0, 1.0);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[1.0, 0.0, 0.0, 1.0]);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+    let mut v = [0f32; 4];
+    gl.get_materialfv(GL_BACK, GL_DIFFUSE, &mut v);
+    assert_eq!(v, [0.0, 1.0, 0.0, 1.0]);
+    gl.get_materialfv(GL_FRONT, GL_SPECULAR, &mut v);
+    assert_eq!(v, [0.5, 0.5, 0.5, 1.0]);
+    // Untracked once disabled.
+    gl.disable(GL_COLOR_MATERIAL);
+    gl.materialfv(GL_FRONT, GL_DIFFUSE, &[1.0, 0.0, 0.0, 1.0]);
+    gl.get_materialfv(GL_FRONT, GL_DIFFUSE, &mut v);
+    assert_eq!(v, [1.0, 0.0, 0.0, 1.0]);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+}

@@ -68,7 +68,41 @@ fn compare_reports_each_picture_and_passes_within_tolerance() {
 #[test]
 fn compare_fails_when_a_picture_is_out_of_tolerance() {
     let Some(dir) = traces_dir() else { return };
-    // The NV_texture_env_combine4 test uses an extension tilegl does not have.
+    // glxgears against references that are solid magenta: every picture fails.
+    let name = "glxgears";
+    let refs = temp_dir("bad-refs");
+    let src = dir.join(format!("{name}.frames"));
+    let tsv = std::fs::read_to_string(src.join("frames.tsv")).unwrap();
+    std::fs::write(refs.join("frames.tsv"), &tsv).unwrap();
+    for line in tsv.lines().skip(1) {
+        let file = line.split('\t').next().unwrap();
+        let size = image::image_dimensions(src.join(file)).unwrap();
+        image::RgbImage::from_pixel(size.0, size.1, image::Rgb([255, 0, 255]))
+            .save(refs.join(file))
+            .unwrap();
+    }
+    let o = tilegl()
+        .arg("replay")
+        .arg(dir.join(format!("{name}.trace")))
+        .arg("--compare")
+        .arg(&refs)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{stdout}\n{stderr}");
+    assert!(
+        stdout.lines().filter(|l| l.ends_with("FAIL")).count() == 3,
+        "{stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&refs);
+}
+
+#[test]
+fn each_gl_error_source_is_reported_once_with_its_first_call() {
+    let Some(dir) = traces_dir() else { return };
+    // piglit queries GL 3 state that GL 1.5 does not have: glGetIntegerv raises
+    // GL_INVALID_ENUM hundreds of times, reported on one line.
     let name = "piglit-nv_texture_env_combine4-combine";
     let o = tilegl()
         .arg("replay")
@@ -79,14 +113,21 @@ fn compare_fails_when_a_picture_is_out_of_tolerance() {
         .unwrap();
     let stdout = String::from_utf8_lossy(&o.stdout);
     let stderr = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(1), "{stdout}\n{stderr}");
+    assert_eq!(o.status.code(), Some(0), "{stdout}\n{stderr}");
+    let raised: Vec<&str> = stderr.lines().filter(|l| l.contains(" raised ")).collect();
+    assert!(!raised.is_empty(), "{stderr}");
+    let mut keys: Vec<&str> = raised
+        .iter()
+        .map(|l| l.split(" (").next().unwrap_or(l))
+        .collect();
+    let n = keys.len();
+    keys.sort_unstable();
+    keys.dedup();
+    assert_eq!(keys.len(), n, "{stderr}");
     assert!(
-        stdout.lines().filter(|l| l.ends_with("FAIL")).count() == 3,
-        "{stdout}"
+        raised.iter().all(|l| l.contains("first at call")),
+        "{stderr}"
     );
-    // Each GL error source is reported once, with its first call.
-    assert_eq!(stderr.matches("glTexEnvi raised").count(), 1, "{stderr}");
-    assert!(stderr.contains("first at call 329"), "{stderr}");
 }
 
 #[test]

@@ -15,29 +15,8 @@ use tilegl::replay::trace::TraceReader;
 
 /// Captures that do not match yet, and why (from the unknown calls and GL errors the replay
 /// reports, and from looking at the pictures).
-const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "piglit-copyteximage-2D",
-        "glCopyTexImage2D into GL 3 internal formats (GL_RED, GL_RG, float and generic \
-         compressed ones: GL_INVALID_VALUE), so those panels stay empty",
-    ),
-    (
-        "piglit-nv_texture_env_combine4-combine",
-        "GL_NV_texture_env_combine4 (glTexEnvi GL_COMBINE4_NV: GL_INVALID_ENUM)",
-    ),
-    (
-        "piglit-texwrap-2D-GL_RGBA8",
-        "GL_MIRROR_CLAMP_EXT wrap modes and GL_TEXTURE_SWIZZLE_RGBA (extensions Mesa advertised: \
-         glTexParameter GL_INVALID_ENUM)",
-    ),
-    (
-        "xss-flurry",
-        "the pictures are far darker than Mesa's (17 % of pixels off): each frame's textured \
-         additive quads (MODULATE, mipmapped LUMINANCE_ALPHA sprite, SRC_ALPHA/ONE, faded by a \
-         translucent rectangle) add little; the same quads in immediate mode give the same \
-         pixels, so not the arrays: texturing or blending precision, to investigate",
-    ),
-];
+/// Empty: every shared capture matches.
+const KNOWN_FAILURES: &[(&str, &str)] = &[];
 
 fn traces_dir() -> Option<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");

@@ -912,3 +912,63 @@ fn sampler_throughput() {
     let ns = start.elapsed().as_nanos() as f64 / n as f64;
     println!("trilinear sample_grad: {ns:.1} ns/sample (checksum {acc})");
 }
+
+/// Texture coordinates on a plane receding to the horizon follow the perspective-correct
+/// interpolation of section 3.5.1 (equation 3.4: a/w and 1/w interpolated linearly in window
+/// space, at the pixel centre) up to the floating-point rounding of the evaluation, also in the
+/// last rows before the horizon, where t changes by ~50 per pixel row. Regression: the planes
+/// were set up from the snapped (1/256 pixel) vertex positions, which tilted the long thin
+/// clipped triangles enough to shift t by up to a whole repeat there.
+///
+/// The texture is 1 x 256 LUMINANCE with texel j = j (NEAREST, REPEAT), so a pixel shows
+/// floor(256 t) mod 256; the expected t is computed here from the projection: the pixel centre
+/// (xw, yw) lies on the plane y_eye = -1 at distance d = -1 / y_near, with
+/// y_near = b + (t - b) (yw / 64) of the frustum (b = -1, t = 0.25), and t = -0.4 + (d - 1.05) / 2.
+#[test]
+fn horizon_texture_coordinates_follow_the_exact_perspective_interpolation() {
+    let mut gl = Context::new(64, 64);
+    let ramp: Vec<u8> = (0..=255u8).collect();
+    lum_2d(&mut gl, 1, 256, &ramp, GL_NEAREST, GL_NEAREST, GL_REPEAT);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.frustum(-1.0, 1.0, -1.0, 0.25, 1.0, 400.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.begin(GL_QUADS);
+    for (x, z) in [
+        (-80.0f32, -1.05f32),
+        (80.0, -1.05),
+        (80.0, -380.0),
+        (-80.0, -380.0),
+    ] {
+        gl.tex_coord_2f(0.5 + 1.2 * x, -0.4 + 0.5 * (-z - 1.05));
+        gl.vertex_3f(x, -1.0, z);
+    }
+    gl.end();
+    let mut px = vec![0u8; 64 * 64 * 4];
+    gl.read_pixels(0, 0, 64, 64, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    let mut checked = 0;
+    for y in 0..64 {
+        let y_near = -1.0 + 1.25 * (y as f64 + 0.5) / 64.0;
+        if y_near >= 0.0 {
+            continue;
+        }
+        let d = -1.0 / y_near;
+        if !(1.1..=370.0).contains(&d) {
+            continue;
+        }
+        let t = -0.4 + 0.5 * (d - 1.05);
+        let expected = (t * 256.0).floor().rem_euclid(256.0) as i32;
+        for x in (0..64).step_by(7) {
+            let got = px[(y * 64 + x) * 4] as i32;
+            let off = (got - expected)
+                .rem_euclid(256)
+                .min((expected - got).rem_euclid(256));
+            assert!(
+                off <= 1,
+                "pixel ({x}, {y}): d = {d:.2}, t = {t:.5}: expected L {expected}, got {got}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 200, "{checked}");
+}

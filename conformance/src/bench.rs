@@ -27,6 +27,8 @@ use crate::prng::XorShift;
 #[derive(Clone, Debug)]
 pub struct BenchConfig {
     pub workload: Workload,
+    /// Run only the quality ladder (`--workload ladder`).
+    pub ladder_only: bool,
     /// Texture quality for the textured workloads: an index into [`LADDER`].
     pub quality: usize,
     pub width: i32,
@@ -45,6 +47,7 @@ impl Default for BenchConfig {
     fn default() -> Self {
         BenchConfig {
             workload: Workload::Triangles,
+            ladder_only: false,
             quality: 2,
             width: 1024,
             height: 768,
@@ -599,6 +602,11 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
                 child_out = Some(p.clone());
                 i += 1;
             }
+            ("--workload", Some(v)) if v == "ladder" => {
+                cfg.ladder_only = true;
+                all = false;
+                i += 1;
+            }
             ("--workload", Some(v)) => {
                 match Workload::parse(v) {
                     Some(w) => {
@@ -660,6 +668,8 @@ pub fn run_cli() -> i32 {
     }
     let workloads: Vec<Workload> = if all {
         Workload::ALL.to_vec()
+    } else if cfg.ladder_only {
+        Vec::new()
     } else {
         vec![cfg.workload]
     };
@@ -667,7 +677,145 @@ pub fn run_cli() -> i32 {
         cfg.workload = w;
         run_workload(&cfg, &args);
     }
+    if all || cfg.ladder_only {
+        run_ladder(&cfg);
+    }
     0
+}
+
+/// Box-filters an image `f` times smaller in each direction.
+fn downsample(img: &Image, f: i32) -> Image {
+    let (w, h) = (img.width / f, img.height / f);
+    let mut pixels = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = [0u32; 4];
+            for dy in 0..f {
+                for dx in 0..f {
+                    let p = img.pixel(x * f + dx, y * f + dy);
+                    for k in 0..4 {
+                        sum[k] += p[k] as u32;
+                    }
+                }
+            }
+            let n = (f * f) as u32;
+            pixels.extend(sum.map(|v| ((v + n / 2) / n) as u8));
+        }
+    }
+    Image {
+        width: w,
+        height: h,
+        pixels,
+    }
+}
+
+/// The quality ladder (error against run time): the horizon under every setting of
+/// [`LADDER`] on tilegl (2 threads) and Mesa in this process, each with its median time and
+/// its error against a 16x-supersampled (4x4) tilegl rendering with 16x anisotropic
+/// filtering; a table and a PNG chart (`target/bench/ladder.png`).
+pub fn run_ladder(cfg: &BenchConfig) {
+    let mut c = cfg.clone();
+    c.workload = Workload::Horizon;
+    let data = work_data(&c);
+    println!();
+    println!(
+        "== ladder: the horizon at {}x{} under each texture quality setting; error against a \
+         4x4-supersampled tilegl reference (aniso 16x)",
+        c.width, c.height
+    );
+    let reference = {
+        let mut big = c.clone();
+        big.width = c.width * 4;
+        big.height = c.height * 4;
+        big.quality = LADDER.len() - 1;
+        big.frames = 1;
+        let r = run_tilegl(&big, &data, 0);
+        downsample(&r.image, 4)
+    };
+    let mut rows = Vec::new();
+    for (q, setting) in LADDER.iter().enumerate() {
+        c.quality = q;
+        let t = run_tilegl(&c, &data, 2);
+        let m = run_mesa(&c, &data).ok().map(|(r, _)| r);
+        rows.push((setting.0, t, m));
+    }
+    println!(
+        "{:<10} {:>12} {:>14} {:>12} {:>14}",
+        "setting", "tilegl ms", "tilegl err", "llvmpipe ms", "llvmpipe err"
+    );
+    let mut points = Vec::new();
+    for (name, t, m) in &rows {
+        let dt = diff(&t.image, &reference, 8);
+        let (mm, me) = match m {
+            Some(m) => {
+                let dm = diff(&m.image, &reference, 8);
+                (
+                    format!("{:.1}", m.median_ms()),
+                    format!("{:.2} dB", dm.psnr),
+                )
+            }
+            None => ("-".to_string(), "-".to_string()),
+        };
+        println!(
+            "{:<10} {:>12.1} {:>11.2} dB {:>12} {:>14}",
+            name,
+            t.median_ms(),
+            dt.psnr,
+            mm,
+            me
+        );
+        points.push((t.median_ms(), dt.mean));
+    }
+    let path = std::path::Path::new("target/bench/ladder.png");
+    match ladder_chart(&points, path) {
+        Ok(()) => println!("chart (mean error against ms/frame): {}", path.display()),
+        Err(e) => println!("chart not written: {e}"),
+    }
+}
+
+/// Draws the ladder as a chart with tilegl itself: mean absolute error (y) against ms/frame
+/// (x), one coloured marker per setting in [`LADDER`] order (nearest red ... aniso 16x
+/// violet), joined by a line.
+fn ladder_chart(points: &[(f64, f64)], path: &std::path::Path) -> Result<(), String> {
+    let (w, h) = (640, 400);
+    let mut gl = Context::new(w, h);
+    gl.clear_color(1.0, 1.0, 1.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    let max_x = points.iter().map(|p| p.0).fold(1e-9, f64::max) * 1.1;
+    let max_y = points.iter().map(|p| p.1).fold(1e-9, f64::max) * 1.1;
+    gl.matrix_mode(GL_PROJECTION);
+    gl.ortho(-0.08, 1.02, -0.1, 1.05, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.color_3f(0.0, 0.0, 0.0);
+    gl.line_width(2.0);
+    gl.begin(GL_LINE_STRIP);
+    gl.vertex_2f(0.0, 1.0);
+    gl.vertex_2f(0.0, 0.0);
+    gl.vertex_2f(1.0, 0.0);
+    gl.end();
+    gl.color_3f(0.6, 0.6, 0.6);
+    gl.line_width(1.0);
+    gl.begin(GL_LINE_STRIP);
+    for &(x, y) in points {
+        gl.vertex_2f((x / max_x) as f32, (y / max_y) as f32);
+    }
+    gl.end();
+    gl.enable(GL_POINT_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.point_size(12.0);
+    gl.begin(GL_POINTS);
+    for (k, &(x, y)) in points.iter().enumerate() {
+        let hue = k as f32 / points.len().max(1) as f32;
+        gl.color_3f(1.0 - hue, 0.3 + 0.4 * (hue * 3.0).sin().abs(), hue);
+        gl.vertex_2f((x / max_x) as f32, (y / max_y) as f32);
+    }
+    gl.end();
+    gl.finish();
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
+    }
+    tilegl::framebuffer::image::save_png(gl.framebuffer(), path).map_err(|e| e.to_string())
 }
 
 fn describe(cfg: &BenchConfig) -> String {

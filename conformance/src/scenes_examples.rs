@@ -28,11 +28,10 @@ const fn ex(name: &'static str, draw: fn(&mut dyn Gl), w: i32, h: i32, tol: Tole
 }
 
 /// The mipmapping scenes' tolerances: channel threshold 24 and the bad-pixel share llvmpipe and
-/// softpipe show at that threshold (`--bin calibrate`). tilegl evaluates the level of detail per
-/// pixel from exact derivatives, both Mesa drivers per 2x2 quad from finite differences, so
-/// the level-blend weights differ by a few percent everywhere (up to 25/255 with levels of
-/// distinct colours) and level switches move by a row; whole-level or whole-texel errors exceed
-/// 24. Reasoning and figures in `conformance/TOLERANCE.md` ("Example scenes").
+/// softpipe show at that threshold (`--bin calibrate`), set when tilegl still took λ per pixel;
+/// with λ per 2x2 quad (as Mesa) the level-blend weights agree to within 10/255 and a few
+/// level switches remain; whole-level or whole-texel errors exceed 24. Reasoning and figures in
+/// `conformance/TOLERANCE.md` ("Example scenes").
 const MIP_FILTERS: Tolerance = Tolerance {
     channel: 24,
     max_bad_share: 0.00537,
@@ -53,6 +52,13 @@ pub const EXAMPLE_SCENES: &[Scene] = &[
     ),
     ex("ex_mipmap_levels", ex_mipmap_levels, 128, 128, MIP_LEVELS),
     ex("ex_wrap_modes", ex_wrap_modes, 320, 64, DIFFERENTIAL),
+    ex(
+        "ex_dxt_compression",
+        ex_dxt_compression,
+        384,
+        128,
+        DIFFERENTIAL,
+    ),
     ex(
         "ex_lightmap_multitexture",
         ex_lightmap_multitexture,
@@ -1811,4 +1817,224 @@ fn ex_planar_reflection(gl: &mut dyn Gl) {
     // 4. The object itself.
     gl.enable(GL_LIGHTING);
     reflected_object(gl);
+}
+
+// ---------------------------------------------------------------------------------------------
+// S3TC (DXT) compression.
+
+/// A 64x64 RGBA picture with smooth gradients, hard edges and a soft alpha disc: what block
+/// compression keeps (gradients within a block) and loses (several colours in one block).
+fn dxt_source() -> Vec<u8> {
+    paint(64, 64, 4, |u, v| {
+        let ring = (((u - 0.5).powi(2) + (v - 0.5).powi(2)).sqrt() * 9.0).floor() as i32;
+        let stripe = ((u * 8.0).floor() as i32 + (v * 3.0).floor() as i32) % 3;
+        let base = [u, 0.3 + 0.5 * v, 1.0 - u * v, 1.0];
+        let mut c = match (ring % 2, stripe) {
+            (0, 0) => [0.95, 0.9, 0.2, 1.0],
+            (0, _) => base,
+            _ => [base[2], base[0], base[1], 1.0],
+        };
+        let d = ((u - 0.5).powi(2) + (v - 0.5).powi(2)).sqrt();
+        c[3] = (1.2 - 2.0 * d).clamp(0.0, 1.0);
+        c
+    })
+}
+
+/// RGB565 of a colour, and back.
+fn to_565(c: [u8; 3]) -> u16 {
+    ((c[0] as u16 >> 3) << 11) | ((c[1] as u16 >> 2) << 5) | (c[2] as u16 >> 3)
+}
+
+fn from_565(v: u16) -> [i32; 3] {
+    let (r, g, b) = ((v >> 11) & 31, (v >> 5) & 63, v & 31);
+    [
+        (r as i32 * 255 + 15) / 31,
+        (g as i32 * 255 + 31) / 63,
+        (b as i32 * 255 + 15) / 31,
+    ]
+}
+
+/// A simple DXT colour block (EXT_texture_compression_s3tc): the two endpoints are the
+/// block's darkest and brightest texels, each texel takes the nearest of the four palette
+/// colours (c0 > c1: the 1/3 and 2/3 blends). The same bytes go to every implementation, so
+/// the pictures compare the decoders, not the encoders (which the extension leaves open).
+fn dxt_color_block(texels: &[[u8; 4]; 16]) -> [u8; 8] {
+    let luma = |c: &[u8; 4]| c[0] as u32 * 3 + c[1] as u32 * 6 + c[2] as u32;
+    let lo = texels
+        .iter()
+        .min_by_key(|c| luma(c))
+        .copied()
+        .unwrap_or([0; 4]);
+    let hi = texels
+        .iter()
+        .max_by_key(|c| luma(c))
+        .copied()
+        .unwrap_or([0; 4]);
+    let (mut c0, mut c1) = (to_565([hi[0], hi[1], hi[2]]), to_565([lo[0], lo[1], lo[2]]));
+    if c0 < c1 {
+        std::mem::swap(&mut c0, &mut c1);
+    }
+    if c0 == c1 {
+        // Four-colour mode needs c0 > c1; with one colour every index 0 is exact.
+        c1 = c0.saturating_sub(1);
+    }
+    let (p0, p1) = (from_565(c0), from_565(c1));
+    let palette = [
+        p0,
+        p1,
+        [0, 1, 2].map(|k| (2 * p0[k] + p1[k]) / 3),
+        [0, 1, 2].map(|k| (p0[k] + 2 * p1[k]) / 3),
+    ];
+    let mut bits = 0u32;
+    for (i, t) in texels.iter().enumerate() {
+        let dist = |p: &[i32; 3]| (0..3).map(|k| (p[k] - t[k] as i32).pow(2)).sum::<i32>();
+        let best = (0..4).min_by_key(|&j| dist(&palette[j])).unwrap_or(0) as u32;
+        bits |= best << (2 * i);
+    }
+    let mut out = [0u8; 8];
+    out[..2].copy_from_slice(&c0.to_le_bytes());
+    out[2..4].copy_from_slice(&c1.to_le_bytes());
+    out[4..].copy_from_slice(&bits.to_le_bytes());
+    out
+}
+
+/// A DXT5 alpha block: endpoints max and min alpha (a0 > a1: six interpolated steps), each
+/// texel the nearest of the eight.
+fn dxt5_alpha_block(texels: &[[u8; 4]; 16]) -> [u8; 8] {
+    let a0 = texels.iter().map(|t| t[3]).max().unwrap_or(0);
+    let a1 = texels.iter().map(|t| t[3]).min().unwrap_or(0);
+    let (a0, a1) = if a0 == a1 {
+        (a0.max(1), a0.max(1) - 1)
+    } else {
+        (a0, a1)
+    };
+    let level = |j: u64| -> i32 {
+        let (a0, a1) = (a0 as i32, a1 as i32);
+        match j {
+            0 => a0,
+            1 => a1,
+            j => ((8 - j as i32) * a0 + (j as i32 - 1) * a1) / 7,
+        }
+    };
+    let mut bits = 0u64;
+    for (i, t) in texels.iter().enumerate() {
+        let best = (0..8u64)
+            .min_by_key(|&j| (level(j) - t[3] as i32).abs())
+            .unwrap_or(0);
+        bits |= best << (3 * i);
+    }
+    let mut out = [0u8; 8];
+    out[0] = a0;
+    out[1] = a1;
+    out[2..].copy_from_slice(&bits.to_le_bytes()[..6]);
+    out
+}
+
+/// The blocks of a 64x64 RGBA picture: DXT1 (8 bytes a block) or DXT5 (16).
+fn dxt_blocks(px: &[u8], dxt5: bool) -> Vec<u8> {
+    let mut out = Vec::new();
+    for by in 0..16 {
+        for bx in 0..16 {
+            let mut texels = [[0u8; 4]; 16];
+            for (i, t) in texels.iter_mut().enumerate() {
+                let (x, y) = (bx * 4 + i % 4, by * 4 + i / 4);
+                let k = (y * 64 + x) * 4;
+                t.copy_from_slice(&px[k..k + 4]);
+            }
+            if dxt5 {
+                out.extend_from_slice(&dxt5_alpha_block(&texels));
+            }
+            out.extend_from_slice(&dxt_color_block(&texels));
+        }
+    }
+    out
+}
+
+/// The original texture, its DXT1 and its DXT5 compression, magnified side by side over a
+/// checker (alpha blended) so the block artefacts and DXT5's smooth alpha show.
+fn ex_dxt_compression(gl: &mut dyn Gl) {
+    clear_to(gl, [0.2, 0.2, 0.25]);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 384.0, 0.0, 128.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    // A checker behind, to show alpha.
+    for j in 0..16 {
+        for i in 0..48 {
+            let g = if (i + j) % 2 == 0 { 0.35 } else { 0.5 };
+            gl.color_3f(g, g, g);
+            gl.rectf(
+                i as f32 * 8.0,
+                j as f32 * 8.0,
+                i as f32 * 8.0 + 8.0,
+                j as f32 * 8.0 + 8.0,
+            );
+        }
+    }
+    let px = dxt_source();
+    let mut names = [0u32; 3];
+    gl.gen_textures(3, &mut names);
+    gl.bind_texture(GL_TEXTURE_2D, names[0]);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        64,
+        64,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&px),
+    );
+    let dxt1 = dxt_blocks(&px, false);
+    gl.bind_texture(GL_TEXTURE_2D, names[1]);
+    gl.compressed_tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGB_S3TC_DXT1_EXT,
+        64,
+        64,
+        0,
+        dxt1.len() as i32,
+        Some(&dxt1),
+    );
+    let dxt5 = dxt_blocks(&px, true);
+    gl.bind_texture(GL_TEXTURE_2D, names[2]);
+    gl.compressed_tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_COMPRESSED_RGBA_S3TC_DXT5_EXT,
+        64,
+        64,
+        0,
+        dxt5.len() as i32,
+        Some(&dxt5),
+    );
+    gl.enable(GL_TEXTURE_2D);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    for (k, name) in names.into_iter().enumerate() {
+        gl.bind_texture(GL_TEXTURE_2D, name);
+        sampling(gl, GL_TEXTURE_2D, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE);
+        snap_texture(
+            gl,
+            ["original", "dxt1", "dxt5"][k],
+            GL_TEXTURE_2D,
+            0,
+            [64, 64, 1],
+        );
+        // Off-integer corners and scale: no pixel centre falls exactly on a texel edge
+        // (NEAREST would then be a tie implementations break differently).
+        let x0 = 128.0 * k as f32 + 4.37;
+        gl.begin(GL_QUADS);
+        for (u, v) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            gl.tex_coord_2f(u, v);
+            gl.vertex_2f(x0 + 117.3 * u, 4.41 + 117.3 * v);
+        }
+        gl.end();
+    }
+    gl.disable(GL_BLEND);
 }

@@ -35,6 +35,9 @@ pub const RASTER_SCENES: &[Scene] = &[
     // centres lie within half a pixel of an edge, a band one pixel wide along the outline. The
     // three triangles' perimeters add up to 286 pixels = 7.0 % of the picture.
     scene_with("smooth_polygons", smooth_polygons, spread(0.070)),
+    scene("additive_faint_layers", additive_faint_layers),
+    scene("blend_equation_separate", blend_equation_separate),
+    scene("flat_textured_fogged", flat_textured_fogged),
     scene("accum_motion_blur", accum_motion_blur),
     scene("accum_ops", accum_ops),
     scene("draw_pixels_color", draw_pixels_color),
@@ -646,4 +649,136 @@ fn smooth_polygons(gl: &mut dyn Gl) {
     gl.vertex_2f(58.9, 36.6);
     gl.vertex_2f(30.2, 61.3);
     gl.end();
+}
+
+/// Many faint additive layers (as xscreensaver's flurry draws its smoke): a luminance-alpha
+/// texture modulated by a dim colour, blended with SRC_ALPHA/ONE, each layer adding less than
+/// one 8-bit step before rounding, plus a fading rectangle.
+fn additive_faint_layers(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_color(0.0, 0.0, 0.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    let texels: Vec<u8> = (0..16 * 16)
+        .flat_map(|k| [40 + (k % 16) as u8 * 10, 30 + (k / 16) as u8 * 12])
+        .collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        2,
+        16,
+        16,
+        0,
+        GL_LUMINANCE_ALPHA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.tex_envf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as f32);
+    gl.enable(GL_ALPHA_TEST);
+    gl.alpha_func(GL_GREATER, 0.0);
+    gl.enable(GL_BLEND);
+    // The destination alpha after repeated SRC_ALPHA blending differs between
+    // implementations (llvmpipe and softpipe disagree on a third of the pixels); only the
+    // colour is compared.
+    gl.color_mask(1, 1, 1, 0);
+    for layer in 0..40 {
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        gl.disable(GL_TEXTURE_2D);
+        gl.color_4f(0.0, 0.0, 0.0, 0.05);
+        gl.rectd(0.0, 0.0, 64.0, 64.0);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE);
+        gl.enable(GL_TEXTURE_2D);
+        let k = layer as f32;
+        gl.begin(GL_QUADS);
+        gl.color_4f(0.07 + 0.002 * k, 0.056, 0.024, 0.367);
+        gl.tex_coord_2f(0.0, 0.0);
+        gl.vertex_2f(2.0 + k * 0.3, 3.0);
+        gl.tex_coord_2f(1.0, 0.0);
+        gl.vertex_2f(60.0, 4.0 + k * 0.2);
+        gl.tex_coord_2f(1.0, 1.0);
+        gl.vertex_2f(58.0, 61.0);
+        gl.tex_coord_2f(0.0, 1.0);
+        gl.vertex_2f(3.0, 59.0 - k * 0.4);
+        gl.end();
+    }
+}
+
+/// Flat shading with texturing and fog: colours from the provoking vertex, texture and fog
+/// coordinates still interpolated (flurry's smoke sprites relied on this).
+fn flat_textured_fogged(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let texels: Vec<u8> = (0..8 * 8)
+        .flat_map(|k| {
+            let on = (k % 8 + k / 8) % 2 == 0;
+            if on {
+                [250, 240, 200, 255]
+            } else {
+                [40, 60, 90, 255]
+            }
+        })
+        .collect();
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        8,
+        8,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.enable(GL_FOG);
+    gl.fogi(GL_FOG_COORDINATE_SOURCE, GL_FOG_COORDINATE as i32);
+    gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+    gl.fogf(GL_FOG_START, 0.0);
+    gl.fogf(GL_FOG_END, 1.0);
+    gl.fogfv(GL_FOG_COLOR, &[0.2, 0.5, 0.3, 1.0]);
+    gl.shade_model(GL_FLAT);
+    // Two explicit triangles: how a quad is split is left to the implementation.
+    let corners = [
+        (4.3f32, 4.2f32, 0.0f32, 0.0f32, 0.0f32),
+        (60.1, 6.7, 1.0, 0.0, 0.3),
+        (57.8, 59.9, 1.0, 1.0, 0.9),
+        (5.6, 58.3, 0.0, 1.0, 0.5),
+    ];
+    gl.begin(GL_TRIANGLES);
+    for (k, &i) in [0usize, 1, 2, 0, 2, 3].iter().enumerate() {
+        let (x, y, s, t, f) = corners[i];
+        pal(gl, k + 1);
+        gl.tex_coord_2f(s, t);
+        gl.fog_coordf(f);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+}
+
+/// EXT_blend_equation_separate: different equations for colour and alpha, alpha shown by a
+/// second pass that writes destination alpha as colour.
+fn blend_equation_separate(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.clear_color(0.3, 0.5, 0.2, 0.6);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    let modes = [
+        (GL_FUNC_ADD, GL_MIN),
+        (GL_FUNC_SUBTRACT, GL_MAX),
+        (GL_FUNC_REVERSE_SUBTRACT, GL_FUNC_ADD),
+        (GL_MAX, GL_FUNC_SUBTRACT),
+    ];
+    for (k, (rgb, alpha)) in modes.into_iter().enumerate() {
+        gl.blend_equation_separate_ext(rgb, alpha);
+        gl.color_4f(0.6, 0.2 + 0.1 * k as f32, 0.5, 0.2 + 0.2 * k as f32);
+        gl.rectf(16.0 * k as f32, 0.0, 16.0 * k as f32 + 16.0, 64.0);
+    }
+    // Show destination alpha in the upper half: colour = dst alpha (blend DST_ALPHA, ZERO).
+    gl.blend_equation(GL_FUNC_ADD);
+    gl.blend_func(GL_DST_ALPHA, GL_ZERO);
+    gl.color_4f(1.0, 1.0, 1.0, 1.0);
+    gl.rectf(0.0, 32.0, 64.0, 64.0);
 }

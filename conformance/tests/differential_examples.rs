@@ -8,6 +8,7 @@ differential!(
     ex_mipmap_filters,
     ex_mipmap_levels,
     ex_wrap_modes,
+    ex_dxt_compression,
     ex_lightmap_multitexture,
     ex_lightmap_multipass,
     ex_gloss_map,

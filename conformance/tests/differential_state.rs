@@ -58,7 +58,7 @@ fn ints(gl: &mut dyn Gl, out: &mut Answers, pnames: &[GLenum]) {
         };
         exact(
             out,
-            format!("get_integerv(0x{p:04x})"),
+            format!("answer {}: get_integerv(0x{p:04x})", out.len()),
             v[..n].iter().map(|&x| x as f64).collect(),
         );
     }
@@ -180,6 +180,14 @@ const STATE: &[GLenum] = &[
     GL_MAX_ATTRIB_STACK_DEPTH,
     GL_NAME_STACK_DEPTH,
     GL_RENDER_MODE,
+    GL_MAP1_VERTEX_3,
+    GL_MAP2_COLOR_4,
+    GL_AUTO_NORMAL,
+    GL_MAP1_GRID_SEGMENTS,
+    GL_MAP2_GRID_SEGMENTS,
+    // Not GL_BLEND_EQUATION_ALPHA_EXT: Mesa 22's glPopAttrib(GL_COLOR_BUFFER_BIT) leaves it
+    // as set after the push, where EXT_blend_equation_separate puts it in the colour-buffer
+    // group (tilegl restores it; `tests/attrib_stack.rs` checks that).
 ];
 
 const FLOAT_STATE: &[GLenum] = &[
@@ -249,6 +257,12 @@ fn change_state(gl: &mut dyn Gl) {
     gl.pixel_zoom(2.0, 3.0);
     gl.pixel_transferf(GL_RED_SCALE, 0.5);
     gl.depth_range(0.25, 0.5);
+    gl.enable(GL_MAP1_VERTEX_3);
+    gl.enable(GL_MAP2_COLOR_4);
+    gl.enable(GL_AUTO_NORMAL);
+    gl.map_grid_1f(9, 0.0, 2.0);
+    gl.map_grid_2d(4, 0.0, 1.0, 6, -1.0, 1.0);
+    gl.blend_equation_separate_ext(GL_FUNC_ADD, GL_MIN);
 }
 
 fn state_attrib_stack(gl: &mut dyn Gl, out: &mut Answers) {

@@ -6,10 +6,12 @@ use super::enums::*;
 use super::types::GLenum;
 
 mod arrays;
+mod eval;
 mod state_ext;
 mod texture;
 #[allow(unused_imports)]
 pub use arrays::*;
+pub use eval::*;
 #[allow(unused_imports)]
 pub use state_ext::*;
 #[allow(unused_imports)]
@@ -260,6 +262,11 @@ pub enum Capability {
     PolygonOffsetPoint,
     /// `GL_MULTISAMPLE` and the sample coverage enables (`convert::state_ext`).
     Multisample(MultisampleCap),
+    /// `GL_MAP1_*` evaluator enables.
+    Map1(EvalTarget),
+    /// `GL_MAP2_*` evaluator enables.
+    Map2(EvalTarget),
+    AutoNormal,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -296,6 +303,9 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_TEXTURE_GEN_R => Capability::TexGen(2),
         GL_TEXTURE_GEN_Q => Capability::TexGen(3),
         e if light_index(e).is_some() => Capability::Light(light_index(e)?),
+        GL_AUTO_NORMAL => Capability::AutoNormal,
+        e if map1_target(e).is_some() => Capability::Map1(map1_target(e)?),
+        e if map2_target(e).is_some() => Capability::Map2(map2_target(e)?),
         e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }
@@ -581,6 +591,7 @@ pub enum Query {
     BlendSrcAlpha,
     BlendDstAlpha,
     BlendEquationRgb,
+    BlendEquationAlpha,
     BlendColor,
     LogicOpMode,
     MaxLights,
@@ -604,6 +615,8 @@ pub enum Query {
     Arrays(ArrayQuery),
     /// Attribute stack, multisample, selection and feedback (`convert::state_ext`).
     StateExt(StateExtQuery),
+    /// Evaluator grids and limits (`convert::eval`).
+    Eval(EvalQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -623,6 +636,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(q) = state_ext_query(e) {
         return Some(StateExt(q));
+    }
+    if let Some(q) = eval_query(e) {
+        return Some(Eval(q));
     }
     Some(match e {
         GL_VIEWPORT => Viewport,
@@ -705,6 +721,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_BLEND_SRC_ALPHA => BlendSrcAlpha,
         GL_BLEND_DST_ALPHA => BlendDstAlpha,
         GL_BLEND_EQUATION => BlendEquationRgb,
+        GL_BLEND_EQUATION_ALPHA_EXT => BlendEquationAlpha,
         GL_BLEND_COLOR => BlendColor,
         GL_LOGIC_OP_MODE => LogicOpMode,
         GL_MAX_LIGHTS => MaxLights,
@@ -1112,6 +1129,8 @@ pub enum TexEnvMode {
     Blend,
     Add,
     Combine,
+    /// NV_texture_env_combine4: `GL_COMBINE` with a fourth argument.
+    Combine4,
 }
 
 impl TexEnvMode {
@@ -1123,6 +1142,7 @@ impl TexEnvMode {
             TexEnvMode::Blend => GL_BLEND,
             TexEnvMode::Add => GL_ADD,
             TexEnvMode::Combine => GL_COMBINE,
+            TexEnvMode::Combine4 => GL_COMBINE4_NV,
         }
     }
 }
@@ -1135,6 +1155,7 @@ pub fn tex_env_mode(e: GLenum) -> Option<TexEnvMode> {
         GL_BLEND => TexEnvMode::Blend,
         GL_ADD => TexEnvMode::Add,
         GL_COMBINE => TexEnvMode::Combine,
+        GL_COMBINE4_NV => TexEnvMode::Combine4,
         _ => return None,
     })
 }
@@ -1191,6 +1212,8 @@ pub enum CombineSource {
     Constant,
     PrimaryColor,
     Previous,
+    /// `GL_ZERO` (NV_texture_env_combine4).
+    Zero,
 }
 
 impl CombineSource {
@@ -1201,6 +1224,7 @@ impl CombineSource {
             CombineSource::Constant => GL_CONSTANT,
             CombineSource::PrimaryColor => GL_PRIMARY_COLOR,
             CombineSource::Previous => GL_PREVIOUS,
+            CombineSource::Zero => GL_ZERO,
         }
     }
 }
@@ -1211,6 +1235,7 @@ pub fn combine_source(e: GLenum) -> Option<CombineSource> {
         GL_CONSTANT => CombineSource::Constant,
         GL_PRIMARY_COLOR => CombineSource::PrimaryColor,
         GL_PREVIOUS => CombineSource::Previous,
+        GL_ZERO => CombineSource::Zero,
         e if (GL_TEXTURE0..GL_TEXTURE0 + 8).contains(&e) => {
             CombineSource::TextureUnit((e - GL_TEXTURE0) as u8)
         }
@@ -1284,15 +1309,19 @@ pub fn tex_env_param(target: GLenum, pname: GLenum) -> Option<TexEnvParam> {
             GL_SOURCE0_RGB => Source { rgb: true, n: 0 },
             GL_SOURCE1_RGB => Source { rgb: true, n: 1 },
             GL_SOURCE2_RGB => Source { rgb: true, n: 2 },
+            GL_SOURCE3_RGB_NV => Source { rgb: true, n: 3 },
             GL_SOURCE0_ALPHA => Source { rgb: false, n: 0 },
             GL_SOURCE1_ALPHA => Source { rgb: false, n: 1 },
             GL_SOURCE2_ALPHA => Source { rgb: false, n: 2 },
+            GL_SOURCE3_ALPHA_NV => Source { rgb: false, n: 3 },
             GL_OPERAND0_RGB => Operand { rgb: true, n: 0 },
             GL_OPERAND1_RGB => Operand { rgb: true, n: 1 },
             GL_OPERAND2_RGB => Operand { rgb: true, n: 2 },
+            GL_OPERAND3_RGB_NV => Operand { rgb: true, n: 3 },
             GL_OPERAND0_ALPHA => Operand { rgb: false, n: 0 },
             GL_OPERAND1_ALPHA => Operand { rgb: false, n: 1 },
             GL_OPERAND2_ALPHA => Operand { rgb: false, n: 2 },
+            GL_OPERAND3_ALPHA_NV => Operand { rgb: false, n: 3 },
             GL_RGB_SCALE => RgbScale,
             GL_ALPHA_SCALE => AlphaScale,
             _ => return None,

@@ -16,6 +16,11 @@ pub fn size(ctx: &Context, command: &str, param: &str, args: &[i64]) -> usize {
         }
         "glReadPixels" => ctx.pack_size(arg(0) as u32, arg(1) as u32, arg(2) as i32, arg(3) as i32),
         "glPolygonStipple" | "glGetPolygonStipple" => 128,
+        "glMap1f" | "glMap1d" => crate::state::evaluators::map1_len(arg(0) as u32, arg(1), arg(2)),
+        "glMap2f" | "glMap2d" => {
+            crate::state::evaluators::map2_len(arg(0) as u32, arg(1), arg(2), arg(3), arg(4))
+        }
+        "glGetMapfv" | "glGetMapdv" | "glGetMapiv" => ctx.get_map_len(arg(0) as u32, arg(1) as u32),
         "glCallLists" => {
             let n = arg(0).clamp(0, i32::MAX as i64) as usize;
             n * match arg(1) as u32 {

@@ -45,7 +45,12 @@ pub fn blend(key: &BlendKey, src: [u8; 4], dst: [u8; 4], constant: [f32; 4]) -> 
         } else {
             (key.src_rgb, key.dst_rgb)
         };
-        let v = match key.equation {
+        let equation = if ch == 3 {
+            key.equation_alpha
+        } else {
+            key.equation
+        };
+        let v = match equation {
             BlendEquation::Min => s[ch].min(d[ch]),
             BlendEquation::Max => s[ch].max(d[ch]),
             eq => {

@@ -17,7 +17,10 @@ pub struct StencilKey {
 /// Blending (section 4.1.8): one equation for RGB and alpha in GL 1.5, separate factors.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct BlendKey {
+    /// The RGB equation (`glBlendEquation` sets both).
     pub equation: BlendEquation,
+    /// The alpha equation (EXT_blend_equation_separate).
+    pub equation_alpha: BlendEquation,
     pub src_rgb: BlendFactor,
     pub dst_rgb: BlendFactor,
     pub src_alpha: BlendFactor,
@@ -100,12 +103,14 @@ impl FragmentKey {
             (ops.color_logic_op && ops.logic_op != LogicOp::Copy).then_some(ops.logic_op);
         let blend = BlendKey {
             equation: ops.blend_equation,
+            equation_alpha: ops.blend_equation_alpha,
             src_rgb: ops.blend_src_rgb,
             dst_rgb: ops.blend_dst_rgb,
             src_alpha: ops.blend_src_alpha,
             dst_alpha: ops.blend_dst_alpha,
         };
         let replaces = blend.equation == BlendEquation::Add
+            && blend.equation_alpha == BlendEquation::Add
             && blend.src_rgb == BlendFactor::One
             && blend.src_alpha == BlendFactor::One
             && blend.dst_rgb == BlendFactor::Zero

@@ -221,32 +221,46 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
     }
 }
 
-/// Texture coordinates of one unit at a pixel, divided by q, with their screen derivatives
-/// (exact derivatives of the perspective-correct interpolation, instead of 2x2 differences).
+/// Texture coordinates (s, t, r divided by q) of one unit at window point (x, y), in f64.
+#[inline(always)]
+fn coords_at(it: &Interpolants, base: usize, x: f64, y: f64) -> [f64; 3] {
+    let p = &it.attrs[base..base + 4];
+    let w = if it.perspective {
+        it.inv_w.at(x, y)
+    } else {
+        1.0
+    };
+    let q = p[3].at(x, y) / w;
+    [0, 1, 2].map(|k| p[k].at(x, y) / w / q)
+}
+
+/// Texture coordinates of one unit at the pixel centred at (x, y), with the screen
+/// derivatives λ is computed from: finite differences over the pixel's 2x2 quad (section
+/// 3.8.8 allows them; this is what hardware and Mesa do, so mipmap level choices agree). The
+/// quads are aligned to even window coordinates; the x difference is taken along the quad's
+/// upper row and the y difference along its left column, and all four pixels share them.
 fn unit_coords(it: &Interpolants, base: usize, x: f64, y: f64) -> ([f32; 3], [f32; 3], [f32; 3]) {
-    let w = it.inv_w.at(x, y);
-    let (wa, wb) = (it.inv_w.a, it.inv_w.b);
-    let mut v = [0f64; 4];
-    let mut dx = [0f64; 4];
-    let mut dy = [0f64; 4];
-    for k in 0..4 {
-        let p = &it.attrs[base + k];
-        v[k] = p.at(x, y) / w;
-        dx[k] = (p.a - v[k] * wa) / w;
-        dy[k] = (p.b - v[k] * wb) / w;
-    }
-    let q = v[3];
-    let mut c = [0f32; 3];
-    let mut cdx = [0f32; 3];
-    let mut cdy = [0f32; 3];
-    for k in 0..3 {
-        c[k] = (v[k] / q) as f32;
-        cdx[k] = ((dx[k] * q - v[k] * dx[3]) / (q * q)) as f32;
-        cdy[k] = ((dy[k] * q - v[k] * dy[3]) / (q * q)) as f32;
-    }
+    let c = coords_at(it, base, x, y);
+    let qx = (x - 0.5).div_euclid(2.0) * 2.0 + 0.5;
+    let qy = (y - 0.5).div_euclid(2.0) * 2.0 + 0.5;
+    let upper = qy + 1.0;
+    let ref_ = coords_at(it, base, qx, upper);
+    let right = coords_at(it, base, qx + 1.0, upper);
+    let below = coords_at(it, base, qx, qy);
+    let dx = [0, 1, 2].map(|k| right[k] - ref_[k]);
+    let dy = [0, 1, 2].map(|k| ref_[k] - below[k]);
     // q = 0 (or non-finite input) gives no usable coordinate: sample at the origin.
-    let fix = |a: [f32; 3]| a.map(|x| if x.is_finite() { x } else { 0.0 });
-    (fix(c), fix(cdx), fix(cdy))
+    let fix = |a: [f64; 3]| {
+        a.map(|v| {
+            let v = v as f32;
+            if v.is_finite() {
+                v
+            } else {
+                0.0
+            }
+        })
+    };
+    (fix(c), fix(dx), fix(dy))
 }
 
 /// Samples every unit and runs the texture environment cascade on the primary colour.

@@ -24,7 +24,7 @@ pub struct CombineInputs<'a> {
 pub fn apply(
     env: &TexEnv,
     base: BaseFormat,
-    unit: usize,
+    _unit: usize,
     cf: Rgba,
     ct: Rgba,
     inputs: &CombineInputs,
@@ -32,7 +32,7 @@ pub fn apply(
     use BaseFormat::*;
     let (has_color, has_alpha) = match base {
         Alpha => (false, true),
-        Luminance | Rgb | DepthComponent => (true, false),
+        Luminance | Rgb | DepthComponent | Red | Rg => (true, false),
         LuminanceAlpha | Rgba => (true, true),
         Intensity => (true, true),
     };
@@ -92,7 +92,8 @@ pub fn apply(
             };
             [c[0], c[1], c[2], a]
         }
-        TexEnvMode::Combine => combine(&env.combine, unit, cf, ct, cc, inputs),
+        TexEnvMode::Combine => combine(&env.combine, false, cf, ct, cc, inputs),
+        TexEnvMode::Combine4 => combine(&env.combine, true, cf, ct, cc, inputs),
     }
 }
 
@@ -105,6 +106,7 @@ fn source(s: CombineSource, cf: Rgba, ct: Rgba, cc: Rgba, inputs: &CombineInputs
         CombineSource::Constant => cc,
         CombineSource::PrimaryColor => inputs.primary,
         CombineSource::Previous => cf,
+        CombineSource::Zero => [0.0; 4],
     }
 }
 
@@ -138,10 +140,12 @@ fn combine_fn(f: CombineFunc, a: f32, b: f32, c: f32) -> f32 {
 }
 
 /// `GL_COMBINE` (table 3.24): arguments from the sources through the operands, the function,
-/// then the scale, then a clamp to [0, 1].
+/// then the scale, then a clamp to [0, 1]. With `four` (NV_texture_env_combine4's
+/// `GL_COMBINE4_NV`), `ADD` is `a0 a1 + a2 a3` and `ADD_SIGNED` is `a0 a1 + a2 a3 - 1/2`; the
+/// other functions are those of `GL_COMBINE`.
 pub fn combine(
     k: &Combine,
-    _unit: usize,
+    four: bool,
     cf: Rgba,
     ct: Rgba,
     cc: Rgba,
@@ -167,12 +171,33 @@ pub fn combine(
                 return out;
             }
         }
+        f @ (CombineFunc::Add | CombineFunc::AddSigned) if four => {
+            let a3 = arg_rgb(3);
+            let bias = if f == CombineFunc::AddSigned {
+                0.5
+            } else {
+                0.0
+            };
+            for i in 0..3 {
+                out[i] = clamp01((a0[i] * a1[i] + a2[i] * a3[i] - bias) * rs);
+            }
+        }
         f => {
             for i in 0..3 {
                 out[i] = clamp01(combine_fn(f, a0[i], a1[i], a2[i]) * rs);
             }
         }
     }
-    out[3] = clamp01(combine_fn(k.alpha, arg_a(0), arg_a(1), arg_a(2)) * as_);
+    out[3] = match k.alpha {
+        f @ (CombineFunc::Add | CombineFunc::AddSigned) if four => {
+            let bias = if f == CombineFunc::AddSigned {
+                0.5
+            } else {
+                0.0
+            };
+            clamp01((arg_a(0) * arg_a(1) + arg_a(2) * arg_a(3) - bias) * as_)
+        }
+        f => clamp01(combine_fn(f, arg_a(0), arg_a(1), arg_a(2)) * as_),
+    };
     out
 }

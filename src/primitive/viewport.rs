@@ -9,6 +9,10 @@ use crate::state::DrawState;
 pub struct WindowVertex {
     /// Fixed-point x, y (8 sub-pixel bits).
     pub xy: [i64; 2],
+    /// The same position before snapping (window coordinates). Attribute planes use it:
+    /// interpolation from snapped positions extrapolates badly on long thin triangles
+    /// (a perspective plane near its horizon).
+    pub pos: [f64; 2],
     /// Window z in [0, 1] (depth range applied).
     pub z: f64,
     /// 1 / w_clip.
@@ -24,6 +28,7 @@ pub fn to_window(ds: &DrawState, v: &ClipVertex) -> WindowVertex {
     let z = ndc[2] * ds.viewport_scale[2] + ds.viewport_offset[2];
     WindowVertex {
         xy: [to_fixed(x), to_fixed(y)],
+        pos: [x, y],
         z: z.clamp(0.0, 1.0),
         inv_w,
     }

@@ -206,6 +206,19 @@ pub fn bin_triangle(
     if let Some(o) = &ds.raster.offset {
         z.c += o.for_plane(PolygonMode::Fill, z.a, z.b, ds.depth_max);
     }
+    // 1/w and the attributes are interpolated over the unsnapped positions (as Mesa does):
+    // snapping moves a vertex by up to half a sub-pixel, which tilts the planes of long thin
+    // triangles enough to shift texture coordinates by several texels near a horizon.
+    let (p, inv_det) = {
+        let q = v.map(|w| w.pos);
+        let det =
+            (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]);
+        if det != 0.0 && det.is_finite() && (1.0 / det).is_finite() {
+            (q, 1.0 / det)
+        } else {
+            (p, inv_det)
+        }
+    };
     let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
     let n = ds.attr_count.min(MAX_ATTRS);
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat

@@ -87,6 +87,17 @@ impl TransformAttrib {
     }
 }
 
+/// Evaluator state of `GL_EVAL_BIT` (the map enables and `GL_AUTO_NORMAL` also belong to
+/// `GL_ENABLE_BIT`); the maps' control points belong to no group.
+#[derive(Clone, Copy, Debug)]
+struct EvalAttrib {
+    map1_enabled: [bool; 9],
+    map2_enabled: [bool; 9],
+    auto_normal: bool,
+    grid1: (i32, f64, f64),
+    grid2: (i32, f64, f64, i32, f64, f64),
+}
+
 /// One entry of the attribute stack: the mask's groups and the state they save.
 #[derive(Clone, Debug)]
 pub(crate) struct AttribEntry {
@@ -113,6 +124,7 @@ pub(crate) struct AttribEntry {
     textures: Option<crate::texture::TextureAttrib>,
     tex_gen: [super::texgen::TexGenUnit; limits::MAX_TEXTURE_UNITS],
     tex_env: [super::texenv::TexEnv; limits::MAX_TEXTURE_UNITS],
+    eval: EvalAttrib,
 }
 
 impl Context {
@@ -147,6 +159,13 @@ impl Context {
             textures: (g.texture || g.enable).then(|| self.textures.save_attrib()),
             tex_gen: self.tex_gen,
             tex_env: self.tex_env,
+            eval: EvalAttrib {
+                map1_enabled: self.eval.map1_enabled,
+                map2_enabled: self.eval.map2_enabled,
+                auto_normal: self.eval.auto_normal,
+                grid1: self.eval.grid1,
+                grid2: self.eval.grid2,
+            },
         };
         self.attrib_stack.push(Box::new(entry));
     }
@@ -290,6 +309,9 @@ impl Context {
                     c.enabled = s.enabled;
                 }
             }
+            self.eval.map1_enabled = e.eval.map1_enabled;
+            self.eval.map2_enabled = e.eval.map2_enabled;
+            self.eval.auto_normal = e.eval.auto_normal;
             let m = &mut self.multisample;
             m.multisample = e.multisample.multisample;
             m.alpha_to_coverage = e.multisample.alpha_to_coverage;
@@ -306,6 +328,7 @@ impl Context {
             ops.blend_src_alpha = e.ops.blend_src_alpha;
             ops.blend_dst_alpha = e.ops.blend_dst_alpha;
             ops.blend_equation = e.ops.blend_equation;
+            ops.blend_equation_alpha = e.ops.blend_equation_alpha;
             ops.blend_color = e.ops.blend_color;
             ops.dither = e.ops.dither;
             ops.color_logic_op = e.ops.color_logic_op;
@@ -318,7 +341,13 @@ impl Context {
         if g.hint {
             self.hints = e.hints;
         }
-        // GL_EVAL_BIT: tilegl has no evaluators, so the group holds nothing.
+        if g.eval {
+            self.eval.map1_enabled = e.eval.map1_enabled;
+            self.eval.map2_enabled = e.eval.map2_enabled;
+            self.eval.auto_normal = e.eval.auto_normal;
+            self.eval.grid1 = e.eval.grid1;
+            self.eval.grid2 = e.eval.grid2;
+        }
         if g.list {
             self.list_base(e.list_base);
         }

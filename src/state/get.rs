@@ -241,6 +241,7 @@ impl Context {
             Query::BlendSrcAlpha => Enum(ops.blend_src_alpha.to_gl()),
             Query::BlendDstAlpha => Enum(ops.blend_dst_alpha.to_gl()),
             Query::BlendEquationRgb => Enum(ops.blend_equation.to_gl()),
+            Query::BlendEquationAlpha => Enum(ops.blend_equation_alpha.to_gl()),
             Query::BlendColor => Normalized(ops.blend_color.iter().map(|&c| c as f64).collect()),
             Query::LogicOpMode => Enum(ops.logic_op.to_gl()),
             Query::MaxLights => int1(8),
@@ -302,6 +303,7 @@ impl Context {
             Query::ColorMaterialParameter => Enum(self.lighting.color_material_mode.to_gl()),
             Query::Arrays(q) => self.array_state_value(q),
             Query::StateExt(q) => self.state_ext_value(q),
+            Query::Eval(q) => self.eval_state_value(q),
         }
     }
 

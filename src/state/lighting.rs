@@ -299,6 +299,10 @@ impl Context {
         for &i in faces(f) {
             set_material(&mut self.lighting.materials[i], p, v);
         }
+        // Parameters COLOR_MATERIAL tracks follow the current colour at all times (section
+        // 2.14.3), so a Material call does not change them while it is enabled.
+        let c = self.current.color;
+        self.lighting.track_color(c);
         // Allowed between glBegin and glEnd: lighting is evaluated per vertex at glVertex
         // time, so the next vertex sees the new material.
         self.invalidate();

@@ -3,6 +3,8 @@
 
 #[macro_use]
 mod textures;
+#[macro_use]
+pub mod evaluators;
 pub mod arrays;
 pub mod attrib;
 pub mod buffers;
@@ -56,6 +58,24 @@ impl Default for ContextConfig {
         }
     }
 }
+
+/// `GL_EXTENSIONS`: the extensions whose functionality is implemented and tested (most were
+/// folded into OpenGL 1.2-1.5 and are listed for programs that look for the old names).
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters \
+GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
+GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
+GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
+GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra \
+GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
+GL_EXT_blend_minmax GL_EXT_blend_subtract \
+GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
+GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color \
+GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
+GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
+GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
+GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle \
+GL_ATI_texture_mirror_once GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
+GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
 /// A GL context: the state machine, its framebuffer and the deferred scene of binned work.
 pub struct Context {
@@ -117,6 +137,8 @@ pub struct Context {
     pub(crate) queries: queries::QueryState,
     /// Render mode, name stack, selection and feedback buffers.
     pub(crate) select: select::SelectState,
+    /// Evaluator maps, enables and grids.
+    pub(crate) eval: evaluators::EvalState,
 }
 
 impl Context {
@@ -194,6 +216,7 @@ impl Context {
             multisample: Default::default(),
             queries: Default::default(),
             select: Default::default(),
+            eval: Default::default(),
         }
     }
 
@@ -291,8 +314,8 @@ impl Context {
                 StringName::Vendor => "tilegl",
                 StringName::Renderer => "tilegl tile-based software rasterizer",
                 StringName::Version => "1.5 tilegl 0.1",
-                // Only what works end to end is listed.
-                StringName::Extensions => "",
+                // Only what works end to end (and is verified against Mesa) is listed.
+                StringName::Extensions => EXTENSIONS,
             }
             .to_string(),
         )
@@ -371,6 +394,9 @@ impl Context {
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1] = on,
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2] = on,
             Capability::Multisample(m) => *self.multisample.enable(m) = on,
+            Capability::Map1(t) => self.eval.map1_enabled[t.index()] = on,
+            Capability::Map2(t) => self.eval.map2_enabled[t.index()] = on,
+            Capability::AutoNormal => self.eval.auto_normal = on,
         }
         self.invalidate();
     }
@@ -424,6 +450,9 @@ impl Context {
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1],
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2],
             Capability::Multisample(m) => self.multisample.enabled(m),
+            Capability::Map1(t) => self.eval.map1_enabled[t.index()],
+            Capability::Map2(t) => self.eval.map2_enabled[t.index()],
+            Capability::AutoNormal => self.eval.auto_normal,
         }
     }
 
@@ -596,6 +625,7 @@ impl Gl for Context {
     }
 
     texture_entry_points!();
+    evaluator_entry_points!();
 
     gl_forward_all!(
         raster_pos_2s,
@@ -715,6 +745,7 @@ impl Gl for Context {
         blend_func_separate,
         blend_color,
         blend_equation,
+        blend_equation_separate_ext,
         logic_op,
         // lighting
         lightf,

@@ -83,6 +83,21 @@ impl Context {
             return;
         };
         self.fragment_ops.blend_equation = m;
+        self.fragment_ops.blend_equation_alpha = m;
+        self.invalidate();
+    }
+
+    /// EXT_blend_equation_separate (core in GL 2.0 as `glBlendEquationSeparate`).
+    pub(crate) fn blend_equation_separate_ext(&mut self, mode_rgb: GLenum, mode_alpha: GLenum) {
+        let (Some(rgb), Some(alpha)) = (
+            convert::blend_equation(mode_rgb),
+            convert::blend_equation(mode_alpha),
+        ) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.fragment_ops.blend_equation = rgb;
+        self.fragment_ops.blend_equation_alpha = alpha;
         self.invalidate();
     }
 

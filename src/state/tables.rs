@@ -159,6 +159,8 @@ pub struct FragmentOpsState {
     pub blend_src_alpha: BlendFactor,
     pub blend_dst_alpha: BlendFactor,
     pub blend_equation: BlendEquation,
+    /// EXT_blend_equation_separate's alpha equation.
+    pub blend_equation_alpha: BlendEquation,
     pub blend_color: [f32; 4],
     pub color_logic_op: bool,
     pub index_logic_op: bool,
@@ -192,6 +194,7 @@ impl Default for FragmentOpsState {
             blend_src_alpha: BlendFactor::One,
             blend_dst_alpha: BlendFactor::Zero,
             blend_equation: BlendEquation::Add,
+            blend_equation_alpha: BlendEquation::Add,
             blend_color: [0.0; 4],
             color_logic_op: false,
             index_logic_op: false,

@@ -25,10 +25,11 @@ pub struct TexEnv {
 pub struct Combine {
     pub rgb: CombineFunc,
     pub alpha: CombineFunc,
-    pub src_rgb: [CombineSource; 3],
-    pub src_alpha: [CombineSource; 3],
-    pub op_rgb: [CombineOperand; 3],
-    pub op_alpha: [CombineOperand; 3],
+    /// Arguments 0-2, and argument 3 of NV_texture_env_combine4's `GL_COMBINE4_NV`.
+    pub src_rgb: [CombineSource; 4],
+    pub src_alpha: [CombineSource; 4],
+    pub op_rgb: [CombineOperand; 4],
+    pub op_alpha: [CombineOperand; 4],
     /// 1, 2 or 4.
     pub rgb_scale: u8,
     pub alpha_scale: u8,
@@ -45,10 +46,10 @@ impl Default for TexEnv {
             combine: Combine {
                 rgb: CombineFunc::Modulate,
                 alpha: CombineFunc::Modulate,
-                src_rgb: [Texture, Previous, Constant],
-                src_alpha: [Texture, Previous, Constant],
-                op_rgb: [SrcColor, SrcColor, SrcAlpha],
-                op_alpha: [SrcAlpha, SrcAlpha, SrcAlpha],
+                src_rgb: [Texture, Previous, Constant, Zero],
+                src_alpha: [Texture, Previous, Constant, Zero],
+                op_rgb: [SrcColor, SrcColor, SrcAlpha, SrcColor],
+                op_alpha: [SrcAlpha, SrcAlpha, SrcAlpha, SrcAlpha],
                 rgb_scale: 1,
                 alpha_scale: 1,
             },

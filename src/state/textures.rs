@@ -927,10 +927,11 @@ impl Context {
         let r = (|| -> Check<()> {
             let t = convert::texture_target(target).ok_or(GL_INVALID_ENUM)?;
             let p = convert::tex_param(pname).ok_or(GL_INVALID_ENUM)?;
-            if p == TexParam::Resident || (p == TexParam::BorderColor && !vector) {
+            let four = matches!(p, TexParam::BorderColor | TexParam::SwizzleRgba);
+            if p == TexParam::Resident || (four && !vector) {
                 return Err(GL_INVALID_ENUM);
             }
-            let needed = if p == TexParam::BorderColor { 4 } else { 1 };
+            let needed = if four { 4 } else { 1 };
             if v.len() < needed {
                 return Err(GL_INVALID_VALUE);
             }
@@ -989,6 +990,16 @@ impl Context {
                     params.max_anisotropy = a.min(MAX_TEXTURE_MAX_ANISOTROPY);
                 }
                 TexParam::Resident => return Err(GL_INVALID_ENUM),
+                TexParam::Swizzle(i) => {
+                    params.swizzle[i] = convert::swizzle_source(e).ok_or(GL_INVALID_ENUM)?
+                }
+                TexParam::SwizzleRgba => {
+                    let mut sw = params.swizzle;
+                    for (i, s) in sw.iter_mut().enumerate() {
+                        *s = convert::swizzle_source(v.enumv(i)).ok_or(GL_INVALID_ENUM)?;
+                    }
+                    params.swizzle = sw;
+                }
             }
             obj.params = params;
             obj.priority = priority;
@@ -1043,6 +1054,8 @@ impl Context {
             TexParam::DepthTextureMode => (e(q.depth_mode.to_gl()), false),
             TexParam::MaxAnisotropy => (vec![q.max_anisotropy as f64], false),
             TexParam::Resident => (vec![1.0], false),
+            TexParam::Swizzle(i) => (e(q.swizzle[i].to_gl()), false),
+            TexParam::SwizzleRgba => (q.swizzle.iter().map(|s| s.to_gl() as f64).collect(), false),
         })
     }
 

@@ -13,6 +13,10 @@ pub enum BaseFormat {
     Rgb,
     Rgba,
     DepthComponent,
+    /// GL 3.0's one- and two-component colour formats (ARB_texture_rg), which captures of
+    /// programs running on newer drivers copy into: (R, 0, 0, 1) and (R, G, 0, 1).
+    Red,
+    Rg,
 }
 
 impl BaseFormat {
@@ -20,8 +24,8 @@ impl BaseFormat {
     pub fn components(self) -> usize {
         use BaseFormat::*;
         match self {
-            Alpha | Luminance | Intensity | DepthComponent => 1,
-            LuminanceAlpha => 2,
+            Alpha | Luminance | Intensity | DepthComponent | Red => 1,
+            LuminanceAlpha | Rg => 2,
             Rgb => 3,
             Rgba => 4,
         }
@@ -33,8 +37,9 @@ impl BaseFormat {
         use BaseFormat::*;
         match self {
             Alpha => &[3],
-            Luminance | Intensity | DepthComponent => &[0],
+            Luminance | Intensity | DepthComponent | Red => &[0],
             LuminanceAlpha => &[0, 3],
+            Rg => &[0, 1],
             Rgb => &[0, 1, 2],
             Rgba => &[0, 1, 2, 3],
         }
@@ -54,6 +59,8 @@ impl BaseFormat {
             Intensity => [v[0]; 4],
             Rgb => [v[0], v[1], v[2], 1.0],
             Rgba => v,
+            Red => [v[0], 0.0, 0.0, 1.0],
+            Rg => [v[0], v[1], 0.0, 1.0],
         }
     }
 }

@@ -314,9 +314,12 @@ fn gather<T: Copy>(
     let none = [0.0, 0.0, 0.0, 1.0];
     match base {
         Alpha => v.get(i).map_or(none, |&a| [0.0, 0.0, 0.0, conv(a)]),
-        Luminance | Intensity | DepthComponent => {
+        Luminance | Intensity | DepthComponent | Red => {
             v.get(i).map_or(none, |&l| [conv(l), 0.0, 0.0, 1.0])
         }
+        Rg => v
+            .get(i..i + 2)
+            .map_or(none, |s| [conv(s[0]), conv(s[1]), 0.0, 1.0]),
         LuminanceAlpha => v
             .get(i..i + 2)
             .map_or(none, |s| [conv(s[0]), 0.0, 0.0, conv(s[1])]),

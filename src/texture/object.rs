@@ -7,7 +7,7 @@ use super::format::BaseFormat;
 use super::image::TexImage;
 use super::sample::{BoundInner, BoundTexture};
 use crate::api::convert::{
-    CompareFunc, DepthTextureMode, MagFilter, MinFilter, TextureTarget, WrapMode,
+    CompareFunc, DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
 };
 
 /// Largest 1D/2D texture side (`GL_MAX_TEXTURE_SIZE`).
@@ -58,6 +58,8 @@ pub struct SamplerParams {
     pub compare_func: CompareFunc,
     pub depth_mode: DepthTextureMode,
     pub generate_mipmap: bool,
+    /// EXT_texture_swizzle: the source of each sampled component.
+    pub swizzle: [SwizzleSource; 4],
 }
 
 impl Default for SamplerParams {
@@ -77,6 +79,7 @@ impl Default for SamplerParams {
             compare_func: CompareFunc::LessEqual,
             depth_mode: DepthTextureMode::Luminance,
             generate_mipmap: false,
+            swizzle: SwizzleSource::IDENTITY,
         }
     }
 }

@@ -18,7 +18,9 @@ use std::sync::Arc;
 use super::format::{BaseFormat, InternalFormat};
 use super::image::TexImage;
 use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
-use crate::api::convert::{DepthTextureMode, MagFilter, MinFilter, TextureTarget, WrapMode};
+use crate::api::convert::{
+    DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
+};
 
 /// The frozen contents of a bound, complete texture.
 #[derive(Debug)]
@@ -40,6 +42,16 @@ pub struct BoundTexture {
     inner: Arc<BoundInner>,
 }
 
+/// The texel index mirrored once about the lower edge: ..., 1, 0 | 0, 1, ...
+#[inline]
+fn mirror_once(i: i64) -> i64 {
+    if i < 0 {
+        -1 - i.max(i64::MIN + 1)
+    } else {
+        i
+    }
+}
+
 /// Wraps an integer texel coordinate (section 3.8.8; -1 and `size` mean "border").
 #[inline]
 pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
@@ -58,6 +70,9 @@ pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
         WrapMode::ClampToEdge => i.clamp(0, size - 1),
         WrapMode::Clamp if !linear => i.clamp(0, size - 1),
         WrapMode::Clamp | WrapMode::ClampToBorder => i.clamp(-1, size),
+        WrapMode::MirrorClamp if !linear => mirror_once(i).clamp(0, size - 1),
+        WrapMode::MirrorClampToEdge => mirror_once(i).clamp(0, size - 1),
+        WrapMode::MirrorClamp | WrapMode::MirrorClampToBorder => mirror_once(i).clamp(0, size),
         WrapMode::MirroredRepeat => {
             let m = if (0..2 * size).contains(&i) {
                 i
@@ -300,6 +315,29 @@ impl BoundTexture {
         d_dy: [f32; 3],
         unit_lod_bias: f32,
     ) -> [f32; 4] {
+        let v = self.sample_grad_unswizzled(coords, d_dx, d_dy, unit_lod_bias);
+        let sw = self.inner.params.swizzle;
+        if sw == SwizzleSource::IDENTITY {
+            return v;
+        }
+        sw.map(|s| match s {
+            SwizzleSource::Red => v[0],
+            SwizzleSource::Green => v[1],
+            SwizzleSource::Blue => v[2],
+            SwizzleSource::Alpha => v[3],
+            SwizzleSource::Zero => 0.0,
+            SwizzleSource::One => 1.0,
+        })
+    }
+
+    /// Filtering without the component swizzle.
+    fn sample_grad_unswizzled(
+        &self,
+        coords: [f32; 3],
+        d_dx: [f32; 3],
+        d_dy: [f32; 3],
+        unit_lod_bias: f32,
+    ) -> [f32; 4] {
         let (face, c, dx, dy) = if self.inner.target == TextureTarget::CubeMap {
             let (face, st) = cube_face(coords);
             let add = |d: [f32; 3]| [coords[0] + d[0], coords[1] + d[1], coords[2] + d[2]];
@@ -458,11 +496,21 @@ impl BoundTexture {
         let mut w = [0.0f32; 3];
         for d in 0..dims {
             let mut s = coords[d] as f64;
-            if wrap[d] == WrapMode::Clamp {
-                s = s.clamp(0.0, 1.0);
-                if s.is_nan() {
-                    s = 0.0;
+            match wrap[d] {
+                WrapMode::Clamp => {
+                    s = s.clamp(0.0, 1.0);
+                    if s.is_nan() {
+                        s = 0.0;
+                    }
                 }
+                WrapMode::MirrorClamp => {
+                    s = s.abs().min(1.0);
+                    if s.is_nan() {
+                        s = 0.0;
+                    }
+                }
+                WrapMode::MirrorClampToEdge | WrapMode::MirrorClampToBorder => s = s.abs(),
+                _ => {}
             }
             let u = s * inner[d] as f64;
             if linear {
@@ -523,6 +571,18 @@ mod tests {
             .collect();
         assert_eq!(m, vec![3, 2, 1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0, 1]);
         assert_eq!(wrap_index(i64::MAX, 3, Repeat, true), i64::MAX % 3);
+        // Mirrored once, then clamped (EXT_texture_mirror_clamp): ... 1 0 | 0 1 2 3 | edge.
+        let m: Vec<i64> = (-3..7)
+            .map(|i| wrap_index(i, 4, MirrorClampToEdge, true))
+            .collect();
+        assert_eq!(m, vec![2, 1, 0, 0, 1, 2, 3, 3, 3, 3]);
+        let m: Vec<i64> = (-3..7)
+            .map(|i| wrap_index(i, 4, MirrorClampToBorder, true))
+            .collect();
+        assert_eq!(m, vec![2, 1, 0, 0, 1, 2, 3, 4, 4, 4]);
+        assert_eq!(wrap_index(5, 4, MirrorClamp, false), 3);
+        assert_eq!(wrap_index(5, 4, MirrorClamp, true), 4);
+        assert_eq!(wrap_index(i64::MIN, 4, MirrorClampToEdge, true), 3);
     }
 
     #[test]

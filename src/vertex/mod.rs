@@ -127,12 +127,35 @@ impl Context {
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
                         }
-                        let attrs = if ds.flat {
-                            [&clip[provoking].attrs[..n_attrs]; 3]
+                        if ds.flat {
+                            // Flat shading takes the provoking vertex's colours only; texture
+                            // and fog coordinates still vary across the triangle.
+                            let mut flat = [*tri[0], *tri[1], *tri[2]];
+                            for v in flat.iter_mut() {
+                                copy_provoking_colors(ds, v, &clip[provoking]);
+                            }
+                            let attrs = [
+                                &flat[0].attrs[..n_attrs],
+                                &flat[1].attrs[..n_attrs],
+                                &flat[2].attrs[..n_attrs],
+                            ];
+                            tri::bin_triangle(
+                                ds,
+                                state,
+                                [&w[0], &w[1], &w[2]],
+                                attrs,
+                                &mut self.scene,
+                            );
                         } else {
-                            tri.map(|c| &c.attrs[..n_attrs])
-                        };
-                        tri::bin_triangle(ds, state, [&w[0], &w[1], &w[2]], attrs, &mut self.scene);
+                            let attrs = tri.map(|c| &c.attrs[..n_attrs]);
+                            tri::bin_triangle(
+                                ds,
+                                state,
+                                [&w[0], &w[1], &w[2]],
+                                attrs,
+                                &mut self.scene,
+                            );
+                        }
                         continue;
                     }
                     poly.clear();

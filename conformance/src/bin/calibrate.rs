@@ -1,7 +1,8 @@
 //! `cargo run --release -p tilegl-conformance --bin calibrate`: measures how far Mesa llvmpipe
 //! and softpipe differ on every differential scene (the driver of this process against the
 //! other one, rendered in a child process), and how far tilegl is from each, as a Markdown table
-//! for `conformance/TOLERANCE.md`.
+//! for `conformance/TOLERANCE.md`. `--filter PREFIX` (repeatable) limits it to the scenes whose
+//! names start with PREFIX; `--dump DIR` also writes the pictures.
 
 use tilegl_conformance::compare::{self, diff, Diff};
 use tilegl_conformance::mesa;
@@ -34,13 +35,23 @@ fn main() {
         .position(|a| a == "--dump")
         .and_then(|i| args.get(i + 1))
         .map(std::path::PathBuf::from);
+    // `--filter PREFIX`: only the scenes whose name starts with PREFIX (repeatable).
+    let filters: Vec<&str> = args
+        .iter()
+        .enumerate()
+        .filter(|(_, a)| *a == "--filter")
+        .filter_map(|(i, _)| args.get(i + 1).map(String::as_str))
+        .collect();
     let mut here = String::new();
     let mut other = String::new();
     let mut worst_bad8: f64 = 0.0;
     let mut worst_bad24: f64 = 0.0;
     let mut worst_max = 0u8;
     let mut rows = Vec::new();
-    for scene in SCENES.iter() {
+    for scene in SCENES
+        .iter()
+        .filter(|s| filters.is_empty() || filters.iter().any(|f| s.name.starts_with(f)))
+    {
         let (m, info) = match compare::render_mesa(scene) {
             Ok(x) => x,
             Err(e) => {

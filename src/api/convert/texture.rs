@@ -154,6 +154,11 @@ pub enum WrapMode {
     ClampToEdge,
     ClampToBorder,
     MirroredRepeat,
+    /// EXT_texture_mirror_clamp (ATI_texture_mirror_once): the coordinate's magnitude, then
+    /// clamped like `GL_CLAMP`, `GL_CLAMP_TO_EDGE` or `GL_CLAMP_TO_BORDER`.
+    MirrorClamp,
+    MirrorClampToEdge,
+    MirrorClampToBorder,
 }
 
 impl WrapMode {
@@ -164,6 +169,9 @@ impl WrapMode {
             WrapMode::ClampToEdge => GL_CLAMP_TO_EDGE,
             WrapMode::ClampToBorder => GL_CLAMP_TO_BORDER,
             WrapMode::MirroredRepeat => GL_MIRRORED_REPEAT,
+            WrapMode::MirrorClamp => GL_MIRROR_CLAMP_EXT,
+            WrapMode::MirrorClampToEdge => GL_MIRROR_CLAMP_TO_EDGE_EXT,
+            WrapMode::MirrorClampToBorder => GL_MIRROR_CLAMP_TO_BORDER_EXT,
         }
     }
 }
@@ -175,6 +183,9 @@ pub fn wrap_mode(e: GLenum) -> Option<WrapMode> {
         GL_CLAMP_TO_EDGE => WrapMode::ClampToEdge,
         GL_CLAMP_TO_BORDER => WrapMode::ClampToBorder,
         GL_MIRRORED_REPEAT => WrapMode::MirroredRepeat,
+        GL_MIRROR_CLAMP_EXT => WrapMode::MirrorClamp,
+        GL_MIRROR_CLAMP_TO_EDGE_EXT => WrapMode::MirrorClampToEdge,
+        GL_MIRROR_CLAMP_TO_BORDER_EXT => WrapMode::MirrorClampToBorder,
         _ => return None,
     })
 }
@@ -246,6 +257,53 @@ pub enum TexParam {
     MaxAnisotropy,
     /// Query only.
     Resident,
+    /// `GL_TEXTURE_SWIZZLE_R/G/B/A` (EXT_texture_swizzle): the component index.
+    Swizzle(usize),
+    /// `GL_TEXTURE_SWIZZLE_RGBA`: all four.
+    SwizzleRgba,
+}
+
+/// Where a swizzled texture component comes from (EXT_texture_swizzle).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SwizzleSource {
+    Red,
+    Green,
+    Blue,
+    Alpha,
+    Zero,
+    One,
+}
+
+impl SwizzleSource {
+    pub const IDENTITY: [SwizzleSource; 4] = [
+        SwizzleSource::Red,
+        SwizzleSource::Green,
+        SwizzleSource::Blue,
+        SwizzleSource::Alpha,
+    ];
+
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            SwizzleSource::Red => GL_RED,
+            SwizzleSource::Green => GL_GREEN,
+            SwizzleSource::Blue => GL_BLUE,
+            SwizzleSource::Alpha => GL_ALPHA,
+            SwizzleSource::Zero => GL_ZERO,
+            SwizzleSource::One => GL_ONE,
+        }
+    }
+}
+
+pub fn swizzle_source(e: GLenum) -> Option<SwizzleSource> {
+    Some(match e {
+        GL_RED => SwizzleSource::Red,
+        GL_GREEN => SwizzleSource::Green,
+        GL_BLUE => SwizzleSource::Blue,
+        GL_ALPHA => SwizzleSource::Alpha,
+        GL_ZERO => SwizzleSource::Zero,
+        GL_ONE => SwizzleSource::One,
+        _ => return None,
+    })
 }
 
 pub fn tex_param(e: GLenum) -> Option<TexParam> {
@@ -269,6 +327,11 @@ pub fn tex_param(e: GLenum) -> Option<TexParam> {
         GL_DEPTH_TEXTURE_MODE => DepthTextureMode,
         GL_TEXTURE_MAX_ANISOTROPY_EXT => MaxAnisotropy,
         GL_TEXTURE_RESIDENT => Resident,
+        GL_TEXTURE_SWIZZLE_R => Swizzle(0),
+        GL_TEXTURE_SWIZZLE_G => Swizzle(1),
+        GL_TEXTURE_SWIZZLE_B => Swizzle(2),
+        GL_TEXTURE_SWIZZLE_A => Swizzle(3),
+        GL_TEXTURE_SWIZZLE_RGBA => SwizzleRgba,
         _ => return None,
     })
 }
@@ -536,6 +599,8 @@ impl BaseFormat {
             BaseFormat::Rgb => GL_RGB,
             BaseFormat::Rgba => GL_RGBA,
             BaseFormat::DepthComponent => GL_DEPTH_COMPONENT,
+            BaseFormat::Red => GL_RED,
+            BaseFormat::Rg => GL_RG,
         }
     }
 }
@@ -593,6 +658,25 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT16 => (DepthComponent, 16),
         GL_DEPTH_COMPONENT24 => (DepthComponent, 24),
         GL_DEPTH_COMPONENT32 => (DepthComponent, 32),
+        // Beyond GL 1.5, for captures of programs run on newer drivers: ARB_texture_rg and its
+        // generic compressed forms (stored uncompressed), the float formats of
+        // ARB_texture_float (stored as 16- or 32-bit normalised values: what they receive from
+        // an 8-bit framebuffer or [0, 1] data is kept exactly), and the depth-stencil formats'
+        // depth (the stencil part is not kept).
+        GL_RED | GL_COMPRESSED_RED | GL_R8 => (Red, 8),
+        GL_R16 => (Red, 16),
+        GL_RG | GL_COMPRESSED_RG | GL_RG8 => (Rg, 8),
+        GL_RG16 => (Rg, 16),
+        GL_R16F => (Red, 16),
+        GL_R32F => (Red, 32),
+        GL_RG16F => (Rg, 16),
+        GL_RG32F => (Rg, 32),
+        GL_RGB16F_ARB => (Rgb, 16),
+        GL_RGB32F_ARB => (Rgb, 32),
+        GL_RGBA16F_ARB => (Rgba, 16),
+        GL_RGBA32F_ARB => (Rgba, 32),
+        GL_DEPTH24_STENCIL8_EXT => (DepthComponent, 24),
+        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (DepthComponent, 32),
         GL_COMPRESSED_RGB => {
             return Some(if dims == 2 {
                 InternalFormat::s3tc(value, S3tcFormat::RgbDxt1)
