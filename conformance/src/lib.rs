@@ -13,6 +13,7 @@ pub mod scenes_arrays;
 pub mod scenes_eval;
 pub mod scenes_examples;
 pub mod scenes_raster;
+pub mod scenes_state;
 pub mod scenes_texture;
 pub mod scenes_texture_matrix;
 pub mod tolerance;

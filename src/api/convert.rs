@@ -7,10 +7,13 @@ use super::types::GLenum;
 
 mod arrays;
 mod eval;
+mod state_ext;
 mod texture;
 #[allow(unused_imports)]
 pub use arrays::*;
 pub use eval::*;
+#[allow(unused_imports)]
+pub use state_ext::*;
 #[allow(unused_imports)]
 pub use texture::*;
 
@@ -257,6 +260,8 @@ pub enum Capability {
     PolygonOffsetFill,
     PolygonOffsetLine,
     PolygonOffsetPoint,
+    /// `GL_MULTISAMPLE` and the sample coverage enables (`convert::state_ext`).
+    Multisample(MultisampleCap),
     /// `GL_MAP1_*` evaluator enables.
     Map1(EvalTarget),
     /// `GL_MAP2_*` evaluator enables.
@@ -265,6 +270,9 @@ pub enum Capability {
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
+    if let Some(m) = multisample_cap(e) {
+        return Some(Capability::Multisample(m));
+    }
     Some(match e {
         GL_DEPTH_TEST => Capability::DepthTest,
         GL_CULL_FACE => Capability::CullFace,
@@ -605,6 +613,8 @@ pub enum Query {
     PixelRect(PixelRectQuery),
     /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
     Arrays(ArrayQuery),
+    /// Attribute stack, multisample, selection and feedback (`convert::state_ext`).
+    StateExt(StateExtQuery),
     /// Evaluator grids and limits (`convert::eval`).
     Eval(EvalQuery),
 }
@@ -623,6 +633,9 @@ pub fn query(e: GLenum) -> Option<Query> {
     }
     if let Some(q) = array_query(e) {
         return Some(Arrays(q));
+    }
+    if let Some(q) = state_ext_query(e) {
+        return Some(StateExt(q));
     }
     if let Some(q) = eval_query(e) {
         return Some(Eval(q));

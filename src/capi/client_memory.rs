@@ -1,6 +1,7 @@
 //! The one bridge from a [`ClientPtr`] (an address in the calling process that GL retained,
 //! e.g. from `glVertexPointer`) to memory: reading client vertex arrays and index arrays at
-//! draw time, and storing a pointer value for `glGetPointerv`/`glGetBufferPointerv`.
+//! draw time, storing a pointer value for `glGetPointerv`/`glGetBufferPointerv`, and writing
+//! the selection and feedback records into the buffers of `glSelectBuffer`/`glFeedbackBuffer`.
 //!
 //! # The contract
 //!
@@ -42,4 +43,18 @@ pub(crate) fn store_pointer(dest: ClientPtr, value: usize) {
     // SAFETY: by the GL contract of `glGetPointerv`/`glGetBufferPointerv` the application passes
     // the address of storage for one `void *`; `write_unaligned` needs no alignment.
     unsafe { std::ptr::write_unaligned(dest.0 as *mut usize, value) }
+}
+
+/// Copies `bytes` to the client memory at `dest` (the selection and feedback buffers, filled
+/// when `glRenderMode` leaves the mode), unless `dest` is null.
+pub(crate) fn write_client_bytes(dest: ClientPtr, bytes: &[u8]) {
+    if dest.0 == 0 || bytes.is_empty() {
+        return;
+    }
+    // SAFETY: by the GL contract of `glSelectBuffer`/`glFeedbackBuffer` the application keeps
+    // the buffer it named (`size` values of 4 bytes) valid and writable until `glRenderMode`
+    // returns from the mode; the caller writes at most `size` values (`bytes.len()` is at
+    // most 4 * size). `copy_nonoverlapping` on bytes needs no alignment, and the source is
+    // context memory, which cannot overlap the client buffer.
+    unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), dest.0 as *mut u8, bytes.len()) }
 }

@@ -61,6 +61,9 @@ pub struct FragmentKey {
     pub fast_texture: Option<FastTexture>,
     /// Fog, after the colour sum (parameters in the `DrawState`).
     pub fog: Option<FogMode>,
+    /// An occlusion query is active: count the fragments that pass the depth and stencil
+    /// tests (only the general path counts, so draws without a query pay nothing).
+    pub count_samples: bool,
 }
 
 /// Per-draw values read by the fragment stage.
@@ -136,12 +139,16 @@ impl FragmentKey {
             texturing: false,
             fast_texture: None,
             fog: None,
+            count_samples: false,
         }
     }
 
     /// True when no fragment can change any buffer (the draw can be dropped).
     pub fn writes_nothing(&self) -> bool {
-        !self.depth_write && self.color_mask == [false; 4] && self.stencil.is_none()
+        !self.depth_write
+            && self.color_mask == [false; 4]
+            && self.stencil.is_none()
+            && !self.count_samples
     }
 
     /// True when only the depth test and colour mask apply (the specialised fast paths).
@@ -153,6 +160,7 @@ impl FragmentKey {
             && !self.color_sum
             && !self.texturing
             && self.fog.is_none()
+            && !self.count_samples
     }
 }
 

@@ -212,6 +212,9 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
         if !depth_pass {
             continue;
         }
+        if !SIMPLE && key.count_samples {
+            tile.samples_passed += 1;
+        }
         let write_depth = match DEPTH {
             depth_mode::NONE => false,
             depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,

@@ -25,6 +25,9 @@ pub struct Tile {
     pub depth: Vec<u32>,
     /// Stencil values.
     pub stencil: Vec<u8>,
+    /// Fragments that passed the depth and stencil tests in draws counted by an occlusion
+    /// query (`FragmentKey::count_samples`), summed and cleared by `glEndQuery`.
+    pub samples_passed: u64,
 }
 
 impl Tile {
@@ -119,6 +122,7 @@ impl Framebuffer {
                     color: vec![[0; 4]; TILE_PIXELS],
                     depth: vec![depth_max; TILE_PIXELS],
                     stencil: vec![0; TILE_PIXELS],
+                    samples_passed: 0,
                 });
             }
         }

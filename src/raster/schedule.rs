@@ -52,8 +52,13 @@ impl Context {
                     tile.depth = depth;
                     tile.stencil = stencil;
                 }
+                // Occlusion queries count the fragments once, not once per buffer.
+                let counted: Vec<u64> = fb.tiles.iter().map(|t| t.samples_passed).collect();
                 fb.make_resident(ColorBuffer::Front);
                 shade(&mut fb.tiles);
+                for (tile, n) in fb.tiles.iter_mut().zip(counted) {
+                    tile.samples_passed = n;
+                }
                 fb.make_resident(ColorBuffer::Back);
             }
         }

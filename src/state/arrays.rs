@@ -561,7 +561,10 @@ impl Context {
     }
 
     pub(crate) fn get_pointerv(&mut self, pname: GLenum, params: ClientPtr) {
-        let Some(p) = self.array_pointer(pname) else {
+        let Some(p) = self
+            .array_pointer(pname)
+            .or_else(|| self.select_buffer_pointer(pname))
+        else {
             self.record_error(GL_INVALID_ENUM);
             return;
         };

@@ -302,6 +302,7 @@ impl Context {
             Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),
             Query::ColorMaterialParameter => Enum(self.lighting.color_material_mode.to_gl()),
             Query::Arrays(q) => self.array_state_value(q),
+            Query::StateExt(q) => self.state_ext_value(q),
             Query::Eval(q) => self.eval_state_value(q),
         }
     }

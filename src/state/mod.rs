@@ -6,6 +6,7 @@ mod textures;
 #[macro_use]
 pub mod evaluators;
 pub mod arrays;
+pub mod attrib;
 pub mod buffers;
 pub mod fog;
 pub mod get;
@@ -14,7 +15,9 @@ pub mod lists;
 pub mod matrices;
 pub mod per_fragment;
 pub mod pixel_rect;
+pub mod queries;
 pub mod rasterization;
+pub mod select;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
@@ -126,6 +129,14 @@ pub struct Context {
     pub(crate) client: arrays::ClientState,
     /// Display lists.
     pub(crate) lists: lists::ListState,
+    /// The server attribute stack (`glPushAttrib`).
+    pub(crate) attrib_stack: Vec<Box<attrib::AttribEntry>>,
+    /// Multisample enables and sample coverage.
+    pub(crate) multisample: attrib::MultisampleState,
+    /// Occlusion query objects and the active query.
+    pub(crate) queries: queries::QueryState,
+    /// Render mode, name stack, selection and feedback buffers.
+    pub(crate) select: select::SelectState,
     /// Evaluator maps, enables and grids.
     pub(crate) eval: evaluators::EvalState,
 }
@@ -201,6 +212,10 @@ impl Context {
             force_general_path: false,
             client: Default::default(),
             lists: Default::default(),
+            attrib_stack: Vec::new(),
+            multisample: Default::default(),
+            queries: Default::default(),
+            select: Default::default(),
             eval: Default::default(),
         }
     }
@@ -378,6 +393,7 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0] = on,
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1] = on,
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2] = on,
+            Capability::Multisample(m) => *self.multisample.enable(m) = on,
             Capability::Map1(t) => self.eval.map1_enabled[t.index()] = on,
             Capability::Map2(t) => self.eval.map2_enabled[t.index()] = on,
             Capability::AutoNormal => self.eval.auto_normal = on,
@@ -433,6 +449,7 @@ impl Context {
             Capability::PolygonOffsetFill => self.raster.offset_enabled[0],
             Capability::PolygonOffsetLine => self.raster.offset_enabled[1],
             Capability::PolygonOffsetPoint => self.raster.offset_enabled[2],
+            Capability::Multisample(m) => self.multisample.enabled(m),
             Capability::Map1(t) => self.eval.map1_enabled[t.index()],
             Capability::Map2(t) => self.eval.map2_enabled[t.index()],
             Capability::AutoNormal => self.eval.auto_normal,
@@ -525,6 +542,10 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if self.select.mode != convert::RenderMode::Render {
+            // Selection and feedback modes change no buffer (as in Mesa).
+            return;
+        }
         if mask.accum {
             self.clear_accum_buffer();
         }
@@ -985,6 +1006,28 @@ impl Gl for Context {
         call_lists,
         list_base,
         delete_lists,
-        is_list
+        is_list,
+        // attribute stack, multisample
+        push_attrib,
+        pop_attrib,
+        sample_coverage,
+        // occlusion queries
+        gen_queries,
+        delete_queries,
+        is_query,
+        begin_query,
+        end_query,
+        get_queryiv,
+        get_query_objectiv,
+        get_query_objectuiv,
+        // selection and feedback
+        render_mode,
+        select_buffer,
+        init_names,
+        push_name,
+        pop_name,
+        load_name,
+        feedback_buffer,
+        pass_through
     );
 }

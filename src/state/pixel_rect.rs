@@ -689,6 +689,9 @@ impl Context {
             self.record_error(GL_INVALID_OPERATION);
             return;
         }
+        if self.pixel_op_feedback(convert::FeedbackToken::DrawPixel) {
+            return;
+        }
         let (w, h) = (width as usize, height as usize);
         if w == 0 || h == 0 {
             return;
@@ -818,6 +821,9 @@ impl Context {
             self.record_error(GL_INVALID_OPERATION);
             return;
         }
+        if self.pixel_op_feedback(convert::FeedbackToken::CopyPixel) {
+            return;
+        }
         if !self.raster_pos.valid || width == 0 || height == 0 {
             return;
         }
@@ -872,8 +878,9 @@ impl Context {
         if !self.raster_pos.valid {
             return;
         }
+        let elsewhere = self.pixel_op_feedback(convert::FeedbackToken::Bitmap);
         let (w, h) = (width as usize, height as usize);
-        if w > 0 && h > 0 {
+        if !elsewhere && w > 0 && h > 0 {
             let u = self.unpack;
             let row_len = if u.row_length > 0 {
                 u.row_length as usize
@@ -932,7 +939,9 @@ macro_rules! raster_pos_entry_points {
         impl Context {
             $(
                 pub(crate) fn $name(&mut self, $($arg: $ty),*) {
-                    self.set_raster_pos(Vec4::new($x as f32, $y as f32, $z as f32, $w as f32));
+                    let p = Vec4::new($x as f32, $y as f32, $z as f32, $w as f32);
+                    self.set_raster_pos(p);
+                    self.raster_pos_feedback(Some(p));
                 }
             )*
         }
@@ -945,6 +954,7 @@ macro_rules! window_pos_entry_points {
             $(
                 pub(crate) fn $name(&mut self, $($arg: $ty),*) {
                     self.set_window_pos($x as f64, $y as f64, $z as f64);
+                    self.raster_pos_feedback(None);
                 }
             )*
         }

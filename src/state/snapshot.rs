@@ -290,6 +290,7 @@ impl Context {
             _ => None,
         };
         key.fog = fog.map(|f| f.mode);
+        key.count_samples = self.queries.active.is_some();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let ds = Arc::new(DrawState {
             mvp: projection * modelview,

@@ -195,3 +195,69 @@ impl TextureState {
         &mut self.proxies[target as usize]
     }
 }
+
+/// What `GL_TEXTURE_BIT` saves of the texture objects (table 6.15, 6.16): per unit the enables
+/// and bindings of each target, and the parameters of every bound object (including the
+/// defaults), keyed by name so that they are restored to the same objects.
+#[derive(Clone, Debug)]
+pub struct TextureAttrib {
+    enabled: [[bool; 4]; MAX_TEXTURE_UNITS],
+    bindings: [[u32; 4]; MAX_TEXTURE_UNITS],
+    params: Vec<(u32, usize, SamplerParams, f32)>,
+}
+
+impl TextureState {
+    /// The state `GL_TEXTURE_BIT` pushes.
+    pub fn save_attrib(&self) -> TextureAttrib {
+        let mut params = Vec::new();
+        for unit in 0..MAX_TEXTURE_UNITS {
+            for t in 0..4 {
+                let name = self.bindings[unit][t];
+                if params
+                    .iter()
+                    .any(|p: &(u32, usize, _, _)| p.0 == name && p.1 == t)
+                {
+                    continue;
+                }
+                let o = self.objects.get(&name).unwrap_or(&self.defaults[t]);
+                params.push((name, t, o.params, o.priority));
+            }
+        }
+        TextureAttrib {
+            enabled: self.enabled,
+            bindings: self.bindings,
+            params,
+        }
+    }
+
+    /// Restores the per-unit target enables (`GL_ENABLE_BIT` and `GL_TEXTURE_BIT`).
+    pub fn restore_enables(&mut self, a: &TextureAttrib) {
+        self.enabled = a.enabled;
+    }
+
+    /// Restores bindings and the saved objects' parameters. An object deleted since the push
+    /// is not recreated: its binding reverts to the default texture.
+    pub fn restore_attrib(&mut self, a: &TextureAttrib) {
+        self.enabled = a.enabled;
+        for (unit, targets) in a.bindings.iter().enumerate() {
+            for (t, &name) in targets.iter().enumerate() {
+                self.bindings[unit][t] = if name == 0 || self.objects.contains_key(&name) {
+                    name
+                } else {
+                    0
+                };
+            }
+        }
+        for (name, t, params, priority) in &a.params {
+            let o = if *name == 0 {
+                Some(&mut self.defaults[*t])
+            } else {
+                self.objects.get_mut(name)
+            };
+            if let Some(o) = o {
+                o.params = *params;
+                o.priority = *priority;
+            }
+        }
+    }
+}

@@ -39,6 +39,9 @@ impl Context {
         if verts.is_empty() {
             return;
         }
+        if self.select.mode != crate::api::convert::RenderMode::Render {
+            return self.select_feedback_vertices(mode, verts);
+        }
         let ds = self.snapshot();
         if ds.draw_rect.is_empty() || ds.key.writes_nothing() {
             return;
