@@ -254,3 +254,34 @@ fn query_errors_and_names() {
     assert_eq!(gl.get_error(), GL_INVALID_VALUE);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn textured_blended_draws_are_counted_too() {
+    // A key the textured fast path would take (one RGBA8 2D unit, MODULATE, alpha-over blend):
+    // with a query active the fragments must still be counted.
+    let mut gl = tilegl::Context::new(32, 32);
+    common::window_ortho(&mut gl);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        2,
+        2,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[255; 16]),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    let mut q = [0u32];
+    gl.gen_queries(1, &mut q);
+    gl.begin_query(GL_SAMPLES_PASSED, q[0]);
+    gl.rectf(4.0, 4.0, 14.0, 10.0);
+    gl.end_query(GL_SAMPLES_PASSED);
+    let mut n = [0u32];
+    gl.get_query_objectuiv(q[0], GL_QUERY_RESULT, &mut n);
+    assert_eq!(n[0], 10 * 6);
+}

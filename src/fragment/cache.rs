@@ -17,7 +17,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         return span_general;
     }
     if let Some(layout) = key.fast_texture {
-        if key.stencil.is_none() && key.logic_op.is_none() {
+        // The textured span neither tests stencil, runs logic ops nor counts samples for an
+        // occlusion query: those keys take the general path.
+        if key.stencil.is_none() && key.logic_op.is_none() && !key.count_samples {
             return select_textured(key, layout);
         }
     }
