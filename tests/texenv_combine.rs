@@ -155,8 +155,9 @@ fn expected(c: &Case) -> Rgba {
                 + (a0[2] - 0.5) * (a1[2] - 0.5));
         let v = clamp(d * c.rgb_scale);
         let a = if c.rgb == GL_DOT3_RGBA {
-            // "the alpha value computed by COMBINE_ALPHA is ignored": alpha is the dot product.
-            v
+            // "the alpha value computed by COMBINE_ALPHA is ignored": alpha is the dot product,
+            // scaled like every alpha result by ALPHA_SCALE.
+            clamp(d * c.alpha_scale)
         } else {
             clamp(f(c.alpha, arg_a(0), arg_a(1), arg_a(2)) * c.alpha_scale)
         };
@@ -413,4 +414,19 @@ fn second_unit_reads_previous_and_crossbar_texture0() {
             want.map(|v| v * 255.0)
         );
     }
+}
+
+#[test]
+fn dot3_rgba_alpha_is_scaled_by_alpha_scale() {
+    // Section 3.8.13: the RGB and ALPHA results are multiplied by RGB_SCALE and ALPHA_SCALE
+    // respectively; for DOT3_RGBA the alpha result is the dot product. Dot = 4 (0.5 * 0.125)
+    // = 0.25: RGB at scale 1 is 0.25, alpha at scale 4 is 1 (Mesa agrees).
+    let mut c = Case::new(GL_DOT3_RGBA, GL_REPLACE);
+    c.texel = [255, 128, 128, 0];
+    c.primary = [160, 128, 128, 0];
+    c.rgb_scale = 1.0;
+    c.alpha_scale = 4.0;
+    check(&c, "dot3_rgba alpha scale");
+    let got = render(&c);
+    assert!(got[3] >= 250 && got[0] < 80, "{got:?}");
 }

@@ -999,6 +999,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         crate::scenes_examples::EXAMPLE_SCENES,
         crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
         crate::scenes_eval::EVAL_SCENES,
+        crate::scenes_cascade::CASCADE_SCENES,
     ]
     .concat()
 });
