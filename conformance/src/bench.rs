@@ -9,7 +9,15 @@
 //! - `horizon`: a trilinear, repeating ground plane receding to the horizon;
 //! - `ladder`: the horizon under each texture quality setting (nearest, bilinear, trilinear,
 //!   anisotropic 2x-16x), each with its time and its error against a 16x-supersampled
-//!   reference rendered by tilegl, as a table and a PNG chart of error against time.
+//!   reference rendered by tilegl, as a table and a PNG chart of error against time;
+//! - `lightmap`: a corridor of walls, a trilinear base texture on unit 0 and a light map on
+//!   unit 1 through `GL_COMBINE` (`MODULATE` of `PREVIOUS` and `TEXTURE`, `RGB_SCALE` 2);
+//! - `spheremap`: a tessellated, lit torus, then the same torus again with a sphere-mapped
+//!   environment (`GL_SPHERE_MAP` texgen) added (`glBlendFunc(GL_ONE, GL_ONE)`, depth `LEQUAL`);
+//! - `lighting` (not in `all`): the cost of lighting against the triangle count: a sphere of
+//!   constant size on screen tessellated into 2k ... 128k triangles, drawn lit (two lights,
+//!   specular, one positional and attenuated) and unlit; the difference is the lighting cost,
+//!   with a least-squares line through it to show that it grows linearly.
 //!
 //! Shared by `cargo run --release -p tilegl-conformance --bin bench` and
 //! `cargo bench -p tilegl-conformance --bench triangles`.
@@ -67,15 +75,21 @@ pub enum Workload {
     Fog,
     Overdraw,
     Horizon,
+    Lightmap,
+    Spheremap,
+    /// The lit sphere of the `lighting` measurement (not in [`Workload::ALL`]).
+    Lighting,
 }
 
 impl Workload {
-    pub const ALL: [Workload; 5] = [
+    pub const ALL: [Workload; 7] = [
         Workload::Triangles,
         Workload::Sprites,
         Workload::Fog,
         Workload::Overdraw,
         Workload::Horizon,
+        Workload::Lightmap,
+        Workload::Spheremap,
     ];
 
     pub fn name(self) -> &'static str {
@@ -85,6 +99,9 @@ impl Workload {
             Workload::Fog => "fog",
             Workload::Overdraw => "overdraw",
             Workload::Horizon => "horizon",
+            Workload::Lightmap => "lightmap",
+            Workload::Spheremap => "spheremap",
+            Workload::Lighting => "lighting",
         }
     }
 
@@ -118,7 +135,18 @@ pub enum WorkData {
     Overdraw(usize),
     /// The ground plane.
     Horizon,
+    /// The light-mapped corridor: wall segments along its length.
+    Lightmap(usize),
+    /// The two-pass sphere-mapped torus: rings and sides.
+    Spheremap(usize, usize),
+    /// The lighting measurement's sphere: stacks, slices, lit.
+    Sphere(usize, usize, bool),
 }
+
+/// Wall segments along the `lightmap` corridor.
+pub const CORRIDOR_SEGMENTS: usize = 24;
+/// Tessellation of the `spheremap` torus (rings x sides quads, two triangles each).
+pub const TORUS: (usize, usize) = (192, 96);
 
 /// Generates the workload's data.
 pub fn work_data(cfg: &BenchConfig) -> WorkData {
@@ -162,6 +190,86 @@ pub fn work_data(cfg: &BenchConfig) -> WorkData {
         }
         Workload::Overdraw => WorkData::Overdraw(8),
         Workload::Horizon => WorkData::Horizon,
+        Workload::Lightmap => WorkData::Lightmap(CORRIDOR_SEGMENTS),
+        Workload::Spheremap => WorkData::Spheremap(TORUS.0, TORUS.1),
+        Workload::Lighting => WorkData::Sphere(32, 32, true),
+    }
+}
+
+/// A 64x64 luminance light map: a bright pool of light with a soft falloff and a dimmer
+/// second lamp, on a dark ambient floor.
+fn light_map_texture() -> Vec<u8> {
+    let mut p = Vec::with_capacity(64 * 64);
+    for y in 0..64 {
+        for x in 0..64 {
+            let (u, v) = ((x as f32 + 0.5) / 64.0, (y as f32 + 0.5) / 64.0);
+            let d1 = (u - 0.35).powi(2) + (v - 0.6).powi(2);
+            let d2 = (u - 0.75).powi(2) + (v - 0.3).powi(2);
+            let l = 0.15 + 0.85 * (-d1 * 18.0).exp() + 0.5 * (-d2 * 40.0).exp();
+            p.push((l.min(1.0) * 255.0) as u8);
+        }
+    }
+    p
+}
+
+/// A 128x128 RGB environment for the sphere map: sky above, ground below, a sun.
+fn environment_texture() -> Vec<u8> {
+    let mut p = Vec::with_capacity(128 * 128 * 3);
+    for y in 0..128 {
+        for x in 0..128 {
+            let (u, v) = ((x as f32 + 0.5) / 64.0 - 1.0, (y as f32 + 0.5) / 64.0 - 1.0);
+            let sun = (-((u - 0.3).powi(2) + (v - 0.4).powi(2)) * 30.0).exp();
+            let c = if v > 0.0 {
+                [0.3 + 0.4 * v, 0.45 + 0.4 * v, 0.9]
+            } else {
+                [0.35 - 0.2 * v, 0.3, 0.2]
+            };
+            p.extend(c.map(|c| ((c + sun).min(1.0) * 160.0) as u8));
+        }
+    }
+    p
+}
+
+/// A torus about the y axis (`big` and `small` radii) as triangle strips with normals.
+fn torus(gl: &mut dyn Gl, rings: usize, sides: usize, big: f32, small: f32) {
+    use std::f32::consts::TAU;
+    for i in 0..rings {
+        gl.begin(GL_TRIANGLE_STRIP);
+        for j in 0..=sides {
+            let b = TAU * j as f32 / sides as f32;
+            for ii in [i + 1, i] {
+                let a = TAU * ii as f32 / rings as f32;
+                let n = [a.cos() * b.cos(), b.sin(), a.sin() * b.cos()];
+                gl.normal_3fv(&n);
+                gl.vertex_3f(
+                    a.cos() * (big + small * b.cos()),
+                    small * b.sin(),
+                    a.sin() * (big + small * b.cos()),
+                );
+            }
+        }
+        gl.end();
+    }
+}
+
+/// A unit sphere as triangle strips with normals (2 x stacks x slices triangles).
+fn bench_sphere(gl: &mut dyn Gl, stacks: usize, slices: usize) {
+    use std::f32::consts::{PI, TAU};
+    for i in 0..stacks {
+        let (t0, t1) = (
+            PI * i as f32 / stacks as f32,
+            PI * (i + 1) as f32 / stacks as f32,
+        );
+        gl.begin(GL_TRIANGLE_STRIP);
+        for j in 0..=slices {
+            let p = TAU * j as f32 / slices as f32;
+            for t in [t1, t0] {
+                let n = [t.sin() * p.cos(), t.cos(), t.sin() * p.sin()];
+                gl.normal_3fv(&n);
+                gl.vertex_3fv(&n);
+            }
+        }
+        gl.end();
     }
 }
 
@@ -288,13 +396,17 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
             gl.ortho(0.0, cfg.width as f64, 0.0, cfg.height as f64, -1.0, 1.0);
             gl.matrix_mode(GL_MODELVIEW);
         }
-        Workload::Fog | Workload::Horizon => {
+        Workload::Fog
+        | Workload::Horizon
+        | Workload::Lightmap
+        | Workload::Spheremap
+        | Workload::Lighting => {
             gl.matrix_mode(GL_PROJECTION);
             let aspect = cfg.width as f64 / cfg.height as f64;
-            let far = if cfg.workload == Workload::Fog {
-                40.0
-            } else {
+            let far = if cfg.workload == Workload::Horizon {
                 2000.0
+            } else {
+                40.0
             };
             gl.frustum(-0.1 * aspect, 0.1 * aspect, -0.1, 0.1, 0.2, far);
             gl.matrix_mode(GL_MODELVIEW);
@@ -342,6 +454,88 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
         gl.alpha_func(GL_GREATER, 0.05);
         gl.depth_mask(0);
         gl.clear_color(0.1, 0.1, 0.15, 1.0);
+    }
+    if cfg.workload == Workload::Lightmap {
+        let (_, min, mag, aniso) = LADDER[cfg.quality.min(LADDER.len() - 1)];
+        gl.active_texture(GL_TEXTURE0);
+        bench_texture_setup(gl, min, mag, aniso);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+        gl.active_texture(GL_TEXTURE1);
+        let mut name = [0u32];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_LUMINANCE as i32,
+            64,
+            64,
+            0,
+            GL_LUMINANCE,
+            GL_UNSIGNED_BYTE,
+            Some(&light_map_texture()),
+        );
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE as i32);
+        gl.enable(GL_TEXTURE_2D);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE as i32);
+        gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0);
+        gl.active_texture(GL_TEXTURE0);
+        gl.clear_color(0.0, 0.0, 0.0, 1.0);
+    }
+    if cfg.workload == Workload::Spheremap {
+        let mut name = [0u32];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+        gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGB as i32,
+            128,
+            128,
+            0,
+            GL_RGB,
+            GL_UNSIGNED_BYTE,
+            Some(&environment_texture()),
+        );
+        gl.tex_parameteri(
+            GL_TEXTURE_2D,
+            GL_TEXTURE_MIN_FILTER,
+            GL_LINEAR_MIPMAP_LINEAR as i32,
+        );
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+        gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+        gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+        gl.depth_func(GL_LEQUAL);
+        gl.blend_func(GL_ONE, GL_ONE);
+        gl.materialfv(GL_FRONT, GL_DIFFUSE, &[0.6, 0.25, 0.15, 1.0]);
+        gl.materialfv(GL_FRONT, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+        gl.materialf(GL_FRONT, GL_SHININESS, 32.0);
+        gl.enable(GL_LIGHT0);
+        gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
+        gl.clear_color(0.1, 0.1, 0.12, 1.0);
+    }
+    if cfg.workload == Workload::Lighting {
+        gl.materialfv(GL_FRONT, GL_DIFFUSE, &[0.7, 0.6, 0.4, 1.0]);
+        gl.materialfv(GL_FRONT, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+        gl.materialf(GL_FRONT, GL_SHININESS, 24.0);
+        gl.enable(GL_LIGHT0);
+        gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
+        gl.enable(GL_LIGHT1);
+        gl.lightfv(GL_LIGHT1, GL_POSITION, &[-1.0, 0.5, -2.0, 1.0]);
+        gl.lightfv(GL_LIGHT1, GL_DIFFUSE, &[0.3, 0.4, 0.9, 1.0]);
+        gl.lightfv(GL_LIGHT1, GL_SPECULAR, &[0.3, 0.4, 0.9, 1.0]);
+        gl.lightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.2);
+        gl.clear_color(0.1, 0.1, 0.12, 1.0);
     }
     if cfg.workload == Workload::Fog {
         gl.enable(GL_LIGHTING);
@@ -445,6 +639,85 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
                 gl.vertex_3f(x, -1.0, z);
             }
             gl.end();
+        }
+        WorkData::Lightmap(segments) => {
+            gl.load_identity();
+            gl.translatef(0.0, 0.0, -0.5);
+            gl.color_3f(1.0, 1.0, 1.0);
+            // A corridor 4 wide, 3 high, `segments` x 2 long: floor, ceiling and two walls,
+            // each segment its own quad with its own light-map square.
+            gl.begin(GL_QUADS);
+            for k in 0..*segments {
+                let (z0, z1) = (-2.0 * k as f32, -2.0 * (k + 1) as f32);
+                let walls: [[[f32; 3]; 4]; 4] = [
+                    [
+                        [-2.0, -1.5, z0],
+                        [2.0, -1.5, z0],
+                        [2.0, -1.5, z1],
+                        [-2.0, -1.5, z1],
+                    ],
+                    [
+                        [-2.0, 1.5, z1],
+                        [2.0, 1.5, z1],
+                        [2.0, 1.5, z0],
+                        [-2.0, 1.5, z0],
+                    ],
+                    [
+                        [-2.0, -1.5, z1],
+                        [-2.0, -1.5, z0],
+                        [-2.0, 1.5, z0],
+                        [-2.0, 1.5, z1],
+                    ],
+                    [
+                        [2.0, -1.5, z0],
+                        [2.0, -1.5, z1],
+                        [2.0, 1.5, z1],
+                        [2.0, 1.5, z0],
+                    ],
+                ];
+                for w in walls {
+                    for (c, v) in w.iter().enumerate() {
+                        let (u, t) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][c];
+                        gl.multi_tex_coord_2f(GL_TEXTURE0, u * 2.0, t * 1.5);
+                        gl.multi_tex_coord_2f(GL_TEXTURE1, u, t);
+                        gl.vertex_3fv(v);
+                    }
+                }
+            }
+            gl.end();
+        }
+        WorkData::Spheremap(rings, sides) => {
+            gl.load_identity();
+            gl.translatef(0.0, 0.0, -4.0);
+            gl.rotatef(35.0, 1.0, 0.0, 0.0);
+            gl.rotatef(20.0, 0.0, 0.0, 1.0);
+            // Pass 1: lit.
+            gl.enable(GL_LIGHTING);
+            torus(gl, *rings, *sides, 1.2, 0.5);
+            // Pass 2: the environment, added.
+            gl.disable(GL_LIGHTING);
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_TEXTURE_GEN_S);
+            gl.enable(GL_TEXTURE_GEN_T);
+            gl.enable(GL_BLEND);
+            gl.depth_mask(0);
+            torus(gl, *rings, *sides, 1.2, 0.5);
+            gl.depth_mask(1);
+            gl.disable(GL_BLEND);
+            gl.disable(GL_TEXTURE_GEN_S);
+            gl.disable(GL_TEXTURE_GEN_T);
+            gl.disable(GL_TEXTURE_2D);
+        }
+        WorkData::Sphere(stacks, slices, lit) => {
+            gl.load_identity();
+            gl.translatef(0.0, 0.0, -4.0);
+            if *lit {
+                gl.enable(GL_LIGHTING);
+            } else {
+                gl.disable(GL_LIGHTING);
+                gl.color_3f(0.7, 0.6, 0.4);
+            }
+            bench_sphere(gl, *stacks, *slices);
         }
     }
     gl.finish();
@@ -602,6 +875,11 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
                 child_out = Some(p.clone());
                 i += 1;
             }
+            ("--workload", Some(v)) if v == "lighting" => {
+                cfg.workload = Workload::Lighting;
+                all = false;
+                i += 1;
+            }
             ("--workload", Some(v)) if v == "ladder" => {
                 cfg.ladder_only = true;
                 all = false;
@@ -673,6 +951,10 @@ pub fn run_cli() -> i32 {
     } else {
         vec![cfg.workload]
     };
+    if cfg.workload == Workload::Lighting && !all {
+        run_lighting_scaling(&cfg);
+        return 0;
+    }
     for w in workloads {
         cfg.workload = w;
         run_workload(&cfg, &args);
@@ -681,6 +963,69 @@ pub fn run_cli() -> i32 {
         run_ladder(&cfg);
     }
     0
+}
+
+/// Lighting cost against triangle count: the `lighting` sphere at 2k ... 128k triangles, lit
+/// and unlit, on tilegl (1 thread, so the vertex stage is not hidden by parallel
+/// rasterization) and on Mesa in this process; the lit-minus-unlit time per frame is the
+/// lighting cost, fitted by least squares to a + b N (with R^2).
+pub fn run_lighting_scaling(cfg: &BenchConfig) {
+    println!();
+    println!(
+        "== lighting: a sphere of constant screen size at {}x{}, two lights (one positional, \
+         attenuated), specular; median ms/frame lit and unlit",
+        cfg.width, cfg.height
+    );
+    println!(
+        "{:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
+        "triangles", "tilegl lit", "unlit", "light cost", "ns/triangle", "llvmpipe cost"
+    );
+    let mut c = cfg.clone();
+    c.workload = Workload::Lighting;
+    let mut points = Vec::new();
+    for k in [1usize, 2, 4, 8, 16, 32, 64] {
+        let (stacks, slices) = (32, 32 * k);
+        let n = 2 * stacks * slices;
+        let lit = run_tilegl(&c, &WorkData::Sphere(stacks, slices, true), 1).median_ms();
+        let unlit = run_tilegl(&c, &WorkData::Sphere(stacks, slices, false), 1).median_ms();
+        let mesa = match (
+            run_mesa(&c, &WorkData::Sphere(stacks, slices, true)),
+            run_mesa(&c, &WorkData::Sphere(stacks, slices, false)),
+        ) {
+            (Ok((l, _)), Ok((u, _))) => format!("{:.2}", l.median_ms() - u.median_ms()),
+            _ => "-".to_string(),
+        };
+        let cost = lit - unlit;
+        println!(
+            "{:>10} {:>12.2} {:>12.2} {:>12.2} {:>12.1} {:>12}",
+            n,
+            lit,
+            unlit,
+            cost,
+            cost * 1e6 / n as f64,
+            mesa
+        );
+        points.push((n as f64, cost));
+    }
+    let m = points.len() as f64;
+    let (sx, sy) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x, b + y));
+    let (mx, my) = (sx / m, sy / m);
+    let sxx: f64 = points.iter().map(|&(x, _)| (x - mx).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|&(x, y)| (x - mx) * (y - my)).sum();
+    let syy: f64 = points.iter().map(|&(_, y)| (y - my).powi(2)).sum();
+    let b = sxy / sxx;
+    let a = my - b * mx;
+    let r2 = if syy > 0.0 {
+        sxy * sxy / (sxx * syy)
+    } else {
+        1.0
+    };
+    println!(
+        "tilegl lighting cost = {a:.3} ms + {:.1} ns x triangles (R^2 = {r2:.4})",
+        b * 1e6
+    );
 }
 
 /// Box-filters an image `f` times smaller in each direction.
@@ -838,6 +1183,17 @@ fn describe(cfg: &BenchConfig) -> String {
             "a ground plane receding to the horizon, repeat, {}",
             LADDER[cfg.quality.min(LADDER.len() - 1)].0
         ),
+        Workload::Lightmap => format!(
+            "a corridor of {} light-mapped wall quads, base texture {} on unit 0, light map \
+             through GL_COMBINE MODULATE x2 on unit 1",
+            4 * CORRIDOR_SEGMENTS,
+            LADDER[cfg.quality.min(LADDER.len() - 1)].0
+        ),
+        Workload::Spheremap => format!(
+            "a lit torus of {} triangles, then again sphere-mapped and added (2 passes)",
+            2 * TORUS.0 * TORUS.1
+        ),
+        Workload::Lighting => "a lit sphere".to_string(),
     }
 }
 

@@ -10,6 +10,7 @@ pub mod mesa;
 pub mod prng;
 pub mod scenes;
 pub mod scenes_arrays;
+pub mod scenes_cascade;
 pub mod scenes_eval;
 pub mod scenes_examples;
 pub mod scenes_raster;

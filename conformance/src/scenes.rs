@@ -1000,6 +1000,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         crate::scenes_state::STATE_SCENES,
         crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
         crate::scenes_eval::EVAL_SCENES,
+        crate::scenes_cascade::CASCADE_SCENES,
     ]
     .concat()
 });

@@ -113,6 +113,7 @@ pub const EXAMPLE_SCENES: &[Scene] = &[
         128,
         DIFFERENTIAL,
     ),
+    ex("ex_hsv_lookup", ex_hsv_lookup, 128, 128, DIFFERENTIAL),
 ];
 
 // ---------------------------------------------------------------------------------------------
@@ -2037,4 +2038,129 @@ fn ex_dxt_compression(gl: &mut dyn Gl) {
         gl.end();
     }
     gl.disable(GL_BLEND);
+}
+
+// ---------------------------------------------------------------------------------------------
+// HSV colour interpolation through a 3D lookup texture.
+
+/// HSV (each in 0..1, hue wrapping) to RGB.
+fn hsv_to_rgb(h: f32, s: f32, v: f32) -> [f32; 3] {
+    let h6 = h.rem_euclid(1.0) * 6.0;
+    let f = |n: f32| {
+        let k = (n + h6) % 6.0;
+        v - v * s * k.min(4.0 - k).clamp(0.0, 1.0)
+    };
+    [f(5.0), f(3.0), f(1.0)]
+}
+
+/// Gouraud shading interpolates RGB; here the rasterizer interpolates (hue, saturation, value)
+/// as texture coordinates instead and a 24 x 8 x 8 3D texture turns them into RGB. HSV to RGB
+/// is piecewise multilinear with hue breakpoints every 1/6, so with texel centres on hue
+/// multiples of 1/24 (the texture matrix maps values onto texel centres) trilinear filtering
+/// reproduces it exactly; `GL_REPEAT` on the hue axis makes hue wrap, so 1.08 -> 0.8 goes the
+/// short way through red. Top: three pairs of bars, RGB-interpolated above HSV-interpolated;
+/// bottom: a triangle with red, green and blue corners both ways.
+fn ex_hsv_lookup(gl: &mut dyn Gl) {
+    clear_to(gl, [0.1, 0.1, 0.12]);
+    const H: usize = 24;
+    const S: usize = 8;
+    const V: usize = 8;
+    let mut px = Vec::with_capacity(H * S * V * 3);
+    for k in 0..V {
+        for j in 0..S {
+            for i in 0..H {
+                let c = hsv_to_rgb(
+                    i as f32 / H as f32,
+                    j as f32 / (S - 1) as f32,
+                    k as f32 / (V - 1) as f32,
+                );
+                px.extend(c.iter().map(|&x| to_u8(x)));
+            }
+        }
+    }
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_3D, name[0]);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_RGB as i32,
+        H as i32,
+        S as i32,
+        V as i32,
+        0,
+        GL_RGB,
+        GL_UNSIGNED_BYTE,
+        Some(&px),
+    );
+    sampling(gl, GL_TEXTURE_3D, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
+    gl.tex_parameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_REPEAT as i32);
+    snap_texture(
+        gl,
+        "hsv_lut",
+        GL_TEXTURE_3D,
+        0,
+        [H as i32, S as i32, V as i32],
+    );
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    // Values to texel centres: hue h -> h + 1/48 (texel i's centre is (i + 1/2) / 24),
+    // saturation and value x -> (7 x + 1/2) / 8.
+    gl.matrix_mode(GL_TEXTURE);
+    gl.load_identity();
+    gl.translatef(0.5 / H as f32, 0.5 / S as f32, 0.5 / V as f32);
+    gl.scalef(1.0, (S - 1) as f32 / S as f32, (V - 1) as f32 / V as f32);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 128.0, 0.0, 128.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+
+    // (hue, saturation, value) at the left and right ends of each pair of bars.
+    let pairs: [([f32; 3], [f32; 3]); 3] = [
+        ([1.0, 1.0, 1.0], [2.0 / 3.0, 1.0, 1.0]), // red -> blue through magenta
+        ([1.0 / 6.0, 1.0, 1.0], [2.0 / 3.0, 1.0, 1.0]), // yellow -> blue through green
+        ([1.08, 1.0, 1.0], [0.8, 0.4, 0.6]),      // orange -> dull violet through red
+    ];
+    let bar = |gl: &mut dyn Gl, y: f32, ends: ([f32; 3], [f32; 3]), hsv: bool| {
+        gl.begin(GL_QUADS);
+        for (x, dy, e) in [
+            (4.0, 0.0, ends.0),
+            (124.0, 0.0, ends.1),
+            (124.0, 11.0, ends.1),
+            (4.0, 11.0, ends.0),
+        ] {
+            if hsv {
+                gl.tex_coord_3f(e[0], e[1], e[2]);
+            } else {
+                let c = hsv_to_rgb(e[0], e[1], e[2]);
+                gl.color_3f(c[0], c[1], c[2]);
+            }
+            gl.vertex_2f(x, y + dy);
+        }
+        gl.end();
+    };
+    for (k, &ends) in pairs.iter().enumerate() {
+        bar(gl, 114.0 - 28.0 * k as f32, ends, false);
+    }
+    let corners = [(4.3, 4.4), (59.7, 4.4), (32.2, 40.6)];
+    let hues = [0.0, 1.0 / 3.0, 2.0 / 3.0];
+    gl.begin(GL_TRIANGLES);
+    for (&(x, y), &h) in corners.iter().zip(&hues) {
+        let c = hsv_to_rgb(h, 1.0, 1.0);
+        gl.color_3f(c[0], c[1], c[2]);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+    snap_color(gl, "rgb_interpolation", 128, 128);
+    gl.enable(GL_TEXTURE_3D);
+    for (k, &ends) in pairs.iter().enumerate() {
+        bar(gl, 101.0 - 28.0 * k as f32, ends, true);
+    }
+    gl.begin(GL_TRIANGLES);
+    for (&(x, y), &h) in corners.iter().zip(&hues) {
+        gl.tex_coord_3f(h, 1.0, 1.0);
+        gl.vertex_2f(x + 64.0, y);
+    }
+    gl.end();
 }

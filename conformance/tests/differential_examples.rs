@@ -25,6 +25,7 @@ differential!(
     ex_text,
     ex_cross_tree,
     ex_decal,
+    ex_hsv_lookup,
     ex_fog_terrain,
     ex_planar_reflection,
 );

@@ -166,8 +166,11 @@ pub fn combine(
             let v = clamp01(d * rs);
             out = [v, v, v, 0.0];
             if k.rgb == CombineFunc::Dot3Rgba {
-                // The dot product also replaces alpha; the alpha function is ignored.
-                out[3] = v;
+                // The dot product also replaces alpha (the alpha function is ignored); like
+                // every alpha result it is then multiplied by ALPHA_SCALE (section 3.8.13: "the
+                // RGB and ALPHA results ... are multiplied by RGB_SCALE and ALPHA_SCALE,
+                // respectively"), which is what Mesa does too.
+                out[3] = clamp01(d * as_);
                 return out;
             }
         }
