@@ -1209,7 +1209,12 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
         cfg.frames
     );
     let mut results = vec![run_tilegl(cfg, &data, 1), run_tilegl(cfg, &data, 2)];
-    match run_mesa(cfg, &data) {
+    let mesa = if args.iter().any(|a| a == "--no-mesa") {
+        Err("--no-mesa".to_string())
+    } else {
+        run_mesa(cfg, &data)
+    };
+    match mesa {
         Ok((r, info)) => {
             let other = if info.driver() == "softpipe" {
                 "llvmpipe"

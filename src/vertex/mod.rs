@@ -18,6 +18,10 @@ use crate::state::{Context, DrawState};
 use immediate::ImmVertex;
 use std::sync::Arc;
 
+/// Batches at least this large are transformed in parallel (below, the hand-off costs more
+/// than it saves).
+const PARALLEL_TRANSFORM_MIN: usize = 4096;
+
 /// Flat shading: every vertex of a primitive takes the provoking vertex's colours (front and
 /// back), before clipping so that clipped vertices inherit them too.
 fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVertex) {
@@ -50,7 +54,19 @@ impl Context {
         // fresh pages every frame.
         let mut clip = std::mem::take(&mut self.clip_buffer);
         clip.clear();
-        clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v)));
+        // Large batches are transformed on the worker threads too (each vertex independently,
+        // results in order, so the output does not depend on the thread count).
+        match &self.pool {
+            Some(pool)
+                if verts.len() >= PARALLEL_TRANSFORM_MIN && pool.current_num_threads() > 1 =>
+            {
+                use rayon::prelude::*;
+                pool.install(|| {
+                    clip.par_extend(verts.par_iter().map(|v| transform::to_clip(&ds, v)))
+                });
+            }
+            _ => clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v))),
+        }
         self.draw_clipped(&ds, mode, &clip);
         self.clip_buffer = clip;
     }
