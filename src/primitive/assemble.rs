@@ -32,10 +32,18 @@ pub fn uses_edge_flags(mode: PrimitiveMode) -> bool {
 /// Assembles `count` vertices of `mode`. Incomplete trailing primitives are ignored (section
 /// 2.6.1). Triangles keep the winding of the primitive they come from.
 pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
+    let mut out = Vec::new();
+    assemble_into(mode, count, &mut out);
+    out
+}
+
+/// [`assemble`] into `out` (cleared first), reusing its allocation: large batches would
+/// otherwise fault in fresh pages on every draw.
+pub fn assemble_into(mode: PrimitiveMode, count: usize, out: &mut Vec<Primitive>) {
     use Primitive::*;
     use PrimitiveMode::*;
     let n = count;
-    let mut out = Vec::new();
+    out.clear();
     match mode {
         Points => out.extend((0..n).map(Point)),
         Lines => {
@@ -136,7 +144,6 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
             }
         }
     }
-    out
 }
 
 #[cfg(test)]

@@ -94,6 +94,8 @@ pub struct Context {
     pub(crate) spare_vertices: Vec<crate::vertex::immediate::ImmVertex>,
     /// Clip-space vertices of the current draw, kept to reuse the allocation.
     pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
+    /// Assembled primitives of the current draw, kept like `clip_buffer`.
+    pub(crate) primitive_buffer: Vec<crate::primitive::assemble::Primitive>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
@@ -192,6 +194,7 @@ impl Context {
             immediate: None,
             spare_vertices: Vec::new(),
             clip_buffer: Vec::new(),
+            primitive_buffer: Vec::new(),
             active_texture: 0,
             client_active_texture: 0,
             tex_env: Default::default(),

@@ -7,7 +7,7 @@ pub mod texgen;
 pub mod transform;
 
 use crate::api::convert::{PolygonMode, PrimitiveMode};
-use crate::primitive::assemble::{self, assemble, Primitive};
+use crate::primitive::assemble::{self, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
@@ -85,7 +85,9 @@ impl Context {
         let independent_lines = mode == PrimitiveMode::Lines;
         let filled = ds.raster.polygon_mode == [PolygonMode::Fill; 2];
         let edge_flags = assemble::uses_edge_flags(mode);
-        for prim in assemble(mode, clip.len()) {
+        let mut prims = std::mem::take(&mut self.primitive_buffer);
+        assemble::assemble_into(mode, clip.len(), &mut prims);
+        for &prim in &prims {
             if self.scene.is_full() {
                 self.flush_scene();
             }
@@ -226,6 +228,7 @@ impl Context {
                 }
             }
         }
+        self.primitive_buffer = prims;
     }
 
     /// A polygon in `GL_POINT` or `GL_LINE` mode (section 3.5.4): its boundary vertices as
