@@ -14,6 +14,7 @@ differential!(
     texgen_object_linear,
     texgen_eye_linear,
     multitexture_combine,
+    texture_rectangle,
 );
 
 #[test]

@@ -216,6 +216,8 @@ pub enum TextureTarget {
     T2D = 1,
     T3D = 2,
     CubeMap = 3,
+    /// ARB_texture_rectangle: one level, coordinates in texels.
+    Rectangle = 4,
 }
 
 pub fn texture_target(e: GLenum) -> Option<TextureTarget> {
@@ -224,6 +226,7 @@ pub fn texture_target(e: GLenum) -> Option<TextureTarget> {
         GL_TEXTURE_2D => TextureTarget::T2D,
         GL_TEXTURE_3D => TextureTarget::T3D,
         GL_TEXTURE_CUBE_MAP => TextureTarget::CubeMap,
+        GL_TEXTURE_RECTANGLE_ARB => TextureTarget::Rectangle,
         _ => return None,
     })
 }

@@ -393,6 +393,20 @@ impl Context {
             SampleCoverageValue => Floats(vec![self.multisample.coverage_value as f64]),
             SampleCoverageInvert => Bools(vec![self.multisample.coverage_invert]),
             TextureBinding(t) => Ints(vec![self.textures.binding(self.active_texture, t) as i64]),
+            MaxTextureSize(t) => Ints(vec![crate::texture::object::max_size(t) as i64]),
+            MaxTextureLodBias => Floats(vec![crate::texture::object::MAX_TEXTURE_LOD_BIAS as f64]),
+            MaxTextureMaxAnisotropy => Floats(vec![
+                crate::texture::object::MAX_TEXTURE_MAX_ANISOTROPY as f64,
+            ]),
+            NumCompressedTextureFormats => {
+                Ints(vec![convert::COMPRESSED_TEXTURE_FORMATS.len() as i64])
+            }
+            CompressedTextureFormats => Ints(
+                convert::COMPRESSED_TEXTURE_FORMATS
+                    .iter()
+                    .map(|&f| f as i64)
+                    .collect(),
+            ),
             RenderMode | NameStackDepth | MaxNameStackDepth | FeedbackBufferSize
             | FeedbackBufferType | SelectionBufferSize => self.select_state_value(q),
         }

@@ -155,7 +155,9 @@ fn check_size(
     border: GLint,
 ) -> Result<[i32; 3], Option<GLenum>> {
     let dims = target.dims();
-    if border != 0 && border != 1 {
+    // Rectangle textures have no border (ARB_texture_rectangle).
+    let rectangle = target.texture_target() == TextureTarget::Rectangle;
+    if border != 0 && (border != 1 || rectangle) {
         return Err(Some(GL_INVALID_VALUE));
     }
     let mut out = [1; 3];
@@ -941,7 +943,12 @@ impl Context {
             let e = v.enumv(0);
             match p {
                 TexParam::MinFilter => {
-                    params.min_filter = convert::min_filter(e).ok_or(GL_INVALID_ENUM)?
+                    let f = convert::min_filter(e).ok_or(GL_INVALID_ENUM)?;
+                    // Rectangle textures have no mipmaps (ARB_texture_rectangle).
+                    if t == TextureTarget::Rectangle && f.is_mipmap() {
+                        return Err(GL_INVALID_ENUM);
+                    }
+                    params.min_filter = f
                 }
                 TexParam::MagFilter => {
                     params.mag_filter = convert::mag_filter(e).ok_or(GL_INVALID_ENUM)?
@@ -952,7 +959,19 @@ impl Context {
                         TexParam::WrapT => 1,
                         _ => 2,
                     };
-                    params.wrap[i] = convert::wrap_mode(e).ok_or(GL_INVALID_ENUM)?;
+                    let w = convert::wrap_mode(e).ok_or(GL_INVALID_ENUM)?;
+                    // Rectangle textures only clamp (ARB_texture_rectangle).
+                    if t == TextureTarget::Rectangle
+                        && !matches!(
+                            w,
+                            convert::WrapMode::Clamp
+                                | convert::WrapMode::ClampToEdge
+                                | convert::WrapMode::ClampToBorder
+                        )
+                    {
+                        return Err(GL_INVALID_ENUM);
+                    }
+                    params.wrap[i] = w;
                 }
                 TexParam::BorderColor => {
                     params.border_color = [0, 1, 2, 3].map(|i| clamp01(v.color(i)));

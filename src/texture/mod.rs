@@ -30,10 +30,15 @@ pub use image::TexImage;
 pub use object::{SamplerParams, TextureObject};
 pub use sample::BoundTexture;
 
+/// Number of texture targets (1D, 2D, 3D, cube map, rectangle).
+pub const TARGET_COUNT: usize = 5;
+
 /// Targets in order of precedence, highest first (section 3.8.15).
-pub const TARGET_PRECEDENCE: [TextureTarget; 4] = [
+pub const TARGET_PRECEDENCE: [TextureTarget; TARGET_COUNT] = [
     TextureTarget::CubeMap,
     TextureTarget::T3D,
+    // ARB_texture_rectangle: between 3D and 2D.
+    TextureTarget::Rectangle,
     TextureTarget::T2D,
     TextureTarget::T1D,
 ];
@@ -42,17 +47,17 @@ pub const TARGET_PRECEDENCE: [TextureTarget; 4] = [
 #[derive(Clone, Debug)]
 pub struct TextureState {
     /// Per unit: enabled targets.
-    enabled: [[bool; 4]; MAX_TEXTURE_UNITS],
+    enabled: [[bool; TARGET_COUNT]; MAX_TEXTURE_UNITS],
     /// Per unit and target: the bound name (0 = the default texture of the target).
-    bindings: [[u32; 4]; MAX_TEXTURE_UNITS],
+    bindings: [[u32; TARGET_COUNT]; MAX_TEXTURE_UNITS],
     /// Named objects (created by their first bind).
     objects: HashMap<u32, TextureObject>,
     /// Names returned by `glGenTextures` and not yet bound or deleted.
     reserved: HashSet<u32>,
     /// The default texture of each target (name 0).
-    defaults: [TextureObject; 4],
+    defaults: [TextureObject; TARGET_COUNT],
     /// The proxy texture of each target (image parameters only, no texels).
-    pub(crate) proxies: [TextureObject; 4],
+    pub(crate) proxies: [TextureObject; TARGET_COUNT],
     next_name: u32,
 }
 
@@ -63,10 +68,11 @@ impl Default for TextureState {
             TextureTarget::T2D,
             TextureTarget::T3D,
             TextureTarget::CubeMap,
+            TextureTarget::Rectangle,
         ];
         TextureState {
-            enabled: [[false; 4]; MAX_TEXTURE_UNITS],
-            bindings: [[0; 4]; MAX_TEXTURE_UNITS],
+            enabled: [[false; TARGET_COUNT]; MAX_TEXTURE_UNITS],
+            bindings: [[0; TARGET_COUNT]; MAX_TEXTURE_UNITS],
             objects: HashMap::new(),
             reserved: HashSet::new(),
             defaults: targets.map(|t| TextureObject::new(Some(t))),
@@ -201,8 +207,8 @@ impl TextureState {
 /// defaults), keyed by name so that they are restored to the same objects.
 #[derive(Clone, Debug)]
 pub struct TextureAttrib {
-    enabled: [[bool; 4]; MAX_TEXTURE_UNITS],
-    bindings: [[u32; 4]; MAX_TEXTURE_UNITS],
+    enabled: [[bool; TARGET_COUNT]; MAX_TEXTURE_UNITS],
+    bindings: [[u32; TARGET_COUNT]; MAX_TEXTURE_UNITS],
     params: Vec<(u32, usize, SamplerParams, f32)>,
 }
 
@@ -211,7 +217,7 @@ impl TextureState {
     pub fn save_attrib(&self) -> TextureAttrib {
         let mut params = Vec::new();
         for unit in 0..MAX_TEXTURE_UNITS {
-            for t in 0..4 {
+            for t in 0..TARGET_COUNT {
                 let name = self.bindings[unit][t];
                 if params
                     .iter()

@@ -34,6 +34,10 @@ pub fn max_size(target: TextureTarget) -> i32 {
 
 /// Number of levels a target allows (level must be below this).
 pub fn level_count(target: TextureTarget) -> usize {
+    if target == TextureTarget::Rectangle {
+        // ARB_texture_rectangle: only level 0.
+        return 1;
+    }
     // log2(max size) + 1
     (31 - max_size(target).leading_zeros()) as usize + 1
 }
@@ -97,9 +101,15 @@ pub struct TextureObject {
 
 impl TextureObject {
     pub fn new(target: Option<TextureTarget>) -> TextureObject {
+        let mut params = SamplerParams::default();
+        if target == Some(TextureTarget::Rectangle) {
+            // ARB_texture_rectangle's defaults: no mipmaps, clamped.
+            params.min_filter = MinFilter::Linear;
+            params.wrap = [WrapMode::ClampToEdge; 3];
+        }
         TextureObject {
             target,
-            params: SamplerParams::default(),
+            params,
             priority: 1.0,
             images: std::array::from_fn(|_| std::array::from_fn(|_| None)),
         }

@@ -361,6 +361,14 @@ impl BoundTexture {
         d_dy: [f32; 3],
         unit_lod_bias: f32,
     ) -> [f32; 4] {
+        // ARB_texture_rectangle: coordinates (and their derivatives) are in texels.
+        let (coords, d_dx, d_dy) = if self.inner.target == TextureTarget::Rectangle {
+            let [w, h, _] = self.inner.base_size;
+            let n = |v: [f32; 3]| [v[0] / w.max(1.0), v[1] / h.max(1.0), v[2]];
+            (n(coords), n(d_dx), n(d_dy))
+        } else {
+            (coords, d_dx, d_dy)
+        };
         let (face, c, dx, dy) = if self.inner.target == TextureTarget::CubeMap {
             let (face, st) = cube_face(coords);
             let add = |d: [f32; 3]| [coords[0] + d[0], coords[1] + d[1], coords[2] + d[2]];

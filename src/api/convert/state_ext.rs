@@ -91,6 +91,13 @@ pub enum StateExtQuery {
     SelectionBufferSize,
     /// `GL_TEXTURE_BINDING_*` of the active unit.
     TextureBinding(super::TextureTarget),
+    /// `GL_MAX_TEXTURE_SIZE`, `GL_MAX_3D_TEXTURE_SIZE`, `GL_MAX_CUBE_MAP_TEXTURE_SIZE`,
+    /// `GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB`: the largest side for the target.
+    MaxTextureSize(super::TextureTarget),
+    MaxTextureLodBias,
+    MaxTextureMaxAnisotropy,
+    NumCompressedTextureFormats,
+    CompressedTextureFormats,
 }
 
 pub fn state_ext_query(e: GLenum) -> Option<StateExtQuery> {
@@ -109,6 +116,15 @@ pub fn state_ext_query(e: GLenum) -> Option<StateExtQuery> {
         GL_TEXTURE_BINDING_2D => TextureBinding(super::TextureTarget::T2D),
         GL_TEXTURE_BINDING_3D => TextureBinding(super::TextureTarget::T3D),
         GL_TEXTURE_BINDING_CUBE_MAP => TextureBinding(super::TextureTarget::CubeMap),
+        GL_TEXTURE_BINDING_RECTANGLE_ARB => TextureBinding(super::TextureTarget::Rectangle),
+        GL_MAX_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::T2D),
+        GL_MAX_3D_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::T3D),
+        GL_MAX_CUBE_MAP_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::CubeMap),
+        GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB => MaxTextureSize(super::TextureTarget::Rectangle),
+        GL_MAX_TEXTURE_LOD_BIAS => MaxTextureLodBias,
+        GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT => MaxTextureMaxAnisotropy,
+        GL_NUM_COMPRESSED_TEXTURE_FORMATS => NumCompressedTextureFormats,
+        GL_COMPRESSED_TEXTURE_FORMATS => CompressedTextureFormats,
         _ => return None,
     })
 }

@@ -17,6 +17,9 @@ pub enum TexImageTarget {
     Proxy2D,
     Proxy3D,
     ProxyCube,
+    /// ARB_texture_rectangle.
+    Rectangle,
+    ProxyRectangle,
 }
 
 impl TexImageTarget {
@@ -28,6 +31,7 @@ impl TexImageTarget {
             T2D | Proxy2D => TextureTarget::T2D,
             T3D | Proxy3D => TextureTarget::T3D,
             CubeFace(_) | ProxyCube => TextureTarget::CubeMap,
+            Rectangle | ProxyRectangle => TextureTarget::Rectangle,
         }
     }
 
@@ -41,7 +45,10 @@ impl TexImageTarget {
 
     pub fn is_proxy(self) -> bool {
         use TexImageTarget::*;
-        matches!(self, Proxy1D | Proxy2D | Proxy3D | ProxyCube)
+        matches!(
+            self,
+            Proxy1D | Proxy2D | Proxy3D | ProxyCube | ProxyRectangle
+        )
     }
 
     /// Number of dimensions of the image.
@@ -65,6 +72,8 @@ pub fn tex_image_target(e: GLenum) -> Option<TexImageTarget> {
         GL_PROXY_TEXTURE_2D => Proxy2D,
         GL_PROXY_TEXTURE_3D => Proxy3D,
         GL_PROXY_TEXTURE_CUBE_MAP => ProxyCube,
+        GL_TEXTURE_RECTANGLE_ARB => Rectangle,
+        GL_PROXY_TEXTURE_RECTANGLE_ARB => ProxyRectangle,
         e if (GL_TEXTURE_CUBE_MAP_POSITIVE_X..=GL_TEXTURE_CUBE_MAP_NEGATIVE_Z).contains(&e) => {
             CubeFace((e - GL_TEXTURE_CUBE_MAP_POSITIVE_X) as usize)
         }
