@@ -4,12 +4,6 @@
 
 /// (case name, what goes wrong). Each entry is described in the conformance report.
 pub const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "texture_rectangle",
-        "ARB_texture_rectangle sampling differs from llvmpipe on about 1.4 % of the pixels \
-         (rows and columns of texel boundaries; found at the end of the 2026-11-27 session, \
-         not investigated yet)",
-    ),
     // Empty: the line-endpoint cases (line_endpoints, lines, line_strip, flat_lines) were
     // fixed by the exact diamond-exit test in src/raster/line.rs.
 ];
