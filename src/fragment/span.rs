@@ -306,7 +306,13 @@ fn shade_textured<
         && it.coverage == 1.0
     {
         if let Some(f) = &fast {
-            if f.affine.as_ref().is_some_and(|a| a.simd.is_some()) && simd::available() {
+            let sampling = f.sampling8(it);
+            let perspective = if sampling.is_none() && f.affine.is_none() {
+                Perspective8::new(f.unit, it, y)
+            } else {
+                None
+            };
+            if (sampling.is_some() || perspective.is_some()) && simd::available() {
                 let tail = Tail8 {
                     modulate: f.modulate,
                     alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
@@ -332,16 +338,21 @@ fn shade_textured<
                         }
                     }
                 }
-                let sampling = f.sampling8(it);
-                let mut i = 0;
-                while i < n {
-                    let count = (n - i).min(8);
+                // Groups of eight lanes from `gx`; the perspective sampler needs groups that
+                // start on an even column (quads), so its first group may begin one pixel
+                // early with lane 0 not live.
+                let mut gx = if perspective.is_some() { x0 & !1 } else { x0 };
+                while gx < x1 {
+                    let lo = (x0 - gx).max(0) as usize;
+                    let hi = ((x1 - gx) as usize).min(8);
+                    let first = (gx - x0) as isize;
                     let mut primary = [[0f32; 8]; 4];
                     let mut depth = [0u32; 8];
                     let mut pass = 0u8;
-                    for j in 0..count {
+                    for j in lo..hi {
+                        let i = (first + j as isize) as usize;
                         let d = if steady {
-                            let (color, d) = steady_values[(i + j).min(1)];
+                            let (color, d) = steady_values[i.min(1)];
                             for c in 0..4 {
                                 primary[c][j] = color[c];
                             }
@@ -362,32 +373,38 @@ fn shade_textured<
                         depth[j] = d;
                         let ok = match key.depth_func {
                             None | Some(CompareFunc::Always) => true,
-                            Some(func) => func.test(d, tile.depth[row + i + j]),
+                            Some(func) => func.test(d, tile.depth[row + i]),
                         };
                         pass |= u8::from(ok) << j;
                     }
-                    let x = x0 as f64 + i as f64 + 0.5;
+                    let x = gx as f64 + 0.5;
+                    let base = (row as isize + first) as usize;
                     let mut dst = [0u32; 8];
-                    for (j, d) in dst.iter_mut().enumerate().take(count) {
-                        *d = u32::from_le_bytes(tile.color[row + i + j]);
+                    for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
+                        *d = u32::from_le_bytes(tile.color[base + j]);
                     }
+                    let live = ((1u32 << hi) - (1u32 << lo)) as u8;
                     // `shade8` always answers: AVX2 was detected above.
-                    let shaded = sampling
-                        .as_ref()
-                        .and_then(|sm| simd::textured8(sm, x, count, &tail, &primary, &dst, pass))
-                        .or_else(|| {
-                            let tex = f.texels_scalar(it, x, yc, count);
-                            simd::shade8(&tail, &primary, &tex, &dst, pass)
-                        });
+                    let shaded = match (&sampling, &perspective) {
+                        (Some(sm), _) => simd::textured8(sm, x, hi, &tail, &primary, &dst, pass),
+                        (None, Some(p)) => p
+                            .texels(x, live)
+                            .and_then(|tex| simd::shade8(&tail, &primary, &tex, &dst, pass)),
+                        _ => None,
+                    }
+                    .or_else(|| {
+                        let tex = f.texels_scalar(it, x, yc, hi);
+                        simd::shade8(&tail, &primary, &tex, &dst, pass)
+                    });
                     if let Some((words, passed)) = shaded {
-                        for j in 0..count {
-                            tile.color[row + i + j] = words[j].to_le_bytes();
+                        for j in lo..hi {
+                            tile.color[base + j] = words[j].to_le_bytes();
                             if key.depth_write && passed & (1 << j) != 0 {
-                                tile.depth[row + i + j] = depth[j];
+                                tile.depth[base + j] = depth[j];
                             }
                         }
                     }
-                    i += count;
+                    gx += 8;
                 }
                 return;
             }
@@ -518,16 +535,19 @@ fn shade_textured<
 }
 
 /// Texture coordinates (s, t, r divided by q) of one unit at window point (x, y), in f64.
+/// Under perspective the planes hold s/w ... q/w, and (s/w) / (q/w) is s/q: one division.
 #[inline(always)]
 fn coords_at(it: &Interpolants, base: usize, x: f64, y: f64) -> [f64; 3] {
     let p = &it.attrs[base..base + 4];
-    let w = if it.perspective {
-        it.inv_w.at(x, y)
-    } else {
-        1.0
-    };
-    let q = p[3].at(x, y) / w;
-    [0, 1, 2].map(|k| p[k].at(x, y) / w / q)
+    let q = p[3].at(x, y);
+    [0, 1, 2].map(|k| p[k].at(x, y) / q)
+}
+
+/// The centre coordinate of the first pixel of the 2x2 quad (aligned to even window
+/// coordinates) holding the pixel centred at `c`.
+#[inline(always)]
+fn quad_origin(c: f64) -> f64 {
+    ((c - 0.5) * 0.5).floor() * 2.0 + 0.5
 }
 
 /// Texture coordinates of one unit at the pixel centred at (x, y), with the screen
@@ -537,8 +557,8 @@ fn coords_at(it: &Interpolants, base: usize, x: f64, y: f64) -> [f64; 3] {
 /// upper row and the y difference along its left column, and all four pixels share them.
 fn unit_coords(it: &Interpolants, base: usize, x: f64, y: f64) -> ([f32; 3], [f32; 3], [f32; 3]) {
     let c = coords_at(it, base, x, y);
-    let qx = (x - 0.5).div_euclid(2.0) * 2.0 + 0.5;
-    let qy = (y - 0.5).div_euclid(2.0) * 2.0 + 0.5;
+    let qx = quad_origin(x);
+    let qy = quad_origin(y);
     let upper = qy + 1.0;
     let ref_ = coords_at(it, base, qx, upper);
     let right = coords_at(it, base, qx + 1.0, upper);
@@ -601,7 +621,8 @@ struct FastUnit<'a> {
 /// (before the division by q) are finite.
 #[derive(Clone, Copy, Debug)]
 pub struct AffineSpan<'a> {
-    /// 1/w and q (after the division by w), non-zero and finite.
+    /// 1 and the q plane's value (s/q is the s plane divided by 1, then by q; non-zero and
+    /// finite), the form [`simd::coords8`] takes.
     w: f64,
     q: f64,
     /// `b * y` of the s and t planes on the span's row.
@@ -655,15 +676,13 @@ impl<'a> FastUnit<'a> {
         if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
             return None;
         }
-        let w = it.inv_w.at(xc0, yc);
-        if !w.is_finite() || w == 0.0 {
-            return None;
-        }
-        let q = p[3].at(xc0, yc) / w;
+        // The coordinates are the s and t planes divided by the q plane ([`coords_at`]).
+        let w = 1.0;
+        let q = p[3].at(xc0, yc);
         if !q.is_finite() || q == 0.0 {
             return None;
         }
-        if !(p[0].at(xc0, yc) / w).is_finite() || !(p[1].at(xc0, yc) / w).is_finite() {
+        if !p[0].at(xc0, yc).is_finite() || !p[1].at(xc0, yc).is_finite() {
             return None;
         }
         let tex = &u.texture;
@@ -845,6 +864,145 @@ impl<'a> FastUnit<'a> {
         primary: [f32; 4],
     ) -> [f32; 4] {
         self.env::<C>(primary, self.texel::<C>(it, x, y))
+    }
+}
+
+/// Most mipmap levels a fast texture can have (sizes below 2^16).
+const MAX_FAST_LEVELS: usize = 17;
+
+/// One RGBA8 unit over one row of a perspective span, eight pixels at a time with AVX2: the
+/// s, t and q planes on the pixel's row and on the other row of its 2x2 quads, and every
+/// level prepared for [`simd::filter8`]. Texels equal those of [`FastUnit::texel`] (the
+/// general path): the same coordinates, the same per-quad derivatives, λ and level plan
+/// (computed per quad by the sampler's own functions), the same filter arithmetic.
+struct Perspective8<'a> {
+    unit: &'a TextureUnitDraw,
+    /// `[row][s, t, q] = [a, b * y, c]`: row 0 is the pixel's row, row 1 the quad's other.
+    planes: [[[f64; 3]; 3]; 2],
+    /// Whether the pixel's row is the upper row of its quads.
+    own_is_upper: bool,
+    levels: [Option<Level8<'a>>; MAX_FAST_LEVELS],
+}
+
+impl<'a> Perspective8<'a> {
+    /// The unit's eight-pixel sampler on row `y`, when every level of its texture takes the
+    /// eight-pixel filter.
+    fn new(unit: &'a TextureUnitDraw, it: &Interpolants, y: i32) -> Option<Perspective8<'a>> {
+        let tex = &unit.texture;
+        if unit.base != BaseFormat::Rgba || !simd::available() {
+            return None;
+        }
+        let count = tex.level_count();
+        if count == 0 || count > MAX_FAST_LEVELS {
+            return None;
+        }
+        let wrap = tex.wrap_st();
+        let mut levels = [None; MAX_FAST_LEVELS];
+        for (l, slot) in levels.iter_mut().enumerate().take(count) {
+            *slot = Some(Level8::new(&tex.fast_level(l)?, wrap)?);
+        }
+        let yc = y as f64 + 0.5;
+        let own_is_upper = quad_origin(yc) != yc;
+        let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
+        let base = attr::TEX + 4 * unit.unit;
+        let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
+        let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
+        Some(Perspective8 {
+            unit,
+            planes: [row(yc), row(other)],
+            own_is_upper,
+            levels,
+        })
+    }
+
+    /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
+    /// 2k + 1 form a quad's row); only lanes whose bit is set in `live` matter. `None` when a
+    /// coordinate is beyond the filter's range (the caller samples one by one).
+    fn texels(&self, x: f64, live: u8) -> Option<Texels8> {
+        let tex = &self.unit.texture;
+        let rows = simd::perspective_rows8(&self.planes, x)?;
+        let (upper, lower) = if self.own_is_upper {
+            (&rows[0], &rows[1])
+        } else {
+            (&rows[1], &rows[0])
+        };
+        let fix = |v: f64| finite_or_zero(v as f32);
+        let mut s = [0f32; 8];
+        let mut t = [0f32; 8];
+        for j in 0..8 {
+            s[j] = fix(rows[0][0][j]);
+            t[j] = fix(rows[0][1][j]);
+        }
+        // Per quad: the level plan; per lane: its first level, second level and weight.
+        let mut plan = [(0usize, 0usize, false); 4];
+        let mut weight = [0f32; 8];
+        for (k, pl) in plan.iter_mut().enumerate() {
+            if live & (3 << (2 * k)) == 0 {
+                continue;
+            }
+            let (l, r) = (2 * k, 2 * k + 1);
+            let dx = [
+                fix(upper[0][r] - upper[0][l]),
+                fix(upper[1][r] - upper[1][l]),
+                0.0,
+            ];
+            let dy = [
+                fix(upper[0][l] - lower[0][l]),
+                fix(upper[1][l] - lower[1][l]),
+                0.0,
+            ];
+            let lambda = tex.isotropic_lambda(dx, dy, self.unit.env.lod_bias);
+            *pl = match tex.level_plan(lambda) {
+                LevelPlan::One { level, linear } => (level, level, linear),
+                LevelPlan::Two {
+                    levels,
+                    linear,
+                    weight: w,
+                } => {
+                    weight[l] = w;
+                    weight[r] = w;
+                    (levels[0], levels[1], linear)
+                }
+            };
+        }
+        let mut out = [[0f32; 8]; 4];
+        let mut done = !live;
+        for k in 0..4 {
+            if done & (3 << (2 * k)) == 3 << (2 * k) {
+                continue;
+            }
+            let (d1, d2, linear) = plan[k];
+            // The lanes of every quad with this plan.
+            let mut lanes = 0u8;
+            for (m, other) in plan.iter().enumerate() {
+                if *other == plan[k] {
+                    lanes |= 3 << (2 * m);
+                }
+            }
+            lanes &= !done;
+            done |= lanes;
+            let t1 = simd::filter8(self.levels[d1].as_ref()?, linear, &s, &t)?;
+            let texels = if d2 == d1 {
+                t1
+            } else {
+                let t2 = simd::filter8(self.levels[d2].as_ref()?, linear, &s, &t)?;
+                let mut mixed = [[0f32; 8]; 4];
+                for c in 0..4 {
+                    for j in 0..8 {
+                        mixed[c][j] = t1[c][j] + (t2[c][j] - t1[c][j]) * weight[j];
+                    }
+                }
+                mixed
+            };
+            for j in 0..8 {
+                if lanes & (1 << j) != 0 {
+                    for c in 0..4 {
+                        out[c][j] = texels[c][j];
+                    }
+                }
+            }
+        }
+        Some(out)
     }
 }
 

@@ -102,6 +102,23 @@ pub fn coords8(
     None
 }
 
+/// s/q and t/q (f64) at the eight pixel centres `x + j` (j < 8) of two rows of a perspective
+/// span, as the fragment stage computes them one by one: each plane `[a, b * y, c]` of
+/// `planes[row]` (s, t, q) evaluated as `(a * x + b * y) + c`, then s and t divided by q.
+/// Answers `[row][s or t][lane]`; `None` without AVX2.
+#[inline]
+pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[[f64; 8]; 2]; 2]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::perspective_rows8(planes, x) });
+        }
+    }
+    let _ = (planes, x);
+    None
+}
+
 /// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
 /// [`shade8`]).
 #[derive(Clone, Copy, Debug)]
@@ -148,7 +165,7 @@ pub fn shade8(
 pub struct Sampling8<'a> {
     /// The s and t planes as `[a, b * y, c]` for the row.
     pub planes: [[f64; 3]; 2],
-    /// 1/w and q, constant over the span.
+    /// The two divisors of the plane values (see [`coords8`]), constant over the span.
     pub w: f64,
     pub q: f64,
     /// The first level and, with a weight, the second.
@@ -381,6 +398,34 @@ mod x86 {
             ct = super::lerp8(&ct, &t2, w);
         }
         Some(shade8(tail, primary, &ct, dst, pass))
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[[f64; 8]; 2]; 2] {
+        let lanes =
+            |first: f64| _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
+        let xs = [lanes(x), lanes(x + 4.0)];
+        let mut out = [[[0f64; 8]; 2]; 2];
+        for (row, p) in planes.iter().enumerate() {
+            for (h, &xv) in xs.iter().enumerate() {
+                let eval = |k: usize| {
+                    let (a, by, c) = (
+                        _mm256_set1_pd(p[k][0]),
+                        _mm256_set1_pd(p[k][1]),
+                        _mm256_set1_pd(p[k][2]),
+                    );
+                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
+                };
+                let q = eval(2);
+                for k in 0..2 {
+                    let v = _mm256_div_pd(eval(k), q);
+                    // SAFETY: `out[row][k]` holds eight f64; lanes 4h..4h+4; unaligned store.
+                    unsafe { _mm256_storeu_pd(out[row][k].as_mut_ptr().add(4 * h), v) };
+                }
+            }
+        }
+        out
     }
 
     #[inline]
