@@ -571,6 +571,20 @@ fn textured_fast_paths_match_the_general_path() {
             blend: Some((GL_SRC_ALPHA, GL_ONE)),
             ..base
         },
+        // RGB texels on the eight-pixel path: REPLACE keeps the primary alpha; additive
+        // and "over" blending.
+        TexCase {
+            format: GL_RGB,
+            env: GL_REPLACE,
+            blend: Some((GL_ONE, GL_ONE)),
+            ..base
+        },
+        TexCase {
+            size: (32, 32),
+            format: GL_RGB,
+            wrap: GL_CLAMP_TO_EDGE,
+            ..base
+        },
         // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
         TexCase {
             wrap: GL_CLAMP,

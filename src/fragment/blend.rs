@@ -92,6 +92,18 @@ impl BlendKey {
     }
 }
 
+impl BlendKey {
+    /// `FUNC_ADD` with `ONE`, `ONE` for colour and alpha: additive blending (light passes).
+    pub fn is_add_one_one(&self) -> bool {
+        self.equation == BlendEquation::Add
+            && self.equation_alpha == BlendEquation::Add
+            && self.src_rgb == BlendFactor::One
+            && self.src_alpha == BlendFactor::One
+            && self.dst_rgb == BlendFactor::One
+            && self.dst_alpha == BlendFactor::One
+    }
+}
+
 /// [`blend`] for a key with [`BlendKey::is_alpha_over`]: the same arithmetic, without the
 /// per-channel choice of factors.
 #[inline(always)]

@@ -12,7 +12,6 @@ use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
 use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::DrawState;
-use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan};
 use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
 
@@ -297,8 +296,9 @@ fn shade_textured<
         }
         _ => None,
     };
-    if TEX == tex_mode::FAST_RGBA
-        && (BLEND == blend_mode::ALPHA_OVER || key.blend.is_none())
+    let blend_add = key.blend.is_some_and(|b| b.is_add_one_one());
+    if (TEX == tex_mode::FAST_RGBA || TEX == tex_mode::FAST_RGB)
+        && (BLEND == blend_mode::ALPHA_OVER || key.blend.is_none() || blend_add)
         && key.logic_op.is_none()
         && key.stencil.is_none()
         && !key.color_sum
@@ -316,7 +316,12 @@ fn shade_textured<
                 let tail = Tail8 {
                     modulate: f.modulate,
                     alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
-                    blend_over: key.blend.is_some(),
+                    alpha_from_primary: TEX == tex_mode::FAST_RGB,
+                    blend: match key.blend {
+                        None => simd::TailBlend::None,
+                        Some(_) if blend_add => simd::TailBlend::AddOneOne,
+                        Some(_) => simd::TailBlend::AlphaOver,
+                    },
                     color_mask: u32::from_le_bytes(
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
                     ),
@@ -393,7 +398,11 @@ fn shade_textured<
                         _ => None,
                     }
                     .or_else(|| {
-                        let tex = f.texels_scalar(it, x, yc, hi);
+                        let tex = if TEX == tex_mode::FAST_RGB {
+                            f.texels_scalar::<3>(it, x, yc, hi)
+                        } else {
+                            f.texels_scalar::<4>(it, x, yc, hi)
+                        };
                         simd::shade8(&tail, &primary, &tex, &dst, pass)
                     });
                     if let Some((words, passed)) = shaded {
@@ -697,9 +706,12 @@ impl<'a> FastUnit<'a> {
             } => (levels, linear, Some(weight)),
         };
         let levels = [tex.fast_level(levels[0])?, tex.fast_level(levels[1])?];
-        let simd = if u.base == BaseFormat::Rgba && simd::available() {
+        let simd = if simd::available() {
             let wrap = tex.wrap_st();
-            match (Level8::new(&levels[0], wrap), Level8::new(&levels[1], wrap)) {
+            match (
+                Level8::new(&levels[0], wrap, u.base),
+                Level8::new(&levels[1], wrap, u.base),
+            ) {
                 (Some(a), Some(b)) => Some([a, b]),
                 _ => None,
             }
@@ -819,12 +831,18 @@ impl<'a> FastUnit<'a> {
         })
     }
 
-    /// The texels of the `count` (at most 8) pixels from centre `x` on row `y` of an RGBA
-    /// texture, one by one, as channel arrays (lanes from `count` on are 0).
-    fn texels_scalar(&self, it: &Interpolants, x: f64, y: f64, count: usize) -> Texels8 {
+    /// The texels of the `count` (at most 8) pixels from centre `x` on row `y` of a texture
+    /// of `C` components (3 or 4), one by one, as channel arrays (lanes from `count` on are 0).
+    fn texels_scalar<const C: usize>(
+        &self,
+        it: &Interpolants,
+        x: f64,
+        y: f64,
+        count: usize,
+    ) -> Texels8 {
         let mut out = [[0f32; 8]; 4];
         for j in 0..count {
-            let t = self.texel::<4>(it, x + j as f64, y);
+            let t = self.texel::<C>(it, x + j as f64, y);
             for c in 0..4 {
                 out[c][j] = t[c];
             }
@@ -889,7 +907,7 @@ impl<'a> Perspective8<'a> {
     /// eight-pixel filter.
     fn new(unit: &'a TextureUnitDraw, it: &Interpolants, y: i32) -> Option<Perspective8<'a>> {
         let tex = &unit.texture;
-        if unit.base != BaseFormat::Rgba || !simd::available() {
+        if !tex.simd_2d() || !simd::available() {
             return None;
         }
         let count = tex.level_count();
@@ -899,7 +917,7 @@ impl<'a> Perspective8<'a> {
         let wrap = tex.wrap_st();
         let mut levels = [None; MAX_FAST_LEVELS];
         for (l, slot) in levels.iter_mut().enumerate().take(count) {
-            *slot = Some(Level8::new(&tex.fast_level(l)?, wrap)?);
+            *slot = Some(Level8::new(&tex.fast_level(l)?, wrap, tex.base_format())?);
         }
         let yc = y as f64 + 0.5;
         let own_is_upper = quad_origin(yc) != yc;

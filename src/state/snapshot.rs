@@ -31,12 +31,13 @@ pub mod attr {
     pub const COLOR1: usize = 4;
     /// Both colours.
     pub const COLORS: usize = 8;
+    /// Fog coordinate (before the texture coordinates, so that a fogged draw without
+    /// texturing interpolates 9 attributes rather than 41).
+    pub const FOG: usize = 8;
     /// Texture coordinates (s, t, r, q) per unit.
-    pub const TEX: usize = 8;
-    /// Fog coordinate.
-    pub const FOG: usize = TEX + 4 * MAX_TEXTURE_UNITS;
+    pub const TEX: usize = FOG + 1;
     /// Back-face primary and secondary colours.
-    pub const BACK: usize = FOG + 1;
+    pub const BACK: usize = TEX + 4 * MAX_TEXTURE_UNITS;
     /// All attributes.
     pub const COUNT: usize = BACK + COLORS;
 }
@@ -269,8 +270,8 @@ impl Context {
             coord_from_vertex: fs.coord_from_vertex,
         });
         let attr_count = match units.last() {
-            _ if fog.is_some() => attr::FOG + 1,
             Some(last) => attr::TEX + 4 * (last.unit + 1),
+            None if fog.is_some() => attr::FOG + 1,
             None if color_sum => attr::COLORS,
             None => COLOR_ATTRS,
         };

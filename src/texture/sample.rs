@@ -654,6 +654,28 @@ impl BoundTexture {
     /// comparison does not apply to colour formats. The fast path's results are those of
     /// [`BoundTexture::sample_grad`], bit for bit.
     pub fn fast_2d(&self) -> bool {
+        matches!(self.inner.base, BaseFormat::Rgb | BaseFormat::Rgba) && self.byte_2d()
+    }
+
+    /// Whether the eight-pixel filter (`simd::Level8`) may sample this texture, given that
+    /// each level also passes `Level8::new`: a texture the fast 2D path takes
+    /// ([`BoundTexture::fast_2d`]) or one of one-byte ALPHA, LUMINANCE, LUMINANCE_ALPHA or
+    /// INTENSITY texels under the same conditions.
+    pub fn simd_2d(&self) -> bool {
+        matches!(
+            self.inner.base,
+            BaseFormat::Rgb
+                | BaseFormat::Rgba
+                | BaseFormat::Alpha
+                | BaseFormat::Luminance
+                | BaseFormat::LuminanceAlpha
+                | BaseFormat::Intensity
+        ) && self.byte_2d()
+    }
+
+    /// A 2D texture of unsigned-byte texels without border, wrapped by `REPEAT`,
+    /// `CLAMP_TO_EDGE` or `MIRRORED_REPEAT`, without anisotropy or swizzle.
+    fn byte_2d(&self) -> bool {
         let i = &*self.inner;
         let wrap_ok = |w: WrapMode| {
             matches!(
@@ -662,7 +684,6 @@ impl BoundTexture {
             )
         };
         i.target == TextureTarget::T2D
-            && matches!(i.base, BaseFormat::Rgb | BaseFormat::Rgba)
             && i.params.max_anisotropy <= 1.0
             && i.params.swizzle == SwizzleSource::IDENTITY
             && wrap_ok(i.params.wrap[0])

@@ -5,34 +5,55 @@
 //! multiply-add), so the results are identical; `tests/raster.rs`
 //! `textured_fast_paths_match_the_general_path` checks it.
 
+use super::format::BaseFormat;
 use super::sample::FastLevel;
 use crate::api::convert::{CompareFunc, WrapMode};
 
 /// Eight pixels' texels as four channel arrays (R, G, B, A).
 pub type Texels8 = [[f32; 8]; 4];
 
-/// One level prepared for [`filter8`]: RGBA8 texels and per-axis wrapping.
+/// One level prepared for [`filter8`]: unsigned-byte texels of one to four components, the
+/// base format that expands them to R, G, B, A, and per-axis wrapping.
 #[derive(Clone, Copy, Debug)]
 pub struct Level8<'a> {
     texels: &'a [u8],
+    /// Levels of fewer than four bytes are read from this zero-padded copy, so that every
+    /// four-byte read stays inside the buffer.
+    tiny: Option<[u8; 4]>,
+    components: i32,
+    base: BaseFormat,
     size: [i32; 2],
     /// Per axis: `Some(mask)` for power-of-two `REPEAT`, `None` for `CLAMP_TO_EDGE`.
     repeat_mask: [Option<i32>; 2],
 }
 
 impl<'a> Level8<'a> {
-    /// `lvl` (4 components per texel) under wrap modes `wrap`, or `None` when the modes or
-    /// the size are not ones [`filter8`] handles.
-    pub fn new(lvl: &FastLevel<'a>, wrap: [WrapMode; 2]) -> Option<Level8<'a>> {
+    /// `lvl` (texels of base format `base`: RGBA, RGB, LUMINANCE_ALPHA, LUMINANCE, INTENSITY
+    /// or ALPHA, one byte per component) under wrap modes `wrap`, or `None` when the format,
+    /// the modes or the size are not ones [`filter8`] handles.
+    pub fn new(lvl: &FastLevel<'a>, wrap: [WrapMode; 2], base: BaseFormat) -> Option<Level8<'a>> {
+        let components = match base {
+            BaseFormat::Rgba => 4,
+            BaseFormat::Rgb => 3,
+            BaseFormat::LuminanceAlpha => 2,
+            BaseFormat::Luminance | BaseFormat::Intensity | BaseFormat::Alpha => 1,
+            _ => return None,
+        };
         let size = lvl.size();
         if size[0] < 1 || size[1] < 1 || size[0] > 1 << 15 || size[1] > 1 << 15 {
             return None;
         }
         let size = [size[0] as i32, size[1] as i32];
         let texels = lvl.texels();
-        if texels.len() < size[0] as usize * size[1] as usize * 4 {
+        let bytes = size[0] as usize * size[1] as usize * components as usize;
+        if texels.len() < bytes {
             return None;
         }
+        let tiny = (bytes < 4).then(|| {
+            let mut t = [0u8; 4];
+            t[..bytes].copy_from_slice(&texels[..bytes]);
+            t
+        });
         let mut repeat_mask = [None; 2];
         for d in 0..2 {
             repeat_mask[d] = match wrap[d] {
@@ -43,6 +64,9 @@ impl<'a> Level8<'a> {
         }
         Some(Level8 {
             texels,
+            tiny,
+            components,
+            base,
             size,
             repeat_mask,
         })
@@ -119,6 +143,16 @@ pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[[f64; 
     None
 }
 
+/// The blending [`shade8`] does (`FUNC_ADD` for colour and alpha).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TailBlend {
+    None,
+    /// `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA`.
+    AlphaOver,
+    /// `ONE`, `ONE`.
+    AddOneOne,
+}
+
 /// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
 /// [`shade8`]).
 #[derive(Clone, Copy, Debug)]
@@ -127,8 +161,10 @@ pub struct Tail8 {
     pub modulate: bool,
     /// The alpha test's function and reference, when it applies.
     pub alpha_test: Option<(CompareFunc, f32)>,
-    /// Blend `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA` with `FUNC_ADD` (else no blending).
-    pub blend_over: bool,
+    /// An RGB texture under `REPLACE`: the fragment keeps the primary colour's alpha.
+    pub alpha_from_primary: bool,
+    /// The blending.
+    pub blend: TailBlend,
     /// Bytes of the colour words that may be written (the colour mask).
     pub color_mask: u32,
 }
@@ -215,6 +251,7 @@ mod x86 {
 
     use super::{Level8, Sampling8, Tail8, Texels8};
     use crate::api::convert::CompareFunc;
+    use crate::texture::format::BaseFormat;
 
     /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
     const MAX_INDEX: f64 = (1 << 30) as f64;
@@ -257,23 +294,70 @@ mod x86 {
         }
     }
 
-    /// The texels at (x, y) as four channel vectors, each `byte as f32 * (1 / 255)`.
+    /// The texels at (x, y) as four channel vectors (R, G, B, A after the base format's
+    /// expansion), each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch` converts.
     #[target_feature(enable = "avx2")]
     fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
         let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(lvl.size[0])), x);
-        // SAFETY: wrapping keeps 0 <= x < width and 0 <= y < height, so 0 <= idx < width *
-        // height; `Level8::new` checked that `texels` holds width * height * 4 bytes, so each
-        // 4-byte read at byte offset idx * 4 lies inside it. Gathers need no alignment.
-        let texels = unsafe { _mm256_i32gather_epi32::<4>(lvl.texels.as_ptr() as *const i32, idx) };
+        let base_ptr = match &lvl.tiny {
+            Some(t) => t.as_ptr(),
+            None => lvl.texels.as_ptr(),
+        };
+        let texels = if lvl.components == 4 {
+            // SAFETY: wrapping keeps 0 <= x < width and 0 <= y < height, so 0 <= idx < width *
+            // height; `Level8::new` checked that `texels` holds width * height * 4 bytes, so
+            // each 4-byte read at byte offset idx * 4 lies inside it. Gathers need no
+            // alignment.
+            unsafe { _mm256_i32gather_epi32::<4>(base_ptr as *const i32, idx) }
+        } else {
+            // A texel of c < 4 bytes at byte b is read as the four bytes ending at b + c (or
+            // starting at 0), then shifted down so that its first byte is the low byte.
+            let c = _mm256_set1_epi32(lvl.components);
+            let b = _mm256_mullo_epi32(idx, c);
+            let start = _mm256_max_epi32(
+                _mm256_sub_epi32(_mm256_add_epi32(b, c), _mm256_set1_epi32(4)),
+                _mm256_setzero_si256(),
+            );
+            let shift = _mm256_slli_epi32::<3>(_mm256_sub_epi32(b, start));
+            // SAFETY: 0 <= idx < width * height as above, so b + c <= width * height * c,
+            // which `Level8::new` checked is at most the length of `texels`; or, for levels
+            // of fewer than four bytes, start is 0 and the read covers `tiny`'s four bytes.
+            // So each 4-byte read at byte offset `start` = max(b + c - 4, 0) lies inside the
+            // buffer read.
+            let words = unsafe { _mm256_i32gather_epi32::<1>(base_ptr as *const i32, start) };
+            _mm256_srlv_epi32(words, shift)
+        };
         let byte = _mm256_set1_epi32(0xFF);
         let k = _mm256_set1_ps(1.0 / 255.0);
         let ch = |v: __m256i| _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k);
-        [
-            ch(texels),
-            ch(_mm256_srli_epi32::<8>(texels)),
-            ch(_mm256_srli_epi32::<16>(texels)),
-            ch(_mm256_srli_epi32::<24>(texels)),
-        ]
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        match lvl.base {
+            BaseFormat::Rgba => [
+                ch(texels),
+                ch(_mm256_srli_epi32::<8>(texels)),
+                ch(_mm256_srli_epi32::<16>(texels)),
+                ch(_mm256_srli_epi32::<24>(texels)),
+            ],
+            BaseFormat::Rgb => [
+                ch(texels),
+                ch(_mm256_srli_epi32::<8>(texels)),
+                ch(_mm256_srli_epi32::<16>(texels)),
+                one,
+            ],
+            BaseFormat::LuminanceAlpha => {
+                let l = ch(texels);
+                [l, l, l, ch(_mm256_srli_epi32::<8>(texels))]
+            }
+            BaseFormat::Intensity => {
+                let i = ch(texels);
+                [i, i, i, i]
+            }
+            BaseFormat::Alpha => [zero, zero, zero, ch(texels)],
+            _ => {
+                let l = ch(texels);
+                [l, l, l, one]
+            }
+        }
     }
 
     #[target_feature(enable = "avx2")]
@@ -311,6 +395,8 @@ mod x86 {
             color[c] = if tail.modulate {
                 let cf = _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one);
                 _mm256_mul_ps(cf, ct)
+            } else if c == 3 && tail.alpha_from_primary {
+                _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one)
             } else {
                 ct
             };
@@ -344,15 +430,23 @@ mod x86 {
         for c in 0..4 {
             src[c] = to_u8(color[c]);
         }
-        let out: [__m256i; 4] = if tail.blend_over {
-            let k = _mm256_set1_ps(255.0);
-            let byte = _mm256_set1_epi32(0xFF);
-            let d = [
-                old,
-                _mm256_srli_epi32::<8>(old),
-                _mm256_srli_epi32::<16>(old),
-                _mm256_srli_epi32::<24>(old),
-            ];
+        let k = _mm256_set1_ps(255.0);
+        let byte = _mm256_set1_epi32(0xFF);
+        let d = [
+            old,
+            _mm256_srli_epi32::<8>(old),
+            _mm256_srli_epi32::<16>(old),
+            _mm256_srli_epi32::<24>(old),
+        ];
+        let out: [__m256i; 4] = if tail.blend == super::TailBlend::AddOneOne {
+            let mut out = [_mm256_setzero_si256(); 4];
+            for c in 0..4 {
+                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
+                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
+                out[c] = to_u8(_mm256_add_ps(s, d));
+            }
+            out
+        } else if tail.blend == super::TailBlend::AlphaOver {
             let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
             let inv = _mm256_sub_ps(one, sa);
             let mut out = [_mm256_setzero_si256(); 4];
