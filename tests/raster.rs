@@ -709,3 +709,182 @@ fn get_converts_types_per_section_6_1_2() {
     gl.get_doublev(GL_TRANSPOSE_MODELVIEW_MATRIX, &mut m);
     assert_eq!([m[3], m[7], m[11]], [1.0, 2.0, 3.0]);
 }
+
+/// One random texture of `format` (`w` x `h`, unsigned bytes) bound to the active unit.
+fn random_texture(gl: &mut Context, rng: &mut Rng, format: GLenum, w: i32, h: i32) {
+    let comps = match format {
+        GL_RGBA => 4,
+        GL_RGB => 3,
+        GL_LUMINANCE_ALPHA => 2,
+        _ => 1,
+    };
+    let texels: Vec<u8> = (0..w * h * comps)
+        .map(|_| (rng.next_u64() >> 56) as u8)
+        .collect();
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_2D, name[0]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        format as i32,
+        w,
+        h,
+        0,
+        // INTENSITY is an internal format only; its pixels arrive as luminance.
+        if format == GL_INTENSITY {
+            GL_LUMINANCE
+        } else {
+            format
+        },
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.enable(GL_TEXTURE_2D);
+}
+
+#[test]
+fn sampled_units_match_the_general_path() {
+    // (unit 0 format, filter, wrap; unit 1 format, filter, wrap; fog; stencil): two units
+    // through GL_COMBINE, every one-byte base format, affine and perspective primitives; the
+    // eight-pixel sampler must give the general path's pictures bit for bit.
+    let cases = [
+        (
+            GL_RGBA,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPEAT,
+            GL_LUMINANCE,
+            GL_LINEAR,
+            GL_CLAMP_TO_EDGE,
+            false,
+            false,
+        ),
+        (
+            GL_RGB,
+            GL_NEAREST_MIPMAP_LINEAR,
+            GL_CLAMP_TO_EDGE,
+            GL_LUMINANCE_ALPHA,
+            GL_LINEAR_MIPMAP_NEAREST,
+            GL_REPEAT,
+            true,
+            false,
+        ),
+        (
+            GL_RGBA,
+            GL_LINEAR,
+            GL_REPEAT,
+            GL_INTENSITY,
+            GL_NEAREST,
+            GL_REPEAT,
+            false,
+            true,
+        ),
+        (
+            GL_LUMINANCE,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPEAT,
+            GL_ALPHA,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_CLAMP_TO_EDGE,
+            true,
+            true,
+        ),
+        // Not eligible (mirrored repeat on unit 1, NPOT repeat): one by one on both paths.
+        (
+            GL_RGBA,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPEAT,
+            GL_RGB,
+            GL_LINEAR,
+            GL_MIRRORED_REPEAT,
+            false,
+            false,
+        ),
+    ];
+    for (i, &(f0, min0, wrap0, f1, min1, wrap1, fog, stencil)) in cases.iter().enumerate() {
+        let render = |general: bool| {
+            let mut gl = Context::new(96, 96);
+            gl.set_force_general_path(general);
+            let mut rng = Rng(0x5A3D + i as u64);
+            gl.active_texture(GL_TEXTURE0);
+            random_texture(&mut gl, &mut rng, f0, 64, 32);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min0 as i32);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap0 as i32);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap0 as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+            gl.active_texture(GL_TEXTURE1);
+            let size = if i == 4 { 12 } else { 16 };
+            random_texture(&mut gl, &mut rng, f1, size, 16);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min1 as i32);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap1 as i32);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap1 as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE as i32);
+            gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_ADD as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE as i32);
+            if fog {
+                gl.enable(GL_FOG);
+                gl.fogi(GL_FOG_MODE, GL_EXP as i32);
+                gl.fogf(GL_FOG_DENSITY, 0.2);
+            }
+            if stencil {
+                gl.enable(GL_STENCIL_TEST);
+                gl.stencil_func(GL_ALWAYS, 1, 0xFF);
+                gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
+            }
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_DEPTH_TEST);
+            gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            gl.matrix_mode(GL_PROJECTION);
+            gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
+            gl.matrix_mode(GL_MODELVIEW);
+            gl.begin(GL_TRIANGLES);
+            for _ in 0..80 {
+                let c = [
+                    rng.range(-4.0, 4.0),
+                    rng.range(-4.0, 4.0),
+                    rng.range(-25.0, -1.5),
+                ];
+                for _ in 0..3 {
+                    gl.color_4f(
+                        rng.range(0.0, 1.0),
+                        rng.range(0.0, 1.0),
+                        1.0,
+                        rng.range(0.3, 1.0),
+                    );
+                    let st = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)];
+                    gl.multi_tex_coord_2f(GL_TEXTURE0, st[0], st[1]);
+                    gl.multi_tex_coord_4f(GL_TEXTURE1, st[1], st[0], 0.0, rng.range(0.5, 2.0));
+                    gl.vertex_3f(
+                        c[0] + rng.range(-3.0, 3.0),
+                        c[1] + rng.range(-3.0, 3.0),
+                        c[2] + rng.range(-2.0, 2.0),
+                    );
+                }
+            }
+            gl.end();
+            // A huge coordinate takes the one-by-one fallback inside the sampled path.
+            gl.begin(GL_TRIANGLES);
+            gl.multi_tex_coord_2f(GL_TEXTURE0, 3e9, 0.0);
+            gl.vertex_3f(-2.0, -2.0, -3.0);
+            gl.multi_tex_coord_2f(GL_TEXTURE0, 0.0, 1.0);
+            gl.vertex_3f(2.0, -2.0, -3.0);
+            gl.vertex_3f(0.0, 2.0, -3.0);
+            gl.end();
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+            read_rgba(&mut gl)
+        };
+        let (general, sampled) = (render(true), render(false));
+        let differ = general.iter().zip(&sampled).filter(|(a, b)| a != b).count();
+        assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
+        let distinct: std::collections::HashSet<_> = general.iter().collect();
+        assert!(distinct.len() > 100, "case {i}: the scene draws too little");
+    }
+}

@@ -3,10 +3,11 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, span_general, span_nothing, span_specialised, span_textured, tex_mode,
-    SpanFn,
+    blend_mode, depth_mode, span_general, span_nothing, span_sampled, span_specialised,
+    span_textured, tex_mode, SpanFn,
 };
 use crate::api::convert::CompareFunc;
+use crate::texture::simd;
 
 /// The span function for `key`; `force_general` always answers the general path.
 pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
@@ -24,6 +25,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         }
     }
     if !key.is_simple() {
+        if key.simd_units && simd::available() {
+            return span_sampled;
+        }
         return span_general;
     }
     let full = key.color_mask == [true; 4];

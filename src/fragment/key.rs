@@ -59,6 +59,9 @@ pub struct FragmentKey {
     /// (`BoundTexture::fast_2d`) under a `REPLACE` or `MODULATE` environment, with texels of
     /// this base format.
     pub fast_texture: Option<FastTexture>,
+    /// Every texture unit may be sampled eight pixels at a time
+    /// (`BoundTexture::simd_2d`): the general path's `span_sampled` form applies.
+    pub simd_units: bool,
     /// Fog, after the colour sum (parameters in the `DrawState`).
     pub fog: Option<FogMode>,
     /// An occlusion query is active: count the fragments that pass the depth and stencil
@@ -138,6 +141,7 @@ impl FragmentKey {
             color_sum,
             texturing: false,
             fast_texture: None,
+            simd_units: false,
             fog: None,
             count_samples: false,
         }

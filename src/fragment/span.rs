@@ -11,6 +11,7 @@ use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
 use crate::state::snapshot::{attr, TextureUnitDraw};
+use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::sample::{FastLevel, LevelPlan};
 use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
@@ -107,8 +108,11 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
 /// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
 /// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
 /// by `DEPTH` and the colour mask by `FULL_MASK`.
+///
+/// `SAMPLED` samples every texture unit eight pixels at a time ([`Perspective8`]) ahead of
+/// the per-fragment environment; the key must have `simd_units`.
 #[inline(always)]
-fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
+fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool, const SAMPLED: bool>(
     ds: &DrawState,
     tile: &mut Tile,
     y: i32,
@@ -138,11 +142,37 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool>(
         attr[c] = it.attrs[c].at(xc0, yc) as f32;
         dattr[c] = it.attrs[c].a as f32;
     }
+    // The sampled path: per unit, its eight-pixel sampler and the texels of the current
+    // group of eight pixels (groups start on even columns, as quads do).
+    let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
+    let mut group_texels = [[[0f32; 8]; 4]; MAX_TEXTURE_UNITS];
+    let group0 = x0 & !1;
+    if SAMPLED {
+        for (slot, u) in samplers.iter_mut().zip(&ds.units) {
+            *slot = Perspective8::new(u, it, y);
+        }
+    }
     for i in 0..n {
         let idx = row + i;
         let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
         let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
-        if !SIMPLE && key.texturing {
+        if SAMPLED && key.texturing {
+            let x = x0 + i as i32;
+            let lane = ((x - group0) % 8) as usize;
+            if lane == 0 || i == 0 {
+                let gx = x - lane as i32;
+                let live = ((1u32 << ((x1 - gx).min(8) as u32)) - (1u32 << lane)) as u8;
+                for (k, u) in ds.units.iter().enumerate() {
+                    group_texels[k] = sampled_texels(samplers[k].as_mut(), u, it, gx, yc, live);
+                }
+            }
+            let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+            for (k, u) in ds.units.iter().enumerate() {
+                let t = &group_texels[k];
+                texels[u.unit] = Some([t[0][lane], t[1][lane], t[2][lane], t[3][lane]]);
+            }
+            color = environment(ds, color, &texels);
+        } else if !SIMPLE && key.texturing {
             color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
         }
         if !SIMPLE && key.color_sum {
@@ -307,7 +337,7 @@ fn shade_textured<
     {
         if let Some(f) = &fast {
             let sampling = f.sampling8(it);
-            let perspective = if sampling.is_none() && f.affine.is_none() {
+            let mut perspective = if sampling.is_none() && f.affine.is_none() {
                 Perspective8::new(f.unit, it, y)
             } else {
                 None
@@ -390,7 +420,7 @@ fn shade_textured<
                     }
                     let live = ((1u32 << hi) - (1u32 << lo)) as u8;
                     // `shade8` always answers: AVX2 was detected above.
-                    let shaded = match (&sampling, &perspective) {
+                    let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => simd::textured8(sm, x, hi, &tail, &primary, &dst, pass),
                         (None, Some(p)) => p
                             .texels(x, live)
@@ -597,16 +627,56 @@ fn texture_fragment(
     y: f64,
     primary: [f32; 4],
 ) -> [f32; 4] {
-    let primary = primary.map(|c| c.max(0.0).min(1.0));
-    let mut texels: [Option<[f32; 4]>; 8] = [None; 8];
+    let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
     for u in &ds.units {
-        let (c, dx, dy) = unit_coords(it, attr::TEX + 4 * u.unit, x, y);
-        texels[u.unit] = Some(u.texture.sample_grad(c, dx, dy, u.env.lod_bias));
+        texels[u.unit] = Some(unit_texel(u, it, x, y));
     }
-    let inputs = CombineInputs {
-        primary,
-        texels: &texels,
-    };
+    environment(ds, primary, &texels)
+}
+
+/// The texel of unit `u` at the pixel centred at (x, y), as the general path samples it.
+#[inline(always)]
+fn unit_texel(u: &TextureUnitDraw, it: &Interpolants, x: f64, y: f64) -> [f32; 4] {
+    let (c, dx, dy) = unit_coords(it, attr::TEX + 4 * u.unit, x, y);
+    u.texture.sample_grad(c, dx, dy, u.env.lod_bias)
+}
+
+/// The eight texels of unit `u` for the pixels centred at `gx + j + 0.5` on row `yc` (`gx`
+/// even; lanes whose bit is clear in `live` are not needed): from its eight-pixel sampler, or
+/// one by one as the general path samples them.
+fn sampled_texels(
+    sampler: Option<&mut Perspective8>,
+    u: &TextureUnitDraw,
+    it: &Interpolants,
+    gx: i32,
+    yc: f64,
+    live: u8,
+) -> Texels8 {
+    let x = gx as f64 + 0.5;
+    if let Some(t) = sampler.and_then(|p| p.texels(x, live)) {
+        return t;
+    }
+    let mut out = [[0f32; 8]; 4];
+    for j in 0..8 {
+        if live & (1 << j) != 0 {
+            let t = unit_texel(u, it, x + j as f64, yc);
+            for c in 0..4 {
+                out[c][j] = t[c];
+            }
+        }
+    }
+    out
+}
+
+/// The texture environment cascade on the primary colour, given each unit's texel.
+#[inline(never)]
+fn environment(
+    ds: &DrawState,
+    primary: [f32; 4],
+    texels: &[Option<[f32; 4]>; MAX_TEXTURE_UNITS],
+) -> [f32; 4] {
+    let primary = primary.map(|c| c.max(0.0).min(1.0));
+    let inputs = CombineInputs { primary, texels };
     let mut color = primary;
     for u in &ds.units {
         let ct = texels[u.unit].unwrap_or([0.0; 4]);
@@ -889,8 +959,8 @@ impl<'a> FastUnit<'a> {
 const MAX_FAST_LEVELS: usize = 17;
 
 /// One RGBA8 unit over one row of a perspective span, eight pixels at a time with AVX2: the
-/// s, t and q planes on the pixel's row and on the other row of its 2x2 quads, and every
-/// level prepared for [`simd::filter8`]. Texels equal those of [`FastUnit::texel`] (the
+/// s, t and q planes on the pixel's row and on the other row of its 2x2 quads, and the
+/// levels prepared for [`simd::filter8`] (on first use). Texels equal those of [`FastUnit::texel`] (the
 /// general path): the same coordinates, the same per-quad derivatives, λ and level plan
 /// (computed per quad by the sampler's own functions), the same filter arithmetic.
 struct Perspective8<'a> {
@@ -914,29 +984,39 @@ impl<'a> Perspective8<'a> {
         if count == 0 || count > MAX_FAST_LEVELS {
             return None;
         }
-        let wrap = tex.wrap_st();
-        let mut levels = [None; MAX_FAST_LEVELS];
-        for (l, slot) in levels.iter_mut().enumerate().take(count) {
-            *slot = Some(Level8::new(&tex.fast_level(l)?, wrap, tex.base_format())?);
-        }
         let yc = y as f64 + 0.5;
         let own_is_upper = quad_origin(yc) != yc;
         let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
         let base = attr::TEX + 4 * unit.unit;
         let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
         let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
-        Some(Perspective8 {
+        let mut p = Perspective8 {
             unit,
             planes: [row(yc), row(other)],
             own_is_upper,
-            levels,
-        })
+            levels: [None; MAX_FAST_LEVELS],
+        };
+        // A texture whose base level does not take the filter is sampled one by one.
+        p.level(0)?;
+        Some(p)
+    }
+
+    /// Level `l` prepared for the eight-pixel filter (on first use), or `None` when it does not
+    /// take it.
+    fn level(&mut self, l: usize) -> Option<Level8<'a>> {
+        if let Some(lv) = self.levels.get(l)? {
+            return Some(*lv);
+        }
+        let tex = &self.unit.texture;
+        let lv = Level8::new(&tex.fast_level(l)?, tex.wrap_st(), tex.base_format())?;
+        self.levels[l] = Some(lv);
+        Some(lv)
     }
 
     /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
     /// 2k + 1 form a quad's row); only lanes whose bit is set in `live` matter. `None` when a
     /// coordinate is beyond the filter's range (the caller samples one by one).
-    fn texels(&self, x: f64, live: u8) -> Option<Texels8> {
+    fn texels(&mut self, x: f64, live: u8) -> Option<Texels8> {
         let tex = &self.unit.texture;
         let rows = simd::perspective_rows8(&self.planes, x)?;
         let (upper, lower) = if self.own_is_upper {
@@ -999,11 +1079,11 @@ impl<'a> Perspective8<'a> {
             }
             lanes &= !done;
             done |= lanes;
-            let t1 = simd::filter8(self.levels[d1].as_ref()?, linear, &s, &t)?;
+            let t1 = simd::filter8(&self.level(d1)?, linear, &s, &t)?;
             let texels = if d2 == d1 {
                 t1
             } else {
-                let t2 = simd::filter8(self.levels[d2].as_ref()?, linear, &s, &t)?;
+                let t2 = simd::filter8(&self.level(d2)?, linear, &s, &t)?;
                 let mut mixed = [[0f32; 8]; 4];
                 for c in 0..4 {
                     for j in 0..8 {
@@ -1043,7 +1123,20 @@ pub fn span_general<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<{ depth_mode::DYNAMIC }, false, false>(ds, tile, y, x0, x1, it)
+    shade::<{ depth_mode::DYNAMIC }, false, false, false>(ds, tile, y, x0, x1, it)
+}
+
+/// The general path with every texture unit sampled eight pixels at a time (keys with
+/// `simd_units`): the same texels, hence the same pictures.
+pub fn span_sampled<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<{ depth_mode::DYNAMIC }, false, false, true>(ds, tile, y, x0, x1, it)
 }
 
 /// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
@@ -1070,7 +1163,7 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<DEPTH, FULL_MASK, true>(ds, tile, y, x0, x1, it)
+    shade::<DEPTH, FULL_MASK, true, false>(ds, tile, y, x0, x1, it)
 }
 
 /// Draws nothing (a key whose fragments change no buffer).

@@ -290,6 +290,7 @@ impl Context {
             }
             _ => None,
         };
+        key.simd_units = !units.is_empty() && units.iter().all(|u| u.texture.simd_2d());
         key.fog = fog.map(|f| f.mode);
         key.count_samples = self.queries.active.is_some();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
