@@ -888,3 +888,104 @@ fn sampled_units_match_the_general_path() {
         assert!(distinct.len() > 100, "case {i}: the scene draws too little");
     }
 }
+
+/// Scenes long enough to be shaded in the background while the next part is recorded (more
+/// than `BACKGROUND_COMMANDS` triangles, several times over), with texture edits, blending
+/// changes and a read-back in between: the pictures and depth must equal those of one
+/// synchronous worker, bit for bit, and later edits must not reach earlier draws.
+#[test]
+fn background_shading_changes_nothing() {
+    let per_part = tilegl::raster::schedule::BACKGROUND_COMMANDS + 700;
+    let render = |threads| {
+        let mut gl = Context::with_config(ContextConfig {
+            width: 160,
+            height: 120,
+            threads,
+            ..ContextConfig::default()
+        });
+        let mut rng = Rng(0xB6);
+        let mut name = [0u32];
+        gl.gen_textures(1, &mut name);
+        gl.bind_texture(GL_TEXTURE_2D, name[0]);
+        let texels: Vec<u8> = (0..16 * 16 * 4).map(|i| (i * 37 % 251) as u8).collect();
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA as i32,
+            16,
+            16,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&texels),
+        );
+        gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+        gl.enable(GL_DEPTH_TEST);
+        gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        window_ortho(&mut gl);
+        let mut mid = Vec::new();
+        for part in 0..3 {
+            match part {
+                1 => {
+                    gl.enable(GL_TEXTURE_2D);
+                    gl.enable(GL_BLEND);
+                    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                }
+                2 => {
+                    // Edits after recorded draws: the draws keep what they were given.
+                    gl.tex_sub_image_2d(
+                        GL_TEXTURE_2D,
+                        0,
+                        0,
+                        0,
+                        2,
+                        2,
+                        GL_RGBA,
+                        GL_UNSIGNED_BYTE,
+                        Some(&[255u8; 16]),
+                    );
+                    gl.blend_func(GL_ONE, GL_ONE);
+                }
+                _ => {}
+            }
+            gl.begin(GL_TRIANGLES);
+            for _ in 0..per_part {
+                gl.color_4f(
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                    0.5,
+                );
+                let (cx, cy) = (rng.range(-5.0, 165.0), rng.range(-5.0, 125.0));
+                for _ in 0..3 {
+                    gl.tex_coord_2f(rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+                    gl.vertex_3f(
+                        cx + rng.range(-6.0, 6.0),
+                        cy + rng.range(-6.0, 6.0),
+                        rng.range(-0.9, 0.9),
+                    );
+                }
+            }
+            gl.end();
+            if part == 1 {
+                mid = read_rgba(&mut gl);
+            }
+        }
+        let mut depth = vec![0u8; 160 * 120 * 4];
+        gl.read_pixels(
+            0,
+            0,
+            160,
+            120,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT,
+            &mut depth,
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        (mid, read_rgba(&mut gl), depth)
+    };
+    let one = render(1);
+    assert_eq!(one, render(2));
+    assert_eq!(one, render(8));
+    assert_ne!(one.0, one.1, "the last part drew nothing");
+}

@@ -10,10 +10,85 @@ use crate::fragment::span::Interpolants;
 use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
 
+/// Recorded commands after which a draw hands the scene to the shading workers and goes on
+/// recording the next one (see [`Context::flush_in_background`]).
+pub const BACKGROUND_COMMANDS: usize = 1 << 12;
+
+/// A scene being shaded by the workers while the caller's thread records the next one: it
+/// owns the framebuffer's tiles until it sends them back with the (reset) scene.
+pub(crate) type InFlight = std::sync::mpsc::Receiver<(Scene, Vec<Tile>)>;
+
 impl Context {
+    /// Waits for the scene in the background (if any) and puts the tiles back.
+    pub(crate) fn join_background(&mut self) {
+        let Some(done) = self.in_flight.take() else {
+            return;
+        };
+        match done.recv() {
+            Ok((scene, tiles)) => {
+                self.framebuffer.tiles = tiles;
+                self.spare_scene = Some(scene);
+            }
+            // The job cannot drop its sender without sending (it catches panics); should it
+            // ever, the pixels are lost but the framebuffer stays usable.
+            Err(_) => {
+                let (w, h, config) = (
+                    self.framebuffer.width,
+                    self.framebuffer.height,
+                    self.framebuffer.config,
+                );
+                self.framebuffer = crate::framebuffer::Framebuffer::new(w, h, config);
+                self.apply_buffer_selection();
+            }
+        }
+    }
+
+    /// When the scene has grown past [`BACKGROUND_COMMANDS`] and several workers shade, hands
+    /// it to them and starts a new one, so that the caller's thread (vertex processing,
+    /// clipping, binning) and the tile shading overlap. Scenes still execute one after the
+    /// other and each tile replays its bins in order, so pictures do not change. A single
+    /// worker (`threads` = 1) keeps flushing synchronously, so "one thread" means one.
+    pub(crate) fn flush_in_background(&mut self) {
+        if self.scene.commands.len() < BACKGROUND_COMMANDS {
+            return;
+        }
+        let workers = match &self.pool {
+            Some(p) => p.current_num_threads(),
+            None => rayon::current_num_threads(),
+        };
+        let DrawTarget::One(buffer) = self.framebuffer.draw else {
+            return;
+        };
+        if workers < 2 {
+            return;
+        }
+        self.join_background();
+        self.framebuffer.make_resident(buffer);
+        let mut tiles = std::mem::take(&mut self.framebuffer.tiles);
+        let next = match self.spare_scene.take() {
+            Some(s) => s,
+            None => Scene::new(&self.framebuffer),
+        };
+        let mut scene = std::mem::replace(&mut self.scene, next);
+        let (send, done) = std::sync::mpsc::channel();
+        let job = move || {
+            let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                shade_all(&scene, &mut tiles)
+            }));
+            scene.reset();
+            let _ = send.send((scene, tiles));
+        };
+        match &self.pool {
+            Some(p) => p.spawn(job),
+            None => rayon::spawn(job),
+        }
+        self.in_flight = Some(done);
+    }
+
     /// Executes all recorded work. Called at every flush point (`glFinish`, `glFlush`,
     /// `glReadPixels`, framebuffer access, scene memory cap).
     pub(crate) fn flush_scene(&mut self) {
+        self.join_background();
         if self.scene.is_empty() {
             return;
         }

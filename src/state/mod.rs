@@ -121,6 +121,10 @@ pub struct Context {
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
     pub(crate) draw_state: Option<Arc<DrawState>>,
     pub(crate) pool: Option<rayon::ThreadPool>,
+    /// The scene the workers are shading in the background, if any (it holds the tiles).
+    pub(crate) in_flight: Option<crate::raster::schedule::InFlight>,
+    /// A reset scene to record into after the next background hand-off.
+    pub(crate) spare_scene: Option<Scene>,
     /// Strings handed out through the C ABI (`glGetString`), kept alive with the context.
     strings: HashMap<String, CString>,
     /// Set by `glFlush`/`glFinish`: the front end should show the finished picture.
@@ -208,6 +212,8 @@ impl Context {
             buffers: buffers::BufferSelection::new(config.framebuffer.double_buffer),
             framebuffer,
             scene,
+            in_flight: None,
+            spare_scene: None,
             draw_state: None,
             pool,
             strings: HashMap::new(),
@@ -235,6 +241,7 @@ impl Context {
         self.framebuffer = Framebuffer::new(width, height, self.framebuffer.config);
         self.apply_buffer_selection();
         self.scene = Scene::new(&self.framebuffer);
+        self.spare_scene = None;
         self.draw_state = None;
     }
 

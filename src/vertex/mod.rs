@@ -91,6 +91,7 @@ impl Context {
             if self.scene.is_full() {
                 self.flush_scene();
             }
+            self.flush_in_background();
             let state = self.scene.add_state(ds);
             match prim {
                 Primitive::Point(i) => {
