@@ -20,8 +20,8 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
         "the flat-shaded Utah teapot of glEvalMesh2(GL_FILL): tilegl draws the quad strips the \
          specification defines, Mesa draws triangle strips, so its flat colours change per \
          triangle (1.7-1.9 % of pixels off, all on the teapot; drawing triangle strips \
-         instead matches, min 55.8 dB); glPushAttrib/glPopAttrib (GL_ENABLE_BIT | \
-         GL_EVAL_BIT) are also missing, which this picture does not show",
+         instead matches, min 55.8 dB, but gives two flat colours per quad, which the \
+         specification's quad strip does not allow)",
     ),
     (
         "xss-stonerview",

@@ -969,6 +969,8 @@ struct Perspective8<'a> {
     planes: [[[f64; 3]; 3]; 2],
     /// Whether the pixel's row is the upper row of its quads.
     own_is_upper: bool,
+    /// The level and filter when they do not depend on λ (which is then not computed).
+    fixed_plan: Option<(usize, bool)>,
     levels: [Option<Level8<'a>>; MAX_FAST_LEVELS],
 }
 
@@ -994,6 +996,10 @@ impl<'a> Perspective8<'a> {
             unit,
             planes: [row(yc), row(other)],
             own_is_upper,
+            fixed_plan: match tex.plan_without_lambda() {
+                Some(LevelPlan::One { level, linear }) => Some((level, linear)),
+                _ => None,
+            },
             levels: [None; MAX_FAST_LEVELS],
         };
         // A texture whose base level does not take the filter is sampled one by one.
@@ -1034,7 +1040,12 @@ impl<'a> Perspective8<'a> {
         // Per quad: the level plan; per lane: its first level, second level and weight.
         let mut plan = [(0usize, 0usize, false); 4];
         let mut weight = [0f32; 8];
+        let fixed = self.fixed_plan;
         for (k, pl) in plan.iter_mut().enumerate() {
+            if let Some((level, linear)) = fixed {
+                *pl = (level, level, linear);
+                continue;
+            }
             if live & (3 << (2 * k)) == 0 {
                 continue;
             }

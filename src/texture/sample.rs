@@ -446,6 +446,24 @@ impl BoundTexture {
         self.plan_for(lambda, self.level_count().saturating_sub(1))
     }
 
+    /// The level plan when it does not depend on λ (no mipmapping, and the same filter for
+    /// magnification and minification), so that λ need not be computed.
+    pub fn plan_without_lambda(&self) -> Option<LevelPlan> {
+        let p = &self.inner.params;
+        let mag_linear = p.mag_filter == MagFilter::Linear;
+        match p.min_filter {
+            MinFilter::Nearest if !mag_linear => Some(LevelPlan::One {
+                level: 0,
+                linear: false,
+            }),
+            MinFilter::Linear if mag_linear => Some(LevelPlan::One {
+                level: 0,
+                linear: true,
+            }),
+            _ => None,
+        }
+    }
+
     /// [`BoundTexture::level_plan`] for a chain whose last level is `q`.
     #[inline]
     fn plan_for(&self, lambda: f32, q: usize) -> LevelPlan {
