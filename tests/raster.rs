@@ -802,6 +802,28 @@ fn sampled_units_match_the_general_path() {
             false,
             false,
         ),
+        // The eight-fragment tail (no fog, no stencil) with additive blending, with no
+        // blending and the alpha test.
+        (
+            GL_RGB,
+            GL_LINEAR_MIPMAP_NEAREST,
+            GL_REPEAT,
+            GL_LUMINANCE,
+            GL_LINEAR,
+            GL_CLAMP_TO_EDGE,
+            false,
+            false,
+        ),
+        (
+            GL_LUMINANCE_ALPHA,
+            GL_NEAREST,
+            GL_CLAMP_TO_EDGE,
+            GL_RGBA,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPEAT,
+            false,
+            false,
+        ),
     ];
     for (i, &(f0, min0, wrap0, f1, min1, wrap1, fog, stencil)) in cases.iter().enumerate() {
         let render = |general: bool| {
@@ -825,7 +847,8 @@ fn sampled_units_match_the_general_path() {
             gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS as i32);
             gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE as i32);
             gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, 2.0);
-            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_ADD as i32);
+            let alpha_fn = if i >= 5 { GL_MODULATE } else { GL_ADD };
+            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, alpha_fn as i32);
             gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS as i32);
             gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE as i32);
             if fog {
@@ -838,8 +861,22 @@ fn sampled_units_match_the_general_path() {
                 gl.stencil_func(GL_ALWAYS, 1, 0xFF);
                 gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
             }
-            gl.enable(GL_BLEND);
-            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            // Blending "over", additive, none; the alpha test on every other case.
+            match i % 3 {
+                0 => {
+                    gl.enable(GL_BLEND);
+                    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                }
+                1 => {
+                    gl.enable(GL_BLEND);
+                    gl.blend_func(GL_ONE, GL_ONE);
+                }
+                _ => {}
+            }
+            if i % 2 == 1 || i >= 5 {
+                gl.enable(GL_ALPHA_TEST);
+                gl.alpha_func(GL_GEQUAL, 0.4);
+            }
             gl.enable(GL_DEPTH_TEST);
             gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
             gl.matrix_mode(GL_PROJECTION);

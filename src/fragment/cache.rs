@@ -3,8 +3,8 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, span_general, span_nothing, span_sampled, span_specialised,
-    span_textured, tex_mode, SpanFn,
+    blend_mode, depth_mode, sampled8_applies, span_general, span_nothing, span_sampled,
+    span_sampled8, span_specialised, span_textured, tex_mode, SpanFn,
 };
 use crate::api::convert::CompareFunc;
 use crate::texture::simd;
@@ -25,6 +25,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         }
     }
     if !key.is_simple() {
+        if sampled8_applies(key) {
+            return span_sampled8;
+        }
         if key.simd_units && simd::available() {
             return span_sampled;
         }

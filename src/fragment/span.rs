@@ -5,7 +5,7 @@
 use std::cell::Cell;
 
 use super::blend::{blend, blend_alpha_over};
-use super::key::Uniforms;
+use super::key::{FragmentKey, Uniforms};
 use super::texenv::{self, CombineInputs};
 use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
 use crate::framebuffer::Tile;
@@ -1179,3 +1179,120 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
 
 /// Draws nothing (a key whose fragments change no buffer).
 pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
+
+/// Whether [`span_sampled8`] may shade a key: every unit takes the eight-pixel sampler
+/// (`simd_units`), and after the texture environment only the alpha test, the depth test,
+/// blending that [`Tail8`] knows and the colour mask apply.
+pub fn sampled8_applies(key: &FragmentKey) -> bool {
+    key.simd_units
+        && key.stencil.is_none()
+        && key.logic_op.is_none()
+        && !key.color_sum
+        && key.fog.is_none()
+        && !key.count_samples
+        && key
+            .blend
+            .is_none_or(|b| b.is_alpha_over() || b.is_add_one_one())
+        && simd::available()
+}
+
+/// Textured spans eight pixels at a time for keys with [`sampled8_applies`]: every unit
+/// sampled by its eight-pixel sampler, the environment cascade per pixel, then the alpha test,
+/// blending and colour mask of eight fragments at once ([`simd::shade8`] with the environment's
+/// result as a replacing texel). The same arithmetic as the general path, so the same pixels.
+pub fn span_sampled8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    let key = &ds.key;
+    let u = &ds.uniforms;
+    let yc = y as f64 + 0.5;
+    let row = tile.index(x0, y);
+    let xc0 = x0 as f64 + 0.5;
+    let mut z = it.z.at(xc0, yc);
+    let dz = it.z.a;
+    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
+    let dinv_w = it.inv_w.a as f32;
+    let mut attr = [0f32; 4];
+    let mut dattr = [0f32; 4];
+    for c in 0..4 {
+        attr[c] = it.attrs[c].at(xc0, yc) as f32;
+        dattr[c] = it.attrs[c].a as f32;
+    }
+    if it.coverage != 1.0 {
+        return span_sampled(ds, tile, y, x0, x1, it);
+    }
+    let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
+    for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
+        *slot = Perspective8::new(unit, it, y);
+    }
+    let tail = Tail8 {
+        modulate: false,
+        alpha_from_primary: false,
+        alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
+        blend: match key.blend {
+            None => simd::TailBlend::None,
+            Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
+            Some(_) => simd::TailBlend::AlphaOver,
+        },
+        color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
+    };
+    let mut unit_texels = [[[0f32; 8]; 4]; MAX_TEXTURE_UNITS];
+    let mut gx = x0 & !1;
+    while gx < x1 {
+        let lo = (x0 - gx).max(0) as usize;
+        let hi = ((x1 - gx) as usize).min(8);
+        let live = ((1u32 << hi) - (1u32 << lo)) as u8;
+        let first = (gx - x0) as isize;
+        let base = (row as isize + first) as usize;
+        for (k, unit) in ds.units.iter().enumerate() {
+            unit_texels[k] = sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, live);
+        }
+        let mut color = [[0f32; 8]; 4];
+        let mut depth = [0u32; 8];
+        let mut pass = 0u8;
+        for j in lo..hi {
+            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
+            let primary = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+            let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+            for (k, unit) in ds.units.iter().enumerate() {
+                let t = &unit_texels[k];
+                texels[unit.unit] = Some([t[0][j], t[1][j], t[2][j], t[3][j]]);
+            }
+            let c = environment(ds, primary, &texels);
+            for ch in 0..4 {
+                color[ch][j] = c[ch];
+            }
+            let d = depth_to_fixed(z, ds.depth_max);
+            z += dz;
+            inv_w += dinv_w;
+            for c in 0..4 {
+                attr[c] += dattr[c];
+            }
+            depth[j] = d;
+            let ok = match key.depth_func {
+                None | Some(CompareFunc::Always) => true,
+                Some(func) => func.test(d, tile.depth[base + j]),
+            };
+            pass |= u8::from(ok) << j;
+        }
+        let mut dst = [0u32; 8];
+        for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
+            *d = u32::from_le_bytes(tile.color[base + j]);
+        }
+        // The environment's colour goes in as a replacing texel; the primary is unused.
+        if let Some((words, passed)) = simd::shade8(&tail, &color, &color, &dst, pass) {
+            for j in lo..hi {
+                tile.color[base + j] = words[j].to_le_bytes();
+                if key.depth_write && passed & (1 << j) != 0 {
+                    tile.depth[base + j] = depth[j];
+                }
+            }
+        }
+        gx += 8;
+    }
+}
