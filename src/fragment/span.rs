@@ -1090,6 +1090,7 @@ impl<'a> Perspective8<'a> {
             }
             lanes &= !done;
             done |= lanes;
+            let all = done == 0xFF && lanes == live;
             let t1 = simd::filter8(&self.level(d1)?, linear, &s, &t)?;
             let texels = if d2 == d1 {
                 t1
@@ -1103,6 +1104,10 @@ impl<'a> Perspective8<'a> {
                 }
                 mixed
             };
+            // One plan for every live lane (the usual case): no merging.
+            if all {
+                return Some(texels);
+            }
             for j in 0..8 {
                 if lanes & (1 << j) != 0 {
                     for c in 0..4 {

@@ -299,8 +299,11 @@ impl BoundTexture {
     /// to texels, plus biases, clamped ([`BoundTexture::lambda_from_rho`]).
     #[inline]
     pub fn isotropic_lambda(&self, d_dx: [f32; 3], d_dy: [f32; 3], unit_lod_bias: f32) -> f32 {
-        let (px, py) = (length(self.scaled(d_dx)), length(self.scaled(d_dy)));
-        self.lambda_from_rho(px.max(py), unit_lod_bias)
+        // max(sqrt a, sqrt b) is sqrt(max(a, b)) exactly (sqrt is correctly rounded, hence
+        // monotonic; `max` ignores a NaN either way): one square root.
+        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let (ax, ay) = (sq(self.scaled(d_dx)), sq(self.scaled(d_dy)));
+        self.lambda_from_rho(ax.max(ay).sqrt(), unit_lod_bias)
     }
 
     /// Samples at `coords` (s, t, r already divided by q; for cube maps the direction) with a
