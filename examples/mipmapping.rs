@@ -16,6 +16,16 @@
 //!   so the picture is a map of λ: the bands are where the level changes, and the smooth
 //!   transitions are LINEAR_MIPMAP_LINEAR's blend between two levels.
 //!
+//! - Magnification (`ex_magnify_anisotropic`, top row): a texture smaller than its footprint on
+//!   the screen is *magnified*; `GL_NEAREST` shows the texels as blocks, `GL_LINEAR` blends the
+//!   four nearest texels into a smooth ramp. The magnification filter applies where λ <= 0.
+//! - Anisotropic filtering (bottom row, EXT_texture_filter_anisotropic): at a grazing angle a
+//!   pixel's footprint is long and thin, and trilinear filtering picks the level for the long
+//!   side, so the far plane blurs (left). With `GL_TEXTURE_MAX_ANISOTROPY_EXT` 16 the level is
+//!   chosen for the short side and up to 16 probes are averaged along the long one: the far
+//!   checkerboard stays sharp (right). `tilegl`'s bench `--workload ladder` measures the error
+//!   of each setting against a supersampled reference, and its time.
+//!
 //! Stages: the checkerboard's level 0 and level 2 as `glGetTexImage` returns them.
 //!
 //! Drivers may compute ρ differently (the spec allows an approximation): tilegl, llvmpipe and
@@ -23,7 +33,8 @@
 //! differences are within the measured llvmpipe-vs-softpipe spread (`conformance/TOLERANCE.md`).
 //!
 //! Run: `cargo run --release -p tilegl-conformance --example mipmapping [OUT_DIR]`
-//! (default `out/mipmapping/`). The scenes `ex_mipmap_filters`, `ex_mipmap_levels` (in
+//! (default `out/mipmapping/`). The scenes `ex_mipmap_filters`, `ex_mipmap_levels`,
+//! `ex_magnify_anisotropic` (in
 //! `conformance/src/scenes_examples.rs`) are rendered on tilegl and, where Mesa's OSMesa is
 //! installed, on Mesa. The example writes `tilegl.png`, `mesa.png`, `diff.png` (the difference
 //! x 8) and the intermediate stages (`stageNN-*-tilegl.png`, `stageNN-*-mesa.png`),
@@ -35,6 +46,10 @@
 fn main() {
     tilegl_conformance::example_support::run(
         "mipmapping",
-        &["ex_mipmap_filters", "ex_mipmap_levels"],
+        &[
+            "ex_mipmap_filters",
+            "ex_mipmap_levels",
+            "ex_magnify_anisotropic",
+        ],
     );
 }

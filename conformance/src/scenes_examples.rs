@@ -41,6 +41,20 @@ const MIP_LEVELS: Tolerance = Tolerance {
     max_bad_share: 0.00146,
 };
 
+/// `ex_magnify_anisotropic`: the one documented exception to "no looser than llvmpipe against
+/// softpipe". Three panels (NEAREST and LINEAR magnification, trilinear) agree with Mesa; the
+/// anisotropic panel cannot: EXT_texture_filter_anisotropic leaves the footprint filter to the
+/// implementation, llvmpipe and softpipe share one gallium scheme (so they agree, 0.02 % off),
+/// and tilegl averages up to 16 trilinear probes along the longer axis. Measured: 2.99 % of
+/// the pixels off by more than 24, all in that panel (`--bin calibrate`); the allowance is
+/// 3.5 %. That panel is checked instead against a 4x4-supersampled rendering
+/// (`conformance/tests/differential_examples.rs`
+/// `anisotropic_panel_is_closer_to_the_supersampled_plane_than_trilinear`).
+const MAGNIFY_ANISOTROPIC: Tolerance = Tolerance {
+    channel: 24,
+    max_bad_share: 0.035,
+};
+
 /// The example scenes, in the order of the examples.
 pub const EXAMPLE_SCENES: &[Scene] = &[
     ex(
@@ -51,6 +65,13 @@ pub const EXAMPLE_SCENES: &[Scene] = &[
         MIP_FILTERS,
     ),
     ex("ex_mipmap_levels", ex_mipmap_levels, 128, 128, MIP_LEVELS),
+    ex(
+        "ex_magnify_anisotropic",
+        ex_magnify_anisotropic,
+        256,
+        256,
+        MAGNIFY_ANISOTROPIC,
+    ),
     ex("ex_wrap_modes", ex_wrap_modes, 320, 64, DIFFERENTIAL),
     ex(
         "ex_dxt_compression",
@@ -405,6 +426,66 @@ fn ex_mipmap_filters(gl: &mut dyn Gl) {
         sampling(gl, GL_TEXTURE_2D, min, mag, GL_REPEAT);
         receding_plane(gl);
     }
+}
+
+/// Magnification and anisotropy (2x2 viewports): an 8x8 texture stretched over a close quad
+/// under NEAREST (top left) and LINEAR (top right); the receding plane under
+/// LINEAR_MIPMAP_LINEAR (bottom left) and the same with 16x anisotropic filtering
+/// (EXT_texture_filter_anisotropic, bottom right).
+fn ex_magnify_anisotropic(gl: &mut dyn Gl) {
+    clear_to(gl, [0.3, 0.4, 0.6]);
+    let small = paint(8, 8, 3, |u, v| {
+        let (x, y) = ((u * 8.0) as i32, (v * 8.0) as i32);
+        let k = ((x + y) % 2) as f32;
+        [
+            0.2 + 0.7 * k,
+            0.3 + 0.08 * x as f32,
+            0.9 - 0.1 * y as f32,
+            1.0,
+        ]
+    });
+    tex2d(gl, 8, 8, GL_RGB, &small);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    for (i, filter) in [GL_NEAREST, GL_LINEAR].into_iter().enumerate() {
+        gl.viewport(i as i32 * 128, 128, 128, 128);
+        sampling(gl, GL_TEXTURE_2D, filter, filter, GL_REPEAT);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.load_identity();
+        gl.ortho(0.0, 1.0, 0.0, 1.0, -1.0, 1.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.load_identity();
+        gl.begin(GL_QUADS);
+        // Slightly off the texel grid, so that both filters show their character.
+        for (u, v) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            gl.tex_coord_2f(0.03 + u * 0.97, 0.05 + v * 0.93);
+            gl.vertex_2f(u, v);
+        }
+        gl.end();
+    }
+    for (i, aniso) in [1.0f32, 16.0].into_iter().enumerate() {
+        gl.viewport(i as i32 * 128, 0, 128, 128);
+        receding_checker(gl, aniso);
+    }
+}
+
+/// The receding checkerboard plane of the mipmapping scenes, trilinear with maximum
+/// anisotropy `aniso`, drawn into the current viewport (the anisotropic panel of
+/// `ex_magnify_anisotropic`; also rendered supersampled by the test that checks it).
+pub fn receding_checker(gl: &mut dyn Gl, aniso: f32) {
+    let px = fine_checker(64);
+    tex2d(gl, 64, 64, GL_RGB, &px);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    sampling(
+        gl,
+        GL_TEXTURE_2D,
+        GL_LINEAR_MIPMAP_LINEAR,
+        GL_LINEAR,
+        GL_REPEAT,
+    );
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, aniso);
+    receding_plane(gl);
 }
 
 /// Each mipmap level a different solid colour: the picture shows which level (and, with
