@@ -373,6 +373,7 @@ fn shade_textured<
                         }
                     }
                 }
+                let uses_depth = key.depth_func.is_some() || key.depth_write;
                 // Groups of eight lanes from `gx`; the perspective sampler needs groups that
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
@@ -397,7 +398,12 @@ fn shade_textured<
                             for c in 0..4 {
                                 primary[c][j] = attr[c] * w;
                             }
-                            let d = depth_to_fixed(z, ds.depth_max);
+                            // Without a depth test or depth writes the value is unused.
+                            let d = if uses_depth {
+                                depth_to_fixed(z, ds.depth_max)
+                            } else {
+                                0
+                            };
                             z += dz;
                             inv_w += dinv_w;
                             for c in 0..4 {
@@ -1247,6 +1253,7 @@ pub fn span_sampled8<'a>(
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
     };
     let mut unit_texels = [[[0f32; 8]; 4]; MAX_TEXTURE_UNITS];
+    let uses_depth = key.depth_func.is_some() || key.depth_write;
     let mut gx = x0 & !1;
     while gx < x1 {
         let lo = (x0 - gx).max(0) as usize;
@@ -1272,7 +1279,11 @@ pub fn span_sampled8<'a>(
             for ch in 0..4 {
                 color[ch][j] = c[ch];
             }
-            let d = depth_to_fixed(z, ds.depth_max);
+            let d = if uses_depth {
+                depth_to_fixed(z, ds.depth_max)
+            } else {
+                0
+            };
             z += dz;
             inv_w += dinv_w;
             for c in 0..4 {
