@@ -226,9 +226,17 @@ pub fn bin_triangle(
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
     // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
     // vertex's value (every vertex already carries it), so dividing by 1/w gives it back.
+    // Without the colour sum nothing reads the secondary colour: its planes stay zero.
+    let secondary = if ds.key.color_sum {
+        0..0
+    } else {
+        attr::COLOR1..attr::COLORS
+    };
     let offset = scene.planes.len() as u32;
     scene.planes.extend((0..n).map(|i| {
-        if ds.flat && i < attr::COLORS {
+        if secondary.contains(&i) {
+            Plane::constant(0.0)
+        } else if ds.flat && i < attr::COLORS {
             let c = attrs[0][i] as f64;
             Plane {
                 a: inv_w.a * c,
