@@ -55,15 +55,41 @@ impl Plane {
 
     /// The plane through three (x, y, value) points; `inv_det` is 1 / twice the signed area.
     pub fn through(p: [[f64; 2]; 3], v: [f64; 3], inv_det: f64) -> Plane {
-        let (dx1, dy1) = (p[1][0] - p[0][0], p[1][1] - p[0][1]);
-        let (dx2, dy2) = (p[2][0] - p[0][0], p[2][1] - p[0][1]);
+        PlaneSetup::new(p, inv_det).plane(v)
+    }
+}
+
+/// The part of [`Plane::through`] that depends only on the three points, computed once per
+/// triangle for all its attribute planes (the same arithmetic, so the same planes).
+#[derive(Clone, Copy, Debug)]
+pub struct PlaneSetup {
+    origin: [f64; 2],
+    d1: [f64; 2],
+    d2: [f64; 2],
+    inv_det: f64,
+}
+
+impl PlaneSetup {
+    pub fn new(p: [[f64; 2]; 3], inv_det: f64) -> PlaneSetup {
+        PlaneSetup {
+            origin: p[0],
+            d1: [p[1][0] - p[0][0], p[1][1] - p[0][1]],
+            d2: [p[2][0] - p[0][0], p[2][1] - p[0][1]],
+            inv_det,
+        }
+    }
+
+    /// The plane through the three points with values `v`.
+    #[inline(always)]
+    pub fn plane(&self, v: [f64; 3]) -> Plane {
+        let ([dx1, dy1], [dx2, dy2]) = (self.d1, self.d2);
         let (dv1, dv2) = (v[1] - v[0], v[2] - v[0]);
-        let a = (dv1 * dy2 - dv2 * dy1) * inv_det;
-        let b = (dv2 * dx1 - dv1 * dx2) * inv_det;
+        let a = (dv1 * dy2 - dv2 * dy1) * self.inv_det;
+        let b = (dv2 * dx1 - dv1 * dx2) * self.inv_det;
         Plane {
             a,
             b,
-            c: v[0] - a * p[0][0] - b * p[0][1],
+            c: v[0] - a * self.origin[0] - b * self.origin[1],
         }
     }
 }

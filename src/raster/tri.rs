@@ -136,7 +136,7 @@ fn stippled_row<'a>(
 }
 
 use super::scene::{Command, Scene};
-use super::setup::{centre_range, Edge, Rect};
+use super::setup::{centre_range, Edge, PlaneSetup, Rect};
 use crate::api::convert::PolygonMode;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};
@@ -221,7 +221,8 @@ pub fn bin_triangle(
             (p, inv_det)
         }
     };
-    let inv_w = Plane::through(p, v.map(|w| w.inv_w), inv_det);
+    let setup = PlaneSetup::new(p, inv_det);
+    let inv_w = setup.plane(v.map(|w| w.inv_w));
     let n = ds.attr_count.min(MAX_ATTRS);
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
     // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
@@ -232,25 +233,24 @@ pub fn bin_triangle(
     } else {
         attr::COLOR1..attr::COLORS
     };
+    let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
+    let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
     let offset = scene.planes.len() as u32;
-    scene.planes.extend((0..n).map(|i| {
-        if secondary.contains(&i) {
+    scene.planes.reserve(n);
+    for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
+        scene.planes.push(if secondary.contains(&i) {
             Plane::constant(0.0)
         } else if ds.flat && i < attr::COLORS {
-            let c = attrs[0][i] as f64;
+            let c = x0 as f64;
             Plane {
                 a: inv_w.a * c,
                 b: inv_w.b * c,
                 c: inv_w.c * c,
             }
         } else {
-            Plane::through(
-                p,
-                [0, 1, 2].map(|k| attrs[k][i] as f64 * v[k].inv_w),
-                inv_det,
-            )
-        }
-    }));
+            setup.plane([x0 as f64 * w[0], x1 as f64 * w[1], x2 as f64 * w[2]])
+        });
+    }
 
     scene.bin(
         Command::Triangle(TriangleCommand {
