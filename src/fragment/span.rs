@@ -149,7 +149,7 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool, const SAMPL
     let group0 = x0 & !1;
     if SAMPLED {
         for (slot, u) in samplers.iter_mut().zip(&ds.units) {
-            *slot = Perspective8::new(u, it, y);
+            *slot = Perspective8::new(u, it, y, key.simd_units);
         }
     }
     for i in 0..n {
@@ -338,7 +338,7 @@ fn shade_textured<
         if let Some(f) = &fast {
             let sampling = f.sampling8(it);
             let mut perspective = if sampling.is_none() && f.affine.is_none() {
-                Perspective8::new(f.unit, it, y)
+                Perspective8::new(f.unit, it, y, key.simd_units)
             } else {
                 None
             };
@@ -983,9 +983,16 @@ struct Perspective8<'a> {
 impl<'a> Perspective8<'a> {
     /// The unit's eight-pixel sampler on row `y`, when every level of its texture takes the
     /// eight-pixel filter.
-    fn new(unit: &'a TextureUnitDraw, it: &Interpolants, y: i32) -> Option<Perspective8<'a>> {
+    /// `simd_units` is the draw's `FragmentKey::simd_units` (every unit's texture passes
+    /// `BoundTexture::simd_2d`, checked once per draw rather than per span).
+    fn new(
+        unit: &'a TextureUnitDraw,
+        it: &Interpolants,
+        y: i32,
+        simd_units: bool,
+    ) -> Option<Perspective8<'a>> {
         let tex = &unit.texture;
-        if !tex.simd_2d() || !simd::available() {
+        if !simd_units || !simd::available() {
             return None;
         }
         let count = tex.level_count();
@@ -1239,7 +1246,7 @@ pub fn span_sampled8<'a>(
     }
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
     for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
-        *slot = Perspective8::new(unit, it, y);
+        *slot = Perspective8::new(unit, it, y, key.simd_units);
     }
     let tail = Tail8 {
         modulate: false,
