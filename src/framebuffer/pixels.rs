@@ -147,6 +147,7 @@ impl Context {
         let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
         let xf = &self.pixel_transfer;
         let index_ops = xf.index_shift != 0 || xf.index_offset != 0 || xf.map_stencil;
+        let plain_rgba8 = f == PixelFormat::Rgba && t == PixelType::UnsignedByte && xfer.is_none();
         for row in 0..height {
             for col in 0..width {
                 let (wx, wy) = (x.saturating_add(col), y.saturating_add(row));
@@ -209,6 +210,12 @@ impl Context {
                     }
                 };
                 let o = start + row as usize * row_stride + col as usize * bpp;
+                if plain_rgba8 {
+                    // RGBA bytes without transfer: the stored bytes themselves (b / 255 * 255
+                    // rounds back to b).
+                    pixels[o..o + 4].copy_from_slice(&rgba);
+                    continue;
+                }
                 let index = f == PixelFormat::StencilIndex;
                 for (k, &v) in values.iter().enumerate() {
                     let at = o + k * t.size();
@@ -221,26 +228,31 @@ impl Context {
 
 /// Converts one component for packing (table 4.7 inverses; indices are integers).
 fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool) {
-    let mut bytes: Vec<u8> = match t {
+    // At most four bytes, built on the stack (this runs once per component read back).
+    let mut buf = [0u8; 4];
+    let n = t.size();
+    match t {
         PixelType::UnsignedByte => {
-            vec![if index {
+            buf[0] = if index {
                 v as u8
             } else {
                 (v * 255.0).round() as u8
-            }]
+            };
         }
-        PixelType::Byte => vec![if index {
-            v as i8 as u8
-        } else {
-            ((v * 255.0 - 1.0) / 2.0).round() as i8 as u8
-        }],
+        PixelType::Byte => {
+            buf[0] = if index {
+                v as i8 as u8
+            } else {
+                ((v * 255.0 - 1.0) / 2.0).round() as i8 as u8
+            };
+        }
         PixelType::UnsignedShort => {
             let x = if index {
                 v as u16
             } else {
                 (v * 65535.0).round() as u16
             };
-            x.to_ne_bytes().to_vec()
+            buf[..2].copy_from_slice(&x.to_ne_bytes());
         }
         PixelType::Short => {
             let x = if index {
@@ -248,7 +260,7 @@ fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool
             } else {
                 ((v * 65535.0 - 1.0) / 2.0).round() as i16
             };
-            x.to_ne_bytes().to_vec()
+            buf[..2].copy_from_slice(&x.to_ne_bytes());
         }
         PixelType::UnsignedInt => {
             let x = if index {
@@ -256,7 +268,7 @@ fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool
             } else {
                 (v * 4294967295.0).round() as u32
             };
-            x.to_ne_bytes().to_vec()
+            buf.copy_from_slice(&x.to_ne_bytes());
         }
         PixelType::Int => {
             let x = if index {
@@ -264,14 +276,15 @@ fn write_component(out: &mut [u8], t: PixelType, v: f64, index: bool, swap: bool
             } else {
                 ((v * 4294967295.0 - 1.0) / 2.0).round() as i32
             };
-            x.to_ne_bytes().to_vec()
+            buf.copy_from_slice(&x.to_ne_bytes());
         }
-        PixelType::Float => (v as f32).to_ne_bytes().to_vec(),
-    };
+        PixelType::Float => buf.copy_from_slice(&(v as f32).to_ne_bytes()),
+    }
+    let bytes = &mut buf[..n];
     if swap {
         bytes.reverse();
     }
-    out.copy_from_slice(&bytes);
+    out.copy_from_slice(bytes);
 }
 
 impl Context {
