@@ -585,6 +585,16 @@ fn textured_fast_paths_match_the_general_path() {
             wrap: GL_CLAMP_TO_EDGE,
             ..base
         },
+        // Other factors through the eight-fragment path's general blend.
+        TexCase {
+            blend: Some((GL_DST_COLOR, GL_ONE_MINUS_SRC_COLOR)),
+            ..base
+        },
+        TexCase {
+            format: GL_RGB,
+            blend: Some((GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_DST_ALPHA)),
+            ..base
+        },
         // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
         TexCase {
             wrap: GL_CLAMP,
@@ -824,6 +834,17 @@ fn sampled_units_match_the_general_path() {
             false,
             false,
         ),
+        // The eight-fragment tail with the general blend.
+        (
+            GL_RGBA,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPEAT,
+            GL_INTENSITY,
+            GL_LINEAR,
+            GL_REPEAT,
+            false,
+            false,
+        ),
     ];
     for (i, &(f0, min0, wrap0, f1, min1, wrap1, fog, stencil)) in cases.iter().enumerate() {
         let render = |general: bool| {
@@ -861,8 +882,10 @@ fn sampled_units_match_the_general_path() {
                 gl.stencil_func(GL_ALWAYS, 1, 0xFF);
                 gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
             }
-            // Blending "over", additive, none; the alpha test on every other case.
-            match i % 3 {
+            // Blending "over", additive, none, or a general one (subtraction, the
+            // constant colour, SRC_ALPHA_SATURATE, separate alpha factors); the alpha test on
+            // every other case.
+            match if i == 7 { 3 } else { i % 3 } {
                 0 => {
                     gl.enable(GL_BLEND);
                     gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -871,13 +894,25 @@ fn sampled_units_match_the_general_path() {
                     gl.enable(GL_BLEND);
                     gl.blend_func(GL_ONE, GL_ONE);
                 }
-                _ => {}
+                2 => {}
+                _ => {
+                    gl.enable(GL_BLEND);
+                    gl.blend_equation(GL_FUNC_SUBTRACT);
+                    gl.blend_color(0.2, 0.1, 0.3, 0.4);
+                    gl.blend_func_separate(
+                        GL_ONE_MINUS_DST_COLOR,
+                        GL_CONSTANT_COLOR,
+                        GL_SRC_ALPHA_SATURATE,
+                        GL_ONE_MINUS_CONSTANT_ALPHA,
+                    );
+                }
             }
-            if i % 2 == 1 || i >= 5 {
+            if (i % 2 == 1 && i != 7) || i == 5 || i == 6 {
                 gl.enable(GL_ALPHA_TEST);
                 gl.alpha_func(GL_GEQUAL, 0.4);
             }
             gl.enable(GL_DEPTH_TEST);
+            gl.clear_color(0.6, 0.7, 0.8, 0.9);
             gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
             gl.matrix_mode(GL_PROJECTION);
             gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
@@ -922,7 +957,12 @@ fn sampled_units_match_the_general_path() {
         let differ = general.iter().zip(&sampled).filter(|(a, b)| a != b).count();
         assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
         let distinct: std::collections::HashSet<_> = general.iter().collect();
-        assert!(distinct.len() > 100, "case {i}: the scene draws too little");
+
+        assert!(
+            distinct.len() > 100,
+            "case {i}: the scene draws too little ({} colours)",
+            distinct.len()
+        );
     }
 }
 

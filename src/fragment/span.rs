@@ -328,7 +328,6 @@ fn shade_textured<
     };
     let blend_add = key.blend.is_some_and(|b| b.is_add_one_one());
     if (TEX == tex_mode::FAST_RGBA || TEX == tex_mode::FAST_RGB)
-        && (BLEND == blend_mode::ALPHA_OVER || key.blend.is_none() || blend_add)
         && key.logic_op.is_none()
         && key.stencil.is_none()
         && !key.color_sum
@@ -350,7 +349,8 @@ fn shade_textured<
                     blend: match key.blend {
                         None => simd::TailBlend::None,
                         Some(_) if blend_add => simd::TailBlend::AddOneOne,
-                        Some(_) => simd::TailBlend::AlphaOver,
+                        Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
+                        Some(b) => simd::TailBlend::General(b, u.blend_color),
                     },
                     color_mask: u32::from_le_bytes(
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
@@ -1200,7 +1200,7 @@ pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Int
 
 /// Whether [`span_sampled8`] may shade a key: every unit takes the eight-pixel sampler
 /// (`simd_units`), and after the texture environment only the alpha test, the depth test,
-/// blending that [`Tail8`] knows and the colour mask apply.
+/// blending (any equation and factors) and the colour mask apply.
 pub fn sampled8_applies(key: &FragmentKey) -> bool {
     key.simd_units
         && key.stencil.is_none()
@@ -1208,9 +1208,6 @@ pub fn sampled8_applies(key: &FragmentKey) -> bool {
         && !key.color_sum
         && key.fog.is_none()
         && !key.count_samples
-        && key
-            .blend
-            .is_none_or(|b| b.is_alpha_over() || b.is_add_one_one())
         && simd::available()
 }
 
@@ -1255,7 +1252,8 @@ pub fn span_sampled8<'a>(
         blend: match key.blend {
             None => simd::TailBlend::None,
             Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
-            Some(_) => simd::TailBlend::AlphaOver,
+            Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
+            Some(b) => simd::TailBlend::General(b, u.blend_color),
         },
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
     };

@@ -8,6 +8,7 @@
 use super::format::BaseFormat;
 use super::sample::FastLevel;
 use crate::api::convert::{CompareFunc, WrapMode};
+use crate::fragment::key::BlendKey;
 
 /// Eight pixels' texels as four channel arrays (R, G, B, A).
 pub type Texels8 = [[f32; 8]; 4];
@@ -143,14 +144,17 @@ pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[[f64; 
     None
 }
 
-/// The blending [`shade8`] does (`FUNC_ADD` for colour and alpha).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The blending [`shade8`] does: none, the two common cases by their own code, or any other.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TailBlend {
     None,
     /// `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA`.
     AlphaOver,
     /// `ONE`, `ONE`.
     AddOneOne,
+    /// Any other blending (equations, factors, the constant colour), as
+    /// `fragment::blend::blend` computes it.
+    General(BlendKey, [f32; 4]),
 }
 
 /// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
@@ -250,7 +254,7 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{Level8, Sampling8, Tail8, Texels8};
-    use crate::api::convert::CompareFunc;
+    use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc};
     use crate::texture::format::BaseFormat;
 
     /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
@@ -374,6 +378,43 @@ mod x86 {
         _mm256_cvttps_epi32(v)
     }
 
+    /// A blend factor for channel `ch` of eight fragments, as `fragment::blend` computes it
+    /// (source and destination already in [0, 1]; no NaN reaches here).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn factor8(
+        f: BlendFactor,
+        s: &[__m256; 4],
+        d: &[__m256; 4],
+        c: &[f32; 4],
+        ch: usize,
+    ) -> __m256 {
+        let one = _mm256_set1_ps(1.0);
+        match f {
+            BlendFactor::Zero => _mm256_setzero_ps(),
+            BlendFactor::One => one,
+            BlendFactor::SrcColor => s[ch],
+            BlendFactor::OneMinusSrcColor => _mm256_sub_ps(one, s[ch]),
+            BlendFactor::DstColor => d[ch],
+            BlendFactor::OneMinusDstColor => _mm256_sub_ps(one, d[ch]),
+            BlendFactor::SrcAlpha => s[3],
+            BlendFactor::OneMinusSrcAlpha => _mm256_sub_ps(one, s[3]),
+            BlendFactor::DstAlpha => d[3],
+            BlendFactor::OneMinusDstAlpha => _mm256_sub_ps(one, d[3]),
+            BlendFactor::ConstantColor => _mm256_set1_ps(c[ch]),
+            BlendFactor::OneMinusConstantColor => _mm256_set1_ps(1.0 - c[ch]),
+            BlendFactor::ConstantAlpha => _mm256_set1_ps(c[3]),
+            BlendFactor::OneMinusConstantAlpha => _mm256_set1_ps(1.0 - c[3]),
+            BlendFactor::SrcAlphaSaturate => {
+                if ch == 3 {
+                    one
+                } else {
+                    _mm256_min_ps(s[3], _mm256_sub_ps(one, d[3]))
+                }
+            }
+        }
+    }
+
     #[inline]
     #[target_feature(enable = "avx2")]
     pub fn shade8(
@@ -454,6 +495,33 @@ mod x86 {
                 let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
                 let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
                 out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
+            }
+            out
+        } else if let super::TailBlend::General(key, constant) = &tail.blend {
+            let s: [__m256; 4] = [0, 1, 2, 3].map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
+            let d: [__m256; 4] = [0, 1, 2, 3]
+                .map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k));
+            let mut out = [_mm256_setzero_si256(); 4];
+            for ch in 0..4 {
+                let (sf, df, eq) = if ch == 3 {
+                    (key.src_alpha, key.dst_alpha, key.equation_alpha)
+                } else {
+                    (key.src_rgb, key.dst_rgb, key.equation)
+                };
+                let v = match eq {
+                    BlendEquation::Min => _mm256_min_ps(s[ch], d[ch]),
+                    BlendEquation::Max => _mm256_max_ps(s[ch], d[ch]),
+                    eq => {
+                        let a = _mm256_mul_ps(s[ch], factor8(sf, &s, &d, constant, ch));
+                        let b = _mm256_mul_ps(d[ch], factor8(df, &s, &d, constant, ch));
+                        match eq {
+                            BlendEquation::Add => _mm256_add_ps(a, b),
+                            BlendEquation::Subtract => _mm256_sub_ps(a, b),
+                            _ => _mm256_sub_ps(b, a),
+                        }
+                    }
+                };
+                out[ch] = to_u8(v);
             }
             out
         } else {
