@@ -1066,3 +1066,86 @@ fn background_shading_changes_nothing() {
     assert_eq!(one, render(8));
     assert_ne!(one.0, one.1, "the last part drew nothing");
 }
+
+/// One texture unit of every one-byte base format under REPLACE and MODULATE, with several
+/// blends: the eight-fragment tail applies the environment itself (with the base format's
+/// table of which components the texture has) and must match the general path bit for bit.
+#[test]
+fn single_unit_formats_match_the_general_path() {
+    let formats = [
+        GL_ALPHA,
+        GL_LUMINANCE,
+        GL_LUMINANCE_ALPHA,
+        GL_INTENSITY,
+        GL_RGB,
+        GL_RGBA,
+    ];
+    for (i, &format) in formats.iter().enumerate() {
+        for (k, env) in [GL_REPLACE, GL_MODULATE].into_iter().enumerate() {
+            let render = |general: bool| {
+                let mut gl = Context::new(64, 64);
+                gl.set_force_general_path(general);
+                let mut rng = Rng(0x51 + (i * 2 + k) as u64);
+                random_texture(&mut gl, &mut rng, format, 32, 32);
+                gl.tex_parameteri(
+                    GL_TEXTURE_2D,
+                    GL_TEXTURE_MIN_FILTER,
+                    GL_LINEAR_MIPMAP_LINEAR as i32,
+                );
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env as i32);
+                gl.enable(GL_BLEND);
+                match (i + k) % 3 {
+                    0 => gl.blend_func(GL_SRC_ALPHA, GL_ONE),
+                    1 => gl.blend_func(GL_ONE_MINUS_DST_COLOR, GL_SRC_COLOR),
+                    _ => gl.disable(GL_BLEND),
+                }
+                if k == 1 {
+                    gl.enable(GL_ALPHA_TEST);
+                    gl.alpha_func(GL_GREATER, 0.25);
+                }
+                gl.clear_color(0.5, 0.25, 0.75, 0.5);
+                gl.clear(GL_COLOR_BUFFER_BIT);
+                gl.matrix_mode(GL_PROJECTION);
+                gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
+                gl.matrix_mode(GL_MODELVIEW);
+                gl.begin(GL_TRIANGLES);
+                for _ in 0..40 {
+                    let c = [
+                        rng.range(-4.0, 4.0),
+                        rng.range(-4.0, 4.0),
+                        rng.range(-20.0, -2.0),
+                    ];
+                    for _ in 0..3 {
+                        gl.color_4f(
+                            rng.range(0.0, 1.2),
+                            rng.range(0.0, 1.0),
+                            0.8,
+                            rng.range(0.0, 1.0),
+                        );
+                        gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+                        gl.vertex_3f(
+                            c[0] + rng.range(-3.0, 3.0),
+                            c[1] + rng.range(-3.0, 3.0),
+                            c[2] + rng.range(-2.0, 2.0),
+                        );
+                    }
+                }
+                gl.end();
+                assert_eq!(gl.get_error(), GL_NO_ERROR);
+                read_rgba(&mut gl)
+            };
+            let (general, fast) = (render(true), render(false));
+            let differ = general.iter().zip(&fast).filter(|(a, b)| a != b).count();
+            assert_eq!(
+                differ, 0,
+                "format {format:#x}, env {env:#x}: {differ} pixels differ"
+            );
+            let distinct: std::collections::HashSet<_> = general.iter().collect();
+            assert!(
+                distinct.len() > 50,
+                "format {format:#x}: {} colours",
+                distinct.len()
+            );
+        }
+    }
+}

@@ -13,6 +13,7 @@ use crate::raster::setup::Plane;
 use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
+use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan};
 use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
 
@@ -346,6 +347,7 @@ fn shade_textured<
                     modulate: f.modulate,
                     alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
                     alpha_from_primary: TEX == tex_mode::FAST_RGB,
+                    rgb_from_primary: false,
                     blend: match key.blend {
                         None => simd::TailBlend::None,
                         Some(_) if blend_add => simd::TailBlend::AddOneOne,
@@ -1245,9 +1247,24 @@ pub fn span_sampled8<'a>(
     for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
         *slot = Perspective8::new(unit, it, y, key.simd_units);
     }
+    // One unit under REPLACE or MODULATE: the environment itself runs eight fragments at a
+    // time in the tail (with the base format's table: which of colour and alpha the texture
+    // has); otherwise the cascade runs per fragment and enters the tail as a replacing texel.
+    let single = match ds.units.as_slice() {
+        [unit] if matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate) => {
+            let (has_color, has_alpha) = match unit.base {
+                BaseFormat::Alpha => (false, true),
+                BaseFormat::Luminance | BaseFormat::Rgb => (true, false),
+                _ => (true, true),
+            };
+            Some((unit.env.mode == TexEnvMode::Modulate, has_color, has_alpha))
+        }
+        _ => None,
+    };
     let tail = Tail8 {
-        modulate: false,
-        alpha_from_primary: false,
+        modulate: single.is_some_and(|s| s.0),
+        rgb_from_primary: single.is_some_and(|s| !s.1),
+        alpha_from_primary: single.is_some_and(|s| !s.2),
         alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
         blend: match key.blend {
             None => simd::TailBlend::None,
@@ -1275,14 +1292,20 @@ pub fn span_sampled8<'a>(
         for j in lo..hi {
             let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
             let primary = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
-            let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-            for (k, unit) in ds.units.iter().enumerate() {
-                let t = &unit_texels[k];
-                texels[unit.unit] = Some([t[0][j], t[1][j], t[2][j], t[3][j]]);
-            }
-            let c = environment(ds, primary, &texels);
-            for ch in 0..4 {
-                color[ch][j] = c[ch];
+            if single.is_some() {
+                for ch in 0..4 {
+                    color[ch][j] = primary[ch];
+                }
+            } else {
+                let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+                for (k, unit) in ds.units.iter().enumerate() {
+                    let t = &unit_texels[k];
+                    texels[unit.unit] = Some([t[0][j], t[1][j], t[2][j], t[3][j]]);
+                }
+                let c = environment(ds, primary, &texels);
+                for ch in 0..4 {
+                    color[ch][j] = c[ch];
+                }
             }
             let d = if uses_depth {
                 depth_to_fixed(z, ds.depth_max)
@@ -1305,8 +1328,14 @@ pub fn span_sampled8<'a>(
         for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
             *d = u32::from_le_bytes(tile.color[base + j]);
         }
-        // The environment's colour goes in as a replacing texel; the primary is unused.
-        if let Some((words, passed)) = simd::shade8(&tail, &color, &color, &dst, pass) {
+        // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies
+        // the environment; otherwise it is the cascade's result, entering as a replacing texel.
+        let tex = if single.is_some() {
+            &unit_texels[0]
+        } else {
+            &color
+        };
+        if let Some((words, passed)) = simd::shade8(&tail, &color, tex, &dst, pass) {
             for j in lo..hi {
                 tile.color[base + j] = words[j].to_le_bytes();
                 if key.depth_write && passed & (1 << j) != 0 {

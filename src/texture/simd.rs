@@ -167,6 +167,8 @@ pub struct Tail8 {
     pub alpha_test: Option<(CompareFunc, f32)>,
     /// An RGB texture under `REPLACE`: the fragment keeps the primary colour's alpha.
     pub alpha_from_primary: bool,
+    /// An ALPHA texture (no colour): the fragment keeps the primary colour's R, G, B.
+    pub rgb_from_primary: bool,
     /// The blending.
     pub blend: TailBlend,
     /// Bytes of the colour words that may be written (the colour mask).
@@ -433,7 +435,9 @@ mod x86 {
         let mut color = [zero; 4];
         for c in 0..4 {
             let ct = load(&tex[c]);
-            color[c] = if tail.modulate {
+            color[c] = if c < 3 && tail.rgb_from_primary {
+                _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one)
+            } else if tail.modulate {
                 let cf = _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one);
                 _mm256_mul_ps(cf, ct)
             } else if c == 3 && tail.alpha_from_primary {
