@@ -693,6 +693,31 @@ fn environment(
     color
 }
 
+/// [`environment`] for eight fragments at once: primary colours `primary` (channel arrays) and
+/// the texels of `ds.units[k]` in `texels[k]`.
+fn environment8(
+    ds: &DrawState,
+    primary: &[[f32; 8]; 4],
+    texels: &[[[f32; 8]; 4]; MAX_TEXTURE_UNITS],
+) -> [[f32; 8]; 4] {
+    use texenv::{Lanes, Lanes8};
+    let primary = primary.map(|c| Lanes8(c).clamp01());
+    let mut by_unit: [Option<[Lanes8; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+    for (k, u) in ds.units.iter().enumerate() {
+        by_unit[u.unit] = Some(texels[k].map(Lanes8));
+    }
+    let inputs = CombineInputs {
+        primary,
+        texels: &by_unit,
+    };
+    let mut color = primary;
+    for u in &ds.units {
+        let ct = by_unit[u.unit].unwrap_or([Lanes8::splat(0.0); 4]);
+        color = texenv::apply(&u.env, u.base, u.unit, color, ct, &inputs);
+    }
+    color.map(|c| c.0)
+}
+
 /// One unit on the fast 2D path over one span: the texture, the coordinate planes and, for
 /// an affine span, the level selection shared by all its pixels.
 struct FastUnit<'a> {
@@ -1291,21 +1316,8 @@ pub fn span_sampled8<'a>(
         let mut pass = 0u8;
         for j in lo..hi {
             let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-            let primary = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
-            if single.is_some() {
-                for ch in 0..4 {
-                    color[ch][j] = primary[ch];
-                }
-            } else {
-                let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-                for (k, unit) in ds.units.iter().enumerate() {
-                    let t = &unit_texels[k];
-                    texels[unit.unit] = Some([t[0][j], t[1][j], t[2][j], t[3][j]]);
-                }
-                let c = environment(ds, primary, &texels);
-                for ch in 0..4 {
-                    color[ch][j] = c[ch];
-                }
+            for c in 0..4 {
+                color[c][j] = attr[c] * w;
             }
             let d = if uses_depth {
                 depth_to_fixed(z, ds.depth_max)
@@ -1327,6 +1339,9 @@ pub fn span_sampled8<'a>(
         let mut dst = [0u32; 8];
         for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
             *d = u32::from_le_bytes(tile.color[base + j]);
+        }
+        if single.is_none() {
+            color = environment8(ds, &color, &unit_texels);
         }
         // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies
         // the environment; otherwise it is the cascade's result, entering as a replacing texel.

@@ -6,29 +6,99 @@ use crate::api::convert::{CombineFunc, CombineOperand, CombineSource, TexEnvMode
 use crate::state::texenv::{Combine, TexEnv};
 use crate::texture::format::BaseFormat;
 
-type Rgba = [f32; 4];
-
-fn clamp01(v: f32) -> f32 {
-    v.max(0.0).min(1.0)
+/// The arithmetic the environment needs, on one fragment (`f32`) or on eight at once
+/// ([`Lanes8`]): the same operations in the same order, so both give the same values.
+pub trait Lanes: Copy {
+    fn splat(v: f32) -> Self;
+    fn add(self, o: Self) -> Self;
+    fn sub(self, o: Self) -> Self;
+    fn mul(self, o: Self) -> Self;
+    /// `max(0).min(1)` (NaN becomes 0).
+    fn clamp01(self) -> Self;
 }
 
+impl Lanes for f32 {
+    #[inline(always)]
+    fn splat(v: f32) -> f32 {
+        v
+    }
+    #[inline(always)]
+    fn add(self, o: f32) -> f32 {
+        self + o
+    }
+    #[inline(always)]
+    fn sub(self, o: f32) -> f32 {
+        self - o
+    }
+    #[inline(always)]
+    fn mul(self, o: f32) -> f32 {
+        self * o
+    }
+    #[inline(always)]
+    fn clamp01(self) -> f32 {
+        self.max(0.0).min(1.0)
+    }
+}
+
+/// Eight fragments' values of one channel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lanes8(pub [f32; 8]);
+
+impl Lanes8 {
+    #[inline(always)]
+    fn zip(self, o: Lanes8, f: impl Fn(f32, f32) -> f32) -> Lanes8 {
+        let mut r = [0f32; 8];
+        for i in 0..8 {
+            r[i] = f(self.0[i], o.0[i]);
+        }
+        Lanes8(r)
+    }
+}
+
+impl Lanes for Lanes8 {
+    #[inline(always)]
+    fn splat(v: f32) -> Lanes8 {
+        Lanes8([v; 8])
+    }
+    #[inline(always)]
+    fn add(self, o: Lanes8) -> Lanes8 {
+        self.zip(o, |a, b| a + b)
+    }
+    #[inline(always)]
+    fn sub(self, o: Lanes8) -> Lanes8 {
+        self.zip(o, |a, b| a - b)
+    }
+    #[inline(always)]
+    fn mul(self, o: Lanes8) -> Lanes8 {
+        self.zip(o, |a, b| a * b)
+    }
+    #[inline(always)]
+    fn clamp01(self) -> Lanes8 {
+        Lanes8(self.0.map(|v| v.max(0.0).min(1.0)))
+    }
+}
+
+/// R, G, B, A of one fragment or of eight.
+type Rgba<L> = [L; 4];
+
 /// Inputs a combiner may read besides the previous colour.
-pub struct CombineInputs<'a> {
-    pub primary: Rgba,
+pub struct CombineInputs<'a, L: Lanes = f32> {
+    pub primary: Rgba<L>,
     /// Texel of every unit that has a complete enabled texture (`None` otherwise).
-    pub texels: &'a [Option<Rgba>; 8],
+    pub texels: &'a [Option<Rgba<L>>; 8],
 }
 
 /// Applies unit `unit`'s environment: `cf` is the incoming colour, `ct` the unit's texel,
 /// `base` its base internal format (tables 3.22 and 3.23).
-pub fn apply(
+#[inline]
+pub fn apply<L: Lanes>(
     env: &TexEnv,
     base: BaseFormat,
     _unit: usize,
-    cf: Rgba,
-    ct: Rgba,
-    inputs: &CombineInputs,
-) -> Rgba {
+    cf: Rgba<L>,
+    ct: Rgba<L>,
+    inputs: &CombineInputs<L>,
+) -> Rgba<L> {
     use BaseFormat::*;
     let (has_color, has_alpha) = match base {
         Alpha => (false, true),
@@ -36,8 +106,9 @@ pub fn apply(
         LuminanceAlpha | Rgba => (true, true),
         Intensity => (true, true),
     };
-    let cc = env.color;
-    let rgb = |f: &dyn Fn(usize) -> f32| [f(0), f(1), f(2)];
+    let cc = env.color.map(L::splat);
+    let one = L::splat(1.0);
+    let rgb = |f: &dyn Fn(usize) -> L| [f(0), f(1), f(2)];
     match env.mode {
         TexEnvMode::Replace => {
             let c = if has_color {
@@ -50,17 +121,17 @@ pub fn apply(
         }
         TexEnvMode::Modulate => {
             let c = if has_color {
-                rgb(&|i| cf[i] * ct[i])
+                rgb(&|i| cf[i].mul(ct[i]))
             } else {
                 rgb(&|i| cf[i])
             };
-            let a = if has_alpha { cf[3] * ct[3] } else { cf[3] };
+            let a = if has_alpha { cf[3].mul(ct[3]) } else { cf[3] };
             [c[0], c[1], c[2], a]
         }
         TexEnvMode::Decal => match base {
             Rgb => [ct[0], ct[1], ct[2], cf[3]],
             Rgba => {
-                let c = rgb(&|i| cf[i] * (1.0 - ct[3]) + ct[i] * ct[3]);
+                let c = rgb(&|i| cf[i].mul(one.sub(ct[3])).add(ct[i].mul(ct[3])));
                 [c[0], c[1], c[2], cf[3]]
             }
             // Undefined by the specification for other formats: the colour passes unchanged.
@@ -68,26 +139,26 @@ pub fn apply(
         },
         TexEnvMode::Blend => {
             let c = if has_color {
-                rgb(&|i| cf[i] * (1.0 - ct[i]) + cc[i] * ct[i])
+                rgb(&|i| cf[i].mul(one.sub(ct[i])).add(cc[i].mul(ct[i])))
             } else {
                 rgb(&|i| cf[i])
             };
             let a = match base {
-                Intensity => cf[3] * (1.0 - ct[3]) + cc[3] * ct[3],
-                _ if has_alpha => cf[3] * ct[3],
+                Intensity => cf[3].mul(one.sub(ct[3])).add(cc[3].mul(ct[3])),
+                _ if has_alpha => cf[3].mul(ct[3]),
                 _ => cf[3],
             };
             [c[0], c[1], c[2], a]
         }
         TexEnvMode::Add => {
             let c = if has_color {
-                rgb(&|i| clamp01(cf[i] + ct[i]))
+                rgb(&|i| cf[i].add(ct[i]).clamp01())
             } else {
                 rgb(&|i| cf[i])
             };
             let a = match base {
-                Intensity => clamp01(cf[3] + ct[3]),
-                _ if has_alpha => cf[3] * ct[3],
+                Intensity => cf[3].add(ct[3]).clamp01(),
+                _ if has_alpha => cf[3].mul(ct[3]),
                 _ => cf[3],
             };
             [c[0], c[1], c[2], a]
@@ -97,7 +168,14 @@ pub fn apply(
     }
 }
 
-fn source(s: CombineSource, cf: Rgba, ct: Rgba, cc: Rgba, inputs: &CombineInputs) -> Rgba {
+#[inline(always)]
+fn source<L: Lanes>(
+    s: CombineSource,
+    cf: Rgba<L>,
+    ct: Rgba<L>,
+    cc: Rgba<L>,
+    inputs: &CombineInputs<L>,
+) -> Rgba<L> {
     match s {
         CombineSource::Texture => ct,
         // ARB_texture_env_crossbar: a unit without a complete enabled texture reads as the
@@ -106,34 +184,40 @@ fn source(s: CombineSource, cf: Rgba, ct: Rgba, cc: Rgba, inputs: &CombineInputs
         CombineSource::Constant => cc,
         CombineSource::PrimaryColor => inputs.primary,
         CombineSource::Previous => cf,
-        CombineSource::Zero => [0.0; 4],
+        CombineSource::Zero => [L::splat(0.0); 4],
     }
 }
 
-fn operand_rgb(op: CombineOperand, v: Rgba) -> [f32; 3] {
+#[inline(always)]
+fn operand_rgb<L: Lanes>(op: CombineOperand, v: Rgba<L>) -> [L; 3] {
+    let one = L::splat(1.0);
     match op {
         CombineOperand::SrcColor => [v[0], v[1], v[2]],
-        CombineOperand::OneMinusSrcColor => [1.0 - v[0], 1.0 - v[1], 1.0 - v[2]],
+        CombineOperand::OneMinusSrcColor => [one.sub(v[0]), one.sub(v[1]), one.sub(v[2])],
         CombineOperand::SrcAlpha => [v[3]; 3],
-        CombineOperand::OneMinusSrcAlpha => [1.0 - v[3]; 3],
+        CombineOperand::OneMinusSrcAlpha => [one.sub(v[3]); 3],
     }
 }
 
-fn operand_alpha(op: CombineOperand, v: Rgba) -> f32 {
+#[inline(always)]
+fn operand_alpha<L: Lanes>(op: CombineOperand, v: Rgba<L>) -> L {
     match op {
         CombineOperand::SrcAlpha | CombineOperand::SrcColor => v[3],
-        CombineOperand::OneMinusSrcAlpha | CombineOperand::OneMinusSrcColor => 1.0 - v[3],
+        CombineOperand::OneMinusSrcAlpha | CombineOperand::OneMinusSrcColor => {
+            L::splat(1.0).sub(v[3])
+        }
     }
 }
 
-fn combine_fn(f: CombineFunc, a: f32, b: f32, c: f32) -> f32 {
+#[inline(always)]
+fn combine_fn<L: Lanes>(f: CombineFunc, a: L, b: L, c: L) -> L {
     match f {
         CombineFunc::Replace => a,
-        CombineFunc::Modulate => a * b,
-        CombineFunc::Add => a + b,
-        CombineFunc::AddSigned => a + b - 0.5,
-        CombineFunc::Interpolate => a * c + b * (1.0 - c),
-        CombineFunc::Subtract => a - b,
+        CombineFunc::Modulate => a.mul(b),
+        CombineFunc::Add => a.add(b),
+        CombineFunc::AddSigned => a.add(b).sub(L::splat(0.5)),
+        CombineFunc::Interpolate => a.mul(c).add(b.mul(L::splat(1.0).sub(c))),
+        CombineFunc::Subtract => a.sub(b),
         // DOT3 is handled per vector.
         CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => a,
     }
@@ -143,64 +227,198 @@ fn combine_fn(f: CombineFunc, a: f32, b: f32, c: f32) -> f32 {
 /// then the scale, then a clamp to [0, 1]. With `four` (NV_texture_env_combine4's
 /// `GL_COMBINE4_NV`), `ADD` is `a0 a1 + a2 a3` and `ADD_SIGNED` is `a0 a1 + a2 a3 - 1/2`; the
 /// other functions are those of `GL_COMBINE`.
-pub fn combine(
+pub fn combine<L: Lanes>(
     k: &Combine,
     four: bool,
-    cf: Rgba,
-    ct: Rgba,
-    cc: Rgba,
-    inputs: &CombineInputs,
-) -> Rgba {
+    cf: Rgba<L>,
+    ct: Rgba<L>,
+    cc: Rgba<L>,
+    inputs: &CombineInputs<L>,
+) -> Rgba<L> {
     let arg_rgb = |i: usize| operand_rgb(k.op_rgb[i], source(k.src_rgb[i], cf, ct, cc, inputs));
     let arg_a = |i: usize| operand_alpha(k.op_alpha[i], source(k.src_alpha[i], cf, ct, cc, inputs));
     let (a0, a1, a2) = (arg_rgb(0), arg_rgb(1), arg_rgb(2));
-    let rs = k.rgb_scale as f32;
-    let as_ = k.alpha_scale as f32;
-    let mut out = [0.0; 4];
+    let rs = L::splat(k.rgb_scale as f32);
+    let as_ = L::splat(k.alpha_scale as f32);
+    let half = L::splat(0.5);
+    let zero = L::splat(0.0);
+    let mut out = [zero; 4];
     match k.rgb {
         CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => {
-            let d = 4.0
-                * ((a0[0] - 0.5) * (a1[0] - 0.5)
-                    + (a0[1] - 0.5) * (a1[1] - 0.5)
-                    + (a0[2] - 0.5) * (a1[2] - 0.5));
-            let v = clamp01(d * rs);
-            out = [v, v, v, 0.0];
+            let d = L::splat(4.0).mul(
+                a0[0]
+                    .sub(half)
+                    .mul(a1[0].sub(half))
+                    .add(a0[1].sub(half).mul(a1[1].sub(half)))
+                    .add(a0[2].sub(half).mul(a1[2].sub(half))),
+            );
+            let v = d.mul(rs).clamp01();
+            out = [v, v, v, zero];
             if k.rgb == CombineFunc::Dot3Rgba {
                 // The dot product also replaces alpha (the alpha function is ignored); like
                 // every alpha result it is then multiplied by ALPHA_SCALE (section 3.8.13: "the
                 // RGB and ALPHA results ... are multiplied by RGB_SCALE and ALPHA_SCALE,
                 // respectively"), which is what Mesa does too.
-                out[3] = clamp01(d * as_);
+                out[3] = d.mul(as_).clamp01();
                 return out;
             }
         }
         f @ (CombineFunc::Add | CombineFunc::AddSigned) if four => {
             let a3 = arg_rgb(3);
-            let bias = if f == CombineFunc::AddSigned {
+            let bias = L::splat(if f == CombineFunc::AddSigned {
                 0.5
             } else {
                 0.0
-            };
+            });
             for i in 0..3 {
-                out[i] = clamp01((a0[i] * a1[i] + a2[i] * a3[i] - bias) * rs);
+                out[i] = a0[i]
+                    .mul(a1[i])
+                    .add(a2[i].mul(a3[i]))
+                    .sub(bias)
+                    .mul(rs)
+                    .clamp01();
             }
         }
         f => {
             for i in 0..3 {
-                out[i] = clamp01(combine_fn(f, a0[i], a1[i], a2[i]) * rs);
+                out[i] = combine_fn(f, a0[i], a1[i], a2[i]).mul(rs).clamp01();
             }
         }
     }
     out[3] = match k.alpha {
         f @ (CombineFunc::Add | CombineFunc::AddSigned) if four => {
-            let bias = if f == CombineFunc::AddSigned {
+            let bias = L::splat(if f == CombineFunc::AddSigned {
                 0.5
             } else {
                 0.0
-            };
-            clamp01((arg_a(0) * arg_a(1) + arg_a(2) * arg_a(3) - bias) * as_)
+            });
+            arg_a(0)
+                .mul(arg_a(1))
+                .add(arg_a(2).mul(arg_a(3)))
+                .sub(bias)
+                .mul(as_)
+                .clamp01()
         }
-        f => clamp01(combine_fn(f, arg_a(0), arg_a(1), arg_a(2)) * as_),
+        f => combine_fn(f, arg_a(0), arg_a(1), arg_a(2))
+            .mul(as_)
+            .clamp01(),
     };
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::api::convert::{CombineFunc as F, CombineOperand as O, CombineSource as S};
+
+    /// A small deterministic generator (values in [-0.25, 1.25], to reach the clamps).
+    struct Gen(u64);
+    impl Gen {
+        fn next(&mut self) -> u64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            self.0
+        }
+        fn value(&mut self) -> f32 {
+            (self.next() >> 40) as f32 / (1u64 << 24) as f32 * 1.5 - 0.25
+        }
+        fn pick<T: Copy>(&mut self, v: &[T]) -> T {
+            v[(self.next() % v.len() as u64) as usize]
+        }
+    }
+
+    /// Eight fragments through `apply::<Lanes8>` equal eight through `apply::<f32>`, bit for
+    /// bit, for every mode, base format, combine function, source, operand and scale.
+    #[test]
+    fn eight_lanes_equal_eight_single_fragments() {
+        use BaseFormat::*;
+        let mut g = Gen(0x9E37_79B9_7F4A_7C15);
+        let modes = [
+            TexEnvMode::Replace,
+            TexEnvMode::Modulate,
+            TexEnvMode::Decal,
+            TexEnvMode::Blend,
+            TexEnvMode::Add,
+            TexEnvMode::Combine,
+            TexEnvMode::Combine4,
+        ];
+        let bases = [Alpha, Luminance, LuminanceAlpha, Intensity, Rgb, Rgba];
+        let funcs = [
+            F::Replace,
+            F::Modulate,
+            F::Add,
+            F::AddSigned,
+            F::Interpolate,
+            F::Subtract,
+            F::Dot3Rgb,
+            F::Dot3Rgba,
+        ];
+        let sources = [
+            S::Texture,
+            S::TextureUnit(0),
+            S::TextureUnit(1),
+            S::TextureUnit(5),
+            S::Constant,
+            S::PrimaryColor,
+            S::Previous,
+            S::Zero,
+        ];
+        let operands = [
+            O::SrcColor,
+            O::OneMinusSrcColor,
+            O::SrcAlpha,
+            O::OneMinusSrcAlpha,
+        ];
+        for case in 0..4000 {
+            let mut env = TexEnv {
+                mode: modes[case % modes.len()],
+                color: [g.value(), g.value(), g.value(), g.value()],
+                ..TexEnv::default()
+            };
+            env.combine.rgb = g.pick(&funcs);
+            env.combine.alpha = g.pick(&funcs[..6]);
+            for i in 0..4 {
+                env.combine.src_rgb[i] = g.pick(&sources);
+                env.combine.src_alpha[i] = g.pick(&sources);
+                env.combine.op_rgb[i] = g.pick(&operands);
+                env.combine.op_alpha[i] = g.pick(&operands);
+            }
+            env.combine.rgb_scale = g.pick(&[1, 2, 4]);
+            env.combine.alpha_scale = g.pick(&[1, 2, 4]);
+            let base = g.pick(&bases);
+            let lane = |g: &mut Gen| [0; 4].map(|_| Lanes8([0; 8].map(|_| g.value())));
+            let (cf, ct, primary, t0, t1) = (
+                lane(&mut g),
+                lane(&mut g),
+                lane(&mut g),
+                lane(&mut g),
+                lane(&mut g),
+            );
+            let mut texels8: [Option<[Lanes8; 4]>; 8] = [None; 8];
+            texels8[0] = Some(t0);
+            texels8[1] = Some(t1);
+            let inputs8 = CombineInputs {
+                primary,
+                texels: &texels8,
+            };
+            let out8 = apply(&env, base, 1, cf, ct, &inputs8);
+            for j in 0..8 {
+                let at = |v: [Lanes8; 4]| v.map(|c| c.0[j]);
+                let mut texels: [Option<[f32; 4]>; 8] = [None; 8];
+                texels[0] = Some(at(t0));
+                texels[1] = Some(at(t1));
+                let inputs = CombineInputs {
+                    primary: at(primary),
+                    texels: &texels,
+                };
+                let out = apply(&env, base, 1, at(cf), at(ct), &inputs);
+                assert_eq!(
+                    out.map(f32::to_bits),
+                    at(out8).map(f32::to_bits),
+                    "case {case}, lane {j}: {env:?} {base:?}"
+                );
+            }
+        }
+    }
 }
