@@ -14,7 +14,7 @@ use crate::state::snapshot::{attr, TextureUnitDraw};
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
-use crate::texture::sample::{FastLevel, LevelPlan};
+use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
 use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
@@ -1004,6 +1004,8 @@ struct Perspective8<'a> {
     own_is_upper: bool,
     /// The level and filter when they do not depend on λ (which is then not computed).
     fixed_plan: Option<(usize, bool)>,
+    /// λ and level selection, gathered once for the span.
+    lod: LodSelect,
     levels: [Option<Level8<'a>>; MAX_FAST_LEVELS],
 }
 
@@ -1036,6 +1038,7 @@ impl<'a> Perspective8<'a> {
             unit,
             planes: [row(yc), row(other)],
             own_is_upper,
+            lod: tex.lod_select(unit.env.lod_bias),
             fixed_plan: match tex.plan_without_lambda() {
                 Some(LevelPlan::One { level, linear }) => Some((level, linear)),
                 _ => None,
@@ -1063,7 +1066,6 @@ impl<'a> Perspective8<'a> {
     /// 2k + 1 form a quad's row); only lanes whose bit is set in `live` matter. `None` when a
     /// coordinate is beyond the filter's range (the caller samples one by one).
     fn texels(&mut self, x: f64, live: u8) -> Option<Texels8> {
-        let tex = &self.unit.texture;
         let rows = simd::perspective_rows8(&self.planes, x)?;
         let (upper, lower) = if self.own_is_upper {
             (&rows[0], &rows[1])
@@ -1100,8 +1102,8 @@ impl<'a> Perspective8<'a> {
                 fix(upper[1][l] - lower[1][l]),
                 0.0,
             ];
-            let lambda = tex.isotropic_lambda(dx, dy, self.unit.env.lod_bias);
-            *pl = match tex.level_plan(lambda) {
+            let lambda = self.lod.isotropic_lambda(dx, dy);
+            *pl = match self.lod.plan(lambda) {
                 LevelPlan::One { level, linear } => (level, level, linear),
                 LevelPlan::Two {
                     levels,

@@ -102,6 +102,112 @@ pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
     }
 }
 
+/// What λ and the level plan depend on besides the derivatives (see
+/// [`BoundTexture::lod_select`]): the same computations as the per-fragment sampler.
+#[derive(Clone, Copy, Debug)]
+pub struct LodSelect {
+    /// The texture's and the unit's LOD bias, summed (NaN as 0) and clamped.
+    bias: f32,
+    min_lod: f32,
+    max_lod: f32,
+    switch_over: f32,
+    mag_linear: bool,
+    min_filter: MinFilter,
+    last_level: usize,
+    size: [f32; 3],
+    target: TextureTarget,
+}
+
+impl LodSelect {
+    /// The derivatives of (s, t, r) scaled to texels of the base level (u, v, w), with unused
+    /// dimensions zero.
+    #[inline(always)]
+    fn scaled(&self, d: [f32; 3]) -> [f32; 3] {
+        let [w, h, dd] = self.size;
+        match self.target {
+            TextureTarget::T1D => [d[0] * w, 0.0, 0.0],
+            TextureTarget::T3D => [d[0] * w, d[1] * h, d[2] * dd],
+            _ => [d[0] * w, d[1] * h, 0.0],
+        }
+    }
+
+    /// [`BoundTexture::lambda_from_rho`].
+    #[inline]
+    pub fn lambda_from_rho(&self, rho: f32) -> f32 {
+        let base = if rho.is_nan() {
+            f32::INFINITY
+        } else {
+            rho.log2()
+        };
+        let lambda = base + self.bias;
+        let lambda = if lambda > self.max_lod {
+            self.max_lod
+        } else {
+            lambda
+        };
+        if lambda < self.min_lod {
+            self.min_lod
+        } else {
+            lambda
+        }
+    }
+
+    /// [`BoundTexture::isotropic_lambda`].
+    #[inline]
+    pub fn isotropic_lambda(&self, d_dx: [f32; 3], d_dy: [f32; 3]) -> f32 {
+        // max(sqrt a, sqrt b) is sqrt(max(a, b)) exactly (sqrt is correctly rounded, hence
+        // monotonic; `max` ignores a NaN either way): one square root.
+        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let (ax, ay) = (sq(self.scaled(d_dx)), sq(self.scaled(d_dy)));
+        self.lambda_from_rho(ax.max(ay).sqrt())
+    }
+
+    /// [`BoundTexture::level_plan`].
+    #[inline]
+    pub fn plan(&self, lambda: f32) -> LevelPlan {
+        let q = self.last_level;
+        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
+        if lambda <= self.switch_over {
+            return LevelPlan::One {
+                level: 0,
+                linear: self.mag_linear,
+            };
+        }
+        let linear = matches!(
+            self.min_filter,
+            MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
+        );
+        match self.min_filter {
+            MinFilter::Nearest | MinFilter::Linear => LevelPlan::One { level: 0, linear },
+            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                let d = if lambda <= 0.5 {
+                    0
+                } else {
+                    ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
+                };
+                LevelPlan::One {
+                    level: d.min(q),
+                    linear,
+                }
+            }
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                if lambda >= q as f32 {
+                    LevelPlan::One { level: q, linear }
+                } else {
+                    let (fl, w) = floor_frac(lambda as f64);
+                    let d1 = (fl.max(0) as usize).min(q);
+                    let d2 = (d1 + 1).min(q);
+                    LevelPlan::Two {
+                        levels: [d1, d2],
+                        linear,
+                        weight: w,
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// `floor(x)` as an integer and the fraction `x - floor(x)` in [0, 1): saturating, NaN as
 /// (0, 0). Avoids the libm call `f64::floor` becomes without SSE4.1.
 #[inline(always)]
@@ -260,27 +366,28 @@ impl BoundTexture {
     /// sum clamped to ±`GL_MAX_TEXTURE_LOD_BIAS`), clamped to [MIN_LOD, MAX_LOD]. ρ = 0 gives
     /// MIN_LOD (magnification); an infinite or NaN ρ gives MAX_LOD (the coarsest level).
     pub fn lambda_from_rho(&self, rho: f32, unit_lod_bias: f32) -> f32 {
+        self.lod_select(unit_lod_bias).lambda_from_rho(rho)
+    }
+
+    /// The parameters of λ and level selection for a unit with LOD bias `unit_lod_bias`,
+    /// gathered once (per span on the fast paths) instead of per fragment.
+    pub fn lod_select(&self, unit_lod_bias: f32) -> LodSelect {
         let p = &self.inner.params;
-        let base = if rho.is_nan() {
-            f32::INFINITY
-        } else {
-            rho.log2()
-        };
         let mut bias = p.lod_bias + unit_lod_bias;
         if bias.is_nan() {
             bias = 0.0;
         }
-        let bias = bias.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
-        let lambda = base + bias;
-        let lambda = if lambda > p.max_lod {
-            p.max_lod
-        } else {
-            lambda
-        };
-        if lambda < p.min_lod {
-            p.min_lod
-        } else {
-            lambda
+        let [w, h, d] = self.inner.base_size;
+        LodSelect {
+            bias: bias.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
+            min_lod: p.min_lod,
+            max_lod: p.max_lod,
+            switch_over: self.switch_over(),
+            mag_linear: p.mag_filter == MagFilter::Linear,
+            min_filter: p.min_filter,
+            last_level: self.level_count().saturating_sub(1),
+            size: [w, h, d],
+            target: self.inner.target,
         }
     }
 
@@ -299,11 +406,7 @@ impl BoundTexture {
     /// to texels, plus biases, clamped ([`BoundTexture::lambda_from_rho`]).
     #[inline]
     pub fn isotropic_lambda(&self, d_dx: [f32; 3], d_dy: [f32; 3], unit_lod_bias: f32) -> f32 {
-        // max(sqrt a, sqrt b) is sqrt(max(a, b)) exactly (sqrt is correctly rounded, hence
-        // monotonic; `max` ignores a NaN either way): one square root.
-        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-        let (ax, ay) = (sq(self.scaled(d_dx)), sq(self.scaled(d_dy)));
-        self.lambda_from_rho(ax.max(ay).sqrt(), unit_lod_bias)
+        self.lod_select(unit_lod_bias).isotropic_lambda(d_dx, d_dy)
     }
 
     /// Samples at `coords` (s, t, r already divided by q; for cube maps the direction) with a
@@ -470,46 +573,9 @@ impl BoundTexture {
     /// [`BoundTexture::level_plan`] for a chain whose last level is `q`.
     #[inline]
     fn plan_for(&self, lambda: f32, q: usize) -> LevelPlan {
-        let p = &self.inner.params;
-        let lambda = if lambda.is_nan() { 0.0 } else { lambda };
-        if lambda <= self.switch_over() {
-            return LevelPlan::One {
-                level: 0,
-                linear: p.mag_filter == MagFilter::Linear,
-            };
-        }
-        let linear = matches!(
-            p.min_filter,
-            MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
-        );
-        match p.min_filter {
-            MinFilter::Nearest | MinFilter::Linear => LevelPlan::One { level: 0, linear },
-            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
-                let d = if lambda <= 0.5 {
-                    0
-                } else {
-                    ((lambda + 0.5).ceil() - 1.0).min(q as f32) as usize
-                };
-                LevelPlan::One {
-                    level: d.min(q),
-                    linear,
-                }
-            }
-            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
-                if lambda >= q as f32 {
-                    LevelPlan::One { level: q, linear }
-                } else {
-                    let (fl, w) = floor_frac(lambda as f64);
-                    let d1 = (fl.max(0) as usize).min(q);
-                    let d2 = (d1 + 1).min(q);
-                    LevelPlan::Two {
-                        levels: [d1, d2],
-                        linear,
-                        weight: w,
-                    }
-                }
-            }
-        }
+        let mut select = self.lod_select(0.0);
+        select.last_level = q;
+        select.plan(lambda)
     }
 
     /// Internal RGBA after filtering -> texture source colour.
