@@ -164,7 +164,15 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool, const SAMPL
                 let gx = x - lane as i32;
                 let live = ((1u32 << ((x1 - gx).min(8) as u32)) - (1u32 << lane)) as u8;
                 for (k, u) in ds.units.iter().enumerate() {
-                    group_texels[k] = sampled_texels(samplers[k].as_mut(), u, it, gx, yc, live);
+                    sampled_texels(
+                        samplers[k].as_mut(),
+                        u,
+                        it,
+                        gx,
+                        yc,
+                        live,
+                        &mut group_texels[k],
+                    );
                 }
             }
             let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
@@ -659,12 +667,12 @@ fn sampled_texels(
     gx: i32,
     yc: f64,
     live: u8,
-) -> Texels8 {
+    out: &mut Texels8,
+) {
     let x = gx as f64 + 0.5;
-    if let Some(t) = sampler.and_then(|p| p.texels(x, live)) {
-        return t;
+    if sampler.is_some_and(|p| p.texels_into(x, live, out)) {
+        return;
     }
-    let mut out = [[0f32; 8]; 4];
     for j in 0..8 {
         if live & (1 << j) != 0 {
             let t = unit_texel(u, it, x + j as f64, yc);
@@ -673,7 +681,6 @@ fn sampled_texels(
             }
         }
     }
-    out
 }
 
 /// The texture environment cascade on the primary colour, given each unit's texel.
@@ -1066,7 +1073,20 @@ impl<'a> Perspective8<'a> {
     /// 2k + 1 form a quad's row); only lanes whose bit is set in `live` matter. `None` when a
     /// coordinate is beyond the filter's range (the caller samples one by one).
     fn texels(&mut self, x: f64, live: u8) -> Option<Texels8> {
-        let rows = simd::perspective_rows8(&self.planes, x)?;
+        let mut out = [[0f32; 8]; 4];
+        self.texels_into(x, live, &mut out).then_some(out)
+    }
+
+    /// [`Perspective8::texels`] written into `out` (lanes not in `live` unspecified); false
+    /// when the caller must sample one by one.
+    fn texels_into(&mut self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        let Some(rows) = simd::perspective_rows8(&self.planes, x) else {
+            return false;
+        };
+        self.texels_at(&rows, live, out).is_some()
+    }
+
+    fn texels_at(&mut self, rows: &[[[f64; 8]; 2]; 2], live: u8, out: &mut Texels8) -> Option<()> {
         let (upper, lower) = if self.own_is_upper {
             (&rows[0], &rows[1])
         } else {
@@ -1116,7 +1136,6 @@ impl<'a> Perspective8<'a> {
                 }
             };
         }
-        let mut out = [[0f32; 8]; 4];
         let mut done = !live;
         for k in 0..4 {
             if done & (3 << (2 * k)) == 3 << (2 * k) {
@@ -1148,7 +1167,8 @@ impl<'a> Perspective8<'a> {
             };
             // One plan for every live lane (the usual case): no merging.
             if all {
-                return Some(texels);
+                *out = texels;
+                return Some(());
             }
             for j in 0..8 {
                 if lanes & (1 << j) != 0 {
@@ -1158,7 +1178,7 @@ impl<'a> Perspective8<'a> {
                 }
             }
         }
-        Some(out)
+        Some(())
     }
 }
 
@@ -1311,7 +1331,15 @@ pub fn span_sampled8<'a>(
         let first = (gx - x0) as isize;
         let base = (row as isize + first) as usize;
         for (k, unit) in ds.units.iter().enumerate() {
-            unit_texels[k] = sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, live);
+            sampled_texels(
+                samplers[k].as_mut(),
+                unit,
+                it,
+                gx,
+                yc,
+                live,
+                &mut unit_texels[k],
+            );
         }
         let mut color = [[0f32; 8]; 4];
         let mut depth = [0u32; 8];

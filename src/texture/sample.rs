@@ -194,8 +194,11 @@ impl LodSelect {
                 if lambda >= q as f32 {
                     LevelPlan::One { level: q, linear }
                 } else {
-                    let (fl, w) = floor_frac(lambda as f64);
-                    let d1 = (fl.max(0) as usize).min(q);
+                    // Here 0 < λ < q (λ > switch_over >= 0), so truncation is the floor
+                    // and λ - floor(λ) is exact in f32.
+                    let fl = lambda as usize;
+                    let w = lambda - fl as f32;
+                    let d1 = fl.min(q);
                     let d2 = (d1 + 1).min(q);
                     LevelPlan::Two {
                         levels: [d1, d2],
