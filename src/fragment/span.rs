@@ -701,28 +701,24 @@ fn environment(
 }
 
 /// [`environment`] for eight fragments at once: primary colours `primary` (channel arrays) and
-/// the texels of `ds.units[k]` in `texels[k]`.
+/// the texels of every unit with a texture in `by_unit` (indexed by unit number).
 fn environment8(
     ds: &DrawState,
-    primary: &[[f32; 8]; 4],
-    texels: &[[[f32; 8]; 4]; MAX_TEXTURE_UNITS],
-) -> [[f32; 8]; 4] {
-    use texenv::{Lanes, Lanes8};
-    let primary = primary.map(|c| Lanes8(c).clamp01());
-    let mut by_unit: [Option<[Lanes8; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-    for (k, u) in ds.units.iter().enumerate() {
-        by_unit[u.unit] = Some(texels[k].map(Lanes8));
-    }
+    primary: &Texels8,
+    by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
+) -> Texels8 {
+    use texenv::Lanes;
+    let primary = primary.map(|c| c.clamp01());
     let inputs = CombineInputs {
         primary,
-        texels: &by_unit,
+        texels: by_unit,
     };
     let mut color = primary;
     for u in &ds.units {
-        let ct = by_unit[u.unit].unwrap_or([Lanes8::splat(0.0); 4]);
+        let ct = by_unit[u.unit].unwrap_or([[0.0; 8]; 4]);
         color = texenv::apply(&u.env, u.base, u.unit, color, ct, &inputs);
     }
-    color.map(|c| c.0)
+    color
 }
 
 /// One unit on the fast 2D path over one span: the texture, the coordinate planes and, for
@@ -1321,7 +1317,11 @@ pub fn span_sampled8<'a>(
         },
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
     };
-    let mut unit_texels = [[[0f32; 8]; 4]; MAX_TEXTURE_UNITS];
+    // Each unit's texels of the current group, by unit number (as the cascade reads them).
+    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+    for unit in &ds.units {
+        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
+    }
     let uses_depth = key.depth_func.is_some() || key.depth_write;
     let mut gx = x0 & !1;
     while gx < x1 {
@@ -1331,15 +1331,9 @@ pub fn span_sampled8<'a>(
         let first = (gx - x0) as isize;
         let base = (row as isize + first) as usize;
         for (k, unit) in ds.units.iter().enumerate() {
-            sampled_texels(
-                samplers[k].as_mut(),
-                unit,
-                it,
-                gx,
-                yc,
-                live,
-                &mut unit_texels[k],
-            );
+            if let Some(out) = by_unit[unit.unit].as_mut() {
+                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, live, out);
+            }
         }
         let mut color = [[0f32; 8]; 4];
         let mut depth = [0u32; 8];
@@ -1371,14 +1365,13 @@ pub fn span_sampled8<'a>(
             *d = u32::from_le_bytes(tile.color[base + j]);
         }
         if single.is_none() {
-            color = environment8(ds, &color, &unit_texels);
+            color = environment8(ds, &color, &by_unit);
         }
         // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies
         // the environment; otherwise it is the cascade's result, entering as a replacing texel.
-        let tex = if single.is_some() {
-            &unit_texels[0]
-        } else {
-            &color
+        let tex = match single.and(ds.units.first()) {
+            Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
+            None => &color,
         };
         if let Some((words, passed)) = simd::shade8(&tail, &color, tex, &dst, pass) {
             for j in lo..hi {

@@ -40,41 +40,39 @@ impl Lanes for f32 {
     }
 }
 
-/// Eight fragments' values of one channel.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lanes8(pub [f32; 8]);
+/// Eight fragments' values of one channel (a plain array, so eight-pixel texels need no
+/// conversion).
+pub type Lanes8 = [f32; 8];
 
-impl Lanes8 {
-    #[inline(always)]
-    fn zip(self, o: Lanes8, f: impl Fn(f32, f32) -> f32) -> Lanes8 {
-        let mut r = [0f32; 8];
-        for i in 0..8 {
-            r[i] = f(self.0[i], o.0[i]);
-        }
-        Lanes8(r)
+#[inline(always)]
+fn zip8(a: Lanes8, b: Lanes8, f: impl Fn(f32, f32) -> f32) -> Lanes8 {
+    let mut r = [0f32; 8];
+    for i in 0..8 {
+        r[i] = f(a[i], b[i]);
     }
+    r
 }
 
 impl Lanes for Lanes8 {
     #[inline(always)]
     fn splat(v: f32) -> Lanes8 {
-        Lanes8([v; 8])
+        [v; 8]
     }
     #[inline(always)]
     fn add(self, o: Lanes8) -> Lanes8 {
-        self.zip(o, |a, b| a + b)
+        zip8(self, o, |a, b| a + b)
     }
     #[inline(always)]
     fn sub(self, o: Lanes8) -> Lanes8 {
-        self.zip(o, |a, b| a - b)
+        zip8(self, o, |a, b| a - b)
     }
     #[inline(always)]
     fn mul(self, o: Lanes8) -> Lanes8 {
-        self.zip(o, |a, b| a * b)
+        zip8(self, o, |a, b| a * b)
     }
     #[inline(always)]
     fn clamp01(self) -> Lanes8 {
-        Lanes8(self.0.map(|v| v.max(0.0).min(1.0)))
+        self.map(|v| v.max(0.0).min(1.0))
     }
 }
 
@@ -387,7 +385,7 @@ mod tests {
             env.combine.rgb_scale = g.pick(&[1, 2, 4]);
             env.combine.alpha_scale = g.pick(&[1, 2, 4]);
             let base = g.pick(&bases);
-            let lane = |g: &mut Gen| [0; 4].map(|_| Lanes8([0; 8].map(|_| g.value())));
+            let lane = |g: &mut Gen| [0; 4].map(|_| [0; 8].map(|_| g.value()));
             let (cf, ct, primary, t0, t1) = (
                 lane(&mut g),
                 lane(&mut g),
@@ -404,7 +402,7 @@ mod tests {
             };
             let out8 = apply(&env, base, 1, cf, ct, &inputs8);
             for j in 0..8 {
-                let at = |v: [Lanes8; 4]| v.map(|c| c.0[j]);
+                let at = |v: [Lanes8; 4]| v.map(|c| c[j]);
                 let mut texels: [Option<[f32; 4]>; 8] = [None; 8];
                 texels[0] = Some(at(t0));
                 texels[1] = Some(at(t1));
