@@ -1041,11 +1041,8 @@ impl<'a> Perspective8<'a> {
             unit,
             planes: [row(yc), row(other)],
             own_is_upper,
-            lod: tex.lod_select(unit.env.lod_bias),
-            fixed_plan: match tex.plan_without_lambda() {
-                Some(LevelPlan::One { level, linear }) => Some((level, linear)),
-                _ => None,
-            },
+            lod: unit.lod,
+            fixed_plan: unit.fixed_plan,
             levels: [None; MAX_FAST_LEVELS],
         };
         // A texture whose base level does not take the filter is sampled one by one.

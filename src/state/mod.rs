@@ -96,6 +96,9 @@ pub struct Context {
     pub(crate) clip_buffer: Vec<crate::primitive::clip::ClipVertex>,
     /// Assembled primitives of the current draw, kept like `clip_buffer`.
     pub(crate) primitive_buffer: Vec<crate::primitive::assemble::Primitive>,
+    /// Window positions of the current draw's vertices (`None`: outside a clip plane), kept
+    /// like `clip_buffer`.
+    pub(crate) window_buffer: Vec<Option<crate::primitive::viewport::WindowVertex>>,
     /// The active texture unit (`glActiveTexture`), which selects the texture matrix stack.
     pub(crate) active_texture: usize,
     /// The client active texture unit (`glClientActiveTexture`, for texture-coordinate arrays).
@@ -199,6 +202,7 @@ impl Context {
             spare_vertices: Vec::new(),
             clip_buffer: Vec::new(),
             primitive_buffer: Vec::new(),
+            window_buffer: Vec::new(),
             active_texture: 0,
             client_active_texture: 0,
             tex_env: Default::default(),

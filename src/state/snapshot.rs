@@ -16,7 +16,7 @@ use crate::raster::setup::Rect;
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
-use crate::texture::sample::BoundTexture;
+use crate::texture::sample::{BoundTexture, LevelPlan, LodSelect};
 use crate::vertex::lighting::NormalTransform;
 use crate::vertex::texgen::GenCoord;
 
@@ -58,6 +58,10 @@ pub struct TextureUnitDraw {
     pub matrix: Mat4,
     /// Texture coordinate generation for s, t, r, q (`None`: the current coordinate).
     pub texgen: [Option<GenCoord>; 4],
+    /// The texture's level-of-detail selection with this unit's bias, gathered once per draw.
+    pub lod: LodSelect,
+    /// The level and filter when they do not depend on λ (`plan_without_lambda`).
+    pub fixed_plan: Option<(usize, bool)>,
 }
 
 /// Fog parameters of a draw (section 3.10).
@@ -242,6 +246,11 @@ impl Context {
                 Some(TextureUnitDraw {
                     unit: u,
                     base: texture.base_format(),
+                    lod: texture.lod_select(self.tex_env[u].lod_bias),
+                    fixed_plan: match texture.plan_without_lambda() {
+                        Some(LevelPlan::One { level, linear }) => Some((level, linear)),
+                        _ => None,
+                    },
                     texture,
                     env: self.tex_env[u],
                     matrix: *self.transform.texture[u].last().unwrap_or(&Mat4::IDENTITY),

@@ -56,22 +56,55 @@ impl Context {
         clip.clear();
         // Large batches are transformed on the worker threads too (each vertex independently,
         // results in order, so the output does not depend on the thread count).
+        // Filled one-sided polygons whose vertices lie inside every clip plane need only the
+        // window positions: each vertex's is computed once here, not once per triangle that
+        // shares it (a strip's vertex belongs to three).
+        let mut windows = std::mem::take(&mut self.window_buffer);
+        windows.clear();
+        let shared_windows = ds.raster.polygon_mode == [PolygonMode::Fill; 2]
+            && !ds.two_sided
+            && !matches!(
+                mode,
+                PrimitiveMode::Points
+                    | PrimitiveMode::Lines
+                    | PrimitiveMode::LineLoop
+                    | PrimitiveMode::LineStrip
+            );
+        let window = |c: &ClipVertex| point_visible(c, &ds.clip_planes).then(|| to_window(&ds, c));
         match &self.pool {
             Some(pool)
                 if verts.len() >= PARALLEL_TRANSFORM_MIN && pool.current_num_threads() > 1 =>
             {
                 use rayon::prelude::*;
                 pool.install(|| {
-                    clip.par_extend(verts.par_iter().map(|v| transform::to_clip(&ds, v)))
+                    clip.par_extend(verts.par_iter().map(|v| transform::to_clip(&ds, v)));
+                    if shared_windows {
+                        windows.par_extend(clip.par_iter().map(window));
+                    }
                 });
             }
-            _ => clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v))),
+            _ => {
+                clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v)));
+                if shared_windows {
+                    windows.extend(clip.iter().map(window));
+                }
+            }
         }
-        self.draw_clipped(&ds, mode, &clip);
+        self.draw_clipped(&ds, mode, &clip, shared_windows.then_some(&windows[..]));
         self.clip_buffer = clip;
+        self.window_buffer = windows;
     }
 
-    fn draw_clipped(&mut self, ds: &Arc<DrawState>, mode: PrimitiveMode, clip: &[ClipVertex]) {
+    /// Assembles, clips and bins the primitives of `clip`. `windows`, when given, holds each
+    /// vertex's window position (`None` outside a clip plane); only filled one-sided polygons
+    /// take it.
+    fn draw_clipped(
+        &mut self,
+        ds: &Arc<DrawState>,
+        mode: PrimitiveMode,
+        clip: &[ClipVertex],
+        windows: Option<&[Option<WindowVertex>]>,
+    ) {
         let n_attrs = ds.attr_count;
         let clip_attrs = ds.clip_attr_count;
         let user = &ds.clip_planes;
@@ -83,7 +116,6 @@ impl Context {
         // runs on along a strip or loop (section 3.4.2).
         let mut stipple_counter = 0u32;
         let independent_lines = mode == PrimitiveMode::Lines;
-        let filled = ds.raster.polygon_mode == [PolygonMode::Fill; 2];
         let edge_flags = assemble::uses_edge_flags(mode);
         let mut prims = std::mem::take(&mut self.primitive_buffer);
         assemble::assemble_into(mode, clip.len(), &mut prims);
@@ -138,10 +170,13 @@ impl Context {
                     edges,
                 } => {
                     let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
-                    if filled && !ds.two_sided && tri.iter().all(|c| point_visible(c, user)) {
+                    let inside = match windows.map(|w| (w[v[0]], w[v[1]], w[v[2]])) {
+                        Some((Some(a), Some(b), Some(c))) => Some([a, b, c]),
+                        _ => None,
+                    };
+                    if let Some(w) = inside {
                         // Filled and entirely inside every clip plane (the common case): no
                         // copies.
-                        let w = tri.map(|c| to_window(ds, c));
                         let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
