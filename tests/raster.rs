@@ -357,26 +357,56 @@ fn fast_paths_match_the_general_path() {
         (GL_LESS, 0, [1, 1, 0, 1]),
         (GL_ALWAYS, 1, [1, 1, 1, 1]),
     ];
+    // No fog (the specialised spans), then each fog mode (the fogged spans).
+    let fogs = [None, Some(GL_LINEAR), Some(GL_EXP), Some(GL_EXP2)];
     for (func, mask, cmask) in keys {
         for depth_test in [true, false] {
-            let render = |general| {
-                let mut gl = Context::new(96, 96);
-                gl.set_force_general_path(general);
-                busy_scene(&mut gl);
-                if !depth_test {
-                    gl.disable(GL_DEPTH_TEST);
+            for fog in fogs {
+                let render = |general| {
+                    let mut gl = Context::new(96, 96);
+                    gl.set_force_general_path(general);
+                    busy_scene(&mut gl);
+                    if !depth_test {
+                        gl.disable(GL_DEPTH_TEST);
+                    }
+                    if let Some(mode) = fog {
+                        gl.enable(GL_FOG);
+                        gl.fogi(GL_FOG_MODE, mode as i32);
+                        gl.fogf(GL_FOG_DENSITY, 0.3);
+                        gl.fogf(GL_FOG_START, 1.0);
+                        gl.fogf(GL_FOG_END, 8.0);
+                        gl.fogfv(GL_FOG_COLOR, &[0.2, 0.5, 0.9, 1.0]);
+                    }
+                    gl.depth_func(func);
+                    gl.depth_mask(mask);
+                    gl.color_mask(cmask[0], cmask[1], cmask[2], cmask[3]);
+                    busy_scene_again(&mut gl);
+                    read_rgba(&mut gl)
+                };
+                let general = render(true);
+                assert_eq!(
+                    general,
+                    render(false),
+                    "func {func:#x} mask {mask} cmask {cmask:?} fog {fog:?}"
+                );
+                if fog.is_some() && cmask == [1; 4] {
+                    assert_ne!(
+                        general,
+                        {
+                            let mut gl = Context::new(96, 96);
+                            busy_scene(&mut gl);
+                            if !depth_test {
+                                gl.disable(GL_DEPTH_TEST);
+                            }
+                            gl.depth_func(func);
+                            gl.depth_mask(mask);
+                            busy_scene_again(&mut gl);
+                            read_rgba(&mut gl)
+                        },
+                        "fog changed nothing"
+                    );
                 }
-                gl.depth_func(func);
-                gl.depth_mask(mask);
-                gl.color_mask(cmask[0], cmask[1], cmask[2], cmask[3]);
-                busy_scene_again(&mut gl);
-                read_rgba(&mut gl)
-            };
-            assert_eq!(
-                render(true),
-                render(false),
-                "func {func:#x} mask {mask} cmask {cmask:?}"
-            );
+            }
         }
     }
 }

@@ -3,8 +3,8 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, sampled8_applies, span_general, span_nothing, span_sampled,
-    span_sampled8, span_specialised, span_textured, tex_mode, SpanFn,
+    blend_mode, depth_mode, sampled8_applies, span_fogged, span_general, span_nothing,
+    span_sampled, span_sampled8, span_specialised, span_textured, tex_mode, SpanFn,
 };
 use crate::api::convert::CompareFunc;
 use crate::texture::simd;
@@ -24,6 +24,10 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
             return select_textured(key, layout);
         }
     }
+    let simple_but_fog = key.fog.is_some() && FragmentKey { fog: None, ..*key }.is_simple();
+    if simple_but_fog {
+        return select_fogged(key);
+    }
     if !key.is_simple() {
         if sampled8_applies(key) {
             return span_sampled8;
@@ -42,6 +46,20 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         }
         (Some(CompareFunc::LessEqual), true, true) => {
             span_specialised::<{ depth_mode::LEQUAL_WRITE }, true>
+        }
+        _ => span_general,
+    }
+}
+
+/// The fogged span for a key that is simple but for fog.
+fn select_fogged(key: &FragmentKey) -> SpanFn {
+    let full = key.color_mask == [true; 4];
+    match (key.depth_func, key.depth_write, full) {
+        (None, _, true) => span_fogged::<{ depth_mode::NONE }, true>,
+        (None, _, false) => span_fogged::<{ depth_mode::NONE }, false>,
+        (Some(CompareFunc::Less), true, true) => span_fogged::<{ depth_mode::LESS_WRITE }, true>,
+        (Some(CompareFunc::LessEqual), true, true) => {
+            span_fogged::<{ depth_mode::LEQUAL_WRITE }, true>
         }
         _ => span_general,
     }

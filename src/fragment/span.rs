@@ -113,7 +113,13 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
 /// `SAMPLED` samples every texture unit eight pixels at a time ([`Perspective8`]) ahead of
 /// the per-fragment environment; the key must have `simd_units`.
 #[inline(always)]
-fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool, const SAMPLED: bool>(
+fn shade<
+    const DEPTH: u8,
+    const FULL_MASK: bool,
+    const SIMPLE: bool,
+    const SAMPLED: bool,
+    const FOG: bool,
+>(
     ds: &DrawState,
     tile: &mut Tile,
     y: i32,
@@ -189,7 +195,7 @@ fn shade<const DEPTH: u8, const FULL_MASK: bool, const SIMPLE: bool, const SAMPL
                 color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
             }
         }
-        if !SIMPLE && key.fog.is_some() {
+        if (FOG || !SIMPLE) && key.fog.is_some() {
             if let Some(f) = &ds.fog {
                 let xc = x0 as f64 + i as f64 + 0.5;
                 let p = &it.attrs[attr::FOG];
@@ -1194,7 +1200,7 @@ pub fn span_general<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<{ depth_mode::DYNAMIC }, false, false, false>(ds, tile, y, x0, x1, it)
+    shade::<{ depth_mode::DYNAMIC }, false, false, false, false>(ds, tile, y, x0, x1, it)
 }
 
 /// The general path with every texture unit sampled eight pixels at a time (keys with
@@ -1207,7 +1213,7 @@ pub fn span_sampled<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<{ depth_mode::DYNAMIC }, false, false, true>(ds, tile, y, x0, x1, it)
+    shade::<{ depth_mode::DYNAMIC }, false, false, true, false>(ds, tile, y, x0, x1, it)
 }
 
 /// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
@@ -1234,7 +1240,20 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    shade::<DEPTH, FULL_MASK, true, false>(ds, tile, y, x0, x1, it)
+    shade::<DEPTH, FULL_MASK, true, false, false>(ds, tile, y, x0, x1, it)
+}
+
+/// [`span_specialised`] with fog: keys that are simple but for fog (a fogged, untextured,
+/// unblended scene).
+pub fn span_fogged<'a, const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<DEPTH, FULL_MASK, true, false, true>(ds, tile, y, x0, x1, it)
 }
 
 /// Draws nothing (a key whose fragments change no buffer).
