@@ -83,10 +83,17 @@ impl Context {
         if self.immediate.is_none() {
             return;
         }
-        let lit = self.lighting.enabled.then(|| {
-            let setup = self.light_setup();
-            setup.light(position, self.current.normal, &self.lighting.materials)
-        });
+        let lit = if self.lighting.enabled {
+            if self.light_setup.is_none() {
+                self.light_setup();
+            }
+            // Borrowed, not cloned: no reference counting per vertex.
+            self.light_setup
+                .as_ref()
+                .map(|s| s.light(position, self.current.normal, &self.lighting.materials))
+        } else {
+            None
+        };
         let c = &self.current;
         let (color, secondary_color, back_colors) = match lit {
             Some(l) => (l.front[0], l.front[1], l.back),

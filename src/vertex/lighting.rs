@@ -57,6 +57,9 @@ pub struct LightSetup {
     local_viewer: bool,
     two_side: bool,
     separate_specular: bool,
+    /// Whether any term reads the vertex's eye position (a positional light or a local
+    /// viewer); otherwise it is not computed.
+    needs_eye_position: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -64,6 +67,10 @@ struct PreparedLight {
     light: Light,
     spot_dir: Vec3,
     cos_cutoff: f32,
+    /// For a directional light (w = 0): the unit direction to the light, the same at every
+    /// vertex, and with an infinite viewer also the half vector.
+    direction: Option<Vec3>,
+    half_vector: Option<Vec3>,
 }
 
 /// Lit colours of one vertex: primary and secondary, for the front and the back face.
@@ -93,12 +100,23 @@ impl LightSetup {
             .lights
             .iter()
             .filter(|l| l.enabled)
-            .map(|l| PreparedLight {
-                light: *l,
-                spot_dir: l.spot_direction.normalize_or_zero(),
-                cos_cutoff: l.spot_cutoff.to_radians().cos(),
+            .map(|l| {
+                // Computed exactly as `face` would per vertex, so the values do not change.
+                let direction =
+                    (l.position.w == 0.0).then(|| l.position.truncate().normalize_or_zero());
+                PreparedLight {
+                    light: *l,
+                    spot_dir: l.spot_direction.normalize_or_zero(),
+                    cos_cutoff: l.spot_cutoff.to_radians().cos(),
+                    direction,
+                    half_vector: direction
+                        .filter(|_| !state.local_viewer)
+                        .map(|vp| (vp + Vec3::Z).normalize_or_zero()),
+                }
             })
-            .collect();
+            .collect::<Vec<_>>();
+        let needs_eye_position =
+            state.local_viewer || lights.iter().any(|l: &PreparedLight| l.direction.is_none());
         LightSetup {
             modelview,
             normal_matrix,
@@ -109,16 +127,21 @@ impl LightSetup {
             local_viewer: state.local_viewer,
             two_side: state.two_side,
             separate_specular: state.separate_specular,
+            needs_eye_position,
         }
     }
 
     /// Lights one vertex given its object position, normal and the current materials.
     pub fn light(&self, position: Vec4, normal: Vec3, materials: &[Material; 2]) -> LitColors {
-        let eye = self.modelview * position;
-        let v = if eye.w != 0.0 {
-            eye.truncate() / eye.w
+        let v = if !self.needs_eye_position {
+            Vec3::ZERO
         } else {
-            eye.truncate()
+            let eye = self.modelview * position;
+            if eye.w != 0.0 {
+                eye.truncate() / eye.w
+            } else {
+                eye.truncate()
+            }
         };
         let n = NormalTransform {
             matrix: self.normal_matrix,
@@ -139,8 +162,8 @@ impl LightSetup {
         let mut specular = Vec4::ZERO;
         for pl in &self.lights {
             let l = &pl.light;
-            let (vp, attenuation) = if l.position.w == 0.0 {
-                (l.position.truncate().normalize_or_zero(), 1.0)
+            let (vp, attenuation) = if let Some(direction) = pl.direction {
+                (direction, 1.0)
             } else {
                 let d = l.position.truncate() / l.position.w - v;
                 let dist = d.length();
@@ -165,16 +188,24 @@ impl LightSetup {
             let n_dot_vp = n.dot(vp).max(0.0);
             let mut term = m.ambient * l.ambient + m.diffuse * l.diffuse * n_dot_vp;
             let mut spec = Vec4::ZERO;
-            if n_dot_vp > 0.0 {
-                let eye_dir = if self.local_viewer {
-                    (-v).normalize_or_zero()
-                } else {
-                    Vec3::Z
+            let specular_product = m.specular * l.specular;
+            // A zero specular product (the default material) adds zero whatever the power:
+            // skip the half vector and the power.
+            if n_dot_vp > 0.0 && specular_product.truncate() != Vec3::ZERO {
+                let h = match pl.half_vector {
+                    Some(h) => h,
+                    None => {
+                        let eye_dir = if self.local_viewer {
+                            (-v).normalize_or_zero()
+                        } else {
+                            Vec3::Z
+                        };
+                        (vp + eye_dir).normalize_or_zero()
+                    }
                 };
-                let h = (vp + eye_dir).normalize_or_zero();
                 let n_dot_h = n.dot(h);
                 if n_dot_h > 0.0 {
-                    spec = m.specular * l.specular * n_dot_h.powf(m.shininess);
+                    spec = specular_product * n_dot_h.powf(m.shininess);
                 }
             }
             if self.separate_specular {
