@@ -444,9 +444,14 @@ fn shade_textured<
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => simd::textured8(sm, x, hi, &tail, &primary, &dst, pass),
-                        (None, Some(p)) => p
-                            .texels(x, live)
-                            .and_then(|tex| simd::shade8(&tail, &primary, &tex, &dst, pass)),
+                        (None, Some(p)) => {
+                            let mut tex = [[0f32; 8]; 4];
+                            if p.texels_into(x, live, &mut tex) {
+                                simd::shade8(&tail, &primary, &tex, &dst, pass)
+                            } else {
+                                None
+                            }
+                        }
                         _ => None,
                     }
                     .or_else(|| {
@@ -1069,15 +1074,9 @@ impl<'a> Perspective8<'a> {
     }
 
     /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
-    /// 2k + 1 form a quad's row); only lanes whose bit is set in `live` matter. `None` when a
-    /// coordinate is beyond the filter's range (the caller samples one by one).
-    fn texels(&mut self, x: f64, live: u8) -> Option<Texels8> {
-        let mut out = [[0f32; 8]; 4];
-        self.texels_into(x, live, &mut out).then_some(out)
-    }
-
-    /// [`Perspective8::texels`] written into `out` (lanes not in `live` unspecified); false
-    /// when the caller must sample one by one.
+    /// 2k + 1 form a quad's row), written into `out`; only lanes whose bit is set in `live`
+    /// matter. False when a coordinate is beyond the filter's range (the caller samples one by
+    /// one).
     fn texels_into(&mut self, x: f64, live: u8, out: &mut Texels8) -> bool {
         let Some(rows) = simd::perspective_rows8(&self.planes, x) else {
             return false;
