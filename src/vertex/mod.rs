@@ -54,8 +54,6 @@ impl Context {
         // fresh pages every frame.
         let mut clip = std::mem::take(&mut self.clip_buffer);
         clip.clear();
-        // Large batches are transformed on the worker threads too (each vertex independently,
-        // results in order, so the output does not depend on the thread count).
         // Filled one-sided polygons whose vertices lie inside every clip plane need only the
         // window positions: each vertex's is computed once here, not once per triangle that
         // shares it (a strip's vertex belongs to three).
@@ -71,6 +69,8 @@ impl Context {
                     | PrimitiveMode::LineStrip
             );
         let window = |c: &ClipVertex| point_visible(c, &ds.clip_planes).then(|| to_window(&ds, c));
+        // Large batches are transformed on the worker threads too (each vertex independently,
+        // results in order, so the output does not depend on the thread count).
         match &self.pool {
             Some(pool)
                 if verts.len() >= PARALLEL_TRANSFORM_MIN && pool.current_num_threads() > 1 =>
