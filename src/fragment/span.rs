@@ -105,6 +105,129 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
     (old & !u.stencil_write_mask) | (v & u.stencil_write_mask)
 }
 
+/// The per-fragment operations after texturing, in the specification's order: colour sum
+/// (`secondary`: the interpolated secondary colour), fog (evaluated at `at`), antialiasing
+/// coverage, alpha test, stencil and depth tests with their updates, occlusion counting,
+/// blending or logic op, colour mask; `z` is the fragment's window depth and `idx` its index
+/// in `tile`. The const parameters are [`shade`]'s (`FOG` keeps fog on a `SIMPLE` path) and
+/// `BLEND` fixes the blending ([`blend_mode`]).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn finish_fragment<
+    const DEPTH: u8,
+    const FULL_MASK: bool,
+    const SIMPLE: bool,
+    const FOG: bool,
+    const BLEND: u8,
+>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    it: &Interpolants,
+    idx: usize,
+    at: [f64; 2],
+    mut color: [f32; 4],
+    secondary: [f32; 3],
+    z: f64,
+) {
+    let key = &ds.key;
+    let u = &ds.uniforms;
+    if !SIMPLE && key.color_sum {
+        for c in 0..3 {
+            color[c] = color[c].clamp(0.0, 1.0) + secondary[c];
+        }
+    }
+    if (FOG || !SIMPLE) && key.fog.is_some() {
+        if let Some(f) = &ds.fog {
+            let [xc, yc] = at;
+            let p = &it.attrs[attr::FOG];
+            let c = if it.perspective {
+                (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
+            } else {
+                p.at(xc, yc) as f32
+            };
+            let k = f.factor(c);
+            for ch in 0..3 {
+                color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+            }
+        }
+    }
+    if it.coverage != 1.0 {
+        color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
+    }
+    if !SIMPLE {
+        if let Some(f) = key.alpha_func {
+            if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
+                return;
+            }
+        }
+    }
+    let depth = depth_to_fixed(z, ds.depth_max);
+    let depth_pass = match DEPTH {
+        depth_mode::NONE => true,
+        depth_mode::LESS_WRITE => depth < tile.depth[idx],
+        depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
+        _ => match key.depth_func {
+            None => true,
+            Some(CompareFunc::Always) => true,
+            Some(f) => f.test(depth, tile.depth[idx]),
+        },
+    };
+    if !SIMPLE {
+        if let Some(st) = key.stencil {
+            let old = tile.stencil[idx];
+            let mask = u.stencil_value_mask;
+            let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
+                tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
+                return;
+            } else if depth_pass {
+                st.depth_pass
+            } else {
+                st.depth_fail
+            };
+            tile.stencil[idx] = apply_stencil_op(action, old, u);
+        }
+    }
+    if !depth_pass {
+        return;
+    }
+    if !SIMPLE && key.count_samples {
+        tile.samples_passed += 1;
+    }
+    let write_depth = match DEPTH {
+        depth_mode::NONE => false,
+        depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
+        _ => key.depth_write,
+    };
+    if write_depth {
+        tile.depth[idx] = depth;
+    }
+    let mut rgba = color.map(color_to_u8);
+    if !SIMPLE {
+        let dst = tile.color[idx];
+        if let Some(op) = key.logic_op {
+            for c in 0..4 {
+                rgba[c] = op.apply(rgba[c], dst[c]);
+            }
+        } else if let Some(b) = &key.blend {
+            rgba = if BLEND == blend_mode::ALPHA_OVER {
+                blend_alpha_over(rgba, dst)
+            } else {
+                blend(b, rgba, dst, u.blend_color)
+            };
+        }
+    }
+    if FULL_MASK {
+        tile.color[idx] = rgba;
+    } else {
+        let dst = &mut tile.color[idx];
+        for c in 0..4 {
+            if key.color_mask[c] {
+                dst[c] = rgba[c];
+            }
+        }
+    }
+}
+
 /// The per-fragment pipeline in the specification's order: alpha test, stencil test, depth
 /// test (with the stencil actions), blending or logic op, colour mask. `SIMPLE` paths have no
 /// alpha test, stencil, blending or logic op (the key says so); their depth handling is fixed
@@ -128,7 +251,6 @@ fn shade<
     it: &Interpolants,
 ) {
     let key = &ds.key;
-    let u = &ds.uniforms;
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
@@ -190,104 +312,28 @@ fn shade<
         } else if !SIMPLE && key.texturing {
             color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
         }
-        if !SIMPLE && key.color_sum {
-            for c in 0..3 {
-                color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
-            }
-        }
-        if (FOG || !SIMPLE) && key.fog.is_some() {
-            if let Some(f) = &ds.fog {
-                let xc = x0 as f64 + i as f64 + 0.5;
-                let p = &it.attrs[attr::FOG];
-                let c = if it.perspective {
-                    (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
-                } else {
-                    p.at(xc, yc) as f32
-                };
-                let k = f.factor(c);
-                for ch in 0..3 {
-                    color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
-                }
-            }
-        }
-        if it.coverage != 1.0 {
-            color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
-        }
+        let secondary = if !SIMPLE && key.color_sum {
+            [attr[4] * w, attr[5] * w, attr[6] * w]
+        } else {
+            [0.0; 3]
+        };
         let z_here = z;
-        // Step the interpolants now, so that every `continue` below moves to the next pixel.
         z += dz;
         inv_w += dinv_w;
         for c in 0..na {
             attr[c] += dattr[c];
         }
-        if !SIMPLE {
-            if let Some(f) = key.alpha_func {
-                if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
-                    continue;
-                }
-            }
-        }
-        let depth = depth_to_fixed(z_here, ds.depth_max);
-        let depth_pass = match DEPTH {
-            depth_mode::NONE => true,
-            depth_mode::LESS_WRITE => depth < tile.depth[idx],
-            depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
-            _ => match key.depth_func {
-                None => true,
-                Some(CompareFunc::Always) => true,
-                Some(f) => f.test(depth, tile.depth[idx]),
-            },
-        };
-        if !SIMPLE {
-            if let Some(st) = key.stencil {
-                let old = tile.stencil[idx];
-                let mask = u.stencil_value_mask;
-                let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
-                    tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
-                    continue;
-                } else if depth_pass {
-                    st.depth_pass
-                } else {
-                    st.depth_fail
-                };
-                tile.stencil[idx] = apply_stencil_op(action, old, u);
-            }
-        }
-        if !depth_pass {
-            continue;
-        }
-        if !SIMPLE && key.count_samples {
-            tile.samples_passed += 1;
-        }
-        let write_depth = match DEPTH {
-            depth_mode::NONE => false,
-            depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
-            _ => key.depth_write,
-        };
-        if write_depth {
-            tile.depth[idx] = depth;
-        }
-        let mut rgba = color.map(color_to_u8);
-        if !SIMPLE {
-            let dst = tile.color[idx];
-            if let Some(op) = key.logic_op {
-                for c in 0..4 {
-                    rgba[c] = op.apply(rgba[c], dst[c]);
-                }
-            } else if let Some(b) = &key.blend {
-                rgba = blend(b, rgba, dst, u.blend_color);
-            }
-        }
-        if FULL_MASK {
-            tile.color[idx] = rgba;
-        } else {
-            let dst = &mut tile.color[idx];
-            for c in 0..4 {
-                if key.color_mask[c] {
-                    dst[c] = rgba[c];
-                }
-            }
-        }
+        let xc = x0 as f64 + i as f64 + 0.5;
+        finish_fragment::<DEPTH, FULL_MASK, SIMPLE, FOG, { blend_mode::DYNAMIC }>(
+            ds,
+            tile,
+            it,
+            idx,
+            [xc, yc],
+            color,
+            secondary,
+            z_here,
+        );
     }
 }
 
@@ -498,105 +544,28 @@ fn shade_textured<
                 }
             }
         }
-        if !SIMPLE && key.color_sum {
-            for c in 0..3 {
-                color[c] = color[c].clamp(0.0, 1.0) + attr[4 + c] * w;
-            }
-        }
-        if !SIMPLE && key.fog.is_some() {
-            if let Some(f) = &ds.fog {
-                let xc = x0 as f64 + i as f64 + 0.5;
-                let p = &it.attrs[attr::FOG];
-                let c = if it.perspective {
-                    (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
-                } else {
-                    p.at(xc, yc) as f32
-                };
-                let k = f.factor(c);
-                for ch in 0..3 {
-                    color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
-                }
-            }
-        }
-        if it.coverage != 1.0 {
-            color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
-        }
+        let secondary = if !SIMPLE && key.color_sum {
+            [attr[4] * w, attr[5] * w, attr[6] * w]
+        } else {
+            [0.0; 3]
+        };
         let z_here = z;
-        // Step the interpolants now, so that every `continue` below moves to the next pixel.
         z += dz;
         inv_w += dinv_w;
         for c in 0..na {
             attr[c] += dattr[c];
         }
-        if !SIMPLE {
-            if let Some(f) = key.alpha_func {
-                if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {
-                    continue;
-                }
-            }
-        }
-        let depth = depth_to_fixed(z_here, ds.depth_max);
-        let depth_pass = match DEPTH {
-            depth_mode::NONE => true,
-            depth_mode::LESS_WRITE => depth < tile.depth[idx],
-            depth_mode::LEQUAL_WRITE => depth <= tile.depth[idx],
-            _ => match key.depth_func {
-                None => true,
-                Some(CompareFunc::Always) => true,
-                Some(f) => f.test(depth, tile.depth[idx]),
-            },
-        };
-        if !SIMPLE {
-            if let Some(st) = key.stencil {
-                let old = tile.stencil[idx];
-                let mask = u.stencil_value_mask;
-                let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
-                    tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
-                    continue;
-                } else if depth_pass {
-                    st.depth_pass
-                } else {
-                    st.depth_fail
-                };
-                tile.stencil[idx] = apply_stencil_op(action, old, u);
-            }
-        }
-        if !depth_pass {
-            continue;
-        }
-        let write_depth = match DEPTH {
-            depth_mode::NONE => false,
-            depth_mode::LESS_WRITE | depth_mode::LEQUAL_WRITE => true,
-            _ => key.depth_write,
-        };
-        if write_depth {
-            tile.depth[idx] = depth;
-        }
-        let mut rgba = color.map(color_to_u8);
-        if !SIMPLE {
-            let dst = tile.color[idx];
-            if let Some(op) = key.logic_op {
-                for c in 0..4 {
-                    rgba[c] = op.apply(rgba[c], dst[c]);
-                }
-            } else if let Some(b) = &key.blend {
-                rgba = if BLEND == blend_mode::ALPHA_OVER {
-                    blend_alpha_over(rgba, dst)
-                } else {
-                    blend(b, rgba, dst, u.blend_color)
-                };
-            }
-        }
-        if FULL_MASK {
-            tile.color[idx] = rgba;
-        } else {
-            let dst = &mut tile.color[idx];
-            for c in 0..4 {
-                if key.color_mask[c] {
-                    dst[c] = rgba[c];
-                }
-            }
-        }
+        let xc = x0 as f64 + i as f64 + 0.5;
+        finish_fragment::<DEPTH, FULL_MASK, SIMPLE, false, BLEND>(
+            ds,
+            tile,
+            it,
+            idx,
+            [xc, yc],
+            color,
+            secondary,
+            z_here,
+        );
     }
 }
 
