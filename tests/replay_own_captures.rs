@@ -9,9 +9,7 @@
 
 use std::path::{Path, PathBuf};
 
-use tilegl::replay::player::Player;
-use tilegl::replay::reference::compare_replay;
-use tilegl::replay::trace::TraceReader;
+mod common;
 
 /// Captures that do not match yet, and why.
 const KNOWN_FAILURES: &[(&str, &str)] = &[
@@ -36,35 +34,7 @@ fn traces_dir() -> PathBuf {
 }
 
 fn check_capture(name: &str) {
-    let dir = traces_dir();
-    let trace = dir.join(format!("{name}.trace"));
-    let frames = dir.join(format!("{name}.frames"));
-    let mut reader = TraceReader::open(&trace).expect("open capture");
-    // Two workers: the pictures do not depend on the count, and the machine is shared.
-    let mut player = Player::new(2);
-    let report =
-        compare_replay(&mut reader, &mut player, &frames, None, &mut |_| {}).expect("compare");
-    let mut text = String::new();
-    for p in &report.pictures {
-        text.push_str(&format!("  {}\n", p.line()));
-    }
-    for l in report.stats.report_lines() {
-        text.push_str(&format!("  replay: {l}\n"));
-    }
-    if let Some(e) = &report.error {
-        text.push_str(&format!("  replay stopped: {e}\n"));
-    }
-    text.push_str(&format!("  {}\n", report.summary()));
-    eprintln!("{name}:\n{text}");
-    let known = KNOWN_FAILURES.iter().find(|(n, _)| *n == name);
-    match (report.all_ok(), known) {
-        (true, None) | (false, Some(_)) => {}
-        (true, Some((_, why))) => panic!(
-            "{name} now matches the reference (listed as a known failure: {why}); \
-             remove it from KNOWN_FAILURES\n{text}"
-        ),
-        (false, None) => panic!("{name} does not match the reference:\n{text}"),
-    }
+    common::check_capture(&traces_dir(), name, KNOWN_FAILURES);
 }
 
 macro_rules! captures {

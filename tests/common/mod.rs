@@ -69,3 +69,42 @@ pub fn state_fingerprint(gl: &mut Context) -> Vec<(GLenum, Vec<f64>)> {
 }
 
 use tilegl::api::GLenum;
+
+/// Replays capture `dir/NAME.trace` and compares it with Mesa's pictures in `dir/NAME.frames`
+/// (the shared tolerance rule), printing one line per picture. Panics when it does not match,
+/// unless `known_failures` lists it (with the reason), and when a listed capture now matches,
+/// so that the list stays true.
+pub fn check_capture(dir: &std::path::Path, name: &str, known_failures: &[(&str, &str)]) {
+    use tilegl::replay::player::Player;
+    use tilegl::replay::reference::compare_replay;
+    use tilegl::replay::trace::TraceReader;
+
+    let trace = dir.join(format!("{name}.trace"));
+    let frames = dir.join(format!("{name}.frames"));
+    let mut reader = TraceReader::open(&trace).expect("open capture");
+    // Two workers: the pictures do not depend on the count, and the machine is shared.
+    let mut player = Player::new(2);
+    let report =
+        compare_replay(&mut reader, &mut player, &frames, None, &mut |_| {}).expect("compare");
+    let mut text = String::new();
+    for p in &report.pictures {
+        text.push_str(&format!("  {}\n", p.line()));
+    }
+    for l in report.stats.report_lines() {
+        text.push_str(&format!("  replay: {l}\n"));
+    }
+    if let Some(e) = &report.error {
+        text.push_str(&format!("  replay stopped: {e}\n"));
+    }
+    text.push_str(&format!("  {}\n", report.summary()));
+    eprintln!("{name}:\n{text}");
+    let known = known_failures.iter().find(|(n, _)| *n == name);
+    match (report.all_ok(), known) {
+        (true, None) | (false, Some(_)) => {}
+        (true, Some((_, why))) => panic!(
+            "{name} now matches the reference (listed as a known failure: {why}); \
+             remove it from KNOWN_FAILURES\n{text}"
+        ),
+        (false, None) => panic!("{name} does not match the reference:\n{text}"),
+    }
+}
