@@ -319,6 +319,35 @@ fn busy_scene(gl: &mut Context) {
     gl.end();
 }
 
+/// `count` random triangles in one `GL_TRIANGLES` batch, centred in x, y in [-4, 4] and z in
+/// `z`, each vertex within 3 (x, y) and 2 (z) of its centre; `per_vertex` issues each vertex's
+/// other attributes first.
+fn triangle_cloud(
+    gl: &mut Context,
+    rng: &mut Rng,
+    count: usize,
+    z: std::ops::Range<f32>,
+    mut per_vertex: impl FnMut(&mut Context, &mut Rng),
+) {
+    gl.begin(GL_TRIANGLES);
+    for _ in 0..count {
+        let c = [
+            rng.range(-4.0, 4.0),
+            rng.range(-4.0, 4.0),
+            rng.range(z.start, z.end),
+        ];
+        for _ in 0..3 {
+            per_vertex(gl, rng);
+            gl.vertex_3f(
+                c[0] + rng.range(-3.0, 3.0),
+                c[1] + rng.range(-3.0, 3.0),
+                c[2] + rng.range(-2.0, 2.0),
+            );
+        }
+    }
+    gl.end();
+}
+
 #[test]
 fn output_is_identical_for_1_2_and_8_threads() {
     let render = |threads| {
@@ -947,31 +976,17 @@ fn sampled_units_match_the_general_path() {
             gl.matrix_mode(GL_PROJECTION);
             gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
             gl.matrix_mode(GL_MODELVIEW);
-            gl.begin(GL_TRIANGLES);
-            for _ in 0..80 {
-                let c = [
-                    rng.range(-4.0, 4.0),
-                    rng.range(-4.0, 4.0),
-                    rng.range(-25.0, -1.5),
-                ];
-                for _ in 0..3 {
-                    gl.color_4f(
-                        rng.range(0.0, 1.0),
-                        rng.range(0.0, 1.0),
-                        1.0,
-                        rng.range(0.3, 1.0),
-                    );
-                    let st = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)];
-                    gl.multi_tex_coord_2f(GL_TEXTURE0, st[0], st[1]);
-                    gl.multi_tex_coord_4f(GL_TEXTURE1, st[1], st[0], 0.0, rng.range(0.5, 2.0));
-                    gl.vertex_3f(
-                        c[0] + rng.range(-3.0, 3.0),
-                        c[1] + rng.range(-3.0, 3.0),
-                        c[2] + rng.range(-2.0, 2.0),
-                    );
-                }
-            }
-            gl.end();
+            triangle_cloud(&mut gl, &mut rng, 80, -25.0..-1.5, |gl, rng| {
+                gl.color_4f(
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                    1.0,
+                    rng.range(0.3, 1.0),
+                );
+                let st = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0)];
+                gl.multi_tex_coord_2f(GL_TEXTURE0, st[0], st[1]);
+                gl.multi_tex_coord_4f(GL_TEXTURE1, st[1], st[0], 0.0, rng.range(0.5, 2.0));
+            });
             // A huge coordinate takes the one-by-one fallback inside the sampled path.
             gl.begin(GL_TRIANGLES);
             gl.multi_tex_coord_2f(GL_TEXTURE0, 3e9, 0.0);
@@ -1138,29 +1153,15 @@ fn single_unit_formats_match_the_general_path() {
                 gl.matrix_mode(GL_PROJECTION);
                 gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 30.0);
                 gl.matrix_mode(GL_MODELVIEW);
-                gl.begin(GL_TRIANGLES);
-                for _ in 0..40 {
-                    let c = [
-                        rng.range(-4.0, 4.0),
-                        rng.range(-4.0, 4.0),
-                        rng.range(-20.0, -2.0),
-                    ];
-                    for _ in 0..3 {
-                        gl.color_4f(
-                            rng.range(0.0, 1.2),
-                            rng.range(0.0, 1.0),
-                            0.8,
-                            rng.range(0.0, 1.0),
-                        );
-                        gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
-                        gl.vertex_3f(
-                            c[0] + rng.range(-3.0, 3.0),
-                            c[1] + rng.range(-3.0, 3.0),
-                            c[2] + rng.range(-2.0, 2.0),
-                        );
-                    }
-                }
-                gl.end();
+                triangle_cloud(&mut gl, &mut rng, 40, -20.0..-2.0, |gl, rng| {
+                    gl.color_4f(
+                        rng.range(0.0, 1.2),
+                        rng.range(0.0, 1.0),
+                        0.8,
+                        rng.range(0.0, 1.0),
+                    );
+                    gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+                });
                 assert_eq!(gl.get_error(), GL_NO_ERROR);
                 read_rgba(&mut gl)
             };
