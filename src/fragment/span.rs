@@ -387,7 +387,6 @@ fn shade_textured<
         }
         _ => None,
     };
-    let blend_add = key.blend.is_some_and(|b| b.is_add_one_one());
     if (TEX == tex_mode::FAST_RGBA || TEX == tex_mode::FAST_RGB)
         && key.logic_op.is_none()
         && key.stencil.is_none()
@@ -408,34 +407,25 @@ fn shade_textured<
                     alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
                     alpha_from_primary: TEX == tex_mode::FAST_RGB,
                     rgb_from_primary: false,
-                    blend: match key.blend {
-                        None => simd::TailBlend::None,
-                        Some(_) if blend_add => simd::TailBlend::AddOneOne,
-                        Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
-                        Some(b) => simd::TailBlend::General(b, u.blend_color),
-                    },
+                    blend: tail_blend(ds),
                     color_mask: u32::from_le_bytes(
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
                     ),
                 };
+                let mut run = PrimaryRun::new(it, xc0, yc);
                 // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
-                let steady = dz == 0.0 && dinv_w == 0.0 && dattr[..4].iter().all(|&d| d == 0.0);
+                let steady = run.is_steady();
                 let mut steady_values = [([0f32; 4], 0u32); 2];
                 if steady {
                     for v in &mut steady_values {
-                        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-                        v.0 = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
-                        v.1 = depth_to_fixed(z, ds.depth_max);
-                        z += dz;
-                        inv_w += dinv_w;
-                        for c in 0..4 {
-                            attr[c] += dattr[c];
-                        }
+                        *v = run.next(Some(ds.depth_max));
                     }
                 }
-                let uses_depth = key.depth_func.is_some() || key.depth_write;
+                // Without a depth test or depth writes the depth value is unused.
+                let depth_max =
+                    (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
                 // Groups of eight lanes from `gx`; the perspective sampler needs groups that
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
@@ -444,48 +434,21 @@ fn shade_textured<
                     let lo = (x0 - gx).max(0) as usize;
                     let hi = ((x1 - gx) as usize).min(8);
                     let first = (gx - x0) as isize;
-                    let mut primary = [[0f32; 8]; 4];
-                    let mut depth = [0u32; 8];
-                    let mut pass = 0u8;
-                    for j in lo..hi {
-                        let i = (first + j as isize) as usize;
-                        let d = if steady {
-                            let (color, d) = steady_values[i.min(1)];
-                            for c in 0..4 {
-                                primary[c][j] = color[c];
-                            }
-                            d
-                        } else {
-                            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-                            for c in 0..4 {
-                                primary[c][j] = attr[c] * w;
-                            }
-                            // Without a depth test or depth writes the value is unused.
-                            let d = if uses_depth {
-                                depth_to_fixed(z, ds.depth_max)
-                            } else {
-                                0
-                            };
-                            z += dz;
-                            inv_w += dinv_w;
-                            for c in 0..4 {
-                                attr[c] += dattr[c];
-                            }
-                            d
-                        };
-                        depth[j] = d;
-                        let ok = match key.depth_func {
-                            None | Some(CompareFunc::Always) => true,
-                            Some(func) => func.test(d, tile.depth[row + i]),
-                        };
-                        pass |= u8::from(ok) << j;
-                    }
-                    let x = gx as f64 + 0.5;
                     let base = (row as isize + first) as usize;
-                    let mut dst = [0u32; 8];
-                    for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
-                        *d = u32::from_le_bytes(tile.color[base + j]);
-                    }
+                    let group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
+                        if steady {
+                            steady_values[((first + j as isize) as usize).min(1)]
+                        } else {
+                            run.next(depth_max)
+                        }
+                    });
+                    let GroupInputs {
+                        primary,
+                        depth,
+                        pass,
+                        dst,
+                    } = group;
+                    let x = gx as f64 + 0.5;
                     let live = ((1u32 << hi) - (1u32 << lo)) as u8;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
@@ -509,12 +472,7 @@ fn shade_textured<
                         simd::shade8(&tail, &primary, &tex, &dst, pass)
                     });
                     if let Some((words, passed)) = shaded {
-                        for j in lo..hi {
-                            tile.color[base + j] = words[j].to_le_bytes();
-                            if key.depth_write && passed & (1 << j) != 0 {
-                                tile.depth[base + j] = depth[j];
-                            }
-                        }
+                        store_group(ds, tile, base, lo..hi, &words, passed, &depth);
                     }
                     gx += 8;
                 }
@@ -1159,6 +1117,131 @@ fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
     ]
 }
 
+/// The primary colour, 1/w and window depth along a span, stepped pixel by pixel from its
+/// first pixel exactly as the per-pixel loops step them (so the eight-lane paths see the same
+/// values).
+struct PrimaryRun {
+    z: f64,
+    dz: f64,
+    inv_w: f32,
+    dinv_w: f32,
+    color: [f32; 4],
+    dcolor: [f32; 4],
+    perspective: bool,
+}
+
+impl PrimaryRun {
+    fn new(it: &Interpolants, xc0: f64, yc: f64) -> PrimaryRun {
+        PrimaryRun {
+            z: it.z.at(xc0, yc),
+            dz: it.z.a,
+            inv_w: it.inv_w.at(xc0, yc) as f32,
+            dinv_w: it.inv_w.a as f32,
+            color: std::array::from_fn(|c| it.attrs[c].at(xc0, yc) as f32),
+            dcolor: std::array::from_fn(|c| it.attrs[c].a as f32),
+            perspective: it.perspective,
+        }
+    }
+
+    /// Whether every step is zero (a flat, facing primitive).
+    fn is_steady(&self) -> bool {
+        self.dz == 0.0 && self.dinv_w == 0.0 && self.dcolor.iter().all(|&d| d == 0.0)
+    }
+
+    /// The current pixel's colour and stored depth (0 without `depth_max`), then a step.
+    #[inline(always)]
+    fn next(&mut self, depth_max: Option<u32>) -> ([f32; 4], u32) {
+        let w = if self.perspective {
+            1.0 / self.inv_w
+        } else {
+            1.0
+        };
+        let color = self.color.map(|c| c * w);
+        let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
+        self.z += self.dz;
+        self.inv_w += self.dinv_w;
+        for c in 0..4 {
+            self.color[c] += self.dcolor[c];
+        }
+        (color, depth)
+    }
+}
+
+/// What the eight-fragment tail needs of a group besides the texels: the primary colours and
+/// depths of lanes `lo..hi`, which of them pass the depth test, and the stored colours.
+struct GroupInputs {
+    primary: Texels8,
+    depth: [u32; 8],
+    pass: u8,
+    dst: [u32; 8],
+}
+
+impl GroupInputs {
+    /// Lane `j` (in `lanes`) is pixel `base + j` of `tile`; `value(j)` gives its colour and
+    /// depth, called in lane order.
+    #[inline(always)]
+    fn gather(
+        ds: &DrawState,
+        tile: &Tile,
+        base: usize,
+        lanes: std::ops::Range<usize>,
+        mut value: impl FnMut(usize) -> ([f32; 4], u32),
+    ) -> GroupInputs {
+        let mut g = GroupInputs {
+            primary: [[0f32; 8]; 4],
+            depth: [0u32; 8],
+            pass: 0,
+            dst: [0u32; 8],
+        };
+        for j in lanes.clone() {
+            let (color, d) = value(j);
+            for c in 0..4 {
+                g.primary[c][j] = color[c];
+            }
+            g.depth[j] = d;
+            let ok = match ds.key.depth_func {
+                None | Some(CompareFunc::Always) => true,
+                Some(func) => func.test(d, tile.depth[base + j]),
+            };
+            g.pass |= u8::from(ok) << j;
+        }
+        for j in lanes {
+            g.dst[j] = u32::from_le_bytes(tile.color[base + j]);
+        }
+        g
+    }
+}
+
+/// Writes the tail's colour words of lanes `lanes` (pixel `base + j`), and with depth writes
+/// the depth of each lane set in `passed`.
+#[inline(always)]
+fn store_group(
+    ds: &DrawState,
+    tile: &mut Tile,
+    base: usize,
+    lanes: std::ops::Range<usize>,
+    words: &[u32; 8],
+    passed: u8,
+    depth: &[u32; 8],
+) {
+    for j in lanes {
+        tile.color[base + j] = words[j].to_le_bytes();
+        if ds.key.depth_write && passed & (1 << j) != 0 {
+            tile.depth[base + j] = depth[j];
+        }
+    }
+}
+
+/// The eight-fragment tail's blending for the draw's key.
+fn tail_blend(ds: &DrawState) -> simd::TailBlend {
+    match ds.key.blend {
+        None => simd::TailBlend::None,
+        Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
+        Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
+        Some(b) => simd::TailBlend::General(b, ds.uniforms.blend_color),
+    }
+}
+
 /// The general path: every decision read from the key at run time.
 pub fn span_general<'a>(
     ds: &'a DrawState,
@@ -1257,19 +1340,10 @@ pub fn span_sampled8<'a>(
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let xc0 = x0 as f64 + 0.5;
-    let mut z = it.z.at(xc0, yc);
-    let dz = it.z.a;
-    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
-    let dinv_w = it.inv_w.a as f32;
-    let mut attr = [0f32; 4];
-    let mut dattr = [0f32; 4];
-    for c in 0..4 {
-        attr[c] = it.attrs[c].at(xc0, yc) as f32;
-        dattr[c] = it.attrs[c].a as f32;
-    }
     if it.coverage != 1.0 {
         return span_sampled(ds, tile, y, x0, x1, it);
     }
+    let mut run = PrimaryRun::new(it, xc0, yc);
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
     for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
         *slot = Perspective8::new(unit, it, y, key.simd_units);
@@ -1293,12 +1367,7 @@ pub fn span_sampled8<'a>(
         rgb_from_primary: single.is_some_and(|s| !s.1),
         alpha_from_primary: single.is_some_and(|s| !s.2),
         alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
-        blend: match key.blend {
-            None => simd::TailBlend::None,
-            Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
-            Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
-            Some(b) => simd::TailBlend::General(b, u.blend_color),
-        },
+        blend: tail_blend(ds),
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
     };
     // Each unit's texels of the current group, by unit number (as the cascade reads them).
@@ -1306,7 +1375,7 @@ pub fn span_sampled8<'a>(
     for unit in &ds.units {
         by_unit[unit.unit] = Some([[0f32; 8]; 4]);
     }
-    let uses_depth = key.depth_func.is_some() || key.depth_write;
+    let depth_max = (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
     let mut gx = x0 & !1;
     while gx < x1 {
         let lo = (x0 - gx).max(0) as usize;
@@ -1319,35 +1388,12 @@ pub fn span_sampled8<'a>(
                 sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, live, out);
             }
         }
-        let mut color = [[0f32; 8]; 4];
-        let mut depth = [0u32; 8];
-        let mut pass = 0u8;
-        for j in lo..hi {
-            let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-            for c in 0..4 {
-                color[c][j] = attr[c] * w;
-            }
-            let d = if uses_depth {
-                depth_to_fixed(z, ds.depth_max)
-            } else {
-                0
-            };
-            z += dz;
-            inv_w += dinv_w;
-            for c in 0..4 {
-                attr[c] += dattr[c];
-            }
-            depth[j] = d;
-            let ok = match key.depth_func {
-                None | Some(CompareFunc::Always) => true,
-                Some(func) => func.test(d, tile.depth[base + j]),
-            };
-            pass |= u8::from(ok) << j;
-        }
-        let mut dst = [0u32; 8];
-        for (j, d) in dst.iter_mut().enumerate().take(hi).skip(lo) {
-            *d = u32::from_le_bytes(tile.color[base + j]);
-        }
+        let GroupInputs {
+            primary: mut color,
+            depth,
+            pass,
+            dst,
+        } = GroupInputs::gather(ds, tile, base, lo..hi, |_| run.next(depth_max));
         if single.is_none() {
             color = environment8(ds, &color, &by_unit);
         }
@@ -1358,12 +1404,7 @@ pub fn span_sampled8<'a>(
             None => &color,
         };
         if let Some((words, passed)) = simd::shade8(&tail, &color, tex, &dst, pass) {
-            for j in lo..hi {
-                tile.color[base + j] = words[j].to_le_bytes();
-                if key.depth_write && passed & (1 << j) != 0 {
-                    tile.depth[base + j] = depth[j];
-                }
-            }
+            store_group(ds, tile, base, lo..hi, &words, passed, &depth);
         }
         gx += 8;
     }
