@@ -255,22 +255,13 @@ fn shade<
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
     let xc0 = x0 as f64 + 0.5;
-    let mut z = it.z.at(xc0, yc);
-    let dz = it.z.a;
-    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
-    let dinv_w = it.inv_w.a as f32;
     // Primary colour, then the secondary colour when the colour sum needs it.
-    let na = if !SIMPLE && (key.color_sum || key.texturing) {
+    let colors = if !SIMPLE && (key.color_sum || key.texturing) {
         8
     } else {
         4
     };
-    let mut attr = [0f32; 8];
-    let mut dattr = [0f32; 8];
-    for c in 0..na {
-        attr[c] = it.attrs[c].at(xc0, yc) as f32;
-        dattr[c] = it.attrs[c].a as f32;
-    }
+    let mut run = SpanRun::new(it, xc0, yc, colors);
     // The sampled path: per unit, its eight-pixel sampler and the texels of the current
     // group of eight pixels (groups start on even columns, as quads do).
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
@@ -283,8 +274,8 @@ fn shade<
     }
     for i in 0..n {
         let idx = row + i;
-        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-        let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        let w = run.w();
+        let mut color = run.primary(w);
         if SAMPLED && key.texturing {
             let x = x0 + i as i32;
             let lane = ((x - group0) % 8) as usize;
@@ -313,16 +304,12 @@ fn shade<
             color = texture_fragment(ds, it, x0 as f64 + i as f64 + 0.5, yc, color);
         }
         let secondary = if !SIMPLE && key.color_sum {
-            [attr[4] * w, attr[5] * w, attr[6] * w]
+            run.secondary(w)
         } else {
             [0.0; 3]
         };
-        let z_here = z;
-        z += dz;
-        inv_w += dinv_w;
-        for c in 0..na {
-            attr[c] += dattr[c];
-        }
+        let z_here = run.z;
+        run.step();
         let xc = x0 as f64 + i as f64 + 0.5;
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, FOG, { blend_mode::DYNAMIC }>(
             ds,
@@ -365,22 +352,13 @@ fn shade_textured<
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
     let xc0 = x0 as f64 + 0.5;
-    let mut z = it.z.at(xc0, yc);
-    let dz = it.z.a;
-    let mut inv_w = it.inv_w.at(xc0, yc) as f32;
-    let dinv_w = it.inv_w.a as f32;
     // Primary colour, then the secondary colour when the colour sum needs it.
-    let na = if !SIMPLE && (key.color_sum || key.texturing) {
+    let colors = if !SIMPLE && (key.color_sum || key.texturing) {
         8
     } else {
         4
     };
-    let mut attr = [0f32; 8];
-    let mut dattr = [0f32; 8];
-    for c in 0..na {
-        attr[c] = it.attrs[c].at(xc0, yc) as f32;
-        dattr[c] = it.attrs[c].a as f32;
-    }
+    let mut run = SpanRun::new(it, xc0, yc, colors);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
             ds.units.first().map(|u| FastUnit::new(u, it, xc0, yc))
@@ -412,7 +390,7 @@ fn shade_textured<
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
                     ),
                 };
-                let mut run = PrimaryRun::new(it, xc0, yc);
+                let mut run = SpanRun::new(it, xc0, yc, 4);
                 // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
@@ -483,8 +461,8 @@ fn shade_textured<
     let mut texel_buf = [[0f32; 4]; 8];
     for i in 0..n {
         let idx = row + i;
-        let w = if it.perspective { 1.0 / inv_w } else { 1.0 };
-        let mut color = [attr[0] * w, attr[1] * w, attr[2] * w, attr[3] * w];
+        let w = run.w();
+        let mut color = run.primary(w);
         match (TEX, &fast) {
             (tex_mode::FAST_RGB, Some(f)) => {
                 color = f.fragment::<3>(it, x0 as f64 + i as f64 + 0.5, yc, color);
@@ -503,16 +481,12 @@ fn shade_textured<
             }
         }
         let secondary = if !SIMPLE && key.color_sum {
-            [attr[4] * w, attr[5] * w, attr[6] * w]
+            run.secondary(w)
         } else {
             [0.0; 3]
         };
-        let z_here = z;
-        z += dz;
-        inv_w += dinv_w;
-        for c in 0..na {
-            attr[c] += dattr[c];
-        }
+        let z_here = run.z;
+        run.step();
         let xc = x0 as f64 + i as f64 + 0.5;
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, false, BLEND>(
             ds,
@@ -1117,46 +1091,89 @@ fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
     ]
 }
 
-/// The primary colour, 1/w and window depth along a span, stepped pixel by pixel from its
-/// first pixel exactly as the per-pixel loops step them (so the eight-lane paths see the same
-/// values).
-struct PrimaryRun {
+/// The window depth, 1/w and colours along a span, stepped pixel by pixel from its first
+/// pixel: every span path steps them this way, so all see the same values.
+struct SpanRun {
     z: f64,
     dz: f64,
     inv_w: f32,
     dinv_w: f32,
-    color: [f32; 4],
-    dcolor: [f32; 4],
+    /// Primary colour, then the secondary colour (attribute/w under perspective).
+    color: [f32; 8],
+    dcolor: [f32; 8],
+    /// How many of `color` are interpolated: 4 (primary) or 8 (with the secondary colour).
+    count: usize,
     perspective: bool,
 }
 
-impl PrimaryRun {
-    fn new(it: &Interpolants, xc0: f64, yc: f64) -> PrimaryRun {
-        PrimaryRun {
+impl SpanRun {
+    #[inline(always)]
+    fn new(it: &Interpolants, xc0: f64, yc: f64, count: usize) -> SpanRun {
+        let mut run = SpanRun {
             z: it.z.at(xc0, yc),
             dz: it.z.a,
             inv_w: it.inv_w.at(xc0, yc) as f32,
             dinv_w: it.inv_w.a as f32,
-            color: std::array::from_fn(|c| it.attrs[c].at(xc0, yc) as f32),
-            dcolor: std::array::from_fn(|c| it.attrs[c].a as f32),
+            color: [0.0; 8],
+            dcolor: [0.0; 8],
+            count,
             perspective: it.perspective,
+        };
+        for c in 0..count {
+            run.color[c] = it.attrs[c].at(xc0, yc) as f32;
+            run.dcolor[c] = it.attrs[c].a as f32;
         }
+        run
     }
 
-    /// Whether every step is zero (a flat, facing primitive).
+    /// Whether z, 1/w and the primary colour do not change along the span (a flat, facing
+    /// primitive).
     fn is_steady(&self) -> bool {
-        self.dz == 0.0 && self.dinv_w == 0.0 && self.dcolor.iter().all(|&d| d == 0.0)
+        self.dz == 0.0 && self.dinv_w == 0.0 && self.dcolor[..4].iter().all(|&d| d == 0.0)
     }
 
-    /// The current pixel's colour and stored depth (0 without `depth_max`), then a step.
+    /// w at the current pixel (1 without perspective).
     #[inline(always)]
-    fn next(&mut self, depth_max: Option<u32>) -> ([f32; 4], u32) {
-        let w = if self.perspective {
+    fn w(&self) -> f32 {
+        if self.perspective {
             1.0 / self.inv_w
         } else {
             1.0
-        };
-        let color = self.color.map(|c| c * w);
+        }
+    }
+
+    #[inline(always)]
+    fn primary(&self, w: f32) -> [f32; 4] {
+        [
+            self.color[0] * w,
+            self.color[1] * w,
+            self.color[2] * w,
+            self.color[3] * w,
+        ]
+    }
+
+    #[inline(always)]
+    fn secondary(&self, w: f32) -> [f32; 3] {
+        [self.color[4] * w, self.color[5] * w, self.color[6] * w]
+    }
+
+    /// Moves to the next pixel.
+    #[inline(always)]
+    fn step(&mut self) {
+        self.z += self.dz;
+        self.inv_w += self.dinv_w;
+        for c in 0..self.count {
+            self.color[c] += self.dcolor[c];
+        }
+    }
+
+    /// For runs of the primary colour only (`count` 4, the eight-lane paths): the current
+    /// pixel's colour and stored depth (0 without `depth_max`), then a step (of a fixed four
+    /// colours, which keeps the loop unrolled).
+    #[inline(always)]
+    fn next(&mut self, depth_max: Option<u32>) -> ([f32; 4], u32) {
+        debug_assert_eq!(self.count, 4);
+        let color = self.primary(self.w());
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         self.z += self.dz;
         self.inv_w += self.dinv_w;
@@ -1343,7 +1360,7 @@ pub fn span_sampled8<'a>(
     if it.coverage != 1.0 {
         return span_sampled(ds, tile, y, x0, x1, it);
     }
-    let mut run = PrimaryRun::new(it, xc0, yc);
+    let mut run = SpanRun::new(it, xc0, yc, 4);
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
     for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
         *slot = Perspective8::new(unit, it, y, key.simd_units);
