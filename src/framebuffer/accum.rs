@@ -7,7 +7,6 @@
 use crate::api::convert::{self, AccumOp};
 use crate::api::enums::*;
 use crate::fragment::span::color_to_u8;
-use crate::raster::setup::Rect;
 use crate::state::Context;
 
 /// Scale of the fixed-point accumulation values.
@@ -30,28 +29,6 @@ fn from_fixed(v: i16) -> f32 {
 }
 
 impl Context {
-    /// The pixels `glAccum` and the accumulation clear touch: the window, cut by the scissor box.
-    fn accum_rect(&self) -> Rect {
-        let fb = Rect {
-            x0: 0,
-            y0: 0,
-            x1: self.framebuffer.width,
-            y1: self.framebuffer.height,
-        };
-        let ops = &self.fragment_ops;
-        if ops.scissor_enabled {
-            let s = ops.scissor;
-            fb.intersect(&Rect {
-                x0: s.x,
-                y0: s.y,
-                x1: s.x.saturating_add(s.width),
-                y1: s.y.saturating_add(s.height),
-            })
-        } else {
-            fb
-        }
-    }
-
     pub(crate) fn clear_accum(&mut self, r: GLfloat, g: GLfloat, b: GLfloat, a: GLfloat) {
         self.clear_values.accum =
             [r, g, b, a].map(|c| if c.is_nan() { 0.0 } else { c.clamp(-1.0, 1.0) });
@@ -62,7 +39,7 @@ impl Context {
         if self.framebuffer.accum.is_empty() {
             return;
         }
-        let rect = self.accum_rect();
+        let rect = self.scissored_window();
         let value = self.clear_values.accum.map(to_fixed);
         let w = self.framebuffer.width as usize;
         for y in rect.y0..rect.y1 {
@@ -81,7 +58,7 @@ impl Context {
             return;
         }
         self.flush_scene();
-        let rect = self.accum_rect();
+        let rect = self.scissored_window();
         let mask = self.fragment_ops.color_mask;
         let w = self.framebuffer.width as usize;
         for y in rect.y0..rect.y1 {

@@ -4,7 +4,6 @@ use crate::api::convert::{self, ClearMask, PackedType, PixelFormat, PixelType, T
 use crate::api::enums::*;
 use crate::fragment::span::{color_to_u8, depth_to_fixed};
 use crate::raster::scene::{ClearCommand, Command};
-use crate::raster::setup::Rect;
 use crate::state::Context;
 use crate::texture::pixels as texpix;
 
@@ -12,24 +11,8 @@ impl Context {
     /// Records a clear of the buffers in `mask`, limited by the scissor box and the write masks
     /// (section 4.2.3). Dithering does not apply to tilegl's 8-bit channels.
     pub(crate) fn record_clear(&mut self, mask: ClearMask) {
-        let fb = Rect {
-            x0: 0,
-            y0: 0,
-            x1: self.framebuffer.width,
-            y1: self.framebuffer.height,
-        };
+        let rect = self.scissored_window();
         let ops = &self.fragment_ops;
-        let rect = if ops.scissor_enabled {
-            let s = ops.scissor;
-            fb.intersect(&Rect {
-                x0: s.x,
-                y0: s.y,
-                x1: s.x.saturating_add(s.width),
-                y1: s.y.saturating_add(s.height),
-            })
-        } else {
-            fb
-        };
         let cfg = self.framebuffer.config;
         let color = (mask.color && ops.color_mask != [false; 4])
             .then(|| (self.clear_values.color.map(color_to_u8), ops.color_mask));

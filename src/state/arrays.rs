@@ -356,17 +356,7 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
-        use ArrayType::*;
-        let types = [
-            Byte,
-            UnsignedByte,
-            Short,
-            UnsignedShort,
-            Int,
-            UnsignedInt,
-            Float,
-            Double,
-        ];
+        let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::Color,
             size,
@@ -385,17 +375,7 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
-        use ArrayType::*;
-        let types = [
-            Byte,
-            UnsignedByte,
-            Short,
-            UnsignedShort,
-            Int,
-            UnsignedInt,
-            Float,
-            Double,
-        ];
+        let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::SecondaryColor,
             size,

@@ -17,7 +17,7 @@ use crate::api::convert::{
 use crate::api::enums::*;
 use crate::fragment::span::Interpolants;
 use crate::primitive::clip::point_visible;
-use crate::raster::setup::{Plane, Rect};
+use crate::raster::setup::Plane;
 use crate::state::get::StateValue;
 use crate::state::snapshot::{attr, DrawState};
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
@@ -517,29 +517,6 @@ impl Context {
 
     // ------------------------------------------------------------------ fragments
 
-    /// Window pixels a pixel-rectangle draw may touch: the window cut by the scissor box (the
-    /// viewport does not apply to pixel rectangles).
-    fn pixel_rect_bounds(&self) -> Rect {
-        let fb = Rect {
-            x0: 0,
-            y0: 0,
-            x1: self.framebuffer.width,
-            y1: self.framebuffer.height,
-        };
-        let ops = &self.fragment_ops;
-        if ops.scissor_enabled {
-            let s = ops.scissor;
-            fb.intersect(&Rect {
-                x0: s.x,
-                y0: s.y,
-                x1: s.x.saturating_add(s.width),
-                y1: s.y.saturating_add(s.height),
-            })
-        } else {
-            fb
-        }
-    }
-
     /// Constant attribute planes of a pixel-rectangle fragment: `color` and the raster
     /// position's secondary colour, texture coordinates and distance.
     fn raster_planes(&self, ds: &DrawState, color: [f32; 4], planes: &mut Vec<Plane>) {
@@ -591,7 +568,7 @@ impl Context {
         }
         self.flush_scene();
         let ds = self.snapshot();
-        let bounds = self.pixel_rect_bounds();
+        let bounds = self.scissored_window();
         let [zx, zy] = self.pixel_transfer.zoom.map(|z| z as f64);
         // The image starts at the raster position rounded to the nearest pixel corner, as
         // Mesa does (with the spec's unrounded position the pixels differ under fractional
@@ -897,7 +874,7 @@ impl Context {
             }
             self.flush_scene();
             let ds = self.snapshot();
-            let bounds = self.pixel_rect_bounds();
+            let bounds = self.scissored_window();
             let [xr, yr, zr] = self.raster_pos.window;
             let x0 = (xr - xorig as f64).floor() as i64;
             let y0 = (yr - yorig as f64).floor() as i64;

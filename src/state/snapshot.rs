@@ -194,6 +194,27 @@ pub struct DrawState {
 }
 
 impl Context {
+    /// The window's pixels.
+    pub(crate) fn window_rect(&self) -> Rect {
+        Rect {
+            x0: 0,
+            y0: 0,
+            x1: self.framebuffer.width,
+            y1: self.framebuffer.height,
+        }
+    }
+
+    /// The window's pixels cut by the scissor box when the scissor test is on: what draws,
+    /// clears, pixel rectangles and `glAccum` may touch (the viewport limits only draws).
+    pub(crate) fn scissored_window(&self) -> Rect {
+        let ops = &self.fragment_ops;
+        if ops.scissor_enabled {
+            self.window_rect().intersect(&ops.scissor.rect())
+        } else {
+            self.window_rect()
+        }
+    }
+
     /// The snapshot for the next draw, rebuilt only after a state change.
     pub(crate) fn snapshot(&mut self) -> Arc<DrawState> {
         if let Some(ds) = &self.draw_state {
@@ -208,29 +229,9 @@ impl Context {
             .collect();
         let vp = t.viewport;
         let [n, f] = t.depth_range;
-        let fb = Rect {
-            x0: 0,
-            y0: 0,
-            x1: self.framebuffer.width,
-            y1: self.framebuffer.height,
-        };
-        let viewport_rect = fb.intersect(&Rect {
-            x0: vp.x,
-            y0: vp.y,
-            x1: vp.x.saturating_add(vp.width),
-            y1: vp.y.saturating_add(vp.height),
-        });
+        let viewport_rect = self.window_rect().intersect(&vp.rect());
+        let draw_rect = self.scissored_window().intersect(&vp.rect());
         let ops = &self.fragment_ops;
-        let mut draw_rect = viewport_rect;
-        if ops.scissor_enabled {
-            let s = ops.scissor;
-            draw_rect = draw_rect.intersect(&Rect {
-                x0: s.x,
-                y0: s.y,
-                x1: s.x.saturating_add(s.width),
-                y1: s.y.saturating_add(s.height),
-            });
-        }
         let cfg = self.framebuffer.config;
         let lit = &self.lighting;
         // Colour sum (section 3.9): with lighting, under separate specular; else GL_COLOR_SUM.

@@ -71,6 +71,18 @@ pub struct Viewport {
     pub height: i32,
 }
 
+impl Viewport {
+    /// The box's pixels (saturating, so huge sizes do not wrap).
+    pub fn rect(&self) -> crate::raster::setup::Rect {
+        crate::raster::setup::Rect {
+            x0: self.x,
+            y0: self.y,
+            x1: self.x.saturating_add(self.width),
+            y1: self.y.saturating_add(self.height),
+        }
+    }
+}
+
 /// Table 6.8 (rasterization of polygons) and related state.
 #[derive(Clone, Copy, Debug)]
 pub struct RasterState {

@@ -47,6 +47,18 @@ pub enum ArrayType {
 }
 
 impl ArrayType {
+    /// Every component type (what colour arrays accept).
+    pub const ALL: [ArrayType; 8] = [
+        ArrayType::Byte,
+        ArrayType::UnsignedByte,
+        ArrayType::Short,
+        ArrayType::UnsignedShort,
+        ArrayType::Int,
+        ArrayType::UnsignedInt,
+        ArrayType::Float,
+        ArrayType::Double,
+    ];
+
     /// Bytes per component.
     pub fn size(self) -> usize {
         use ArrayType::*;
