@@ -43,6 +43,16 @@ pub fn run_differential_case(name: &str) {
     known_failures::check_outcome(name, c.passed(), &c.summary());
 }
 
+/// Asserts that the declared test cases are exactly the scenes of a list (each scene has a
+/// test, each test a scene).
+pub fn assert_every_scene_has_a_test(scenes: &[compare::Scene], cases: &[&str]) {
+    let mut names: Vec<&str> = scenes.iter().map(|s| s.name).collect();
+    let mut cases = cases.to_vec();
+    names.sort_unstable();
+    cases.sort_unstable();
+    assert_eq!(names, cases);
+}
+
 /// Declares one `#[test]` per named scene (running [`run_differential_case`]) and a `CASES`
 /// list of the names.
 #[macro_export]

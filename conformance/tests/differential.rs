@@ -80,11 +80,7 @@ differential!(
 
 #[test]
 fn every_scene_has_a_test() {
-    let mut scene_names: Vec<&str> = scenes::BASE_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    scene_names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(scene_names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(scenes::BASE_SCENES, CASES);
     for (name, _) in tilegl_conformance::known_failures::KNOWN_FAILURES {
         assert!(
             scenes::find(name).is_some() || STATE_CASES.contains(name),

@@ -26,11 +26,7 @@ differential!(
 
 #[test]
 fn every_array_scene_has_a_test() {
-    let mut names: Vec<&str> = ARRAY_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(ARRAY_SCENES, CASES);
 }
 
 // ---------------------------------------------------------------- queries and errors

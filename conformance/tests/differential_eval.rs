@@ -15,11 +15,7 @@ differential!(
 
 #[test]
 fn every_eval_scene_has_a_test() {
-    let mut names: Vec<&str> = EVAL_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(EVAL_SCENES, CASES);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -33,11 +33,7 @@ differential!(
 
 #[test]
 fn every_example_scene_has_a_test() {
-    let mut names: Vec<&str> = EXAMPLE_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(EXAMPLE_SCENES, CASES);
 }
 
 /// Recording the stages, as the examples do, must not change the pictures: the `snap_*` calls

@@ -23,11 +23,7 @@ differential!(
 
 #[test]
 fn every_state_scene_has_a_test() {
-    let mut names: Vec<&str> = STATE_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(STATE_SCENES, CASES);
 }
 
 /// One answer: a label, the values, and how far they may differ.

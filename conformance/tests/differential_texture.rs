@@ -19,9 +19,5 @@ differential!(
 
 #[test]
 fn every_texture_scene_has_a_test() {
-    let mut names: Vec<&str> = TEXTURE_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(TEXTURE_SCENES, CASES);
 }

@@ -59,11 +59,7 @@ differential!(
 
 #[test]
 fn every_texture_matrix_scene_has_a_test() {
-    let mut names: Vec<&str> = TEXTURE_MATRIX_SCENES.iter().map(|s| s.name).collect();
-    let mut cases = CASES.to_vec();
-    names.sort_unstable();
-    cases.sort_unstable();
-    assert_eq!(names, cases);
+    tilegl_conformance::assert_every_scene_has_a_test(TEXTURE_MATRIX_SCENES, CASES);
 }
 
 /// The exact picture of `texmat_nearest_<wrap>` where the plane covers a pixel centre (away

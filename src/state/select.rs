@@ -498,8 +498,7 @@ impl Context {
                     }
                     if ds.two_sided && !front {
                         for p in poly.iter_mut() {
-                            let (f, b) = p.attrs.split_at_mut(attr::BACK);
-                            f[..attr::COLORS].copy_from_slice(&b[..attr::COLORS]);
+                            crate::vertex::use_back_colors(&mut p.attrs);
                         }
                     }
                     let fv: Vec<FeedbackVertex> =

@@ -32,7 +32,7 @@ fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVer
 }
 
 /// Two-sided lighting: a back-facing polygon is drawn with the back colours.
-fn use_back_colors(attrs: &mut [f32; MAX_ATTRS]) {
+pub(crate) fn use_back_colors(attrs: &mut [f32; MAX_ATTRS]) {
     let (front, back) = attrs.split_at_mut(attr::BACK);
     front[..attr::COLORS].copy_from_slice(&back[..attr::COLORS]);
 }
@@ -181,35 +181,26 @@ impl Context {
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
                         }
-                        if ds.flat {
-                            // Flat shading takes the provoking vertex's colours only; texture
-                            // and fog coordinates still vary across the triangle.
-                            let mut flat = [*tri[0], *tri[1], *tri[2]];
-                            for v in flat.iter_mut() {
+                        // Flat shading takes the provoking vertex's colours only; texture and
+                        // fog coordinates still vary across the triangle.
+                        let flat;
+                        let verts = if ds.flat {
+                            let mut copies = [*tri[0], *tri[1], *tri[2]];
+                            for v in copies.iter_mut() {
                                 copy_provoking_colors(ds, v, &clip[provoking]);
                             }
-                            let attrs = [
-                                &flat[0].attrs[..n_attrs],
-                                &flat[1].attrs[..n_attrs],
-                                &flat[2].attrs[..n_attrs],
-                            ];
-                            tri::bin_triangle(
-                                ds,
-                                state,
-                                [&w[0], &w[1], &w[2]],
-                                attrs,
-                                &mut self.scene,
-                            );
+                            flat = copies;
+                            [&flat[0], &flat[1], &flat[2]]
                         } else {
-                            let attrs = tri.map(|c| &c.attrs[..n_attrs]);
-                            tri::bin_triangle(
-                                ds,
-                                state,
-                                [&w[0], &w[1], &w[2]],
-                                attrs,
-                                &mut self.scene,
-                            );
-                        }
+                            tri
+                        };
+                        tri::bin_triangle(
+                            ds,
+                            state,
+                            [&w[0], &w[1], &w[2]],
+                            verts.map(|c| &c.attrs[..n_attrs]),
+                            &mut self.scene,
+                        );
                         continue;
                     }
                     poly.clear();
