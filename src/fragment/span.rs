@@ -390,7 +390,6 @@ fn shade_textured<
                         key.color_mask.map(|m| if m { 0xFF } else { 0 }),
                     ),
                 };
-                let mut run = SpanRun::new(it, xc0, yc, 4);
                 // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
@@ -1167,12 +1166,12 @@ impl SpanRun {
         }
     }
 
-    /// For runs of the primary colour only (`count` 4, the eight-lane paths): the current
-    /// pixel's colour and stored depth (0 without `depth_max`), then a step (of a fixed four
-    /// colours, which keeps the loop unrolled).
+    /// For the eight-lane paths, which read only the primary colour: the current pixel's
+    /// colour and stored depth (0 without `depth_max`), then a step of z, 1/w and the primary
+    /// colour (a fixed four, which keeps the loop unrolled; a secondary colour is left behind,
+    /// so `step` and `secondary` must not follow on the same run).
     #[inline(always)]
     fn next(&mut self, depth_max: Option<u32>) -> ([f32; 4], u32) {
-        debug_assert_eq!(self.count, 4);
         let color = self.primary(self.w());
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         self.z += self.dz;
