@@ -53,4 +53,5 @@ pub use api::enums;
 pub use api::types::*;
 pub use api::Gl;
 pub use framebuffer::{Framebuffer, FramebufferConfig};
+pub use state::evaluators::MeshFill;
 pub use state::{Context, ContextConfig};

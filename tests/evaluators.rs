@@ -308,6 +308,46 @@ fn eval_mesh_2_is_the_specification_loop_bit_for_bit() {
     }
 }
 
+/// `MeshFill::TriangleStrips` (what Mesa draws, used by replays of Mesa captures) is the
+/// same loop with `GL_TRIANGLE_STRIP`: bit for bit, and under flat shading not the
+/// specification's quad strips (each triangle takes its own last vertex's colour).
+#[test]
+fn triangle_strip_meshes_are_the_loop_with_triangle_strips() {
+    let (n, m) = (9, 6);
+    let draw = |fill: tilegl::MeshFill, explicit: Option<GLenum>| {
+        let mut gl = context(80, 80);
+        gl.set_mesh_fill(fill);
+        patch_state(&mut gl);
+        gl.shade_model(GL_FLAT);
+        gl.map_grid_2d(n, 0.0, 1.0, m, 0.0, 1.0);
+        match explicit {
+            None => gl.eval_mesh_2(GL_FILL, 0, n, 0, m),
+            Some(prim) => {
+                for j in 0..m {
+                    gl.begin(prim);
+                    for i in 0..=n {
+                        gl.eval_coord_2d(grid(i, n, 0.0, 1.0), grid(j, m, 0.0, 1.0));
+                        gl.eval_coord_2d(grid(i, n, 0.0, 1.0), grid(j + 1, m, 0.0, 1.0));
+                    }
+                    gl.end();
+                }
+            }
+        }
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        read_rgba(&mut gl)
+    };
+    let triangles = draw(tilegl::MeshFill::TriangleStrips, None);
+    assert!(triangles.iter().filter(|p| p[0] > 0).count() > 50);
+    assert!(triangles == draw(tilegl::MeshFill::QuadStrips, Some(GL_TRIANGLE_STRIP)));
+    let quads = draw(tilegl::MeshFill::QuadStrips, None);
+    assert!(quads == draw(tilegl::MeshFill::TriangleStrips, Some(GL_QUAD_STRIP)));
+    let differing = triangles.iter().zip(&quads).filter(|(a, b)| a != b).count();
+    assert!(
+        differing > 100,
+        "flat-shaded triangle strips colour half of each quad differently ({differing} pixels)"
+    );
+}
+
 #[test]
 fn eval_mesh_1_is_the_specification_loop_bit_for_bit() {
     let ctrl = [

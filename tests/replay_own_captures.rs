@@ -12,22 +12,7 @@ use std::path::{Path, PathBuf};
 mod common;
 
 /// Captures that do not match yet, and why.
-const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "xss-polyhedra",
-        "the flat-shaded Utah teapot of glEvalMesh2(GL_FILL): tilegl draws the quad strips the \
-         specification defines, Mesa draws triangle strips, so its flat colours change per \
-         triangle (1.7-1.9 % of pixels off, all on the teapot; drawing triangle strips \
-         instead matches, min 55.8 dB, but gives two flat colours per quad, which the \
-         specification's quad strip does not allow)",
-    ),
-    (
-        "xss-stonerview",
-        "GL_LINE_SMOOTH: the anti-aliased line-loop outlines (blended SRC_ALPHA/ONE over the \
-         lit quads) cover other pixels than llvmpipe's smooth lines (about 0.5 % of pixels off, \
-         all on outlines; the quads match)",
-    ),
-];
+const KNOWN_FAILURES: &[(&str, &str)] = &[];
 
 fn traces_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("conformance/traces")

@@ -8,7 +8,8 @@
 //! in the minor direction (section 3.4.2).
 //!
 //! Antialiased lines cover the rectangle of the given width centred on the segment, each
-//! pixel taking the rectangle's share of its area (4x4 samples) as coverage.
+//! pixel taking a box-filtered estimate of the rectangle's share of its area as coverage; a
+//! fragment's data are those at its centre's position along the segment.
 //!
 //! Stippling (section 3.4.2) counts fragments along the line (a wide line's column counts
 //! once) with the counter the caller keeps across the segments of a strip or loop.
@@ -202,15 +203,18 @@ fn bin_smooth_line(
             continue;
         }
         let m = b0 + (centre.clamp(lo, hi) - a0) * db_da;
-        let t = ((centre - a0) / (a1 - a0)).clamp(0.0, 1.0);
-        attrs_at(v, attrs, t, n, &mut a);
-        let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
-        let mut offset = None;
         for r in (m - reach).floor() as i64..=(m + reach).floor() as i64 {
             let (px, py) = if x_major { (c, r) } else { (r, c) };
-            let cov = rect_coverage(p0, dir, len, w, px, py);
+            let (cov, u) = rect_coverage(p0, dir, len, w, px, py);
             if cov > 0.0 {
-                let o = *offset.get_or_insert_with(|| add_constant_planes(&a[..n], scene));
+                // Data vary over the rectangle extended by half a pixel past each end point
+                // (the box filter's reach), as Mesa parameterises them: then the depth of a
+                // smooth outline drawn before a polygon over the same edge decides the same
+                // pixels as Mesa's (xss-stonerview).
+                let t = ((u + 0.5) / (len + 1.0)).clamp(0.0, 1.0);
+                attrs_at(v, attrs, t, n, &mut a);
+                let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
+                let o = add_constant_planes(&a[..n], scene);
                 bin_rect(ds, state, [px, py, px + 1, py + 1], z, o, cov, scene);
             }
         }
@@ -220,14 +224,14 @@ fn bin_smooth_line(
 /// Coverage of pixel `(px, py)` by the rectangle along `dir` from `p0` (length `len`, width
 /// `w`): the box-filtered distance of the pixel centre to the rectangle's sides, across and
 /// along the segment (an analytic approximation of the covered area).
-fn rect_coverage(p0: [f64; 2], dir: [f64; 2], len: f64, w: f64, px: i64, py: i64) -> f32 {
+fn rect_coverage(p0: [f64; 2], dir: [f64; 2], len: f64, w: f64, px: i64, py: i64) -> (f32, f64) {
     let sx = px as f64 + 0.5 - p0[0];
     let sy = py as f64 + 0.5 - p0[1];
     let u = sx * dir[0] + sy * dir[1];
     let d = (sx * dir[1] - sy * dir[0]).abs();
     let across = (w / 2.0 + 0.5 - d).clamp(0.0, 1.0);
     let along = (u + 0.5).clamp(0.0, 1.0) * (len + 0.5 - u).clamp(0.0, 1.0);
-    (across * along) as f32
+    ((across * along) as f32, u)
 }
 
 /// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the segment from `p0` to

@@ -13,6 +13,9 @@
 //!   window of every shared capture is); a later fake `glViewport` with another size (a new
 //!   drawable) resizes it. Without one, the context gets [`DEFAULT_SIZE`]; sides are clamped
 //!   to [`MAX_WINDOW`].
+//! - **Evaluator meshes**: contexts draw `glEvalMesh2(GL_FILL)` as Mesa does, with triangle
+//!   strips ([`Player::mesh_fill`]), so flat-shaded meshes in Mesa captures replay to Mesa's
+//!   pictures; the specification's quad strips are one setting away.
 //! - **Snapshots**: `frame-NNNN.png` is the back buffer just before swap number N (from 0);
 //!   `call-NNNNNNNNNN.png` is the current draw buffer right after call N.
 //! - GL calls go through [`super::dispatch`]; calls it does not know, GL errors (by function
@@ -27,6 +30,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::api::enums::*;
 use crate::framebuffer::{ColorBuffer, FramebufferConfig};
+use crate::state::evaluators::MeshFill;
 use crate::state::{Context, ContextConfig};
 
 use super::dispatch::{dispatch, DispatchState};
@@ -227,6 +231,10 @@ pub struct Player {
     /// Create a window of [`DEFAULT_SIZE`] (or the size of a following fake `glViewport`)
     /// at the first GL call when no context was ever made current (call scripts).
     pub auto_window: bool,
+    /// How the contexts connect `glEvalMesh2(GL_FILL)` grids: triangle strips unless changed,
+    /// as the Mesa the captures were recorded with draws them (the specification's quad
+    /// strips colour a flat-shaded quad once, Mesa's triangles twice).
+    pub mesh_fill: MeshFill,
 }
 
 /// The handle of the context made by [`Player::auto_window`].
@@ -278,6 +286,7 @@ impl Player {
             stats: ReplayStats::default(),
             threads,
             auto_window: false,
+            mesh_fill: MeshFill::TriangleStrips,
         }
     }
 
@@ -303,7 +312,7 @@ impl Player {
     }
 
     fn create(&mut self, handle: u64, (width, height): (i32, i32)) {
-        let ctx = Context::with_config(ContextConfig {
+        let mut ctx = Context::with_config(ContextConfig {
             width,
             height,
             framebuffer: FramebufferConfig {
@@ -312,6 +321,7 @@ impl Player {
             },
             threads: self.threads,
         });
+        ctx.set_mesh_fill(self.mesh_fill);
         self.contexts.insert(handle, ctx);
         self.current = Some(handle);
         self.last = Some(handle);

@@ -19,7 +19,8 @@
 //!
 //! `glEvalMesh*` and `glEvalPoint*` are the `glBegin`/`glEvalCoord`/`glEnd` loops the
 //! specification defines them as, over the grid of `glMapGrid*` (u = i * du + u1, exactly u2 at
-//! i = n).
+//! i = n). A context can be told to connect fill meshes with triangle strips instead, as Mesa
+//! does ([`MeshFill`]), so that replays of Mesa captures give Mesa's flat-shaded pictures.
 #![allow(clippy::too_many_arguments)]
 
 use glam::{Vec3, Vec4};
@@ -82,6 +83,20 @@ pub struct Map2 {
     pub uorder: usize,
     pub vorder: usize,
     pub points: Vec<f64>,
+}
+
+/// How `glEvalMesh2(GL_FILL, ...)` connects the grid: not GL state, a choice of the
+/// context's owner ([`Context::set_mesh_fill`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MeshFill {
+    /// One `GL_QUAD_STRIP` per grid row, as the specification defines the command: a
+    /// flat-shaded quad takes one colour.
+    #[default]
+    QuadStrips,
+    /// One `GL_TRIANGLE_STRIP` per row with the same vertices, as Mesa draws it: a flat-shaded
+    /// quad takes the colours of its two triangles' last vertices. Replays of captures
+    /// recorded on Mesa use it to give Mesa's pictures.
+    TriangleStrips,
 }
 
 /// The evaluator state (table 6.24).
@@ -741,8 +756,12 @@ impl Context {
                 }
             }
             EvalMeshMode::Fill => {
+                let strip = match self.mesh_fill {
+                    MeshFill::QuadStrips => GL_QUAD_STRIP,
+                    MeshFill::TriangleStrips => GL_TRIANGLE_STRIP,
+                };
                 for j in j1..j2 {
-                    self.begin(GL_QUAD_STRIP);
+                    self.begin(strip);
                     for i in i1..=i2 {
                         let (u, v, v_next) =
                             (self.grid_u2(i), self.grid_v2(j), self.grid_v2(j + 1));
@@ -753,6 +772,12 @@ impl Context {
                 }
             }
         }
+    }
+
+    /// Chooses how `glEvalMesh2(GL_FILL, ...)` connects its grid (quad strips, the
+    /// specification's definition, unless changed).
+    pub fn set_mesh_fill(&mut self, fill: MeshFill) {
+        self.mesh_fill = fill;
     }
 
     pub(crate) fn eval_point_1(&mut self, i: GLint) {

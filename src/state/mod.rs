@@ -148,6 +148,8 @@ pub struct Context {
     pub(crate) select: select::SelectState,
     /// Evaluator maps, enables and grids.
     pub(crate) eval: evaluators::EvalState,
+    /// How `glEvalMesh2(GL_FILL)` connects the grid (not GL state).
+    pub(crate) mesh_fill: evaluators::MeshFill,
 }
 
 impl Context {
@@ -230,6 +232,7 @@ impl Context {
             queries: Default::default(),
             select: Default::default(),
             eval: Default::default(),
+            mesh_fill: Default::default(),
         }
     }
 

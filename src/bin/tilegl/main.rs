@@ -57,6 +57,10 @@ enum Command {
         /// Compare with the reference pictures listed in DIR/frames.tsv.
         #[arg(long, value_name = "DIR")]
         compare: Option<PathBuf>,
+        /// Draw `glEvalMesh2(GL_FILL)` as the specification's quad strips instead of the
+        /// triangle strips Mesa draws (differs only for flat-shaded meshes).
+        #[arg(long)]
+        spec_meshes: bool,
     },
     /// Write an apitrace capture as a call script DIR/NAME.gl (large data in DIR/NAME.blobs/).
     Dump {
@@ -165,7 +169,22 @@ fn main() -> ExitCode {
             calls,
             out,
             compare,
-        }) => replay(&file, frames, &calls, out.as_deref(), compare.as_deref()),
+            spec_meshes,
+        }) => {
+            let mesh_fill = if spec_meshes {
+                tilegl::MeshFill::QuadStrips
+            } else {
+                tilegl::MeshFill::TriangleStrips
+            };
+            replay(
+                &file,
+                frames,
+                &calls,
+                out.as_deref(),
+                compare.as_deref(),
+                mesh_fill,
+            )
+        }
         Some(Command::Dump { file, out }) => dump(&file, &out),
         Some(Command::Conformance { filter, report, .. }) => {
             let mut run = String::from("cargo test -p tilegl-conformance");
@@ -292,6 +311,7 @@ fn replay(
     calls: &[u64],
     out: Option<&Path>,
     compare: Option<&Path>,
+    mesh_fill: tilegl::MeshFill,
 ) -> ExitCode {
     use tilegl::replay::player::{FrameSelection, Player, Want};
     let (mut reader, is_script) = match open_source(file) {
@@ -304,6 +324,7 @@ fn replay(
     let new_player = || {
         let mut p = Player::new(0);
         p.auto_window = is_script;
+        p.mesh_fill = mesh_fill;
         p
     };
     if let Some(out) = out {
