@@ -23,6 +23,14 @@ pub struct ClipVertex {
 }
 
 impl ClipVertex {
+    /// All zero (a placeholder that is overwritten).
+    pub const ZERO: ClipVertex = ClipVertex {
+        pos: DVec4::ZERO,
+        eye: DVec4::ZERO,
+        attrs: [0.0; MAX_ATTRS],
+        edge: false,
+    };
+
     pub fn is_finite(&self) -> bool {
         self.pos.is_finite()
     }

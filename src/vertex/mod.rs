@@ -52,8 +52,10 @@ impl Context {
         }
         // Reuse the clip-space buffer across draws: large batches would otherwise fault in
         // fresh pages every frame.
+        // Every element is overwritten below; growing only, the buffer is not refilled.
         let mut clip = std::mem::take(&mut self.clip_buffer);
-        clip.clear();
+        clip.resize(verts.len(), ClipVertex::ZERO);
+        clip.truncate(verts.len());
         // Filled one-sided polygons whose vertices lie inside every clip plane need only the
         // window positions: each vertex's is computed once here, not once per triangle that
         // shares it (a strip's vertex belongs to three).
@@ -77,14 +79,18 @@ impl Context {
             {
                 use rayon::prelude::*;
                 pool.install(|| {
-                    clip.par_extend(verts.par_iter().map(|v| transform::to_clip(&ds, v)));
+                    clip.par_iter_mut()
+                        .zip(verts.par_iter())
+                        .for_each(|(c, v)| transform::to_clip_into(&ds, v, c));
                     if shared_windows {
                         windows.par_extend(clip.par_iter().map(window));
                     }
                 });
             }
             _ => {
-                clip.extend(verts.iter().map(|v| transform::to_clip(&ds, v)));
+                for (c, v) in clip.iter_mut().zip(verts) {
+                    transform::to_clip_into(&ds, v, c);
+                }
                 if shared_windows {
                     windows.extend(clip.iter().map(window));
                 }
