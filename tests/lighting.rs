@@ -416,3 +416,106 @@ fn material_calls_do_not_change_parameters_color_material_tracks() {
     assert_eq!(v, [1.0, 0.0, 0.0, 1.0]);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
 }
+
+/// Lighting at `glEnd`, eight vertices at a time, gives the colours lighting at `glVertex`
+/// gives: a batch whose first call is a `glMaterial` (after which each vertex is lit as it
+/// comes) draws the same pixels as the batch without it, under every kind of light, both
+/// faces, local viewer, separate specular and each colour-material mode; and a `glMaterial`
+/// between two triangles of a batch applies from the next vertex on, as if the batch had
+/// ended before it and another begun after it.
+#[test]
+fn batch_lighting_equals_lighting_vertex_by_vertex() {
+    let modes = [
+        None,
+        Some(GL_AMBIENT_AND_DIFFUSE),
+        Some(GL_DIFFUSE),
+        Some(GL_SPECULAR),
+        Some(GL_EMISSION),
+        Some(GL_AMBIENT),
+    ];
+    #[derive(Clone, Copy, PartialEq)]
+    enum Route {
+        Batch,
+        Eager,
+        Split,
+    }
+    for (case, color_material) in modes.into_iter().enumerate() {
+        let draw = |route: Route| {
+            let mut gl = Context::new(64, 64);
+            gl.matrix_mode(GL_PROJECTION);
+            gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+            gl.matrix_mode(GL_MODELVIEW);
+            gl.translatef(0.0, 0.0, -1.8);
+            gl.enable(GL_LIGHTING);
+            gl.enable(GL_NORMALIZE);
+            gl.enable(GL_DEPTH_TEST);
+            gl.light_modeli(GL_LIGHT_MODEL_TWO_SIDE, (case % 2) as i32);
+            gl.light_modeli(GL_LIGHT_MODEL_LOCAL_VIEWER, (case / 2 % 2) as i32);
+            if case >= 3 {
+                gl.light_modeli(
+                    GL_LIGHT_MODEL_COLOR_CONTROL,
+                    GL_SEPARATE_SPECULAR_COLOR as i32,
+                );
+            }
+            gl.enable(GL_LIGHT0);
+            gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.3, 0.6, 1.0, 0.0]);
+            gl.enable(GL_LIGHT1);
+            gl.lightfv(GL_LIGHT1, GL_POSITION, &[0.5, -0.4, 1.5, 1.0]);
+            gl.lightfv(GL_LIGHT1, GL_DIFFUSE, &[0.9, 0.5, 0.2, 1.0]);
+            gl.lightfv(GL_LIGHT1, GL_SPECULAR, &[0.6, 0.7, 0.9, 1.0]);
+            gl.lightf(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.3);
+            gl.lightf(GL_LIGHT1, GL_SPOT_CUTOFF, 50.0);
+            gl.lightf(GL_LIGHT1, GL_SPOT_EXPONENT, 3.0);
+            gl.lightfv(GL_LIGHT1, GL_SPOT_DIRECTION, &[-0.2, 0.2, -1.0]);
+            gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+            gl.materialf(GL_FRONT, GL_SHININESS, 20.0);
+            gl.materialfv(GL_BACK, GL_DIFFUSE, &[0.2, 0.8, 0.3, 1.0]);
+            if let Some(mode) = color_material {
+                gl.color_material(GL_FRONT_AND_BACK, mode);
+                gl.enable(GL_COLOR_MATERIAL);
+            }
+            // Triangles along a folded band (both faces show), colours and normals changing
+            // per vertex; 20 x 6 vertices, not a multiple of eight before the change.
+            let vertex = |gl: &mut Context, i: usize, k: usize| {
+                let x = -0.9 + 0.09 * i as f32;
+                let z = 0.4 * (x * 3.0).sin();
+                let y = if k == 0 { -0.8 } else { 0.8 };
+                gl.color_4f(0.3 + 0.03 * i as f32, 0.9 - 0.4 * k as f32, 0.5, 0.7);
+                gl.normal_3f(-(x * 3.0).cos(), 0.2 * k as f32, 1.0);
+                gl.vertex_3f(x, y * (1.0 - 0.3 * x), z);
+            };
+            gl.begin(GL_TRIANGLES);
+            if route == Route::Eager {
+                gl.materialf(GL_BACK, GL_SHININESS, 0.0);
+            }
+            for i in 0..20 {
+                if i == 13 {
+                    if route == Route::Split {
+                        gl.end();
+                    }
+                    gl.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, &[0.1, 0.0, 0.2, 1.0]);
+                    if route == Route::Split {
+                        gl.begin(GL_TRIANGLES);
+                    }
+                }
+                for (a, b) in [(i, 0), (i + 1, 0), (i, 1), (i, 1), (i + 1, 0), (i + 1, 1)] {
+                    vertex(&mut gl, a, b);
+                }
+            }
+            gl.end();
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+            common::read_rgba(&mut gl)
+        };
+        let batch = draw(Route::Batch);
+        let lit = batch.iter().filter(|p| p[..3] != [0; 3]).count();
+        assert!(lit > 500, "case {case}: {lit} pixels");
+        assert!(
+            batch == draw(Route::Eager),
+            "case {case}: {color_material:?}"
+        );
+        assert!(
+            batch == draw(Route::Split),
+            "case {case}: {color_material:?}"
+        );
+    }
+}

@@ -296,6 +296,8 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
+        // Vertices recorded so far in an open batch are lit with the materials they saw.
+        self.light_recorded_vertices();
         for &i in faces(f) {
             set_material(&mut self.lighting.materials[i], p, v);
         }
@@ -303,8 +305,8 @@ impl Context {
         // 2.14.3), so a Material call does not change them while it is enabled.
         let c = self.current.color;
         self.lighting.track_color(c);
-        // Allowed between glBegin and glEnd: lighting is evaluated per vertex at glVertex
-        // time, so the next vertex sees the new material.
+        // Allowed between glBegin and glEnd: the vertices recorded before were lit above with
+        // the old materials, the next ones see the new.
         self.invalidate();
     }
 

@@ -11,6 +11,7 @@ use crate::api::convert::{self, PrimitiveMode};
 use crate::api::enums::*;
 use crate::state::tables::limits;
 use crate::state::Context;
+use crate::vertex::lighting::{LitLanes, VertexLanes};
 
 /// One vertex as specified: object position plus the current values at `glVertex` time.
 #[derive(Clone, Copy, Debug)]
@@ -31,6 +32,10 @@ pub struct ImmVertex {
 pub struct ImmediateBatch {
     pub mode: PrimitiveMode,
     pub vertices: Vec<ImmVertex>,
+    /// With lighting on, vertices from this index on are recorded unlit (their colours are
+    /// the current ones) and lit together at `glEnd`, eight at a time; `None` when each
+    /// vertex is lit at `glVertex` (lighting off, or a `glMaterial` came inside the batch).
+    pub unlit_from: Option<usize>,
 }
 
 // Table 2.6: conversion of integer colour and normal components to floating point.
@@ -62,12 +67,17 @@ impl Context {
         self.immediate = Some(ImmediateBatch {
             mode,
             vertices: Vec::new(),
+            unlit_from: self.lighting.enabled.then_some(0),
         });
     }
 
     pub(crate) fn end(&mut self) {
-        let Some(batch) = self.immediate.take() else {
+        if self.immediate.is_none() {
             self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.light_recorded_vertices();
+        let Some(batch) = self.immediate.take() else {
             return;
         };
         self.draw_vertices(batch.mode, &batch.vertices);
@@ -83,7 +93,11 @@ impl Context {
         if self.immediate.is_none() {
             return;
         }
-        let lit = if self.lighting.enabled {
+        let deferred = self
+            .immediate
+            .as_ref()
+            .is_some_and(|b| b.unlit_from.is_some());
+        let lit = if self.lighting.enabled && !deferred {
             if self.light_setup.is_none() {
                 self.light_setup();
             }
@@ -114,6 +128,38 @@ impl Context {
                 batch.vertices = std::mem::take(&mut self.spare_vertices);
             }
             batch.vertices.push(v);
+        }
+    }
+
+    /// Lights the vertices of the open batch recorded unlit (see
+    /// [`ImmediateBatch::unlit_from`]), eight at a time with the arithmetic of one, and lights
+    /// the batch's later vertices at `glVertex`. Called at `glEnd`, and before a `glMaterial`
+    /// inside the batch changes the materials the recorded vertices must be lit with. The
+    /// other lighting state cannot change inside a batch; the parameters `GL_COLOR_MATERIAL`
+    /// tracks are each vertex's own current colour.
+    pub(crate) fn light_recorded_vertices(&mut self) {
+        let Some(from) = self.immediate.as_mut().and_then(|b| b.unlit_from.take()) else {
+            return;
+        };
+        let setup = self.light_setup();
+        let materials = self.lighting.materials;
+        let tracking = self.lighting.color_material.then_some((
+            self.lighting.color_material_face,
+            self.lighting.color_material_mode,
+        ));
+        let Some(batch) = self.immediate.as_mut() else {
+            return;
+        };
+        let pending = &mut batch.vertices[from..];
+        let mut groups = pending.chunks_exact_mut(LIGHT_LANES);
+        for group in &mut groups {
+            let lit = setup.light_lanes(&lanes_of::<LIGHT_LANES>(group), &materials, tracking);
+            store_lit(group, &lit);
+        }
+        for v in groups.into_remainder() {
+            let one = std::slice::from_mut(v);
+            let lit = setup.light_lanes(&lanes_of::<1>(one), &materials, tracking);
+            store_lit(one, &lit);
         }
     }
 
@@ -732,5 +778,36 @@ impl Context {
     pub(crate) fn secondary_color_3usv(&mut self, v: &[GLushort; 3]) {
         self.current.secondary_color =
             Vec4::new(norm_u16(v[0]), norm_u16(v[1]), norm_u16(v[2]), 0.0);
+    }
+}
+
+/// Vertices lit together at `glEnd` (a batch's last few one by one).
+const LIGHT_LANES: usize = 8;
+
+/// The lighting inputs of `N` recorded (unlit) vertices.
+fn lanes_of<const N: usize>(verts: &[ImmVertex]) -> VertexLanes<N> {
+    let mut l = VertexLanes {
+        position: [[0.0; N]; 4],
+        normal: [[0.0; N]; 3],
+        color: [[0.0; N]; 4],
+    };
+    for (j, v) in verts.iter().enumerate().take(N) {
+        for c in 0..4 {
+            l.position[c][j] = v.position[c];
+            l.color[c][j] = v.color[c];
+        }
+        for c in 0..3 {
+            l.normal[c][j] = v.normal[c];
+        }
+    }
+    l
+}
+
+fn store_lit<const N: usize>(verts: &mut [ImmVertex], lit: &LitLanes<N>) {
+    let color = |c: &[[f32; N]; 4], j: usize| Vec4::new(c[0][j], c[1][j], c[2][j], c[3][j]);
+    for (j, v) in verts.iter_mut().enumerate().take(N) {
+        v.color = color(&lit.front[0], j);
+        v.secondary_color = color(&lit.front[1], j);
+        v.back_colors = [color(&lit.back[0], j), color(&lit.back[1], j)];
     }
 }

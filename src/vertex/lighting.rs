@@ -2,6 +2,7 @@
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
+use crate::api::convert::{Face, MaterialParam};
 use crate::state::lighting::{Light, LightingState, Material};
 
 /// Object-space normals to eye space (section 2.11.3): the inverse transpose of the modelview's
@@ -80,14 +81,49 @@ pub struct LitColors {
     pub back: [Vec4; 2],
 }
 
-fn clamp01(v: Vec4) -> Vec4 {
+/// The lighting inputs of `N` vertices, one lane each: object position, normal, and the
+/// current colour (read only where `GL_COLOR_MATERIAL` tracks it).
+#[derive(Clone, Copy, Debug)]
+pub struct VertexLanes<const N: usize> {
+    pub position: [[f32; N]; 4],
+    pub normal: [[f32; N]; 3],
+    pub color: [[f32; N]; 4],
+}
+
+/// Lit colours of `N` vertices: `[primary, secondary][channel][lane]` per face.
+#[derive(Clone, Copy, Debug)]
+pub struct LitLanes<const N: usize> {
+    pub front: [[[f32; N]; 4]; 2],
+    pub back: [[[f32; N]; 4]; 2],
+}
+
+fn clamp_lanes<const N: usize>(v: [[f32; N]; 4]) -> [[f32; N]; 4] {
     // max/min with NaN yield the non-NaN operand, so NaN becomes 0.
-    Vec4::new(
-        v.x.max(0.0).min(1.0),
-        v.y.max(0.0).min(1.0),
-        v.z.max(0.0).min(1.0),
-        v.w.max(0.0).min(1.0),
-    )
+    v.map(|row| row.map(|x| x.max(0.0).min(1.0)))
+}
+
+/// `Vec3::normalize_or_zero` per lane: n / |n|, or zero where 1 / |n| is not a positive
+/// finite number.
+fn normalize_lanes<const N: usize>(n: &mut [[f32; N]; 3]) {
+    for j in 0..N {
+        let length = ((n[0][j] * n[0][j]) + (n[1][j] * n[1][j]) + (n[2][j] * n[2][j])).sqrt();
+        let rcp = 1.0 / length;
+        let ok = rcp.is_finite() && rcp > 0.0;
+        for row in n.iter_mut() {
+            row[j] = if ok { row[j] * rcp } else { 0.0 };
+        }
+    }
+}
+
+/// The material parameter `GL_COLOR_MATERIAL` tracks on face `face` (0 front, 1 back).
+fn tracked(tracking: Option<(Face, MaterialParam)>, face: usize) -> Option<MaterialParam> {
+    let (f, p) = tracking?;
+    let on = match f {
+        Face::Front => face == 0,
+        Face::Back => face == 1,
+        Face::FrontAndBack => true,
+    };
+    on.then_some(p)
 }
 
 impl LightSetup {
@@ -133,91 +169,209 @@ impl LightSetup {
 
     /// Lights one vertex given its object position, normal and the current materials.
     pub fn light(&self, position: Vec4, normal: Vec3, materials: &[Material; 2]) -> LitColors {
-        let v = if !self.needs_eye_position {
-            Vec3::ZERO
-        } else {
-            let eye = self.modelview * position;
-            if eye.w != 0.0 {
-                eye.truncate() / eye.w
-            } else {
-                eye.truncate()
-            }
+        let lanes = VertexLanes::<1> {
+            position: position.to_array().map(|c| [c]),
+            normal: normal.to_array().map(|c| [c]),
+            color: [[0.0]; 4],
         };
-        let n = NormalTransform {
-            matrix: self.normal_matrix,
-            rescale: self.rescale,
+        let lit = self.light_lanes(&lanes, materials, None);
+        let color = |c: &[[f32; 1]; 4]| Vec4::new(c[0][0], c[1][0], c[2][0], c[3][0]);
+        LitColors {
+            front: [color(&lit.front[0]), color(&lit.front[1])],
+            back: [color(&lit.back[0]), color(&lit.back[1])],
         }
-        .apply(normal, self.normalize);
-        let front = self.face(v, n, &materials[0]);
+    }
+
+    /// Lights `N` vertices at once (the lanes of each array), with the arithmetic of one
+    /// vertex in every lane, so that a batch lit eight at a time gets the colours the vertices
+    /// lit one by one would. `tracking`: `GL_COLOR_MATERIAL`'s faces and parameter, which
+    /// then take each lane's `color` instead of `materials`.
+    pub fn light_lanes<const N: usize>(
+        &self,
+        v: &VertexLanes<N>,
+        materials: &[Material; 2],
+        tracking: Option<(Face, MaterialParam)>,
+    ) -> LitLanes<N> {
+        let eye = if !self.needs_eye_position {
+            [[0.0; N]; 3]
+        } else {
+            let m = self.modelview.to_cols_array_2d();
+            let mut e = [[0.0; N]; 4];
+            for (r, row) in e.iter_mut().enumerate() {
+                for j in 0..N {
+                    row[j] = m[0][r] * v.position[0][j]
+                        + m[1][r] * v.position[1][j]
+                        + m[2][r] * v.position[2][j]
+                        + m[3][r] * v.position[3][j];
+                }
+            }
+            let mut out = [[0.0; N]; 3];
+            for j in 0..N {
+                let w = if e[3][j] != 0.0 { e[3][j] } else { 1.0 };
+                for c in 0..3 {
+                    out[c][j] = e[c][j] / w;
+                }
+            }
+            out
+        };
+        let m = self.normal_matrix.to_cols_array_2d();
+        let mut n = [[0.0; N]; 3];
+        for (r, row) in n.iter_mut().enumerate() {
+            for j in 0..N {
+                row[j] =
+                    m[0][r] * v.normal[0][j] + m[1][r] * v.normal[1][j] + m[2][r] * v.normal[2][j];
+            }
+        }
+        if self.normalize {
+            normalize_lanes(&mut n);
+        } else if let Some(f) = self.rescale {
+            for row in n.iter_mut() {
+                for x in row.iter_mut() {
+                    *x *= f;
+                }
+            }
+        }
+        let front = self.face_lanes(&eye, &n, v, &materials[0], tracked(tracking, 0));
         let back = if self.two_side {
-            self.face(v, -n, &materials[1])
+            let neg = n.map(|row| row.map(|x| -x));
+            self.face_lanes(&eye, &neg, v, &materials[1], tracked(tracking, 1))
         } else {
             front
         };
-        LitColors { front, back }
+        LitLanes { front, back }
     }
 
-    fn face(&self, v: Vec3, n: Vec3, m: &Material) -> [Vec4; 2] {
-        let mut color = m.emission + m.ambient * self.model_ambient;
-        let mut specular = Vec4::ZERO;
+    fn face_lanes<const N: usize>(
+        &self,
+        eye: &[[f32; N]; 3],
+        n: &[[f32; N]; 3],
+        v: &VertexLanes<N>,
+        m: &Material,
+        tracked: Option<MaterialParam>,
+    ) -> [[[f32; N]; 4]; 2] {
+        // A material colour per lane: the lane's current colour where COLOR_MATERIAL tracks it.
+        let param = |p: MaterialParam, value: Vec4| -> [[f32; N]; 4] {
+            let follows = match tracked {
+                Some(MaterialParam::AmbientAndDiffuse) => {
+                    matches!(p, MaterialParam::Ambient | MaterialParam::Diffuse)
+                }
+                Some(t) => t == p,
+                None => false,
+            };
+            if follows {
+                v.color
+            } else {
+                value.to_array().map(|c| [c; N])
+            }
+        };
+        let ambient = param(MaterialParam::Ambient, m.ambient);
+        let diffuse = param(MaterialParam::Diffuse, m.diffuse);
+        let specular_m = param(MaterialParam::Specular, m.specular);
+        let emission = param(MaterialParam::Emission, m.emission);
+        let mut color = [[0.0; N]; 4];
+        for c in 0..4 {
+            for j in 0..N {
+                color[c][j] = emission[c][j] + ambient[c][j] * self.model_ambient[c];
+            }
+        }
+        let mut specular = [[0.0; N]; 4];
         for pl in &self.lights {
             let l = &pl.light;
-            let (vp, attenuation) = if let Some(direction) = pl.direction {
-                (direction, 1.0)
-            } else {
-                let d = l.position.truncate() / l.position.w - v;
-                let dist = d.length();
-                let [k0, k1, k2] = l.attenuation;
-                let vp = if dist > 0.0 { d / dist } else { Vec3::ZERO };
-                (vp, 1.0 / (k0 + k1 * dist + k2 * dist * dist))
-            };
-            let spot = if l.spot_cutoff == 180.0 {
-                1.0
-            } else {
-                let s = (-vp).dot(pl.spot_dir);
-                if s >= pl.cos_cutoff {
-                    s.max(0.0).powf(l.spot_exponent)
-                } else {
-                    0.0
+            // The direction to the light and the attenuation, per lane.
+            let mut vp = [[0.0; N]; 3];
+            let mut attenuation = [1.0; N];
+            match pl.direction {
+                Some(d) => {
+                    for c in 0..3 {
+                        vp[c] = [d[c]; N];
+                    }
                 }
-            };
-            let scale = attenuation * spot;
-            if scale == 0.0 {
-                continue;
+                None => {
+                    let lp = l.position.truncate() / l.position.w;
+                    let [k0, k1, k2] = l.attenuation;
+                    for j in 0..N {
+                        let d = [lp.x - eye[0][j], lp.y - eye[1][j], lp.z - eye[2][j]];
+                        let dist = ((d[0] * d[0]) + (d[1] * d[1]) + (d[2] * d[2])).sqrt();
+                        for c in 0..3 {
+                            vp[c][j] = if dist > 0.0 { d[c] / dist } else { 0.0 };
+                        }
+                        attenuation[j] = 1.0 / (k0 + k1 * dist + k2 * dist * dist);
+                    }
+                }
             }
-            let n_dot_vp = n.dot(vp).max(0.0);
-            let mut term = m.ambient * l.ambient + m.diffuse * l.diffuse * n_dot_vp;
-            let mut spec = Vec4::ZERO;
-            let specular_product = m.specular * l.specular;
-            // A zero specular product (the default material) adds zero whatever the power:
-            // skip the half vector and the power.
-            if n_dot_vp > 0.0 && specular_product.truncate() != Vec3::ZERO {
+            let mut scale = attenuation;
+            if l.spot_cutoff != 180.0 {
+                for j in 0..N {
+                    let s = ((-vp[0][j]) * pl.spot_dir.x)
+                        + ((-vp[1][j]) * pl.spot_dir.y)
+                        + ((-vp[2][j]) * pl.spot_dir.z);
+                    let spot = if s >= pl.cos_cutoff {
+                        s.max(0.0).powf(l.spot_exponent)
+                    } else {
+                        0.0
+                    };
+                    scale[j] *= spot;
+                }
+            }
+            let mut n_dot_vp = [0.0; N];
+            for j in 0..N {
+                n_dot_vp[j] =
+                    ((n[0][j] * vp[0][j]) + (n[1][j] * vp[1][j]) + (n[2][j] * vp[2][j])).max(0.0);
+            }
+            let mut term = [[0.0; N]; 4];
+            for c in 0..4 {
+                for j in 0..N {
+                    term[c][j] =
+                        ambient[c][j] * l.ambient[c] + diffuse[c][j] * l.diffuse[c] * n_dot_vp[j];
+                }
+            }
+            // The specular term: zero (skipped, with the half vector and the power) where the
+            // specular product is zero, as for the default material.
+            let mut spec = [[0.0; N]; 4];
+            for j in 0..N {
+                let product = [0, 1, 2, 3].map(|c| specular_m[c][j] * l.specular[c]);
+                if !(n_dot_vp[j] > 0.0) || product[..3] == [0.0; 3] {
+                    continue;
+                }
                 let h = match pl.half_vector {
                     Some(h) => h,
                     None => {
+                        let vpj = Vec3::new(vp[0][j], vp[1][j], vp[2][j]);
                         let eye_dir = if self.local_viewer {
-                            (-v).normalize_or_zero()
+                            (-Vec3::new(eye[0][j], eye[1][j], eye[2][j])).normalize_or_zero()
                         } else {
                             Vec3::Z
                         };
-                        (vp + eye_dir).normalize_or_zero()
+                        (vpj + eye_dir).normalize_or_zero()
                     }
                 };
-                let n_dot_h = n.dot(h);
+                let n_dot_h = (n[0][j] * h.x) + (n[1][j] * h.y) + (n[2][j] * h.z);
                 if n_dot_h > 0.0 {
-                    spec = specular_product * n_dot_h.powf(m.shininess);
+                    let power = n_dot_h.powf(m.shininess);
+                    for c in 0..4 {
+                        spec[c][j] = product[c] * power;
+                    }
                 }
             }
-            if self.separate_specular {
-                specular += spec * scale;
-            } else {
-                term += spec;
+            for c in 0..4 {
+                for j in 0..N {
+                    // A light whose attenuation and spot factor are zero adds nothing (not
+                    // 0 * its term, which could be NaN).
+                    if scale[j] == 0.0 {
+                        continue;
+                    }
+                    if self.separate_specular {
+                        specular[c][j] += spec[c][j] * scale[j];
+                        color[c][j] += term[c][j] * scale[j];
+                    } else {
+                        color[c][j] += (term[c][j] + spec[c][j]) * scale[j];
+                    }
+                }
             }
-            color += term * scale;
         }
         // The alpha of the lit colour is the material's diffuse alpha.
-        color.w = m.diffuse.w;
-        specular.w = 0.0;
-        [clamp01(color), clamp01(specular)]
+        color[3] = diffuse[3];
+        specular[3] = [0.0; N];
+        [clamp_lanes(color), clamp_lanes(specular)]
     }
 }
