@@ -1180,3 +1180,39 @@ fn single_unit_formats_match_the_general_path() {
         }
     }
 }
+
+/// Filled triangles reaching past the viewport are rasterized unclipped inside a guard band
+/// and clipped beyond it: either way exactly the viewport's pixels under the triangle are
+/// drawn, and none outside the viewport (which is smaller than the window here).
+#[test]
+fn triangles_past_the_viewport_draw_only_inside_it() {
+    for reach in [3.0f32, 200.0, 1.0e6] {
+        let mut gl = Context::new(64, 64);
+        gl.viewport(8, 12, 40, 30);
+        gl.begin(GL_TRIANGLES);
+        gl.color_3f(1.0, 1.0, 1.0);
+        // Everything below the line x + y = 0.3 (NDC) that crosses the viewport, the corners
+        // `reach` out.
+        gl.vertex_2f(-reach, -reach);
+        gl.vertex_2f(0.3 + reach, -reach);
+        gl.vertex_2f(-reach, 0.3 + reach);
+        gl.end();
+        let px = read_rgba(&mut gl);
+        let mut count = 0;
+        for y in 0..64 {
+            for x in 0..64 {
+                let inside = (8..48).contains(&x) && (12..42).contains(&y);
+                let ndc = [
+                    (x as f64 + 0.5 - 8.0) / 20.0 - 1.0,
+                    (y as f64 + 0.5 - 12.0) / 15.0 - 1.0,
+                ];
+                // The line through the corners as given (0.3 + reach rounded to f32).
+                let under = ndc[0] + ndc[1] < (0.3 + reach) as f64 - reach as f64;
+                let lit = px[(y * 64 + x) as usize][0] == 255;
+                assert_eq!(lit, inside && under, "reach {reach}: pixel ({x}, {y})");
+                count += usize::from(lit);
+            }
+        }
+        assert!(count > 400, "reach {reach}: {count} pixels");
+    }
+}

@@ -50,15 +50,20 @@ impl ClipVertex {
     }
 }
 
+/// The view volume's side planes, `-w <= x, y <= w`.
+pub const EXACT: [f64; 2] = [1.0, 1.0];
+
 /// Signed distance to clip plane `i` (0..6 view volume, then user planes); inside when >= 0.
+/// The side planes are moved out to `-g w <= x <= g w` (and likewise y) by `guard` = `[g_x,
+/// g_y]` (a guard band; [`EXACT`] for the view volume).
 #[inline]
-fn distance(v: &ClipVertex, i: usize, user: &[DVec4]) -> f64 {
+fn distance(v: &ClipVertex, i: usize, user: &[DVec4], guard: [f64; 2]) -> f64 {
     let p = v.pos;
     match i {
-        0 => p.w + p.x,
-        1 => p.w - p.x,
-        2 => p.w + p.y,
-        3 => p.w - p.y,
+        0 => p.w * guard[0] + p.x,
+        1 => p.w * guard[0] - p.x,
+        2 => p.w * guard[1] + p.y,
+        3 => p.w * guard[1] - p.y,
         4 => p.w + p.z,
         5 => p.w - p.z,
         k => user[k - 6].dot(v.eye),
@@ -80,29 +85,43 @@ fn snap(v: &mut ClipVertex, i: usize) {
 }
 
 /// Outcode: bit i set when the vertex is outside plane i.
-fn outcode(v: &ClipVertex, user: &[DVec4]) -> u32 {
+fn outcode(v: &ClipVertex, user: &[DVec4], guard: [f64; 2]) -> u32 {
     let mut code = 0;
     for i in 0..6 + user.len() {
-        if !(distance(v, i, user) >= 0.0) {
+        if !(distance(v, i, user, guard) >= 0.0) {
             code |= 1 << i;
         }
     }
     code
 }
 
-/// Clips a convex polygon in place (Sutherland-Hodgman). Returns false when nothing is left.
+/// Clips a convex polygon in place (Sutherland-Hodgman): nothing to do when every vertex lies
+/// inside the near, far and user planes and the side planes moved out by `guard` (see
+/// [`distance`]), else clipped against the view volume and the user planes. Returns false
+/// when nothing is left.
 pub fn clip_polygon(
     poly: &mut Vec<ClipVertex>,
     scratch: &mut Vec<ClipVertex>,
     user: &[DVec4],
+    guard: [f64; 2],
     n_attrs: usize,
 ) -> bool {
     if poly.iter().any(|v| !v.is_finite()) {
         return false;
     }
+    // Inside the guard band: drawn as it is. Otherwise clipped against the view volume
+    // itself, as before there was a guard band (the positions of the new vertices, and so
+    // the pixels along the edges that meet them, stay those Mesa's clipper gives).
     let (mut all_or, mut all_and) = (0u32, !0u32);
     for v in poly.iter() {
-        let c = outcode(v, user);
+        all_or |= outcode(v, user, guard);
+    }
+    if all_or == 0 {
+        return poly.iter().all(|v| v.pos.w > 0.0);
+    }
+    all_or = 0;
+    for v in poly.iter() {
+        let c = outcode(v, user, EXACT);
         all_or |= c;
         all_and &= c;
     }
@@ -119,8 +138,8 @@ pub fn clip_polygon(
             for k in 0..n {
                 let a = &poly[k];
                 let b = &poly[(k + 1) % n];
-                let da = distance(a, i, user);
-                let db = distance(b, i, user);
+                let da = distance(a, i, user, EXACT);
+                let db = distance(b, i, user, EXACT);
                 if da >= 0.0 {
                     scratch.push(*a);
                 }
@@ -160,7 +179,7 @@ pub fn clip_line(
     if !a.is_finite() || !b.is_finite() {
         return None;
     }
-    let (ca, cb) = (outcode(a, user), outcode(b, user));
+    let (ca, cb) = (outcode(a, user, EXACT), outcode(b, user, EXACT));
     if ca & cb != 0 {
         return None;
     }
@@ -168,8 +187,8 @@ pub fn clip_line(
     if ca | cb != 0 {
         let (mut t0, mut t1) = (0.0f64, 1.0f64);
         for i in 0..6 + user.len() {
-            let da = distance(&a, i, user);
-            let db = distance(&b, i, user);
+            let da = distance(&a, i, user, EXACT);
+            let db = distance(&b, i, user, EXACT);
             if da < 0.0 && db < 0.0 {
                 return None;
             }
@@ -195,5 +214,35 @@ pub fn clip_line(
 
 /// Whether a point lies inside every clip plane (points are clipped whole).
 pub fn point_visible(v: &ClipVertex, user: &[DVec4]) -> bool {
-    v.is_finite() && outcode(v, user) == 0 && v.pos.w > 0.0
+    v.is_finite() && outcode(v, user, EXACT) == 0 && v.pos.w > 0.0
+}
+
+/// How far from the window origin, in pixels, a filled polygon may reach and still be
+/// rasterized without clipping against the side planes (a guard band): below 2^15 pixels the
+/// fixed-point edge products stay far from overflow.
+pub const GUARD_BAND: f64 = 32768.0;
+
+/// The guard band's side planes for viewport scale `scale` and offset `offset` (x, y): the
+/// factors g with `|x| <= g w` mapping inside [`GUARD_BAND`] pixels (never below 1, the view
+/// volume itself).
+pub fn guard_factors(scale: [f64; 2], offset: [f64; 2]) -> [f64; 2] {
+    [0, 1].map(|d| {
+        let g = (GUARD_BAND - offset[d].abs()) / scale[d].abs();
+        if g.is_finite() && g > 1.0 {
+            g
+        } else {
+            1.0
+        }
+    })
+}
+
+/// Whether a filled polygon's vertex needs no clipping: finite, w > 0, inside the near, far
+/// and user clip planes and the guard band's side planes. The view volume's side planes need
+/// no clipping: they bound the viewport, and the rasterizer visits only pixels inside it,
+/// which are exactly the pixels of the clipped polygon (with the edges' exact slopes, and no
+/// new vertices to snap). A polygon with a vertex outside is clipped against the same planes
+/// ([`clip_polygon`] with `guard`), so the same polygon gives the same fragments whichever
+/// way it is drawn (multipass invariance).
+pub fn in_guard_band(v: &ClipVertex, user: &[DVec4], guard: [f64; 2]) -> bool {
+    v.is_finite() && v.pos.w > 0.0 && outcode(v, user, guard) == 0
 }

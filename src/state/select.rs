@@ -17,7 +17,7 @@ use crate::api::convert::{PolygonMode, StateExtQuery};
 use crate::api::enums::*;
 use crate::capi::client_memory::write_client_bytes;
 use crate::primitive::assemble::{self, assemble, Primitive};
-use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex, EXACT};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
 use crate::state::snapshot::attr;
@@ -484,7 +484,9 @@ impl Context {
                         }
                     }
                     let mut scratch = Vec::new();
-                    if !clip_polygon(&mut poly, &mut scratch, &user, n_attrs) || poly.len() < 3 {
+                    if !clip_polygon(&mut poly, &mut scratch, &user, EXACT, n_attrs)
+                        || poly.len() < 3
+                    {
                         continue;
                     }
                     let xy: Vec<[i64; 2]> = poly.iter().map(|p| to_window(&ds, p).xy).collect();

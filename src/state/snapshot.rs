@@ -165,6 +165,9 @@ pub struct DrawState {
     /// Viewport mapping: window = ndc * scale + offset, per axis (z uses the depth range).
     pub viewport_scale: [f64; 3],
     pub viewport_offset: [f64; 3],
+    /// The guard band's side planes (`clip::guard_factors`) when both faces are filled, else
+    /// the view volume's (`clip::EXACT`).
+    pub guard: [f64; 2],
     /// The viewport rectangle intersected with the framebuffer: nothing outside is drawn.
     pub viewport_rect: Rect,
     /// Pixels that may be written: viewport, scissor (when enabled) and framebuffer bounds.
@@ -314,6 +317,19 @@ impl Context {
                 vp.y as f64 + vp.height as f64 / 2.0,
                 (n + f) / 2.0,
             ],
+            // Outlines and vertices of polygons in line and point mode (wide lines and points
+            // near the viewport's edges) are drawn from the polygon clipped to the view volume.
+            guard: if self.raster.polygon_mode == [PolygonMode::Fill; 2] {
+                crate::primitive::clip::guard_factors(
+                    [vp.width as f64 / 2.0, vp.height as f64 / 2.0],
+                    [
+                        vp.x as f64 + vp.width as f64 / 2.0,
+                        vp.y as f64 + vp.height as f64 / 2.0,
+                    ],
+                )
+            } else {
+                crate::primitive::clip::EXACT
+            },
             viewport_rect,
             draw_rect,
             cull: self.raster.cull_enabled.then_some(self.raster.cull_face),

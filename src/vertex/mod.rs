@@ -8,7 +8,7 @@ pub mod transform;
 
 use crate::api::convert::{PolygonMode, PrimitiveMode};
 use crate::primitive::assemble::{self, Primitive};
-use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
+use crate::primitive::clip::{clip_line, clip_polygon, in_guard_band, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
 use crate::primitive::viewport::to_window;
 use crate::primitive::viewport::WindowVertex;
@@ -56,9 +56,9 @@ impl Context {
         let mut clip = std::mem::take(&mut self.clip_buffer);
         clip.resize(verts.len(), ClipVertex::ZERO);
         clip.truncate(verts.len());
-        // Filled one-sided polygons whose vertices lie inside every clip plane need only the
-        // window positions: each vertex's is computed once here, not once per triangle that
-        // shares it (a strip's vertex belongs to three).
+        // Filled one-sided polygons whose vertices lie in the guard band (`in_guard_band`)
+        // need no clipping, only the window positions: each vertex's is computed once here,
+        // not once per triangle that shares it (a strip's vertex belongs to three).
         let mut windows = std::mem::take(&mut self.window_buffer);
         windows.clear();
         let shared_windows = ds.raster.polygon_mode == [PolygonMode::Fill; 2]
@@ -70,7 +70,8 @@ impl Context {
                     | PrimitiveMode::LineLoop
                     | PrimitiveMode::LineStrip
             );
-        let window = |c: &ClipVertex| point_visible(c, &ds.clip_planes).then(|| to_window(&ds, c));
+        let window =
+            |c: &ClipVertex| in_guard_band(c, &ds.clip_planes, ds.guard).then(|| to_window(&ds, c));
         // Large batches are transformed on the worker threads too (each vertex independently,
         // results in order, so the output does not depend on the thread count).
         match &self.pool {
@@ -102,8 +103,8 @@ impl Context {
     }
 
     /// Assembles, clips and bins the primitives of `clip`. `windows`, when given, holds each
-    /// vertex's window position (`None` outside a clip plane); only filled one-sided polygons
-    /// take it.
+    /// vertex's window position (`None` outside the guard band); only filled one-sided
+    /// polygons take it.
     fn draw_clipped(
         &mut self,
         ds: &Arc<DrawState>,
@@ -181,7 +182,7 @@ impl Context {
                         _ => None,
                     };
                     if let Some(w) = inside {
-                        // Filled and entirely inside every clip plane (the common case): no
+                        // Filled and inside the guard band (the common case): no clipping, no
                         // copies.
                         let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
@@ -220,7 +221,7 @@ impl Context {
                             copy_provoking_colors(ds, p, &clip[provoking]);
                         }
                     }
-                    if !clip_polygon(&mut poly, &mut scratch, user, clip_attrs) {
+                    if !clip_polygon(&mut poly, &mut scratch, user, ds.guard, clip_attrs) {
                         continue;
                     }
                     win.clear();
