@@ -10,7 +10,7 @@ use super::texenv::{self, CombineInputs};
 use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
-use crate::state::snapshot::{attr, TextureUnitDraw};
+use crate::state::snapshot::{attr, FogDraw, TextureUnitDraw};
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
@@ -105,8 +105,18 @@ pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
     (old & !u.stencil_write_mask) | (v & u.stencil_write_mask)
 }
 
+/// Fog (section 3.10) on a fragment's colour: the factor for its fog coordinate `c`, and
+/// the blend towards the fog colour.
+#[inline(always)]
+fn fog_fragment(f: &FogDraw, c: f32, color: &mut [f32; 4]) {
+    let k = f.factor(c);
+    for ch in 0..3 {
+        color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+    }
+}
+
 /// The per-fragment operations after texturing, in the specification's order: colour sum
-/// (`secondary`: the interpolated secondary colour), fog (evaluated at `at`), antialiasing
+/// (`secondary`: the interpolated secondary colour), fog (`fog_coord`), antialiasing
 /// coverage, alpha test, stencil and depth tests with their updates, occlusion counting,
 /// blending or logic op, colour mask; `z` is the fragment's window depth and `idx` its index
 /// in `tile`. The const parameters are [`shade`]'s (`FOG` keeps fog on a `SIMPLE` path) and
@@ -124,7 +134,7 @@ fn finish_fragment<
     tile: &mut Tile,
     it: &Interpolants,
     idx: usize,
-    at: [f64; 2],
+    fog_coord: f32,
     mut color: [f32; 4],
     secondary: [f32; 3],
     z: f64,
@@ -138,17 +148,7 @@ fn finish_fragment<
     }
     if (FOG || !SIMPLE) && key.fog.is_some() {
         if let Some(f) = &ds.fog {
-            let [xc, yc] = at;
-            let p = &it.attrs[attr::FOG];
-            let c = if it.perspective {
-                (p.at(xc, yc) / it.inv_w.at(xc, yc)) as f32
-            } else {
-                p.at(xc, yc) as f32
-            };
-            let k = f.factor(c);
-            for ch in 0..3 {
-                color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
-            }
+            fog_fragment(f, fog_coord, &mut color);
         }
     }
     if it.coverage != 1.0 {
@@ -261,7 +261,7 @@ fn shade<
     } else {
         4
     };
-    let mut run = SpanRun::new(it, xc0, yc, colors);
+    let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
     // The sampled path: per unit, its eight-pixel sampler and the texels of the current
     // group of eight pixels (groups start on even columns, as quads do).
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
@@ -309,17 +309,10 @@ fn shade<
             [0.0; 3]
         };
         let z_here = run.z;
+        let fog_coord = run.fog_coord(w);
         run.step();
-        let xc = x0 as f64 + i as f64 + 0.5;
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, FOG, { blend_mode::DYNAMIC }>(
-            ds,
-            tile,
-            it,
-            idx,
-            [xc, yc],
-            color,
-            secondary,
-            z_here,
+            ds, tile, it, idx, fog_coord, color, secondary, z_here,
         );
     }
 }
@@ -358,7 +351,7 @@ fn shade_textured<
     } else {
         4
     };
-    let mut run = SpanRun::new(it, xc0, yc, colors);
+    let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
             ds.units.first().map(|u| FastUnit::new(u, it, xc0, yc))
@@ -485,17 +478,10 @@ fn shade_textured<
             [0.0; 3]
         };
         let z_here = run.z;
+        let fog_coord = run.fog_coord(w);
         run.step();
-        let xc = x0 as f64 + i as f64 + 0.5;
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, false, BLEND>(
-            ds,
-            tile,
-            it,
-            idx,
-            [xc, yc],
-            color,
-            secondary,
-            z_here,
+            ds, tile, it, idx, fog_coord, color, secondary, z_here,
         );
     }
 }
@@ -1103,6 +1089,8 @@ struct SpanRun {
     /// How many of `color` are interpolated: 4 (primary) or 8 (with the secondary colour).
     count: usize,
     perspective: bool,
+    /// The fog coordinate (divided by w under perspective), when the draw is fogged.
+    fog: Option<(f32, f32)>,
 }
 
 impl SpanRun {
@@ -1117,12 +1105,33 @@ impl SpanRun {
             dcolor: [0.0; 8],
             count,
             perspective: it.perspective,
+            fog: None,
         };
         for c in 0..count {
             run.color[c] = it.attrs[c].at(xc0, yc) as f32;
             run.dcolor[c] = it.attrs[c].a as f32;
         }
         run
+    }
+
+    /// Steps the fog coordinate too (for a fogged draw).
+    #[inline(always)]
+    fn with_fog(mut self, ds: &DrawState, it: &Interpolants, xc0: f64, yc: f64) -> SpanRun {
+        if ds.key.fog.is_some() && ds.fog.is_some() {
+            let p = &it.attrs[attr::FOG];
+            self.fog = Some((p.at(xc0, yc) as f32, p.a as f32));
+        }
+        self
+    }
+
+    /// The fog coordinate at the current pixel (0 unless fogged); `w` as from [`Self::w`].
+    #[inline(always)]
+    fn fog_coord(&self, w: f32) -> f32 {
+        match self.fog {
+            Some((c, _)) if self.perspective => c * w,
+            Some((c, _)) => c,
+            None => 0.0,
+        }
     }
 
     /// Whether z, 1/w and the primary colour do not change along the span (a flat, facing
@@ -1163,6 +1172,9 @@ impl SpanRun {
         self.inv_w += self.dinv_w;
         for c in 0..self.count {
             self.color[c] += self.dcolor[c];
+        }
+        if let Some((c, dc)) = &mut self.fog {
+            *c += *dc;
         }
     }
 
