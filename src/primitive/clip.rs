@@ -243,6 +243,18 @@ pub fn guard_factors(scale: [f64; 2], offset: [f64; 2]) -> [f64; 2] {
 /// new vertices to snap). A polygon with a vertex outside is clipped against the same planes
 /// ([`clip_polygon`] with `guard`), so the same polygon gives the same fragments whichever
 /// way it is drawn (multipass invariance).
+#[inline]
 pub fn in_guard_band(v: &ClipVertex, user: &[DVec4], guard: [f64; 2]) -> bool {
-    v.is_finite() && v.pos.w > 0.0 && outcode(v, user, guard) == 0
+    // `outcode(v, user, guard) == 0` with the planes written out (every vertex of a batch
+    // comes here); NaN fails every comparison.
+    let p = v.pos;
+    let (gx, gy) = (p.w * guard[0], p.w * guard[1]);
+    let inside = (p.w > 0.0)
+        & (gx + p.x >= 0.0)
+        & (gx - p.x >= 0.0)
+        & (gy + p.y >= 0.0)
+        & (gy - p.y >= 0.0)
+        & (p.w + p.z >= 0.0)
+        & (p.w - p.z >= 0.0);
+    inside && v.is_finite() && user.iter().all(|u| u.dot(v.eye) >= 0.0)
 }
