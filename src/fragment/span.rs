@@ -1108,8 +1108,8 @@ impl SpanRun {
             fog: None,
         };
         for c in 0..count {
-            run.color[c] = it.attrs[c].at(xc0, yc) as f32;
-            run.dcolor[c] = it.attrs[c].a as f32;
+            run.color[c] = it.attrs[attr::color(c)].at(xc0, yc) as f32;
+            run.dcolor[c] = it.attrs[attr::color(c)].a as f32;
         }
         run
     }

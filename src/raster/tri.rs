@@ -231,7 +231,7 @@ pub fn bin_triangle(
     let secondary = if ds.key.color_sum {
         0..0
     } else {
-        attr::COLOR1..attr::COLORS
+        attr::COLOR1..attr::COLOR1 + 4
     };
     let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
@@ -240,7 +240,7 @@ pub fn bin_triangle(
     for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
         scene.planes.push(if secondary.contains(&i) {
             Plane::constant(0.0)
-        } else if ds.flat && i < attr::COLORS {
+        } else if ds.flat && attr::is_color(i) {
             let c = x0 as f64;
             Plane {
                 a: inv_w.a * c,

@@ -545,6 +545,6 @@ impl Context {
 
 /// Flat shading: the provoking vertex's colours (front and back).
 fn copy_colors(v: &mut ClipVertex, provoking: &ClipVertex) {
-    v.attrs[..attr::COLORS].copy_from_slice(&provoking.attrs[..attr::COLORS]);
+    attr::copy_colors(&mut v.attrs, &provoking.attrs);
     v.attrs[attr::BACK..attr::COUNT].copy_from_slice(&provoking.attrs[attr::BACK..attr::COUNT]);
 }

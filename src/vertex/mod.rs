@@ -25,7 +25,7 @@ const PARALLEL_TRANSFORM_MIN: usize = 4096;
 /// Flat shading: every vertex of a primitive takes the provoking vertex's colours (front and
 /// back), before clipping so that clipped vertices inherit them too.
 fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVertex) {
-    v.attrs[..attr::COLORS].copy_from_slice(&provoking.attrs[..attr::COLORS]);
+    attr::copy_colors(&mut v.attrs, &provoking.attrs);
     if ds.two_sided {
         v.attrs[attr::BACK..attr::COUNT].copy_from_slice(&provoking.attrs[attr::BACK..attr::COUNT]);
     }
@@ -33,8 +33,9 @@ fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVer
 
 /// Two-sided lighting: a back-facing polygon is drawn with the back colours.
 pub(crate) fn use_back_colors(attrs: &mut [f32; MAX_ATTRS]) {
-    let (front, back) = attrs.split_at_mut(attr::BACK);
-    front[..attr::COLORS].copy_from_slice(&back[..attr::COLORS]);
+    for c in 0..attr::COLORS {
+        attrs[attr::color(c)] = attrs[attr::BACK + c];
+    }
 }
 
 impl Context {

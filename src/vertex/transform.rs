@@ -39,7 +39,7 @@ pub fn to_clip_into(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex) {
     let colors = [v.color, v.secondary_color];
     for (k, c) in colors.iter().enumerate() {
         for (i, x) in c.to_array().into_iter().enumerate() {
-            attrs[attr::COLOR0 + 4 * k + i] = clamp(x);
+            attrs[attr::color(4 * k + i)] = clamp(x);
         }
     }
     if ds.two_sided {
