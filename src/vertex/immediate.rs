@@ -13,7 +13,9 @@ use crate::state::tables::limits;
 use crate::state::Context;
 use crate::vertex::lighting::{LitLanes, VertexLanes};
 
-/// One vertex as specified: object position plus the current values at `glVertex` time.
+/// One vertex as specified: object position plus the current values at `glVertex` time; with
+/// lighting on, the colours become the lit colours at `glEnd` (see
+/// [`ImmediateBatch::unlit_from`]).
 #[derive(Clone, Copy, Debug)]
 pub struct ImmVertex {
     pub position: Vec4,
