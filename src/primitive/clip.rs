@@ -1,5 +1,7 @@
 //! Clipping in homogeneous clip space against the view volume `-w <= x, y, z <= w` (the near
 //! plane included) and the enabled user clip planes (in eye space), in double precision.
+//! Filled polygons inside a guard band around the viewport ([`in_guard_band`]) skip clipping:
+//! the rasterizer visits only the viewport's pixels.
 //!
 //! Stiff inputs are handled here: primitives with a non-finite coordinate are dropped, points
 //! of a clipped polygon land exactly on the clipping plane, and a vertex that still has `w <= 0`

@@ -52,11 +52,10 @@ impl Context {
             return;
         }
         // Reuse the clip-space buffer across draws: large batches would otherwise fault in
-        // fresh pages every frame.
-        // Every element is overwritten below; growing only, the buffer is not refilled.
+        // fresh pages every frame. Every element is overwritten below (in place: a clip
+        // vertex is 264 bytes), so only elements beyond the old length are initialised.
         let mut clip = std::mem::take(&mut self.clip_buffer);
         clip.resize(verts.len(), ClipVertex::ZERO);
-        clip.truncate(verts.len());
         // Filled one-sided polygons whose vertices lie in the guard band (`in_guard_band`)
         // need no clipping, only the window positions: each vertex's is computed once here,
         // not once per triangle that shares it (a strip's vertex belongs to three).
