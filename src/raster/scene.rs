@@ -109,6 +109,7 @@ impl Scene {
     }
 
     /// Records `cmd` in every tile that `rect` touches.
+    #[inline]
     pub fn bin(&mut self, cmd: Command, rect: Rect) {
         if rect.is_empty() {
             return;
