@@ -1216,3 +1216,80 @@ fn triangles_past_the_viewport_draw_only_inside_it() {
         assert!(count > 400, "reach {reach}: {count} pixels");
     }
 }
+
+/// The untextured eight-fragment span (blending, alpha test, other depth functions, colour
+/// masks) draws exactly what the general path draws.
+#[test]
+fn untextured_blended_spans_match_the_general_path() {
+    type Setup = (&'static str, fn(&mut Context));
+    let states: [Setup; 7] = [
+        ("over", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        }),
+        ("additive, depth writes off", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_ONE, GL_ONE);
+            gl.depth_mask(0);
+        }),
+        ("subtract with constant colour", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_color(0.3, 0.6, 0.9, 0.5);
+            gl.blend_func(GL_DST_COLOR, GL_CONSTANT_ALPHA);
+            gl.blend_equation(GL_FUNC_REVERSE_SUBTRACT);
+        }),
+        ("min, alpha test", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_equation(GL_MIN);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.45);
+        }),
+        ("alpha test alone, greater depth", |gl| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_LEQUAL, 0.6);
+            gl.depth_func(GL_GREATER);
+        }),
+        ("saturate, colour mask", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_DST_ALPHA);
+            gl.color_mask(1, 0, 1, 0);
+        }),
+        ("not equal depth, no blending", |gl| {
+            gl.depth_func(GL_NOTEQUAL);
+        }),
+    ];
+    for (name, state) in states {
+        let render = |general: bool| {
+            let mut gl = Context::new(96, 96);
+            gl.set_force_general_path(general);
+            busy_scene(&mut gl);
+            state(&mut gl);
+            let mut rng = Rng(23);
+            gl.begin(GL_TRIANGLE_STRIP);
+            for _ in 0..200 {
+                gl.color_4f(
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                    rng.range(0.0, 1.0),
+                );
+                gl.vertex_3f(
+                    rng.range(-3.0, 3.0),
+                    rng.range(-3.0, 3.0),
+                    rng.range(-9.0, -0.5),
+                );
+            }
+            gl.end();
+            read_rgba(&mut gl)
+        };
+        let general = render(true);
+        assert_eq!(general, render(false), "{name}");
+        let mut plain = Context::new(96, 96);
+        busy_scene(&mut plain);
+        assert_ne!(
+            general,
+            read_rgba(&mut plain),
+            "{name}: the second draw changed nothing"
+        );
+    }
+}

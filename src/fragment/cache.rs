@@ -4,7 +4,8 @@
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
     blend_mode, depth_mode, sampled8_applies, span_fogged, span_general, span_nothing,
-    span_sampled, span_sampled8, span_specialised, span_textured, tex_mode, SpanFn,
+    span_sampled, span_sampled8, span_specialised, span_textured, span_untextured8, tex_mode,
+    untextured8_applies, SpanFn,
 };
 use crate::api::convert::CompareFunc;
 use crate::texture::simd;
@@ -29,6 +30,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         return select_fogged(key);
     }
     if !key.is_simple() {
+        if untextured8_applies(key) {
+            return span_untextured8;
+        }
         if sampled8_applies(key) {
             return span_sampled8;
         }
@@ -47,6 +51,7 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         (Some(CompareFunc::LessEqual), true, true) => {
             span_specialised::<{ depth_mode::LEQUAL_WRITE }, true>
         }
+        _ if untextured8_applies(key) => span_untextured8,
         _ => span_general,
     }
 }

@@ -1335,6 +1335,63 @@ pub fn span_fogged<'a, const DEPTH: u8, const FULL_MASK: bool>(
     shade::<DEPTH, FULL_MASK, true, false, true>(ds, tile, y, x0, x1, it)
 }
 
+/// Whether [`span_untextured8`] may shade a key: untextured, and after the primary colour only
+/// the alpha test, the depth test, blending (any equation and factors) and the colour mask
+/// apply.
+pub fn untextured8_applies(key: &FragmentKey) -> bool {
+    !key.texturing
+        && key.stencil.is_none()
+        && key.logic_op.is_none()
+        && !key.color_sum
+        && key.fog.is_none()
+        && !key.count_samples
+        && simd::available()
+}
+
+/// Untextured spans eight fragments at a time for keys with [`untextured8_applies`]: the
+/// primary colours enter the eight-fragment tail ([`simd::shade8`]) as replacing texels, so
+/// the alpha test, blending, colour mask and writes run on eight at once with the general
+/// path's arithmetic (the same pixels). Partly covered pixels take the general path.
+pub fn span_untextured8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    if it.coverage != 1.0 {
+        return span_general(ds, tile, y, x0, x1, it);
+    }
+    let key = &ds.key;
+    let row = tile.index(x0, y);
+    let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 4);
+    let tail = Tail8 {
+        modulate: false,
+        rgb_from_primary: false,
+        alpha_from_primary: false,
+        alpha_test: key.alpha_func.map(|func| (func, ds.uniforms.alpha_ref)),
+        blend: tail_blend(ds),
+        color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
+    };
+    let depth_max = (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
+    let mut gx = x0;
+    while gx < x1 {
+        let n = ((x1 - gx) as usize).min(8);
+        let base = row + (gx - x0) as usize;
+        let GroupInputs {
+            primary,
+            depth,
+            pass,
+            dst,
+        } = GroupInputs::gather(ds, tile, base, 0..n, |_| run.next(depth_max));
+        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass) {
+            store_group(ds, tile, base, 0..n, &words, passed, &depth);
+        }
+        gx += 8;
+    }
+}
+
 /// Draws nothing (a key whose fragments change no buffer).
 pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
 
