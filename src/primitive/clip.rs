@@ -99,7 +99,7 @@ fn outcode(v: &ClipVertex, user: &[DVec4], guard: [f64; 2]) -> u32 {
 
 /// Clips a convex polygon in place (Sutherland-Hodgman): nothing to do when every vertex lies
 /// inside the near, far and user planes and the side planes moved out by `guard` (see
-/// [`distance`]), else clipped against the view volume and the user planes. Returns false
+/// `distance`), else clipped against the view volume and the user planes. Returns false
 /// when nothing is left.
 pub fn clip_polygon(
     poly: &mut Vec<ClipVertex>,

@@ -11,7 +11,7 @@ use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
 
 /// Recorded commands after which a draw hands the scene to the shading workers and goes on
-/// recording the next one (see [`Context::flush_in_background`]).
+/// recording the next one (see `Context::flush_in_background`).
 pub const BACKGROUND_COMMANDS: usize = 1 << 12;
 
 /// A scene being shaded by the workers while the caller's thread records the next one: it

@@ -7,7 +7,7 @@
 //! `glMultiTexCoord`, `glNormal`, `glColor`, `glSecondaryColor`, `glFogCoord` and `glVertex`
 //! calls with element `i` of each enabled array, and `glDrawArrays`/`glDrawElements`/... as
 //! `glBegin`, one `glArrayElement` per index, `glEnd`. tilegl does exactly that: a draw first
-//! *fetches* the elements it uses ([`Fetched`]: each enabled array's components converted to
+//! *fetches* the elements it uses (`Fetched`: each enabled array's components converted to
 //! floating point by the same conversions as the immediate-mode calls, table 2.6), then
 //! *applies* them one by one through the immediate-mode path (`Context::vertex4` and the current
 //! values), so a picture drawn from arrays is the picture the same immediate-mode calls draw.

@@ -7,7 +7,7 @@
 //! values and replaying that call through the `Gl` trait on the context. The recording is
 //! generated: `build.rs` gives every forwarded entry point that section 5.4 lets a list hold a
 //! prologue that, while a list is being compiled, copies the arguments (slices and arrays by
-//! value) into such a closure ([`Context::list_record`]) and, in `GL_COMPILE` mode, returns
+//! value) into such a closure (`Context::list_record`) and, in `GL_COMPILE` mode, returns
 //! without executing. Commands the specification executes immediately (`glGen*`, `glIs*`,
 //! `glGet*`, `glReadPixels`, `glPixelStore`, client state and pointer calls, buffer object
 //! calls, `glFlush`/`glFinish`, `glNewList`/`glEndList`/`glDeleteLists`, ...) have no prologue.

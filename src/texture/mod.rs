@@ -1,6 +1,6 @@
 //! Texture objects, image specification, mipmaps and sampling (OpenGL 1.5 section 3.8).
 //!
-//! - [`format`]: internal formats and their storage.
+//! - [`format`](mod@format): internal formats and their storage.
 //! - [`image`]: one texture image (texels in `Arc`s, copy on write).
 //! - [`object`]: texture objects, parameters, completeness, snapshots.
 //! - [`pixels`]: unpacking client images and packing for `glGetTexImage`.
