@@ -186,3 +186,35 @@ fn bad_input_fails_with_a_message_naming_the_call() {
     assert_eq!(missing.status.code(), Some(2));
     let _ = std::fs::remove_dir_all(&tmp);
 }
+
+/// The evaluator teapot of tilegl's own capture matches Mesa with the replay's default
+/// (Mesa's triangle-strip meshes) and not with `--spec-meshes` (the specification's quad
+/// strips colour each flat-shaded quad once).
+#[test]
+fn spec_meshes_switches_evaluator_meshes_to_quad_strips() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("conformance/traces");
+    let run = |spec: bool| {
+        let mut c = tilegl();
+        c.arg("replay")
+            .arg(dir.join("xss-polyhedra.trace"))
+            .arg("--compare")
+            .arg(dir.join("xss-polyhedra.frames"));
+        if spec {
+            c.arg("--spec-meshes");
+        }
+        c.output().unwrap()
+    };
+    let default = run(false);
+    assert!(
+        default.status.success(),
+        "{}",
+        String::from_utf8_lossy(&default.stdout)
+    );
+    let spec = run(true);
+    assert_eq!(
+        spec.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&spec.stdout)
+    );
+}
