@@ -679,14 +679,25 @@ fn textured_fast_paths_match_the_general_path() {
 }
 
 fn busy_scene_again(gl: &mut Context) {
-    let mut rng = Rng(11);
+    random_strip(gl, 11, false);
+}
+
+/// A strip of 200 random vertices with random colours (and, when `translucent`, random
+/// alphas) spread through the view volume of [`busy_scene`].
+fn random_strip(gl: &mut Context, seed: u64, translucent: bool) {
+    let mut rng = Rng(seed);
     gl.begin(GL_TRIANGLE_STRIP);
     for _ in 0..200 {
-        gl.color_3f(
+        let (r, g, b) = (
             rng.range(0.0, 1.0),
             rng.range(0.0, 1.0),
             rng.range(0.0, 1.0),
         );
+        if translucent {
+            gl.color_4f(r, g, b, rng.range(0.0, 1.0));
+        } else {
+            gl.color_3f(r, g, b);
+        }
         gl.vertex_3f(
             rng.range(-3.0, 3.0),
             rng.range(-3.0, 3.0),
@@ -1264,22 +1275,7 @@ fn untextured_blended_spans_match_the_general_path() {
             gl.set_force_general_path(general);
             busy_scene(&mut gl);
             state(&mut gl);
-            let mut rng = Rng(23);
-            gl.begin(GL_TRIANGLE_STRIP);
-            for _ in 0..200 {
-                gl.color_4f(
-                    rng.range(0.0, 1.0),
-                    rng.range(0.0, 1.0),
-                    rng.range(0.0, 1.0),
-                    rng.range(0.0, 1.0),
-                );
-                gl.vertex_3f(
-                    rng.range(-3.0, 3.0),
-                    rng.range(-3.0, 3.0),
-                    rng.range(-9.0, -0.5),
-                );
-            }
-            gl.end();
+            random_strip(&mut gl, 23, true);
             read_rgba(&mut gl)
         };
         let general = render(true);

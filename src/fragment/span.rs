@@ -340,7 +340,6 @@ fn shade_textured<
     it: &Interpolants<'a>,
 ) {
     let key = &ds.key;
-    let u = &ds.uniforms;
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
@@ -359,10 +358,7 @@ fn shade_textured<
         _ => None,
     };
     if (TEX == tex_mode::FAST_RGBA || TEX == tex_mode::FAST_RGB)
-        && key.logic_op.is_none()
-        && key.stencil.is_none()
-        && !key.color_sum
-        && key.fog.is_none()
+        && tail8_applies(key)
         && it.coverage == 1.0
     {
         if let Some(f) = &fast {
@@ -372,17 +368,8 @@ fn shade_textured<
             } else {
                 None
             };
-            if (sampling.is_some() || perspective.is_some()) && simd::available() {
-                let tail = Tail8 {
-                    modulate: f.modulate,
-                    alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
-                    alpha_from_primary: TEX == tex_mode::FAST_RGB,
-                    rgb_from_primary: false,
-                    blend: tail_blend(ds),
-                    color_mask: u32::from_le_bytes(
-                        key.color_mask.map(|m| if m { 0xFF } else { 0 }),
-                    ),
-                };
+            if sampling.is_some() || perspective.is_some() {
+                let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
                 // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
@@ -393,9 +380,7 @@ fn shade_textured<
                         *v = run.next(Some(ds.depth_max));
                     }
                 }
-                // Without a depth test or depth writes the depth value is unused.
-                let depth_max =
-                    (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
+                let depth_max = group_depth_max(ds);
                 // Groups of eight lanes from `gx`; the perspective sampler needs groups that
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
@@ -1260,6 +1245,42 @@ fn store_group(
     }
 }
 
+/// The eight-fragment tail for the draw's key (its alpha test, blending and colour mask) with
+/// the texture environment's part as given.
+fn tail8(
+    ds: &DrawState,
+    modulate: bool,
+    rgb_from_primary: bool,
+    alpha_from_primary: bool,
+) -> Tail8 {
+    let key = &ds.key;
+    Tail8 {
+        modulate,
+        rgb_from_primary,
+        alpha_from_primary,
+        alpha_test: key.alpha_func.map(|func| (func, ds.uniforms.alpha_ref)),
+        blend: tail_blend(ds),
+        color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
+    }
+}
+
+/// The depth range the eight-lane paths convert depths to: none without a depth test or
+/// depth writes (the values would be unused).
+fn group_depth_max(ds: &DrawState) -> Option<u32> {
+    (ds.key.depth_func.is_some() || ds.key.depth_write).then_some(ds.depth_max)
+}
+
+/// Whether the eight-fragment tail covers everything after the colour for `key`: no stencil
+/// test, logic op, colour sum, fog or occlusion counting, and AVX2 present.
+fn tail8_applies(key: &FragmentKey) -> bool {
+    key.stencil.is_none()
+        && key.logic_op.is_none()
+        && !key.color_sum
+        && key.fog.is_none()
+        && !key.count_samples
+        && simd::available()
+}
+
 /// The eight-fragment tail's blending for the draw's key.
 fn tail_blend(ds: &DrawState) -> simd::TailBlend {
     match ds.key.blend {
@@ -1339,13 +1360,7 @@ pub fn span_fogged<'a, const DEPTH: u8, const FULL_MASK: bool>(
 /// the alpha test, the depth test, blending (any equation and factors) and the colour mask
 /// apply.
 pub fn untextured8_applies(key: &FragmentKey) -> bool {
-    !key.texturing
-        && key.stencil.is_none()
-        && key.logic_op.is_none()
-        && !key.color_sum
-        && key.fog.is_none()
-        && !key.count_samples
-        && simd::available()
+    !key.texturing && tail8_applies(key)
 }
 
 /// Untextured spans eight fragments at a time for keys with [`untextured8_applies`]: the
@@ -1363,18 +1378,10 @@ pub fn span_untextured8<'a>(
     if it.coverage != 1.0 {
         return span_general(ds, tile, y, x0, x1, it);
     }
-    let key = &ds.key;
     let row = tile.index(x0, y);
     let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 4);
-    let tail = Tail8 {
-        modulate: false,
-        rgb_from_primary: false,
-        alpha_from_primary: false,
-        alpha_test: key.alpha_func.map(|func| (func, ds.uniforms.alpha_ref)),
-        blend: tail_blend(ds),
-        color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
-    };
-    let depth_max = (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
+    let tail = tail8(ds, false, false, false);
+    let depth_max = group_depth_max(ds);
     let mut gx = x0;
     while gx < x1 {
         let n = ((x1 - gx) as usize).min(8);
@@ -1399,13 +1406,7 @@ pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Int
 /// (`simd_units`), and after the texture environment only the alpha test, the depth test,
 /// blending (any equation and factors) and the colour mask apply.
 pub fn sampled8_applies(key: &FragmentKey) -> bool {
-    key.simd_units
-        && key.stencil.is_none()
-        && key.logic_op.is_none()
-        && !key.color_sum
-        && key.fog.is_none()
-        && !key.count_samples
-        && simd::available()
+    key.simd_units && tail8_applies(key)
 }
 
 /// Textured spans eight pixels at a time for keys with [`sampled8_applies`]: every unit
@@ -1421,7 +1422,6 @@ pub fn span_sampled8<'a>(
     it: &Interpolants<'a>,
 ) {
     let key = &ds.key;
-    let u = &ds.uniforms;
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let xc0 = x0 as f64 + 0.5;
@@ -1447,20 +1447,18 @@ pub fn span_sampled8<'a>(
         }
         _ => None,
     };
-    let tail = Tail8 {
-        modulate: single.is_some_and(|s| s.0),
-        rgb_from_primary: single.is_some_and(|s| !s.1),
-        alpha_from_primary: single.is_some_and(|s| !s.2),
-        alpha_test: key.alpha_func.map(|func| (func, u.alpha_ref)),
-        blend: tail_blend(ds),
-        color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
-    };
+    let tail = tail8(
+        ds,
+        single.is_some_and(|s| s.0),
+        single.is_some_and(|s| !s.1),
+        single.is_some_and(|s| !s.2),
+    );
     // Each unit's texels of the current group, by unit number (as the cascade reads them).
     let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
     for unit in &ds.units {
         by_unit[unit.unit] = Some([[0f32; 8]; 4]);
     }
-    let depth_max = (key.depth_func.is_some() || key.depth_write).then_some(ds.depth_max);
+    let depth_max = group_depth_max(ds);
     let mut gx = x0 & !1;
     while gx < x1 {
         let lo = (x0 - gx).max(0) as usize;
