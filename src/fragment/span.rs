@@ -403,8 +403,15 @@ fn shade_textured<
                         pass,
                         dst,
                     } = group;
+                    // Lanes failing the depth test change nothing (no stencil here): a group
+                    // without a passing lane is not sampled, and only passing quads choose
+                    // levels.
+                    if pass == 0 {
+                        gx += 8;
+                        continue;
+                    }
                     let x = gx as f64 + 0.5;
-                    let live = ((1u32 << hi) - (1u32 << lo)) as u8;
+                    let live = pass;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => simd::textured8(sm, x, hi, &tail, &primary, &dst, pass),
@@ -1463,20 +1470,25 @@ pub fn span_sampled8<'a>(
     while gx < x1 {
         let lo = (x0 - gx).max(0) as usize;
         let hi = ((x1 - gx) as usize).min(8);
-        let live = ((1u32 << hi) - (1u32 << lo)) as u8;
         let first = (gx - x0) as isize;
         let base = (row as isize + first) as usize;
-        for (k, unit) in ds.units.iter().enumerate() {
-            if let Some(out) = by_unit[unit.unit].as_mut() {
-                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, live, out);
-            }
-        }
         let GroupInputs {
             primary: mut color,
             depth,
             pass,
             dst,
         } = GroupInputs::gather(ds, tile, base, lo..hi, |_| run.next(depth_max));
+        // Lanes failing the depth test change nothing (no stencil here): only passing lanes
+        // are sampled.
+        if pass == 0 {
+            gx += 8;
+            continue;
+        }
+        for (k, unit) in ds.units.iter().enumerate() {
+            if let Some(out) = by_unit[unit.unit].as_mut() {
+                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, pass, out);
+            }
+        }
         if single.is_none() {
             color = environment8(ds, &color, &by_unit);
         }
