@@ -29,11 +29,78 @@ pub struct Interpolants<'a> {
     pub perspective: bool,
     /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
     pub coverage: f32,
+    /// What the primitive's spans share beyond the planes. (A reference: a larger
+    /// `Interpolants` measurably slows the other paths.)
+    pub shared: &'a PrimitiveShared<'a>,
+}
+
+/// What the spans of one primitive share: prepared once, not per span.
+#[derive(Debug)]
+pub struct PrimitiveShared<'a> {
     /// The fast textured path's level selection where the primitive's 1/w and q are constant
     /// (then λ is the same at every fragment with finite coordinates): prepared by the first
-    /// span that needs it and reused by the others. Start with `None`. (A reference: a larger
-    /// `Interpolants` measurably slows the other paths.)
-    pub fast: &'a Cell<Option<AffineSpan<'a>>>,
+    /// span that needs it and reused by the others.
+    pub fast: Cell<Option<AffineSpan<'a>>>,
+    /// The draw's texture levels prepared for the eight-pixel filter.
+    pub levels: &'a UnitLevels<'a>,
+}
+
+impl<'a> PrimitiveShared<'a> {
+    pub fn new(levels: &'a UnitLevels<'a>) -> PrimitiveShared<'a> {
+        PrimitiveShared {
+            fast: Cell::new(None),
+            levels,
+        }
+    }
+}
+
+/// Every level of each unit's texture prepared for the eight-pixel filter ([`Level8`]; `None`
+/// where a level does not take it), by the unit's index in `DrawState::units`. Prepared once
+/// per tile and draw state ([`UnitLevels::prepare`]) instead of in every span: the spans of
+/// small triangles are a few pixels long.
+#[derive(Clone, Debug)]
+pub struct UnitLevels<'a> {
+    units: [[Option<Level8<'a>>; MAX_FAST_LEVELS]; MAX_TEXTURE_UNITS],
+    /// Units filled by the last `prepare` (the others are all `None`).
+    filled: usize,
+}
+
+impl Default for UnitLevels<'_> {
+    fn default() -> Self {
+        UnitLevels {
+            units: [[None; MAX_FAST_LEVELS]; MAX_TEXTURE_UNITS],
+            filled: 0,
+        }
+    }
+}
+
+impl<'a> UnitLevels<'a> {
+    /// The levels of `ds`'s units (none unless the draw's key has `simd_units`, which the
+    /// eight-pixel samplers require).
+    pub fn new(ds: &'a DrawState) -> UnitLevels<'a> {
+        let mut levels = UnitLevels::default();
+        levels.prepare(ds);
+        levels
+    }
+
+    /// Replaces the table with the levels of `ds`'s units.
+    pub fn prepare(&mut self, ds: &'a DrawState) {
+        for unit in &mut self.units[..self.filled] {
+            *unit = [None; MAX_FAST_LEVELS];
+        }
+        self.filled = 0;
+        if !ds.key.simd_units || !simd::available() {
+            return;
+        }
+        for (slot, unit) in self.units.iter_mut().zip(&ds.units) {
+            let tex = &unit.texture;
+            let (wrap, base) = (tex.wrap_st(), tex.base_format());
+            for (l, level) in slot.iter_mut().enumerate().take(tex.level_count()) {
+                *level = tex.fast_level(l).and_then(|f| Level8::new(&f, wrap, base));
+            }
+            self.filled += 1;
+        }
+    }
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
@@ -237,18 +304,19 @@ fn finish_fragment<
 /// the per-fragment environment; the key must have `simd_units`.
 #[inline(always)]
 fn shade<
+    'a,
     const DEPTH: u8,
     const FULL_MASK: bool,
     const SIMPLE: bool,
     const SAMPLED: bool,
     const FOG: bool,
 >(
-    ds: &DrawState,
+    ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
     x0: i32,
     x1: i32,
-    it: &Interpolants,
+    it: &Interpolants<'a>,
 ) {
     let key = &ds.key;
     let yc = y as f64 + 0.5;
@@ -268,8 +336,8 @@ fn shade<
     let mut group_texels = [[[0f32; 8]; 4]; MAX_TEXTURE_UNITS];
     let group0 = x0 & !1;
     if SAMPLED {
-        for (slot, u) in samplers.iter_mut().zip(&ds.units) {
-            *slot = Perspective8::new(u, it, y, key.simd_units);
+        for (k, (slot, u)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+            *slot = Perspective8::new(u, k, it, y);
         }
     }
     for i in 0..n {
@@ -364,7 +432,7 @@ fn shade_textured<
         if let Some(f) = &fast {
             let sampling = f.sampling8(it);
             let mut perspective = if sampling.is_none() && f.affine.is_none() {
-                Perspective8::new(f.unit, it, y, key.simd_units)
+                Perspective8::new(f.unit, 0, it, y)
             } else {
                 None
             };
@@ -673,7 +741,7 @@ impl<'a> FastUnit<'a> {
         yc: f64,
     ) -> Option<AffineSpan<'a>> {
         let p = &it.attrs[base..base + 4];
-        if let Some(mut a) = it.fast.get() {
+        if let Some(mut a) = it.shared.fast.get() {
             a.by = [p[0].b * yc, p[1].b * yc];
             return Some(a);
         }
@@ -722,7 +790,7 @@ impl<'a> FastUnit<'a> {
             weight,
             simd,
         };
-        it.fast.set(Some(a));
+        it.shared.fast.set(Some(a));
         Some(a)
     }
 
@@ -889,66 +957,51 @@ const MAX_FAST_LEVELS: usize = 17;
 /// general path): the same coordinates, the same per-quad derivatives, λ and level plan
 /// (computed per quad by the sampler's own functions), the same filter arithmetic.
 struct Perspective8<'a> {
-    unit: &'a TextureUnitDraw,
     /// `[row][s, t, q] = [a, b * y, c]`: row 0 is the pixel's row, row 1 the quad's other.
     planes: [[[f64; 3]; 3]; 2],
     /// Whether the pixel's row is the upper row of its quads.
     own_is_upper: bool,
     /// The level and filter when they do not depend on λ (which is then not computed).
     fixed_plan: Option<(usize, bool)>,
-    /// λ and level selection, gathered once for the span.
-    lod: LodSelect,
-    levels: [Option<Level8<'a>>; MAX_FAST_LEVELS],
+    /// λ and level selection, gathered once for the draw.
+    lod: &'a LodSelect,
+    /// The texture's levels prepared for the filter ([`UnitLevels`]).
+    levels: &'a [Option<Level8<'a>>; MAX_FAST_LEVELS],
 }
 
 impl<'a> Perspective8<'a> {
-    /// The unit's eight-pixel sampler on row `y`, when every level of its texture takes the
-    /// eight-pixel filter.
-    /// `simd_units` is the draw's `FragmentKey::simd_units` (every unit's texture passes
-    /// `BoundTexture::simd_2d`, checked once per draw rather than per span).
+    /// The eight-pixel sampler on row `y` of the unit at index `k` of the draw's units, when
+    /// every level of its texture takes the eight-pixel filter (the draw's key has
+    /// `simd_units`: every unit's texture passes `BoundTexture::simd_2d`).
     fn new(
         unit: &'a TextureUnitDraw,
-        it: &Interpolants,
+        k: usize,
+        it: &Interpolants<'a>,
         y: i32,
-        simd_units: bool,
     ) -> Option<Perspective8<'a>> {
-        let tex = &unit.texture;
-        if !simd_units || !simd::available() {
-            return None;
-        }
-        let count = tex.level_count();
-        if count == 0 || count > MAX_FAST_LEVELS {
-            return None;
-        }
+        let levels = &it.shared.levels.units[k];
+        // No table (no `simd_units` or no AVX2), or a base level that does not take the
+        // filter: sampled one by one.
+        levels[0]?;
         let yc = y as f64 + 0.5;
         let own_is_upper = quad_origin(yc) != yc;
         let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
         let base = attr::TEX + 4 * unit.unit;
         let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
         let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
-        let mut p = Perspective8 {
-            unit,
+        Some(Perspective8 {
             planes: [row(yc), row(other)],
             own_is_upper,
-            lod: unit.lod,
+            lod: &unit.lod,
             fixed_plan: unit.fixed_plan,
-            levels: [None; MAX_FAST_LEVELS],
-        };
-        // A texture whose base level does not take the filter is sampled one by one.
-        p.level(0)?;
-        Some(p)
+            levels,
+        })
     }
 
-    /// Level `l` prepared for the eight-pixel filter (on first use), or `None` when it does not
-    /// take it.
-    fn level(&mut self, l: usize) -> Option<Level8<'a>> {
-        if let Some(lv) = self.levels.get(l)? {
-            return Some(*lv);
-        }
-        let tex = &self.unit.texture;
-        let lv = Level8::new(&tex.fast_level(l)?, tex.wrap_st(), tex.base_format())?;
-        self.levels[l] = Some(lv);
-        Some(lv)
+    /// Level `l` prepared for the eight-pixel filter, or `None` when it does not take it.
+    #[inline(always)]
+    fn level(&self, l: usize) -> Option<Level8<'a>> {
+        *self.levels.get(l)?
     }
 
     /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
@@ -1428,7 +1481,6 @@ pub fn span_sampled8<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
-    let key = &ds.key;
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let xc0 = x0 as f64 + 0.5;
@@ -1437,8 +1489,8 @@ pub fn span_sampled8<'a>(
     }
     let mut run = SpanRun::new(it, xc0, yc, 4);
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
-    for (slot, unit) in samplers.iter_mut().zip(&ds.units) {
-        *slot = Perspective8::new(unit, it, y, key.simd_units);
+    for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+        *slot = Perspective8::new(unit, k, it, y);
     }
     // One unit under REPLACE or MODULATE: the environment itself runs eight fragments at a
     // time in the tail (with the base format's table: which of colour and alpha the texture

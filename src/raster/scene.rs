@@ -18,18 +18,19 @@ pub struct ClearCommand {
     pub stencil: Option<(u8, u8)>,
 }
 
-/// A set-up triangle.
+/// A set-up triangle. Kept small (its planes live in `Scene::planes`): the caller's thread
+/// writes one per triangle, and a copy of more than 128 bytes became a `memcpy` call.
 #[derive(Clone, Copy, Debug)]
 pub struct TriangleCommand {
     pub state: u32,
-    pub edges: [Edge; 3],
+    /// Offset in `Scene::planes` of the window-z plane, then the 1/w plane, then the
+    /// attribute planes (attribute/w).
+    pub planes: u32,
     /// Pixels that may be covered (already inside the draw rectangle).
     pub bbox: Rect,
-    pub z: Plane,
-    pub inv_w: Plane,
-    /// Offset of the attribute planes in `Scene::planes`.
-    pub attrs: u32,
-    pub perspective: bool,
+    pub edges: [Edge; 3],
+    /// Each edge's bias ([`Edge::new`]).
+    pub bias: [u8; 3],
 }
 
 /// A rectangle of fragments with constant attributes: a point, a column of a line, or one

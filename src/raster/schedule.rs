@@ -6,7 +6,7 @@ use rayon::prelude::*;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
 use super::tri::raster_triangle;
-use crate::fragment::span::Interpolants;
+use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
 
@@ -150,25 +150,40 @@ fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
 }
 
 fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
+    // The texture levels of the last command's draw state (consecutive commands mostly share
+    // one).
+    let mut levels = UnitLevels::default();
+    let mut levels_state = None;
     for &ci in bin {
-        match &scene.commands[ci as usize] {
+        let command = &scene.commands[ci as usize];
+        let state = match command {
+            Command::Clear(_) => None,
+            Command::Triangle(t) => Some(t.state),
+            Command::Rect(r) => Some(r.state),
+        };
+        if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
+            levels.prepare(&scene.states[state as usize]);
+            levels_state = Some(state);
+        }
+        match command {
             Command::Clear(c) => clear_tile(c, tile),
             Command::Triangle(t) => {
                 let ds = &scene.states[t.state as usize];
-                let planes = &scene.planes[t.attrs as usize..t.attrs as usize + ds.attr_count];
-                raster_triangle(t, ds, planes, tile);
+                let at = t.planes as usize;
+                let planes = &scene.planes[at..at + 2 + ds.attr_count];
+                raster_triangle(t, ds, planes, &levels, tile);
             }
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];
                 let attrs = &scene.planes[r.attrs as usize..r.attrs as usize + ds.attr_count];
-                let fast = std::cell::Cell::new(None);
+                let shared = PrimitiveShared::new(&levels);
                 let it = Interpolants {
                     z: Plane::constant(r.z),
                     inv_w: Plane::constant(1.0),
                     attrs,
                     perspective: false,
                     coverage: r.coverage,
-                    fast: &fast,
+                    shared: &shared,
                 };
                 let t = crate::framebuffer::TILE as i32;
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));

@@ -95,32 +95,33 @@ impl PlaneSetup {
 }
 
 /// One edge function `E(p) = a*px + b*py + c` over fixed-point positions; a pixel centre is
-/// inside when `E >= bias`. `bias` is 0 for top-left edges and 1 otherwise, so pixels exactly
-/// on a shared edge belong to one triangle only.
+/// inside when `E >= bias`, with the edge's `bias` ([`Edge::new`]) kept beside it (in
+/// `TriangleCommand::bias`, to keep the command small).
 #[derive(Clone, Copy, Debug)]
 pub struct Edge {
     pub a: i64,
     pub b: i64,
     pub c: i64,
-    pub bias: i64,
 }
 
 impl Edge {
-    /// The edge from `p` to `q` of a counter-clockwise (positive area, y up) triangle.
+    /// The edge from `p` to `q` of a counter-clockwise (positive area, y up) triangle, and
+    /// its bias: 0 for top-left edges and 1 otherwise, so pixels exactly on a shared edge
+    /// belong to one triangle only.
     ///
     /// Fill rule: in GL window coordinates (y up), pixel centres on an edge are included when it
     /// is a left edge (interior to its right: the edge runs downwards) or a top edge (horizontal
     /// with the interior below).
-    pub fn new(p: [i64; 2], q: [i64; 2]) -> Edge {
+    pub fn new(p: [i64; 2], q: [i64; 2]) -> (Edge, u8) {
         let dx = q[0] - p[0];
         let dy = q[1] - p[1];
         let top_left = dy < 0 || (dy == 0 && dx < 0);
-        Edge {
+        let edge = Edge {
             a: -dy,
             b: dx,
             c: dy * p[0] - dx * p[1],
-            bias: if top_left { 0 } else { 1 },
-        }
+        };
+        (edge, u8::from(!top_left))
     }
 }
 

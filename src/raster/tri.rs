@@ -3,11 +3,19 @@
 
 use super::scene::TriangleCommand;
 use super::setup::{Plane, SUBPIXEL};
-use crate::fragment::span::Interpolants;
+use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
 
-pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], tile: &mut Tile) {
+/// Shades the part of triangle `t` inside `tile`; `planes` are its window-z plane, its 1/w
+/// plane and its attribute planes.
+pub fn raster_triangle<'a>(
+    t: &TriangleCommand,
+    ds: &'a DrawState,
+    planes: &'a [Plane],
+    levels: &'a UnitLevels<'a>,
+    tile: &mut Tile,
+) {
     let tile_size = TILE as i32;
     let x_lo = t.bbox.x0.max(tile.x0);
     let x_hi = t.bbox.x1.min(tile.x0 + tile_size);
@@ -16,14 +24,14 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
     if x_lo >= x_hi || y_lo >= y_hi {
         return;
     }
-    let fast = std::cell::Cell::new(None);
+    let shared = PrimitiveShared::new(levels);
     let it = Interpolants {
-        z: t.z,
-        inv_w: t.inv_w,
-        attrs,
-        perspective: t.perspective,
+        z: planes[0],
+        inv_w: planes[1],
+        attrs: &planes[2..],
+        perspective: true,
         coverage: 1.0,
-        fast: &fast,
+        shared: &shared,
     };
     if ds.raster.polygon_smooth {
         smooth_rows(t, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
@@ -34,11 +42,11 @@ pub fn raster_triangle(t: &TriangleCommand, ds: &DrawState, attrs: &[Plane], til
         let py = y as i64 * SUBPIXEL + half;
         let mut lo = x_lo as i64;
         let mut hi = x_hi as i64; // exclusive
-        for e in &t.edges {
+        for (e, &bias) in t.edges.iter().zip(&t.bias) {
             // E(x) = step * x + base, with px = x * SUBPIXEL + half.
             let base = e.b * py + e.c + e.a * half;
             let step = e.a * SUBPIXEL;
-            let need = e.bias - base; // inside when step * x >= need
+            let need = i64::from(bias) - base; // inside when step * x >= need
             if step > 0 {
                 lo = lo.max(need.div_euclid(step) + i64::from(need.rem_euclid(step) != 0));
             } else if step < 0 {
@@ -172,7 +180,7 @@ pub fn bin_triangle(
         v.swap(1, 2);
         attrs.swap(1, 2);
     }
-    let edges = [
+    let [(e0, b0), (e1, b1), (e2, b2)] = [
         Edge::new(v[0].xy, v[1].xy),
         Edge::new(v[1].xy, v[2].xy),
         Edge::new(v[2].xy, v[0].xy),
@@ -236,7 +244,9 @@ pub fn bin_triangle(
     let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
     let offset = scene.planes.len() as u32;
-    scene.planes.reserve(n);
+    scene.planes.reserve(n + 2);
+    scene.planes.push(z);
+    scene.planes.push(inv_w);
     for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
         scene.planes.push(if secondary.contains(&i) {
             Plane::constant(0.0)
@@ -255,12 +265,10 @@ pub fn bin_triangle(
     scene.bin(
         Command::Triangle(TriangleCommand {
             state,
-            edges,
+            planes: offset,
             bbox,
-            z,
-            inv_w,
-            attrs: offset,
-            perspective: true,
+            edges: [e0, e1, e2],
+            bias: [b0, b1, b2],
         }),
         bbox,
     );

@@ -15,7 +15,7 @@ use crate::api::convert::{
     PixelTransferParam, TexPixelFormat, TexPixelType,
 };
 use crate::api::enums::*;
-use crate::fragment::span::Interpolants;
+use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::primitive::clip::point_visible;
 use crate::raster::setup::Plane;
 use crate::state::get::StateValue;
@@ -549,14 +549,15 @@ impl Context {
         let Some(t) = self.framebuffer.tile_index(x, y) else {
             return;
         };
-        let fast = std::cell::Cell::new(None);
+        let levels = UnitLevels::new(ds);
+        let shared = PrimitiveShared::new(&levels);
         let it = Interpolants {
             z: Plane::constant(z),
             inv_w: Plane::constant(1.0),
             attrs: planes,
             perspective: false,
             coverage: 1.0,
-            fast: &fast,
+            shared: &shared,
         };
         (ds.span)(ds, &mut self.framebuffer.tiles[t], y, x, x + 1, &it);
     }

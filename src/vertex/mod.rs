@@ -177,10 +177,9 @@ impl Context {
                     edges,
                 } => {
                     let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
-                    let inside = match windows.map(|w| (w[v[0]], w[v[1]], w[v[2]])) {
-                        Some((Some(a), Some(b), Some(c))) => Some([a, b, c]),
-                        _ => None,
-                    };
+                    let inside = windows.and_then(|w| {
+                        Some([w[v[0]].as_ref()?, w[v[1]].as_ref()?, w[v[2]].as_ref()?])
+                    });
                     if let Some(w) = inside {
                         // Filled and inside the guard band (the common case): no clipping, no
                         // copies.
@@ -204,7 +203,7 @@ impl Context {
                         tri::bin_triangle(
                             ds,
                             state,
-                            [&w[0], &w[1], &w[2]],
+                            w,
                             verts.map(|c| &c.attrs[..n_attrs]),
                             &mut self.scene,
                         );
