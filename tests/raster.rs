@@ -542,15 +542,18 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
     gl.matrix_mode(GL_MODELVIEW);
     gl.load_identity();
     gl.begin(GL_TRIANGLES);
-    for _ in 0..60 {
+    for i in 0..60 {
         let (cx, cy, cz) = (
             rng.range(-3.0, 3.0),
             rng.range(-3.0, 3.0),
             rng.range(-9.0, -1.5),
         );
-        for _ in 0..3 {
+        for k in 0..3 {
             color(gl, &mut rng);
-            gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+            // Every tenth triangle has a coordinate beyond the eight-pixel filter's range
+            // (those blocks are sampled one by one).
+            let far = if i % 10 == 9 && k == 0 { 3e9 } else { 1.0 };
+            gl.tex_coord_2f(far * rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
             gl.vertex_3f(
                 cx + rng.range(-2.0, 2.0),
                 cy + rng.range(-2.0, 2.0),

@@ -3,9 +3,9 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, sampled8_applies, span_fogged, span_general, span_nothing,
-    span_sampled, span_sampled8, span_specialised, span_textured, span_untextured8, tex_mode,
-    untextured8_applies, SpanFn,
+    blend_mode, depth_mode, pair_textured, sampled8_applies, span_fogged, span_general,
+    span_nothing, span_sampled, span_sampled8, span_specialised, span_textured, span_untextured8,
+    tail8_applies, tex_mode, untextured8_applies, PairFn, SpanFn,
 };
 use crate::api::convert::CompareFunc;
 use crate::texture::simd;
@@ -53,6 +53,25 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         }
         _ if untextured8_applies(key) => span_untextured8,
         _ => span_general,
+    }
+}
+
+/// The two-row function for `key`, when it has one: keys of the one-unit textured span whose
+/// fragments finish eight at a time (`force_general`: none).
+pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
+    if force_general
+        || key.writes_nothing()
+        || !key.simd_units
+        || key.stencil.is_some()
+        || key.logic_op.is_some()
+        || key.count_samples
+        || !tail8_applies(key)
+    {
+        return None;
+    }
+    match key.fast_texture? {
+        FastTexture::Rgba => Some(pair_textured::<{ tex_mode::FAST_RGBA }>),
+        FastTexture::Rgb => Some(pair_textured::<{ tex_mode::FAST_RGB }>),
     }
 }
 

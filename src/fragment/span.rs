@@ -973,24 +973,39 @@ impl<'a> Perspective8<'a> {
     /// The eight-pixel sampler on row `y` of the unit at index `k` of the draw's units, when
     /// every level of its texture takes the eight-pixel filter (the draw's key has
     /// `simd_units`: every unit's texture passes `BoundTexture::simd_2d`).
+    #[inline(always)]
     fn new(
         unit: &'a TextureUnitDraw,
         k: usize,
         it: &Interpolants<'a>,
         y: i32,
     ) -> Option<Perspective8<'a>> {
+        let yc = y as f64 + 0.5;
+        // Quads start on even rows (`quad_origin`): an odd row is the upper one.
+        let own_is_upper = y & 1 != 0;
+        let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
+        Self::on_rows(unit, k, it, [yc, other], own_is_upper)
+    }
+
+    /// The sampler with its planes on rows (centres) `rows`; `own_is_upper` says whether the
+    /// first is the upper row of its quads.
+    #[inline(always)]
+    fn on_rows(
+        unit: &'a TextureUnitDraw,
+        k: usize,
+        it: &Interpolants<'a>,
+        rows: [f64; 2],
+        own_is_upper: bool,
+    ) -> Option<Perspective8<'a>> {
         let levels = &it.shared.levels.units[k];
         // No table (no `simd_units` or no AVX2), or a base level that does not take the
         // filter: sampled one by one.
         levels[0]?;
-        let yc = y as f64 + 0.5;
-        let own_is_upper = quad_origin(yc) != yc;
-        let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
         let base = attr::TEX + 4 * unit.unit;
         let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
         let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
         Some(Perspective8 {
-            planes: [row(yc), row(other)],
+            planes: [row(rows[0]), row(rows[1])],
             own_is_upper,
             lod: &unit.lod,
             fixed_plan: unit.fixed_plan,
@@ -1015,7 +1030,7 @@ impl<'a> Perspective8<'a> {
         self.texels_at(&rows, live, out).is_some()
     }
 
-    fn texels_at(&mut self, rows: &[[[f64; 8]; 2]; 2], live: u8, out: &mut Texels8) -> Option<()> {
+    fn texels_at(&self, rows: &[[[f64; 8]; 2]; 2], live: u8, out: &mut Texels8) -> Option<()> {
         let (upper, lower) = if self.own_is_upper {
             (&rows[0], &rows[1])
         } else {
@@ -1028,18 +1043,8 @@ impl<'a> Perspective8<'a> {
             s[j] = fix(rows[0][0][j]);
             t[j] = fix(rows[0][1][j]);
         }
-        // Per quad: the level plan; per lane: its first level, second level and weight.
-        let mut plan = [(0usize, 0usize, false); 4];
-        let mut weight = [0f32; 8];
-        let fixed = self.fixed_plan;
-        for (k, pl) in plan.iter_mut().enumerate() {
-            if let Some((level, linear)) = fixed {
-                *pl = (level, level, linear);
-                continue;
-            }
-            if live & (3 << (2 * k)) == 0 {
-                continue;
-            }
+        // Quad k is lanes 2k and 2k + 1; its derivatives from its upper row and left column.
+        let quad = |k: usize| {
             let (l, r) = (2 * k, 2 * k + 1);
             let dx = [
                 fix(upper[0][r] - upper[0][l]),
@@ -1051,6 +1056,74 @@ impl<'a> Perspective8<'a> {
                 fix(upper[1][l] - lower[1][l]),
                 0.0,
             ];
+            (3u8 << l, dx, dy)
+        };
+        let quads = [quad(0), quad(1), quad(2), quad(3)];
+        self.filter_quads(&s, &t, &quads, live, out)
+    }
+
+    /// The sampler of the 4x2 blocks of rows `y` (even) and `y + 1` of the unit at index `k`
+    /// of the draw's units ([`Perspective8::texels_block`]), when [`Perspective8::new`] would
+    /// give one.
+    fn block(
+        unit: &'a TextureUnitDraw,
+        k: usize,
+        it: &Interpolants<'a>,
+        y: i32,
+    ) -> Option<Perspective8<'a>> {
+        // Row 0 is row y, row 1 row y + 1 (the upper row of the block's quads).
+        Self::on_rows(unit, k, it, [y as f64 + 0.5, y as f64 + 1.5], false)
+    }
+
+    /// The texels of a 4x2 block from a sampler made by [`Perspective8::block`]: lanes 0..4 are
+    /// the pixels centred at `x + j` on the lower row, lanes 4..8 the same columns on the upper
+    /// row, `x - 0.5` even (two whole quads). The same texels as [`Perspective8::texels_into`]
+    /// gives each pixel on its own row. False when a coordinate is beyond the filter's range.
+    fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        let Some([vs, vt]) = simd::perspective_block8(&self.planes, x) else {
+            return false;
+        };
+        let fix = |v: f64| finite_or_zero(v as f32);
+        let mut s = [0f32; 8];
+        let mut t = [0f32; 8];
+        for j in 0..8 {
+            s[j] = fix(vs[j]);
+            t[j] = fix(vt[j]);
+        }
+        // Quad q is columns 2q and 2q + 1 of both rows: lanes 2q, 2q + 1, 2q + 4 and 2q + 5.
+        let quad = |q: usize| {
+            let (l, r) = (2 * q, 2 * q + 1);
+            let dx = [fix(vs[4 + r] - vs[4 + l]), fix(vt[4 + r] - vt[4 + l]), 0.0];
+            let dy = [fix(vs[4 + l] - vs[l]), fix(vt[4 + l] - vt[l]), 0.0];
+            (0x33u8 << l, dx, dy)
+        };
+        let quads = [quad(0), quad(1)];
+        self.filter_quads(&s, &t, &quads, live, out).is_some()
+    }
+
+    /// The texels at lane coordinates `s`, `t` into `out` (lanes set in `live`), each quad
+    /// (its lanes, its x and y derivatives) with its own λ and level plan, quads of one plan
+    /// filtered together.
+    fn filter_quads(
+        &self,
+        s: &[f32; 8],
+        t: &[f32; 8],
+        quads: &[(u8, [f32; 3], [f32; 3])],
+        live: u8,
+        out: &mut Texels8,
+    ) -> Option<()> {
+        // Per quad: the level plan; per lane: its weight between the plan's two levels.
+        let mut plan = [(0usize, 0usize, false); 4];
+        let mut weight = [0f32; 8];
+        let fixed = self.fixed_plan;
+        for (pl, &(lanes, dx, dy)) in plan.iter_mut().zip(quads) {
+            if let Some((level, linear)) = fixed {
+                *pl = (level, level, linear);
+                continue;
+            }
+            if live & lanes == 0 {
+                continue;
+            }
             let lambda = self.lod.isotropic_lambda(dx, dy);
             *pl = match self.lod.plan(lambda) {
                 LevelPlan::One { level, linear } => (level, level, linear),
@@ -1059,33 +1132,37 @@ impl<'a> Perspective8<'a> {
                     linear,
                     weight: w,
                 } => {
-                    weight[l] = w;
-                    weight[r] = w;
+                    for (j, wj) in weight.iter_mut().enumerate() {
+                        if lanes & (1 << j) != 0 {
+                            *wj = w;
+                        }
+                    }
                     (levels[0], levels[1], linear)
                 }
             };
         }
+        let plan = &plan[..quads.len()];
         let mut done = !live;
-        for k in 0..4 {
-            if done & (3 << (2 * k)) == 3 << (2 * k) {
+        for (k, &(quad_lanes, _, _)) in quads.iter().enumerate() {
+            if done & quad_lanes == quad_lanes {
                 continue;
             }
             let (d1, d2, linear) = plan[k];
             // The lanes of every quad with this plan.
             let mut lanes = 0u8;
-            for (m, other) in plan.iter().enumerate() {
+            for (other, &(m, _, _)) in plan.iter().zip(quads) {
                 if *other == plan[k] {
-                    lanes |= 3 << (2 * m);
+                    lanes |= m;
                 }
             }
             lanes &= !done;
             done |= lanes;
             let all = done == 0xFF && lanes == live;
-            let t1 = simd::filter8(&self.level(d1)?, linear, &s, &t)?;
+            let t1 = simd::filter8(&self.level(d1)?, linear, s, t)?;
             let texels = if d2 == d1 {
                 t1
             } else {
-                let t2 = simd::filter8(&self.level(d2)?, linear, &s, &t)?;
+                let t2 = simd::filter8(&self.level(d2)?, linear, s, t)?;
                 let mut mixed = [[0f32; 8]; 4];
                 for c in 0..4 {
                     for j in 0..8 {
@@ -1250,6 +1327,13 @@ struct GroupInputs {
 }
 
 impl GroupInputs {
+    const EMPTY: GroupInputs = GroupInputs {
+        primary: [[0f32; 8]; 4],
+        depth: [0u32; 8],
+        pass: 0,
+        dst: [0u32; 8],
+    };
+
     /// Lane `j` (in `lanes`) is pixel `base + j` of `tile`; `value(j)` gives its colour and
     /// depth, called in lane order.
     #[inline(always)]
@@ -1260,28 +1344,27 @@ impl GroupInputs {
         lanes: std::ops::Range<usize>,
         mut value: impl FnMut(usize) -> ([f32; 4], u32),
     ) -> GroupInputs {
-        let mut g = GroupInputs {
-            primary: [[0f32; 8]; 4],
-            depth: [0u32; 8],
-            pass: 0,
-            dst: [0u32; 8],
-        };
-        for j in lanes.clone() {
-            let (color, d) = value(j);
-            for c in 0..4 {
-                g.primary[c][j] = color[c];
-            }
-            g.depth[j] = d;
-            let ok = match ds.key.depth_func {
-                None | Some(CompareFunc::Always) => true,
-                Some(func) => func.test(d, tile.depth[base + j]),
-            };
-            g.pass |= u8::from(ok) << j;
-        }
+        let mut g = GroupInputs::EMPTY;
         for j in lanes {
-            g.dst[j] = u32::from_le_bytes(tile.color[base + j]);
+            g.add(ds, tile, j, base + j, value(j));
         }
         g
+    }
+
+    /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
+    #[inline(always)]
+    fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: ([f32; 4], u32)) {
+        let (color, d) = value;
+        for c in 0..4 {
+            self.primary[c][j] = color[c];
+        }
+        self.depth[j] = d;
+        let ok = match ds.key.depth_func {
+            None | Some(CompareFunc::Always) => true,
+            Some(func) => func.test(d, tile.depth[index]),
+        };
+        self.pass |= u8::from(ok) << j;
+        self.dst[j] = u32::from_le_bytes(tile.color[index]);
     }
 }
 
@@ -1298,10 +1381,25 @@ fn store_group(
     depth: &[u32; 8],
 ) {
     for j in lanes {
-        tile.color[base + j] = words[j].to_le_bytes();
-        if ds.key.depth_write && passed & (1 << j) != 0 {
-            tile.depth[base + j] = depth[j];
-        }
+        store_lane(ds, tile, j, base + j, words, passed, depth);
+    }
+}
+
+/// Writes lane `j`'s colour word to pixel `index`, and its depth when it passed and depth
+/// writes are on.
+#[inline(always)]
+fn store_lane(
+    ds: &DrawState,
+    tile: &mut Tile,
+    j: usize,
+    index: usize,
+    words: &[u32; 8],
+    passed: u8,
+    depth: &[u32; 8],
+) {
+    tile.color[index] = words[j].to_le_bytes();
+    if ds.key.depth_write && passed & (1 << j) != 0 {
+        tile.depth[index] = depth[j];
     }
 }
 
@@ -1332,7 +1430,7 @@ fn group_depth_max(ds: &DrawState) -> Option<u32> {
 
 /// Whether the eight-fragment tail covers everything after the colour for `key`: no stencil
 /// test, logic op, colour sum, fog or occlusion counting, and AVX2 present.
-fn tail8_applies(key: &FragmentKey) -> bool {
+pub fn tail8_applies(key: &FragmentKey) -> bool {
     key.stencil.is_none()
         && key.logic_op.is_none()
         && !key.color_sum
@@ -1388,6 +1486,106 @@ pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
     it: &Interpolants<'a>,
 ) {
     shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
+}
+
+/// Shades two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels
+/// `x0..x1` of row `y + r` (both non-empty).
+pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, i32, [(i32, i32); 2], &Interpolants<'a>);
+
+/// The rows of a pair one by one, by the draw's span function.
+fn pair_by_rows<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    rows: [(i32, i32); 2],
+    it: &Interpolants<'a>,
+) {
+    for (r, (x0, x1)) in (0..).zip(rows) {
+        (ds.span)(ds, tile, y + r, x0, x1, it);
+    }
+}
+
+/// `span_textured`'s eight-lane perspective path on two rows at once, in 4x2 blocks (two
+/// whole quads): the spans of small triangles are two or three pixels long, so a block holds
+/// about as many fragments as two eight-pixel row groups, and its texture coordinates give
+/// the quads' derivatives without evaluating other rows. Every value is computed as on the
+/// rows one by one (each row's colour and depth stepped from its own first pixel, texels by
+/// [`Perspective8::texels_block`]), so the pixels are the same; affine primitives and keys
+/// without the eight-lane tail take the rows one by one.
+pub fn pair_textured<'a, const TEX: u8>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    rows: [(i32, i32); 2],
+    it: &Interpolants<'a>,
+) {
+    let key = &ds.key;
+    let Some(unit) = ds.units.first() else {
+        return pair_by_rows(ds, tile, y, rows, it);
+    };
+    let base = attr::TEX + 4 * unit.unit;
+    let q = &it.attrs[base + 3];
+    // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
+    let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
+    let sampler = if affine || it.coverage != 1.0 || !tail8_applies(key) {
+        None
+    } else {
+        Perspective8::block(unit, 0, it, y)
+    };
+    let Some(sampler) = sampler else {
+        return pair_by_rows(ds, tile, y, rows, it);
+    };
+    let f = FastUnit::new(unit, it, rows[0].0 as f64 + 0.5, y as f64 + 0.5);
+    let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
+    let depth_max = group_depth_max(ds);
+    let mut runs = [
+        SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
+        SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
+    ];
+    let mut gx = rows[0].0.min(rows[1].0) & !1;
+    let x_end = rows[0].1.max(rows[1].1);
+    while gx < x_end {
+        let mut group = GroupInputs::EMPTY;
+        let mut live = 0u8;
+        for (r, &(x0, x1)) in rows.iter().enumerate() {
+            let row = tile.index(gx, y + r as i32);
+            for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                let (lane, j) = (4 * r + j as usize, j as usize);
+                group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
+                live |= 1 << lane;
+            }
+        }
+        // Lanes failing the depth test change nothing (no stencil here).
+        if group.pass != 0 {
+            let mut tex = [[0f32; 8]; 4];
+            if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+                for lane in 0..8 {
+                    if group.pass & (1 << lane) != 0 {
+                        let (x, yc) = ((gx + lane % 4) as f64 + 0.5, (y + lane / 4) as f64 + 0.5);
+                        let t = if TEX == tex_mode::FAST_RGB {
+                            f.texel::<3>(it, x, yc)
+                        } else {
+                            f.texel::<4>(it, x, yc)
+                        };
+                        for c in 0..4 {
+                            tex[c][lane as usize] = t[c];
+                        }
+                    }
+                }
+            }
+            if let Some((words, passed)) =
+                simd::shade8(&tail, &group.primary, &tex, &group.dst, group.pass)
+            {
+                for lane in 0..8 {
+                    if live & (1 << lane) != 0 {
+                        let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                        store_lane(ds, tile, lane, index, &words, passed, &group.depth);
+                    }
+                }
+            }
+        }
+        gx += 4;
+    }
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth

@@ -38,7 +38,9 @@ pub fn raster_triangle<'a>(
         return;
     }
     let half = SUBPIXEL / 2;
-    'rows: for y in y_lo..y_hi {
+    // The covered pixels `lo..hi` of row `y`, when there are any: the interval where all three
+    // edge functions pass, solved per edge.
+    let row_interval = |y: i32| -> Option<(i32, i32)> {
         let py = y as i64 * SUBPIXEL + half;
         let mut lo = x_lo as i64;
         let mut hi = x_hi as i64; // exclusive
@@ -53,13 +55,43 @@ pub fn raster_triangle<'a>(
                 // -|step| * x >= need  <=>  x <= -need / |step|
                 hi = hi.min((-need).div_euclid(-step) + 1);
             } else if need > 0 {
-                continue 'rows;
+                return None;
             }
         }
-        if lo < hi {
-            match &ds.raster.polygon_stipple {
-                None => (ds.span)(ds, tile, y, lo as i32, hi as i32, &it),
-                Some(pattern) => stippled_row(ds, tile, y, lo as i32, hi as i32, &it, pattern),
+        (lo < hi).then_some((lo as i32, hi as i32))
+    };
+    match (&ds.raster.polygon_stipple, ds.span_pair) {
+        (None, Some(pair)) => {
+            // Rows in pairs (even y first): the pair function shades both at once.
+            let mut y = y_lo & !1;
+            while y < y_hi {
+                let lower = if y >= y_lo { row_interval(y) } else { None };
+                let upper = if y + 1 < y_hi {
+                    row_interval(y + 1)
+                } else {
+                    None
+                };
+                match (lower, upper) {
+                    (Some(a), Some(b)) => pair(ds, tile, y, [a, b], &it),
+                    (Some((x0, x1)), None) => (ds.span)(ds, tile, y, x0, x1, &it),
+                    (None, Some((x0, x1))) => (ds.span)(ds, tile, y + 1, x0, x1, &it),
+                    (None, None) => {}
+                }
+                y += 2;
+            }
+        }
+        (None, None) => {
+            for y in y_lo..y_hi {
+                if let Some((x0, x1)) = row_interval(y) {
+                    (ds.span)(ds, tile, y, x0, x1, &it);
+                }
+            }
+        }
+        (Some(pattern), _) => {
+            for y in y_lo..y_hi {
+                if let Some((x0, x1)) = row_interval(y) {
+                    stippled_row(ds, tile, y, x0, x1, &it, pattern);
+                }
             }
         }
     }

@@ -9,9 +9,9 @@ use glam::{DVec4, Mat4};
 use super::Context;
 use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
 use crate::api::convert::{FogMode, TexEnvMode, TexGenMode};
-use crate::fragment::cache::select_span;
+use crate::fragment::cache::{select_pair, select_span};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
-use crate::fragment::span::SpanFn;
+use crate::fragment::span::{PairFn, SpanFn};
 use crate::raster::setup::Rect;
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::texenv::TexEnv;
@@ -218,6 +218,8 @@ pub struct DrawState {
     pub uniforms: Uniforms,
     /// The fragment function chosen for `key`.
     pub span: SpanFn,
+    /// The function that shades two rows of a triangle at once, for keys that have one.
+    pub span_pair: Option<PairFn>,
 }
 
 impl Context {
@@ -375,6 +377,7 @@ impl Context {
             key,
             uniforms,
             span: select_span(&key, self.force_general_path),
+            span_pair: select_pair(&key, self.force_general_path),
         });
         self.draw_state = Some(ds.clone());
         ds

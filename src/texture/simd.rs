@@ -144,6 +144,24 @@ pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[[f64; 
     None
 }
 
+/// s/q and t/q (f64) at the pixel centres of a 4x2 block, as the fragment stage computes them
+/// one by one: lanes 0..4 are `x + j` on the row of `planes[0]`, lanes 4..8 the same columns
+/// on the row of `planes[1]`; each plane `[a, b * y, c]` (s, t, q) evaluated as
+/// `(a * x + b * y) + c`, then s and t divided by q. Answers `[s or t][lane]`; `None` without
+/// AVX2.
+#[inline]
+pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[f64; 8]; 2]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::perspective_block8(planes, x) });
+        }
+    }
+    let _ = (planes, x);
+    None
+}
+
 /// The blending [`shade8`] does: none, the two common cases by their own code, or any other.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TailBlend {
@@ -564,6 +582,30 @@ mod x86 {
             ct = super::lerp8(&ct, &t2, w);
         }
         Some(shade8(tail, primary, &ct, dst, pass))
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[f64; 8]; 2] {
+        let xv = _mm256_add_pd(_mm256_set1_pd(x), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
+        let mut out = [[0f64; 8]; 2];
+        for (row, p) in planes.iter().enumerate() {
+            let eval = |k: usize| {
+                let (a, by, c) = (
+                    _mm256_set1_pd(p[k][0]),
+                    _mm256_set1_pd(p[k][1]),
+                    _mm256_set1_pd(p[k][2]),
+                );
+                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
+            };
+            let q = eval(2);
+            for (k, o) in out.iter_mut().enumerate() {
+                let v = _mm256_div_pd(eval(k), q);
+                // SAFETY: `o` holds eight f64; lanes 4row..4row+4; unaligned store.
+                unsafe { _mm256_storeu_pd(o.as_mut_ptr().add(4 * row), v) };
+            }
+        }
+        out
     }
 
     #[inline]
