@@ -1044,7 +1044,7 @@ impl<'a> Perspective8<'a> {
             t[j] = fix(rows[0][1][j]);
         }
         // Quad k is lanes 2k and 2k + 1; its derivatives from its upper row and left column.
-        let quad = |k: usize| {
+        let derivatives = |k: usize| {
             let (l, r) = (2 * k, 2 * k + 1);
             let dx = [
                 fix(upper[0][r] - upper[0][l]),
@@ -1056,10 +1056,9 @@ impl<'a> Perspective8<'a> {
                 fix(upper[1][l] - lower[1][l]),
                 0.0,
             ];
-            (3u8 << l, dx, dy)
+            (dx, dy)
         };
-        let quads = [quad(0), quad(1), quad(2), quad(3)];
-        self.filter_quads(&s, &t, &quads, live, out)
+        self.filter_quads(&s, &t, [0x03, 0x0C, 0x30, 0xC0], derivatives, live, out)
     }
 
     /// The sampler of the 4x2 blocks of rows `y` (even) and `y + 1` of the unit at index `k`
@@ -1091,32 +1090,34 @@ impl<'a> Perspective8<'a> {
             t[j] = fix(vt[j]);
         }
         // Quad q is columns 2q and 2q + 1 of both rows: lanes 2q, 2q + 1, 2q + 4 and 2q + 5.
-        let quad = |q: usize| {
+        let derivatives = |q: usize| {
             let (l, r) = (2 * q, 2 * q + 1);
             let dx = [fix(vs[4 + r] - vs[4 + l]), fix(vt[4 + r] - vt[4 + l]), 0.0];
             let dy = [fix(vs[4 + l] - vs[l]), fix(vt[4 + l] - vt[l]), 0.0];
-            (0x33u8 << l, dx, dy)
+            (dx, dy)
         };
-        let quads = [quad(0), quad(1)];
-        self.filter_quads(&s, &t, &quads, live, out).is_some()
+        self.filter_quads(&s, &t, [0x33, 0xCC], derivatives, live, out)
+            .is_some()
     }
 
-    /// The texels at lane coordinates `s`, `t` into `out` (lanes set in `live`), each quad
-    /// (its lanes, its x and y derivatives) with its own λ and level plan, quads of one plan
-    /// filtered together.
-    fn filter_quads(
+    /// The texels at lane coordinates `s`, `t` into `out` (lanes set in `live`), quad k (lanes
+    /// `quads[k]`, x and y derivatives `derivatives(k)`, asked only when λ is needed) with its
+    /// own λ and level plan, quads of one plan filtered together.
+    #[inline(always)]
+    fn filter_quads<const N: usize>(
         &self,
         s: &[f32; 8],
         t: &[f32; 8],
-        quads: &[(u8, [f32; 3], [f32; 3])],
+        quads: [u8; N],
+        derivatives: impl Fn(usize) -> ([f32; 3], [f32; 3]),
         live: u8,
         out: &mut Texels8,
     ) -> Option<()> {
         // Per quad: the level plan; per lane: its weight between the plan's two levels.
-        let mut plan = [(0usize, 0usize, false); 4];
+        let mut plan = [(0usize, 0usize, false); N];
         let mut weight = [0f32; 8];
         let fixed = self.fixed_plan;
-        for (pl, &(lanes, dx, dy)) in plan.iter_mut().zip(quads) {
+        for (k, (pl, &lanes)) in plan.iter_mut().zip(&quads).enumerate() {
             if let Some((level, linear)) = fixed {
                 *pl = (level, level, linear);
                 continue;
@@ -1124,6 +1125,7 @@ impl<'a> Perspective8<'a> {
             if live & lanes == 0 {
                 continue;
             }
+            let (dx, dy) = derivatives(k);
             let lambda = self.lod.isotropic_lambda(dx, dy);
             *pl = match self.lod.plan(lambda) {
                 LevelPlan::One { level, linear } => (level, level, linear),
@@ -1132,25 +1134,24 @@ impl<'a> Perspective8<'a> {
                     linear,
                     weight: w,
                 } => {
-                    for (j, wj) in weight.iter_mut().enumerate() {
-                        if lanes & (1 << j) != 0 {
-                            *wj = w;
-                        }
+                    let mut m = lanes;
+                    while m != 0 {
+                        weight[m.trailing_zeros() as usize] = w;
+                        m &= m - 1;
                     }
                     (levels[0], levels[1], linear)
                 }
             };
         }
-        let plan = &plan[..quads.len()];
         let mut done = !live;
-        for (k, &(quad_lanes, _, _)) in quads.iter().enumerate() {
+        for (k, &quad_lanes) in quads.iter().enumerate() {
             if done & quad_lanes == quad_lanes {
                 continue;
             }
             let (d1, d2, linear) = plan[k];
             // The lanes of every quad with this plan.
             let mut lanes = 0u8;
-            for (other, &(m, _, _)) in plan.iter().zip(quads) {
+            for (other, &m) in plan.iter().zip(&quads) {
                 if *other == plan[k] {
                     lanes |= m;
                 }
