@@ -3,9 +3,9 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, pair_textured, sampled8_applies, span_fogged, span_general,
-    span_nothing, span_sampled, span_sampled8, span_specialised, span_textured, span_untextured8,
-    tail8_applies, tex_mode, untextured8_applies, PairFn, SpanFn,
+    blend_mode, depth_mode, pair_sampled8, pair_textured, sampled8_applies, span_fogged,
+    span_general, span_nothing, span_sampled, span_sampled8, span_specialised, span_textured,
+    span_untextured8, tail8_applies, tex_mode, untextured8_applies, PairFn, SpanFn,
 };
 use crate::api::convert::CompareFunc;
 use crate::texture::simd;
@@ -56,8 +56,8 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
     }
 }
 
-/// The two-row function for `key`, when it has one: keys of the one-unit textured span whose
-/// fragments finish eight at a time (`force_general`: none).
+/// The two-row function for `key`, when it has one: keys of the one-unit textured span and
+/// of `span_sampled8` whose fragments finish eight at a time (`force_general`: none).
 pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
     if force_general
         || key.writes_nothing()
@@ -69,9 +69,14 @@ pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
     {
         return None;
     }
-    match key.fast_texture? {
-        FastTexture::Rgba => Some(pair_textured::<{ tex_mode::FAST_RGBA }>),
-        FastTexture::Rgb => Some(pair_textured::<{ tex_mode::FAST_RGB }>),
+    match key.fast_texture {
+        Some(FastTexture::Rgba) => Some(pair_textured::<{ tex_mode::FAST_RGBA }>),
+        Some(FastTexture::Rgb) => Some(pair_textured::<{ tex_mode::FAST_RGB }>),
+        // As `select_span` picks `span_sampled8`.
+        None if !key.is_simple() && !untextured8_applies(key) && sampled8_applies(key) => {
+            Some(pair_sampled8)
+        }
+        None => None,
     }
 }
 

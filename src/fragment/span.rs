@@ -1490,7 +1490,7 @@ pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
 }
 
 /// Shades two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels
-/// `x0..x1` of row `y + r` (both non-empty).
+/// `x0..x1` of row `y + r` (empty when `x0 >= x1`; not both).
 pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, i32, [(i32, i32); 2], &Interpolants<'a>);
 
 /// The rows of a pair one by one, by the draw's span function.
@@ -1502,50 +1502,41 @@ fn pair_by_rows<'a>(
     it: &Interpolants<'a>,
 ) {
     for (r, (x0, x1)) in (0..).zip(rows) {
-        (ds.span)(ds, tile, y + r, x0, x1, it);
+        if x0 < x1 {
+            (ds.span)(ds, tile, y + r, x0, x1, it);
+        }
     }
 }
 
-/// `span_textured`'s eight-lane perspective path on two rows at once, in 4x2 blocks (two
-/// whole quads): the spans of small triangles are two or three pixels long, so a block holds
-/// about as many fragments as two eight-pixel row groups, and its texture coordinates give
-/// the quads' derivatives without evaluating other rows. Every value is computed as on the
-/// rows one by one (each row's colour and depth stepped from its own first pixel, texels by
-/// [`Perspective8::texels_block`]), so the pixels are the same; affine primitives and keys
-/// without the eight-lane tail take the rows one by one.
-pub fn pair_textured<'a, const TEX: u8>(
-    ds: &'a DrawState,
+/// Runs the 4x2 blocks of a row pair (two whole quads each, from the even column at or left
+/// of the first covered pixel): lanes 0..4 are columns `gx..gx + 4` of row `y`, lanes 4..8
+/// the same columns of row `y + 1`. Each row's colour and depth are stepped from its own first
+/// pixel, as on the row alone. `shade(gx, group)` gets the covered lanes' inputs when one of
+/// them passes the depth test (the others change nothing: no stencil on these paths) and
+/// answers the colour words and the lanes that passed every test, which are stored.
+#[inline(always)]
+fn for_each_block(
+    ds: &DrawState,
     tile: &mut Tile,
     y: i32,
     rows: [(i32, i32); 2],
-    it: &Interpolants<'a>,
+    it: &Interpolants,
+    mut shade: impl FnMut(i32, &GroupInputs) -> Option<([u32; 8], u8)>,
 ) {
-    let key = &ds.key;
-    let Some(unit) = ds.units.first() else {
-        return pair_by_rows(ds, tile, y, rows, it);
-    };
-    let base = attr::TEX + 4 * unit.unit;
-    let q = &it.attrs[base + 3];
-    // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
-    let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
-    let sampler = if affine || it.coverage != 1.0 || !tail8_applies(key) {
-        None
-    } else {
-        Perspective8::block(unit, 0, it, y)
-    };
-    let Some(sampler) = sampler else {
-        return pair_by_rows(ds, tile, y, rows, it);
-    };
-    let f = FastUnit::new(unit, it, rows[0].0 as f64 + 0.5, y as f64 + 0.5);
-    let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
     let depth_max = group_depth_max(ds);
     let mut runs = [
         SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
         SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
     ];
-    let mut gx = rows[0].0.min(rows[1].0) & !1;
-    let x_end = rows[0].1.max(rows[1].1);
-    while gx < x_end {
+    let covered = |r: usize| rows[r].0 < rows[r].1;
+    let (first, end) = match (covered(0), covered(1)) {
+        (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
+        (true, false) => rows[0],
+        (false, true) => rows[1],
+        (false, false) => return,
+    };
+    let mut gx = first & !1;
+    while gx < end {
         let mut group = GroupInputs::EMPTY;
         let mut live = 0u8;
         for (r, &(x0, x1)) in rows.iter().enumerate() {
@@ -1556,27 +1547,8 @@ pub fn pair_textured<'a, const TEX: u8>(
                 live |= 1 << lane;
             }
         }
-        // Lanes failing the depth test change nothing (no stencil here).
         if group.pass != 0 {
-            let mut tex = [[0f32; 8]; 4];
-            if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
-                for lane in 0..8 {
-                    if group.pass & (1 << lane) != 0 {
-                        let (x, yc) = ((gx + lane % 4) as f64 + 0.5, (y + lane / 4) as f64 + 0.5);
-                        let t = if TEX == tex_mode::FAST_RGB {
-                            f.texel::<3>(it, x, yc)
-                        } else {
-                            f.texel::<4>(it, x, yc)
-                        };
-                        for c in 0..4 {
-                            tex[c][lane as usize] = t[c];
-                        }
-                    }
-                }
-            }
-            if let Some((words, passed)) =
-                simd::shade8(&tail, &group.primary, &tex, &group.dst, group.pass)
-            {
+            if let Some((words, passed)) = shade(gx, &group) {
                 for lane in 0..8 {
                     if live & (1 << lane) != 0 {
                         let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
@@ -1587,6 +1559,108 @@ pub fn pair_textured<'a, const TEX: u8>(
         }
         gx += 4;
     }
+}
+
+/// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
+#[inline(always)]
+fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
+    let lane = lane as i32;
+    ((gx + lane % 4) as f64 + 0.5, (y + lane / 4) as f64 + 0.5)
+}
+
+/// `span_textured`'s eight-lane perspective path on two rows at once, in 4x2 blocks (two
+/// whole quads): the spans of small triangles are two or three pixels long, so a block holds
+/// about as many fragments as two eight-pixel row groups, and its texture coordinates give
+/// the quads' derivatives without evaluating other rows. Every value is computed as on the
+/// rows one by one ([`for_each_block`], texels by [`Perspective8::texels_block`]), so the
+/// pixels are the same; affine primitives and keys without the eight-lane tail take the rows
+/// one by one.
+pub fn pair_textured<'a, const TEX: u8>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    rows: [(i32, i32); 2],
+    it: &Interpolants<'a>,
+) {
+    let Some(unit) = ds.units.first() else {
+        return pair_by_rows(ds, tile, y, rows, it);
+    };
+    let q = &it.attrs[attr::TEX + 4 * unit.unit + 3];
+    // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
+    let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
+    let sampler = if affine || it.coverage != 1.0 || !tail8_applies(&ds.key) {
+        None
+    } else {
+        Perspective8::block(unit, 0, it, y)
+    };
+    let Some(sampler) = sampler else {
+        return pair_by_rows(ds, tile, y, rows, it);
+    };
+    // Not affine: the fast unit samples one by one as the rows' fallback does.
+    let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
+    let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
+    for_each_block(ds, tile, y, rows, it, |gx, group| {
+        let mut tex = [[0f32; 8]; 4];
+        if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = if TEX == tex_mode::FAST_RGB {
+                    f.texel::<3>(it, x, yc)
+                } else {
+                    f.texel::<4>(it, x, yc)
+                };
+                for c in 0..4 {
+                    tex[c][lane] = t[c];
+                }
+            }
+        }
+        simd::shade8(&tail, &group.primary, &tex, &group.dst, group.pass)
+    });
+}
+
+/// [`span_sampled8`] on two rows at once, in 4x2 blocks ([`for_each_block`]): every unit
+/// sampled by its block sampler ([`Perspective8::texels_block`]; one by one where it does not
+/// apply), the cascade, then the eight-fragment tail. The same pixels as the rows one by one.
+pub fn pair_sampled8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    rows: [(i32, i32); 2],
+    it: &Interpolants<'a>,
+) {
+    if it.coverage != 1.0 {
+        return pair_by_rows(ds, tile, y, rows, it);
+    }
+    let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
+    for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+        *slot = Perspective8::block(unit, k, it, y);
+    }
+    let (single, tail) = sampled8_tail(ds);
+    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+    for unit in &ds.units {
+        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
+    }
+    for_each_block(ds, tile, y, rows, it, |gx, group| {
+        for (k, unit) in ds.units.iter().enumerate() {
+            let Some(out) = by_unit[unit.unit].as_mut() else {
+                continue;
+            };
+            if samplers[k]
+                .as_ref()
+                .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
+            {
+                continue;
+            }
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = unit_texel(unit, it, x, yc);
+                for c in 0..4 {
+                    out[c][lane] = t[c];
+                }
+            }
+        }
+        sampled8_shade(ds, single, &tail, group, &by_unit)
+    });
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
@@ -1691,9 +1765,46 @@ pub fn span_sampled8<'a>(
     for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
         *slot = Perspective8::new(unit, k, it, y);
     }
-    // One unit under REPLACE or MODULATE: the environment itself runs eight fragments at a
-    // time in the tail (with the base format's table: which of colour and alpha the texture
-    // has); otherwise the cascade runs per fragment and enters the tail as a replacing texel.
+    let (single, tail) = sampled8_tail(ds);
+    // Each unit's texels of the current group, by unit number (as the cascade reads them).
+    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+    for unit in &ds.units {
+        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
+    }
+    let depth_max = group_depth_max(ds);
+    let mut gx = x0 & !1;
+    while gx < x1 {
+        let lo = (x0 - gx).max(0) as usize;
+        let hi = ((x1 - gx) as usize).min(8);
+        let first = (gx - x0) as isize;
+        let base = (row as isize + first) as usize;
+        let group = GroupInputs::gather(ds, tile, base, lo..hi, |_| run.next(depth_max));
+        // Lanes failing the depth test change nothing (no stencil here): only passing lanes
+        // are sampled.
+        if group.pass == 0 {
+            gx += 8;
+            continue;
+        }
+        for (k, unit) in ds.units.iter().enumerate() {
+            if let Some(out) = by_unit[unit.unit].as_mut() {
+                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, group.pass, out);
+            }
+        }
+        if let Some((words, passed)) = sampled8_shade(ds, single, &tail, &group, &by_unit) {
+            store_group(ds, tile, base, lo..hi, &words, passed, &group.depth);
+        }
+        gx += 8;
+    }
+}
+
+/// One REPLACE or MODULATE unit: (`MODULATE`, the base format has colour, has alpha).
+type SingleUnit = Option<(bool, bool, bool)>;
+
+/// The eight-fragment tail of a [`sampled8_applies`] draw. With one unit under REPLACE or
+/// MODULATE ([`SingleUnit`]) the environment itself runs eight fragments at a time in the
+/// tail (with the base format's table: which of colour and alpha the texture has); otherwise
+/// the cascade runs per fragment and enters the tail as a replacing texel.
+fn sampled8_tail(ds: &DrawState) -> (SingleUnit, Tail8) {
     let single = match ds.units.as_slice() {
         [unit] if matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate) => {
             let (has_color, has_alpha) = match unit.base {
@@ -1711,47 +1822,28 @@ pub fn span_sampled8<'a>(
         single.is_some_and(|s| !s.1),
         single.is_some_and(|s| !s.2),
     );
-    // Each unit's texels of the current group, by unit number (as the cascade reads them).
-    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-    for unit in &ds.units {
-        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
-    }
-    let depth_max = group_depth_max(ds);
-    let mut gx = x0 & !1;
-    while gx < x1 {
-        let lo = (x0 - gx).max(0) as usize;
-        let hi = ((x1 - gx) as usize).min(8);
-        let first = (gx - x0) as isize;
-        let base = (row as isize + first) as usize;
-        let GroupInputs {
-            primary: mut color,
-            depth,
-            pass,
-            dst,
-        } = GroupInputs::gather(ds, tile, base, lo..hi, |_| run.next(depth_max));
-        // Lanes failing the depth test change nothing (no stencil here): only passing lanes
-        // are sampled.
-        if pass == 0 {
-            gx += 8;
-            continue;
-        }
-        for (k, unit) in ds.units.iter().enumerate() {
-            if let Some(out) = by_unit[unit.unit].as_mut() {
-                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, pass, out);
-            }
-        }
-        if single.is_none() {
-            color = environment8(ds, &color, &by_unit);
-        }
-        // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies
-        // the environment; otherwise it is the cascade's result, entering as a replacing texel.
-        let tex = match single.and(ds.units.first()) {
-            Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
-            None => &color,
-        };
-        if let Some((words, passed)) = simd::shade8(&tail, &color, tex, &dst, pass) {
-            store_group(ds, tile, base, lo..hi, &words, passed, &depth);
-        }
-        gx += 8;
-    }
+    (single, tail)
+}
+
+/// The environment (cascade or tail) and the tail of a group of a [`sampled8_applies`]
+/// draw, given each unit's texels by unit number.
+#[inline(always)]
+fn sampled8_shade(
+    ds: &DrawState,
+    single: SingleUnit,
+    tail: &Tail8,
+    group: &GroupInputs,
+    by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
+) -> Option<([u32; 8], u8)> {
+    let color = match single {
+        Some(_) => group.primary,
+        None => environment8(ds, &group.primary, by_unit),
+    };
+    // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies the
+    // environment; otherwise it is the cascade's result, entering as a replacing texel.
+    let tex = match single.and(ds.units.first()) {
+        Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
+        None => &color,
+    };
+    simd::shade8(tail, &color, tex, &group.dst, group.pass)
 }

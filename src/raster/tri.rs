@@ -71,8 +71,13 @@ pub fn raster_triangle<'a>(
                 } else {
                     None
                 };
+                // A short lone row goes to the pair function too (a block is two quads wide);
+                // a long one is shaded as a row.
+                const EMPTY: (i32, i32) = (0, 0);
                 match (lower, upper) {
                     (Some(a), Some(b)) => pair(ds, tile, y, [a, b], &it),
+                    (Some(a), None) if a.1 - a.0 <= 4 => pair(ds, tile, y, [a, EMPTY], &it),
+                    (None, Some(b)) if b.1 - b.0 <= 4 => pair(ds, tile, y, [EMPTY, b], &it),
                     (Some((x0, x1)), None) => (ds.span)(ds, tile, y, x0, x1, &it),
                     (None, Some((x0, x1))) => (ds.span)(ds, tile, y + 1, x0, x1, &it),
                     (None, None) => {}
