@@ -154,6 +154,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     // one).
     let mut levels = UnitLevels::default();
     let mut levels_state = None;
+    // A triangle's attribute planes spread over the full layout.
+    let mut attrs = Vec::new();
     for &ci in bin {
         let command = &scene.commands[ci as usize];
         let state = match command {
@@ -170,8 +172,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Triangle(t) => {
                 let ds = &scene.states[t.state as usize];
                 let at = t.planes as usize;
-                let planes = &scene.planes[at..at + 2 + ds.attr_count];
-                raster_triangle(t, ds, planes, &levels, tile);
+                let planes = &scene.planes[at..at + 2 + ds.live_attrs.count_ones() as usize];
+                raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
             }
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];

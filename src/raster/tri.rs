@@ -8,12 +8,14 @@ use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
 
 /// Shades the part of triangle `t` inside `tile`; `planes` are its window-z plane, its 1/w
-/// plane and its attribute planes.
+/// plane and the planes of the draw's live attributes (`DrawState::live_attrs`), which are
+/// spread over `attrs` (the others zero) unless every attribute is live.
 pub fn raster_triangle<'a>(
     t: &TriangleCommand,
     ds: &'a DrawState,
     planes: &'a [Plane],
     levels: &'a UnitLevels<'a>,
+    attrs: &'a mut Vec<Plane>,
     tile: &mut Tile,
 ) {
     let tile_size = TILE as i32;
@@ -24,11 +26,23 @@ pub fn raster_triangle<'a>(
     if x_lo >= x_hi || y_lo >= y_hi {
         return;
     }
+    let n = ds.attr_count;
+    let attrs: &[Plane] = if ds.live_attrs == (1u64 << n) - 1 {
+        &planes[2..]
+    } else {
+        attrs.clear();
+        let mut live = planes[2..].iter();
+        attrs.extend((0..n).map(|i| match ds.live_attrs & (1 << i) {
+            0 => Plane::constant(0.0),
+            _ => live.next().copied().unwrap_or(Plane::constant(0.0)),
+        }));
+        attrs
+    };
     let shared = PrimitiveShared::new(levels);
     let it = Interpolants {
         z: planes[0],
         inv_w: planes[1],
-        attrs: &planes[2..],
+        attrs,
         perspective: true,
         coverage: 1.0,
         shared: &shared,
@@ -272,12 +286,7 @@ pub fn bin_triangle(
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
     // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
     // vertex's value (every vertex already carries it), so dividing by 1/w gives it back.
-    // Without the colour sum nothing reads the secondary colour: its planes stay zero.
-    let secondary = if ds.key.color_sum {
-        0..0
-    } else {
-        attr::COLOR1..attr::COLOR1 + 4
-    };
+    // Only the attributes the fragment stage reads get planes (`DrawState::live_attrs`).
     let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
     let offset = scene.planes.len() as u32;
@@ -285,9 +294,10 @@ pub fn bin_triangle(
     scene.planes.push(z);
     scene.planes.push(inv_w);
     for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
-        scene.planes.push(if secondary.contains(&i) {
-            Plane::constant(0.0)
-        } else if ds.flat && attr::is_color(i) {
+        if ds.live_attrs & (1 << i) == 0 {
+            continue;
+        }
+        scene.planes.push(if ds.flat && attr::is_color(i) {
             let c = x0 as f64;
             Plane {
                 a: inv_w.a * c,

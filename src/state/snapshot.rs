@@ -201,6 +201,9 @@ pub struct DrawState {
     pub flat: bool,
     /// Interpolated attributes per vertex (a prefix of the `attr` layout).
     pub attr_count: usize,
+    /// Bit i set when the fragment stage reads attribute i (below `attr_count`): the others'
+    /// planes of a triangle are neither computed nor stored (they read as zero).
+    pub live_attrs: u64,
     /// Attributes carried through clipping (includes the back colours with two-sided lighting).
     pub clip_attr_count: usize,
     /// Two-sided lighting: back-facing polygons take the back colours.
@@ -362,6 +365,7 @@ impl Context {
             front_face: self.raster.front_face,
             flat: self.raster.shade_model == ShadeModel::Flat,
             attr_count,
+            live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
             two_sided,
             units,
@@ -382,6 +386,28 @@ impl Context {
         self.draw_state = Some(ds.clone());
         ds
     }
+}
+
+/// The attributes the fragment stage reads ([`DrawState::live_attrs`]): the primary colour;
+/// the fog coordinate under fog; the secondary colour with the colour sum; each unit's s, t
+/// and q, and r where its texture reads it.
+fn live_attrs(units: &[TextureUnitDraw], fog: bool, color_sum: bool, attr_count: usize) -> u64 {
+    let bits = |range: std::ops::Range<usize>| range.fold(0u64, |m, i| m | 1 << i);
+    let mut live = bits(attr::COLOR0..attr::COLOR0 + 4);
+    if fog {
+        live |= 1 << attr::FOG;
+    }
+    if color_sum {
+        live |= bits(attr::COLOR1..attr::COLOR1 + 4);
+    }
+    for u in units {
+        let s = attr::TEX + 4 * u.unit;
+        live |= 1 << s | 1 << (s + 1) | 1 << (s + 3);
+        if u.texture.reads_r() {
+            live |= 1 << (s + 2);
+        }
+    }
+    live & bits(0..attr_count)
 }
 
 impl Context {

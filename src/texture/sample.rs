@@ -295,6 +295,13 @@ impl BoundTexture {
         BoundTexture { inner }
     }
 
+    /// Whether sampling reads the r coordinate: 3D textures, cube maps (the direction) and
+    /// depth textures (compared against r).
+    pub fn reads_r(&self) -> bool {
+        !matches!(self.inner.target, TextureTarget::T1D | TextureTarget::T2D)
+            || self.inner.base == BaseFormat::DepthComponent
+    }
+
     /// The target sampled (the unit's highest-precedence enabled target).
     pub fn target(&self) -> TextureTarget {
         self.inner.target
