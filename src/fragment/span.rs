@@ -57,21 +57,11 @@ impl<'a> PrimitiveShared<'a> {
 /// Every level of each unit's texture prepared for the eight-pixel filter ([`Level8`]; `None`
 /// where a level does not take it), by the unit's index in `DrawState::units`. Prepared once
 /// per tile and draw state ([`UnitLevels::prepare`]) instead of in every span: the spans of
-/// small triangles are a few pixels long.
-#[derive(Clone, Debug)]
+/// small triangles are a few pixels long. Empty (and not allocated) for draws without
+/// eight-pixel samplers.
+#[derive(Clone, Debug, Default)]
 pub struct UnitLevels<'a> {
-    units: [[Option<Level8<'a>>; MAX_FAST_LEVELS]; MAX_TEXTURE_UNITS],
-    /// Units filled by the last `prepare` (the others are all `None`).
-    filled: usize,
-}
-
-impl Default for UnitLevels<'_> {
-    fn default() -> Self {
-        UnitLevels {
-            units: [[None; MAX_FAST_LEVELS]; MAX_TEXTURE_UNITS],
-            filled: 0,
-        }
-    }
+    units: Vec<[Option<Level8<'a>>; MAX_FAST_LEVELS]>,
 }
 
 impl<'a> UnitLevels<'a> {
@@ -85,20 +75,18 @@ impl<'a> UnitLevels<'a> {
 
     /// Replaces the table with the levels of `ds`'s units.
     pub fn prepare(&mut self, ds: &'a DrawState) {
-        for unit in &mut self.units[..self.filled] {
-            *unit = [None; MAX_FAST_LEVELS];
-        }
-        self.filled = 0;
+        self.units.clear();
         if !ds.key.simd_units || !simd::available() {
             return;
         }
-        for (slot, unit) in self.units.iter_mut().zip(&ds.units) {
+        for unit in &ds.units {
             let tex = &unit.texture;
             let (wrap, base) = (tex.wrap_st(), tex.base_format());
-            for (l, level) in slot.iter_mut().enumerate().take(tex.level_count()) {
+            let mut levels = [None; MAX_FAST_LEVELS];
+            for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
                 *level = tex.fast_level(l).and_then(|f| Level8::new(&f, wrap, base));
             }
-            self.filled += 1;
+            self.units.push(levels);
         }
     }
 }
@@ -997,9 +985,9 @@ impl<'a> Perspective8<'a> {
         rows: [f64; 2],
         own_is_upper: bool,
     ) -> Option<Perspective8<'a>> {
-        let levels = &it.shared.levels.units[k];
         // No table (no `simd_units` or no AVX2), or a base level that does not take the
         // filter: sampled one by one.
+        let levels = it.shared.levels.units.get(k)?;
         levels[0]?;
         let base = attr::TEX + 4 * unit.unit;
         let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
