@@ -282,6 +282,7 @@ mod x86 {
 
     /// Integer floor and fraction of `s * size - offset` for eight lanes (each lane as
     /// `floor_frac` in the sampler), or `None` when a floor exceeds [`MAX_INDEX`].
+    #[inline]
     #[target_feature(enable = "avx2")]
     fn floor_frac8(s: __m256, size: i32, offset: f64) -> Option<(__m256i, __m256)> {
         let n = _mm256_set1_pd(size as f64);
@@ -307,6 +308,7 @@ mod x86 {
     }
 
     /// Wraps integer texel coordinates: a power-of-two mask, or a clamp to [0, size - 1].
+    #[inline]
     #[target_feature(enable = "avx2")]
     fn wrap8(i: __m256i, size: i32, mask: Option<i32>) -> __m256i {
         match mask {
@@ -320,6 +322,7 @@ mod x86 {
 
     /// The texels at (x, y) as four channel vectors (R, G, B, A after the base format's
     /// expansion), each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch` converts.
+    #[inline]
     #[target_feature(enable = "avx2")]
     fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
         let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(lvl.size[0])), x);
@@ -384,6 +387,7 @@ mod x86 {
         }
     }
 
+    #[inline]
     #[target_feature(enable = "avx2")]
     fn lerp(a: __m256, b: __m256, w: __m256) -> __m256 {
         _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), w))
