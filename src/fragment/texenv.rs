@@ -225,6 +225,7 @@ fn combine_fn<L: Lanes>(f: CombineFunc, a: L, b: L, c: L) -> L {
 /// then the scale, then a clamp to [0, 1]. With `four` (NV_texture_env_combine4's
 /// `GL_COMBINE4_NV`), `ADD` is `a0 a1 + a2 a3` and `ADD_SIGNED` is `a0 a1 + a2 a3 - 1/2`; the
 /// other functions are those of `GL_COMBINE`.
+#[inline]
 pub fn combine<L: Lanes>(
     k: &Combine,
     four: bool,
@@ -235,7 +236,14 @@ pub fn combine<L: Lanes>(
 ) -> Rgba<L> {
     let arg_rgb = |i: usize| operand_rgb(k.op_rgb[i], source(k.src_rgb[i], cf, ct, cc, inputs));
     let arg_a = |i: usize| operand_alpha(k.op_alpha[i], source(k.src_alpha[i], cf, ct, cc, inputs));
-    let (a0, a1, a2) = (arg_rgb(0), arg_rgb(1), arg_rgb(2));
+    // Only INTERPOLATE (and COMBINE4's sums) read the third argument.
+    let third = |f: CombineFunc| f == CombineFunc::Interpolate || four;
+    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+    let a2 = if third(k.rgb) {
+        arg_rgb(2)
+    } else {
+        [L::splat(0.0); 3]
+    };
     let rs = L::splat(k.rgb_scale as f32);
     let as_ = L::splat(k.alpha_scale as f32);
     let half = L::splat(0.5);
@@ -297,9 +305,10 @@ pub fn combine<L: Lanes>(
                 .mul(as_)
                 .clamp01()
         }
-        f => combine_fn(f, arg_a(0), arg_a(1), arg_a(2))
-            .mul(as_)
-            .clamp01(),
+        f => {
+            let a2 = if third(f) { arg_a(2) } else { zero };
+            combine_fn(f, arg_a(0), arg_a(1), a2).mul(as_).clamp01()
+        }
     };
     out
 }
