@@ -142,10 +142,17 @@ impl Context {
 }
 
 fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
-    tiles
-        .par_iter_mut()
-        .zip(scene.bins.par_iter())
+    // The busiest tiles first, each its own task: the workers finish the scene together
+    // instead of one waiting for the other's last large tile (scenes are shaded one after
+    // the other, so that wait is paid at every background hand-off).
+    let mut work: Vec<(&mut Tile, &Vec<u32>)> = tiles
+        .iter_mut()
+        .zip(&scene.bins)
         .filter(|(_, bin)| !bin.is_empty())
+        .collect();
+    work.sort_unstable_by_key(|(_, bin)| std::cmp::Reverse(bin.len()));
+    work.into_par_iter()
+        .with_max_len(1)
         .for_each(|(tile, bin)| shade_tile(scene, bin, tile));
 }
 
