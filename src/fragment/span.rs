@@ -1619,15 +1619,12 @@ pub fn pair_sampled8<'a>(
     if it.coverage != 1.0 {
         return pair_by_rows(ds, tile, y, rows, it);
     }
-    let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
-    for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
-        *slot = Perspective8::block(unit, k, it, y);
-    }
-    let (single, tail) = sampled8_tail(ds);
-    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-    for unit in &ds.units {
-        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
-    }
+    let Sampled8 {
+        samplers,
+        single,
+        tail,
+        mut by_unit,
+    } = Sampled8::new(ds, it, y, true);
     for_each_block(ds, tile, y, rows, it, |gx, group| {
         for (k, unit) in ds.units.iter().enumerate() {
             let Some(out) = by_unit[unit.unit].as_mut() else {
@@ -1749,16 +1746,12 @@ pub fn span_sampled8<'a>(
         return span_sampled(ds, tile, y, x0, x1, it);
     }
     let mut run = SpanRun::new(it, xc0, yc, 4);
-    let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
-    for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
-        *slot = Perspective8::new(unit, k, it, y);
-    }
-    let (single, tail) = sampled8_tail(ds);
-    // Each unit's texels of the current group, by unit number (as the cascade reads them).
-    let mut by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
-    for unit in &ds.units {
-        by_unit[unit.unit] = Some([[0f32; 8]; 4]);
-    }
+    let Sampled8 {
+        mut samplers,
+        single,
+        tail,
+        mut by_unit,
+    } = Sampled8::new(ds, it, y, false);
     let depth_max = group_depth_max(ds);
     let mut gx = x0 & !1;
     while gx < x1 {
@@ -1787,6 +1780,43 @@ pub fn span_sampled8<'a>(
 
 /// One REPLACE or MODULATE unit: (`MODULATE`, the base format has colour, has alpha).
 type SingleUnit = Option<(bool, bool, bool)>;
+
+/// What the eight-lane paths of a [`sampled8_applies`] draw set up for a row or a row pair:
+/// each unit's sampler (by index in `DrawState::units`), the tail, and each unit's texels of
+/// the current group by unit number (as the cascade reads them).
+struct Sampled8<'a> {
+    samplers: [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
+    single: SingleUnit,
+    tail: Tail8,
+    by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS],
+}
+
+impl<'a> Sampled8<'a> {
+    /// For row `y`, or with `block` the 4x2 blocks of rows `y` and `y + 1`. (Inlined: built
+    /// in place, not copied out, it costs nothing per row pair.)
+    #[inline(always)]
+    fn new(ds: &'a DrawState, it: &Interpolants<'a>, y: i32, block: bool) -> Sampled8<'a> {
+        let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
+        for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+            *slot = if block {
+                Perspective8::block(unit, k, it, y)
+            } else {
+                Perspective8::new(unit, k, it, y)
+            };
+        }
+        let (single, tail) = sampled8_tail(ds);
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        for unit in &ds.units {
+            by_unit[unit.unit] = Some([[0f32; 8]; 4]);
+        }
+        Sampled8 {
+            samplers,
+            single,
+            tail,
+            by_unit,
+        }
+    }
+}
 
 /// The eight-fragment tail of a [`sampled8_applies`] draw. With one unit under REPLACE or
 /// MODULATE ([`SingleUnit`]) the environment itself runs eight fragments at a time in the

@@ -588,23 +588,37 @@ mod x86 {
         Some(shade8(tail, primary, &ct, dst, pass))
     }
 
+    /// s/q and t/q at the four pixel centres `xv` of the row of `p` (its s, t and q planes
+    /// `[a, b * y, c]`, each evaluated as `(a * x + b * y) + c`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn st_over_q4(p: &[[f64; 3]; 3], xv: __m256d) -> [__m256d; 2] {
+        let eval = |k: usize| {
+            let (a, by, c) = (
+                _mm256_set1_pd(p[k][0]),
+                _mm256_set1_pd(p[k][1]),
+                _mm256_set1_pd(p[k][2]),
+            );
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
+        };
+        let q = eval(2);
+        [_mm256_div_pd(eval(0), q), _mm256_div_pd(eval(1), q)]
+    }
+
+    /// The four pixel centres from `first`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn centres4(first: f64) -> __m256d {
+        _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0))
+    }
+
     #[inline]
     #[target_feature(enable = "avx2")]
     pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[f64; 8]; 2] {
-        let xv = _mm256_add_pd(_mm256_set1_pd(x), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
+        let xv = centres4(x);
         let mut out = [[0f64; 8]; 2];
         for (row, p) in planes.iter().enumerate() {
-            let eval = |k: usize| {
-                let (a, by, c) = (
-                    _mm256_set1_pd(p[k][0]),
-                    _mm256_set1_pd(p[k][1]),
-                    _mm256_set1_pd(p[k][2]),
-                );
-                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
-            };
-            let q = eval(2);
-            for (k, o) in out.iter_mut().enumerate() {
-                let v = _mm256_div_pd(eval(k), q);
+            for (o, v) in out.iter_mut().zip(st_over_q4(p, xv)) {
                 // SAFETY: `o` holds eight f64; lanes 4row..4row+4; unaligned store.
                 unsafe { _mm256_storeu_pd(o.as_mut_ptr().add(4 * row), v) };
             }
@@ -615,25 +629,13 @@ mod x86 {
     #[inline]
     #[target_feature(enable = "avx2")]
     pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[[f64; 8]; 2]; 2] {
-        let lanes =
-            |first: f64| _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
-        let xs = [lanes(x), lanes(x + 4.0)];
+        let xs = [centres4(x), centres4(x + 4.0)];
         let mut out = [[[0f64; 8]; 2]; 2];
         for (row, p) in planes.iter().enumerate() {
             for (h, &xv) in xs.iter().enumerate() {
-                let eval = |k: usize| {
-                    let (a, by, c) = (
-                        _mm256_set1_pd(p[k][0]),
-                        _mm256_set1_pd(p[k][1]),
-                        _mm256_set1_pd(p[k][2]),
-                    );
-                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
-                };
-                let q = eval(2);
-                for k in 0..2 {
-                    let v = _mm256_div_pd(eval(k), q);
-                    // SAFETY: `out[row][k]` holds eight f64; lanes 4h..4h+4; unaligned store.
-                    unsafe { _mm256_storeu_pd(out[row][k].as_mut_ptr().add(4 * h), v) };
+                for (o, v) in out[row].iter_mut().zip(st_over_q4(p, xv)) {
+                    // SAFETY: `o` holds eight f64; lanes 4h..4h+4; unaligned store.
+                    unsafe { _mm256_storeu_pd(o.as_mut_ptr().add(4 * h), v) };
                 }
             }
         }
