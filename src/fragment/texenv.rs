@@ -88,7 +88,7 @@ pub struct CombineInputs<'a, L: Lanes = f32> {
 
 /// Applies unit `unit`'s environment: `cf` is the incoming colour, `ct` the unit's texel,
 /// `base` its base internal format (tables 3.22 and 3.23).
-#[inline]
+#[inline(always)]
 pub fn apply<L: Lanes>(
     env: &TexEnv,
     base: BaseFormat,
@@ -225,7 +225,7 @@ fn combine_fn<L: Lanes>(f: CombineFunc, a: L, b: L, c: L) -> L {
 /// then the scale, then a clamp to [0, 1]. With `four` (NV_texture_env_combine4's
 /// `GL_COMBINE4_NV`), `ADD` is `a0 a1 + a2 a3` and `ADD_SIGNED` is `a0 a1 + a2 a3 - 1/2`; the
 /// other functions are those of `GL_COMBINE`.
-#[inline]
+#[inline(always)]
 pub fn combine<L: Lanes>(
     k: &Combine,
     four: bool,
