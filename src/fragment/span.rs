@@ -1560,7 +1560,7 @@ fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
 /// whole quads): the spans of small triangles are two or three pixels long, so a block holds
 /// about as many fragments as two eight-pixel row groups, and its texture coordinates give
 /// the quads' derivatives without evaluating other rows. Every value is computed as on the
-/// rows one by one ([`for_each_block`], texels by [`Perspective8::texels_block`]), so the
+/// rows one by one (`for_each_block`, texels by `Perspective8::texels_block`), so the
 /// pixels are the same; affine primitives and keys without the eight-lane tail take the rows
 /// one by one.
 pub fn pair_textured<'a, const TEX: u8>(
@@ -1606,8 +1606,8 @@ pub fn pair_textured<'a, const TEX: u8>(
     });
 }
 
-/// [`span_sampled8`] on two rows at once, in 4x2 blocks ([`for_each_block`]): every unit
-/// sampled by its block sampler ([`Perspective8::texels_block`]; one by one where it does not
+/// [`span_sampled8`] on two rows at once, in 4x2 blocks (`for_each_block`): every unit
+/// sampled by its block sampler (`Perspective8::texels_block`; one by one where it does not
 /// apply), the cascade, then the eight-fragment tail. The same pixels as the rows one by one.
 pub fn pair_sampled8<'a>(
     ds: &'a DrawState,
