@@ -338,6 +338,49 @@ fn separate_specular_equals_single_colour_without_texturing() {
 }
 
 #[test]
+fn fog_with_separate_specular_and_no_texture() {
+    // Fog, the colour sum (separate specular) and no texture unit together: the draw carries
+    // the fog coordinate and the secondary colour. Exponential fog of density 0 has factor 1,
+    // so the picture must equal the unfogged one (it once panicked instead).
+    let render = |fog: bool| {
+        let mut gl = Context::new(64, 64);
+        gl.enable(GL_LIGHTING);
+        gl.light_modeli(
+            GL_LIGHT_MODEL_COLOR_CONTROL,
+            GL_SEPARATE_SPECULAR_COLOR as i32,
+        );
+        set_light(
+            &mut gl,
+            0,
+            &L {
+                dif: [0.3, 0.3, 0.3, 1.0],
+                ..light([0.2, 0.3, 1.0, 0.0])
+            },
+        );
+        set_material(
+            &mut gl,
+            GL_FRONT,
+            &M {
+                dif: [0.4, 0.3, 0.2, 1.0],
+                ..material()
+            },
+        );
+        if fog {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.0);
+            gl.fogfv(GL_FOG_COLOR, &[1.0, 0.0, 1.0, 1.0]);
+        }
+        let p = lit_pixel(&mut gl, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], false);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        p
+    };
+    let plain = render(false);
+    assert!(plain[..3].iter().any(|&c| c > 0), "{plain:?}");
+    assert_eq!(render(true), plain);
+}
+
+#[test]
 fn color_material_tracks_the_current_colour() {
     let mut gl = Context::new(64, 64);
     gl.enable(GL_LIGHTING);

@@ -65,15 +65,8 @@ pub struct UnitLevels<'a> {
 }
 
 impl<'a> UnitLevels<'a> {
-    /// The levels of `ds`'s units (none unless the draw's key has `simd_units`, which the
-    /// eight-pixel samplers require).
-    pub fn new(ds: &'a DrawState) -> UnitLevels<'a> {
-        let mut levels = UnitLevels::default();
-        levels.prepare(ds);
-        levels
-    }
-
-    /// Replaces the table with the levels of `ds`'s units.
+    /// Replaces the table with the levels of `ds`'s units (none unless the draw's key has
+    /// `simd_units`, which the eight-pixel samplers require).
     pub fn prepare(&mut self, ds: &'a DrawState) {
         self.units.clear();
         if !ds.key.simd_units || !simd::available() {

@@ -549,7 +549,9 @@ impl Context {
         let Some(t) = self.framebuffer.tile_index(x, y) else {
             return;
         };
-        let levels = UnitLevels::new(ds);
+        // No eight-pixel sampler tables for one-pixel spans: the texels come one by one (the
+        // same values).
+        let levels = UnitLevels::default();
         let shared = PrimitiveShared::new(&levels);
         let it = Interpolants {
             z: Plane::constant(z),

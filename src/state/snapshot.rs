@@ -311,10 +311,12 @@ impl Context {
             color: [fs.color[0], fs.color[1], fs.color[2]],
             coord_from_vertex: fs.coord_from_vertex,
         });
+        // A prefix of the layout: the secondary colour comes after the fog coordinate, so the
+        // colour sum needs both whether or not fog is on.
         let attr_count = match units.last() {
             Some(last) => attr::TEX + 4 * (last.unit + 1),
-            None if fog.is_some() => attr::FOG + 1,
             None if color_sum => attr::COLOR1 + 4,
+            None if fog.is_some() => attr::FOG + 1,
             None => COLOR_ATTRS,
         };
         let mut key =
