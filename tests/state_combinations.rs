@@ -306,3 +306,89 @@ fn specialised_paths_equal_the_general_path_in_random_state_combinations() {
         "only {drawn_cases} cases drew"
     );
 }
+
+/// A coordinate that is usually ordinary and sometimes extreme (huge, tiny, zero, NaN or
+/// infinite).
+fn wild(rng: &mut Rng, lo: f32, hi: f32) -> f32 {
+    match rng.next_u64() % 24 {
+        0 => f32::NAN,
+        1 => f32::INFINITY,
+        2 => -1e30,
+        3 => 1e-30,
+        4 => 0.0,
+        _ => rng.range(lo, hi),
+    }
+}
+
+#[test]
+fn random_primitives_with_extreme_vertices_in_random_states() {
+    let modes = [
+        GL_POINTS,
+        GL_LINES,
+        GL_LINE_STRIP,
+        GL_LINE_LOOP,
+        GL_TRIANGLES,
+        GL_TRIANGLE_STRIP,
+        GL_TRIANGLE_FAN,
+        GL_QUADS,
+        GL_QUAD_STRIP,
+        GL_POLYGON,
+    ];
+    let mut drawn_cases = 0;
+    for case in 0..CONFIGURATIONS / 3 {
+        let render = |general: bool| {
+            let mut gl = Context::new(90, 70);
+            gl.set_force_general_path(general);
+            let mut rng = Rng(0xE7_0000 + case);
+            random_state(&mut gl, &mut rng);
+            gl.point_size(rng.range(1.0, 6.0));
+            gl.line_width(rng.range(1.0, 4.0));
+            if chance(&mut rng, 0.3) {
+                gl.enable(GL_POINT_SMOOTH);
+                gl.enable(GL_LINE_SMOOTH);
+            }
+            if chance(&mut rng, 0.2) {
+                gl.enable(GL_LINE_STIPPLE);
+                gl.line_stipple(2, 0xF0F3);
+            }
+            for _ in 0..4 {
+                gl.begin(pick(&mut rng, &modes));
+                for _ in 0..(rng.next_u64() % 9) {
+                    gl.color_4f(rng.range(0.0, 1.0), 0.5, rng.range(0.0, 1.0), 0.8);
+                    gl.tex_coord_4f(
+                        wild(&mut rng, -2.0, 2.0),
+                        rng.range(-2.0, 2.0),
+                        0.0,
+                        wild(&mut rng, 0.5, 2.0),
+                    );
+                    gl.fog_coordf(wild(&mut rng, 0.0, 25.0));
+                    gl.normal_3f(wild(&mut rng, -1.0, 1.0), 0.3, 1.0);
+                    gl.vertex_4f(
+                        wild(&mut rng, -5.0, 5.0),
+                        wild(&mut rng, -4.0, 4.0),
+                        rng.range(-20.0, -1.0),
+                        // w near 0 and negative now and then.
+                        pick(&mut rng, &[1.0, 1.0, 1.0, 1e-7, -1.0, 0.5]),
+                    );
+                }
+                gl.end();
+            }
+            assert_eq!(gl.get_error(), GL_NO_ERROR, "case {case}");
+            read_rgba(&mut gl)
+        };
+        let (general, specialised) = (render(true), render(false));
+        let differ = general
+            .iter()
+            .zip(&specialised)
+            .filter(|(a, b)| a != b)
+            .count();
+        assert_eq!(differ, 0, "case {case}: {differ} pixels differ");
+        if general.iter().any(|p| *p != general[0]) {
+            drawn_cases += 1;
+        }
+    }
+    assert!(
+        drawn_cases >= CONFIGURATIONS / 6,
+        "only {drawn_cases} cases drew"
+    );
+}
