@@ -1,6 +1,22 @@
 //! Span functions: shade the covered pixels `x0..x1` of one row of a tile. The general path
 //! reads the key at run time; specialised paths are the same code monomorphised on the key,
 //! so a disabled stage is compiled out instead of skipped by a branch.
+//!
+//! A map for reading (`fragment/cache.rs` picks one row function and, for some keys, one
+//! two-row function per draw):
+//! - per fragment, in the specification's order: [`span_general`] (every key), its
+//!   monomorphised forms [`span_specialised`] and [`span_fogged`], and [`span_sampled`]
+//!   (texels eight at a time, the rest per fragment); all of them run `shade` /
+//!   `finish_fragment`;
+//! - eight fragments at a time through one tail (`tail8`, `simd::shade8`: environment, alpha
+//!   test, blending, colour mask): [`span_textured`] (one `REPLACE`/`MODULATE` unit),
+//!   [`span_sampled8`] (any units, the cascade eight at a time), [`span_untextured8`];
+//! - two rows at a time in 4x2 blocks for the eight-lane textured keys: [`pair_textured`] and
+//!   [`pair_sampled8`] over `for_each_block` (triangles only; `raster/tri.rs` pairs the rows).
+//!
+//! Every fast path computes each value as the general path does, so pictures are identical
+//! (twin tests in `tests/raster.rs` and `tests/state_combinations.rs`). Texture coordinates and
+//! their per-quad derivatives come from `unit_coords` (one fragment) or `Perspective8` (eight).
 
 use std::cell::Cell;
 
