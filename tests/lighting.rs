@@ -298,33 +298,40 @@ fn two_sided_lighting_uses_the_back_material() {
     close(got, expected, 1.5, "one-sided");
 }
 
+/// Lighting with one directional light and a specular material, untextured; with
+/// `separate`, `GL_SEPARATE_SPECULAR_COLOR`.
+fn specular_scene(separate: bool) -> Context {
+    let mut gl = Context::new(64, 64);
+    gl.enable(GL_LIGHTING);
+    if separate {
+        gl.light_modeli(
+            GL_LIGHT_MODEL_COLOR_CONTROL,
+            GL_SEPARATE_SPECULAR_COLOR as i32,
+        );
+    }
+    set_light(
+        &mut gl,
+        0,
+        &L {
+            dif: [0.3, 0.3, 0.3, 1.0],
+            ..light([0.2, 0.3, 1.0, 0.0])
+        },
+    );
+    set_material(
+        &mut gl,
+        GL_FRONT,
+        &M {
+            dif: [0.4, 0.3, 0.2, 1.0],
+            ..material()
+        },
+    );
+    gl
+}
+
 #[test]
 fn separate_specular_equals_single_colour_without_texturing() {
     let render = |separate: bool| {
-        let mut gl = Context::new(64, 64);
-        gl.enable(GL_LIGHTING);
-        if separate {
-            gl.light_modeli(
-                GL_LIGHT_MODEL_COLOR_CONTROL,
-                GL_SEPARATE_SPECULAR_COLOR as i32,
-            );
-        }
-        set_light(
-            &mut gl,
-            0,
-            &L {
-                dif: [0.3, 0.3, 0.3, 1.0],
-                ..light([0.2, 0.3, 1.0, 0.0])
-            },
-        );
-        set_material(
-            &mut gl,
-            GL_FRONT,
-            &M {
-                dif: [0.4, 0.3, 0.2, 1.0],
-                ..material()
-            },
-        );
+        let mut gl = specular_scene(separate);
         lit_pixel(&mut gl, [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], false)
     };
     let single = render(false);
@@ -343,28 +350,7 @@ fn fog_with_separate_specular_and_no_texture() {
     // the fog coordinate and the secondary colour. Exponential fog of density 0 has factor 1,
     // so the picture must equal the unfogged one (it once panicked instead).
     let render = |fog: bool| {
-        let mut gl = Context::new(64, 64);
-        gl.enable(GL_LIGHTING);
-        gl.light_modeli(
-            GL_LIGHT_MODEL_COLOR_CONTROL,
-            GL_SEPARATE_SPECULAR_COLOR as i32,
-        );
-        set_light(
-            &mut gl,
-            0,
-            &L {
-                dif: [0.3, 0.3, 0.3, 1.0],
-                ..light([0.2, 0.3, 1.0, 0.0])
-            },
-        );
-        set_material(
-            &mut gl,
-            GL_FRONT,
-            &M {
-                dif: [0.4, 0.3, 0.2, 1.0],
-                ..material()
-            },
-        );
+        let mut gl = specular_scene(true);
         if fog {
             gl.enable(GL_FOG);
             gl.fogi(GL_FOG_MODE, GL_EXP as i32);

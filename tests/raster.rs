@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{pixel, read_rgba, window_ortho, Rng};
+use common::{pixel, random_texture, read_rgba, window_ortho, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, ContextConfig, Gl};
 
@@ -791,41 +791,6 @@ fn get_converts_types_per_section_6_1_2() {
     assert_eq!(&m[12..15], &[1.0, 2.0, 3.0]);
     gl.get_doublev(GL_TRANSPOSE_MODELVIEW_MATRIX, &mut m);
     assert_eq!([m[3], m[7], m[11]], [1.0, 2.0, 3.0]);
-}
-
-/// One random texture of `format` (`w` x `h`, unsigned bytes) bound to the active unit.
-fn random_texture(gl: &mut Context, rng: &mut Rng, format: GLenum, w: i32, h: i32) {
-    let comps = match format {
-        GL_RGBA => 4,
-        GL_RGB => 3,
-        GL_LUMINANCE_ALPHA => 2,
-        _ => 1,
-    };
-    let texels: Vec<u8> = (0..w * h * comps)
-        .map(|_| (rng.next_u64() >> 56) as u8)
-        .collect();
-    let mut name = [0u32];
-    gl.gen_textures(1, &mut name);
-    gl.bind_texture(GL_TEXTURE_2D, name[0]);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
-    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
-    gl.tex_image_2d(
-        GL_TEXTURE_2D,
-        0,
-        format as i32,
-        w,
-        h,
-        0,
-        // INTENSITY is an internal format only; its pixels arrive as luminance.
-        if format == GL_INTENSITY {
-            GL_LUMINANCE
-        } else {
-            format
-        },
-        GL_UNSIGNED_BYTE,
-        Some(&texels),
-    );
-    gl.enable(GL_TEXTURE_2D);
 }
 
 #[test]

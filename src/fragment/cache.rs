@@ -59,14 +59,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
 /// The two-row function for `key`, when it has one: keys of the one-unit textured span and
 /// of `span_sampled8` whose fragments finish eight at a time (`force_general`: none).
 pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
-    if force_general
-        || key.writes_nothing()
-        || !key.simd_units
-        || key.stencil.is_some()
-        || key.logic_op.is_some()
-        || key.count_samples
-        || !tail8_applies(key)
-    {
+    // The eight-fragment tail (no stencil, logic op, colour sum, fog or sample counting) and
+    // eight-pixel samplers for every unit.
+    if force_general || key.writes_nothing() || !key.simd_units || !tail8_applies(key) {
         return None;
     }
     match key.fast_texture {

@@ -108,3 +108,39 @@ pub fn check_capture(dir: &std::path::Path, name: &str, known_failures: &[(&str,
         (false, None) => panic!("{name} does not match the reference:\n{text}"),
     }
 }
+
+/// A random texture of `format` (`w` x `h`, unsigned bytes, mipmaps generated) bound to the
+/// active unit's 2D target, which is enabled.
+pub fn random_texture(gl: &mut Context, rng: &mut Rng, format: GLenum, w: i32, h: i32) {
+    let comps = match format {
+        GL_RGBA => 4,
+        GL_RGB => 3,
+        GL_LUMINANCE_ALPHA => 2,
+        _ => 1,
+    };
+    let texels: Vec<u8> = (0..w * h * comps)
+        .map(|_| (rng.next_u64() >> 56) as u8)
+        .collect();
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_2D, name[0]);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        format as i32,
+        w,
+        h,
+        0,
+        // INTENSITY is an internal format only; its pixels arrive as luminance.
+        if format == GL_INTENSITY {
+            GL_LUMINANCE
+        } else {
+            format
+        },
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.enable(GL_TEXTURE_2D);
+}
