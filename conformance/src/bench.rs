@@ -49,6 +49,8 @@ pub struct BenchConfig {
     /// timed frame always runs).
     pub budget: Duration,
     pub seed: u64,
+    /// tilegl's thread counts to time (`--threads N` keeps one, e.g. for profiling).
+    pub tilegl_threads: Vec<usize>,
 }
 
 impl Default for BenchConfig {
@@ -63,6 +65,7 @@ impl Default for BenchConfig {
             frames: 5,
             budget: Duration::from_secs(15),
             seed: 0x5EED_1234_ABCD_0001,
+            tilegl_threads: vec![1, 2],
         }
     }
 }
@@ -903,6 +906,12 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
                 cfg.frames = v.parse().unwrap_or(cfg.frames);
                 i += 1;
             }
+            ("--threads", Some(v)) => {
+                if let Ok(t) = v.parse::<usize>() {
+                    cfg.tilegl_threads = vec![t.max(1)];
+                }
+                i += 1;
+            }
             ("--triangles", Some(v)) => {
                 cfg.triangles = v.parse().unwrap_or(cfg.triangles);
                 i += 1;
@@ -921,7 +930,7 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
 }
 
 /// The benchmark's command line: `[--workload triangles|sprites|fog|all] [--frames N]
-/// [--triangles N] [--budget SECONDS]`. Prints one table per workload and returns the process
+/// [--triangles N] [--budget SECONDS] [--threads N] [--no-mesa]`. Prints one table per workload and returns the process
 /// exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -1218,7 +1227,11 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
         cfg.height,
         cfg.frames
     );
-    let mut results = vec![run_tilegl(cfg, &data, 1), run_tilegl(cfg, &data, 2)];
+    let mut results: Vec<BenchResult> = cfg
+        .tilegl_threads
+        .iter()
+        .map(|&t| run_tilegl(cfg, &data, t))
+        .collect();
     let mesa = if args.iter().any(|a| a == "--no-mesa") {
         Err("--no-mesa".to_string())
     } else {

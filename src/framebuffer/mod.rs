@@ -36,6 +36,17 @@ impl Tile {
     pub fn index(&self, x: i32, y: i32) -> usize {
         (y - self.y0) as usize * TILE + (x - self.x0) as usize
     }
+
+    /// The window pixels the tile covers.
+    pub fn rect(&self) -> crate::raster::setup::Rect {
+        let t = TILE as i32;
+        crate::raster::setup::Rect {
+            x0: self.x0,
+            y0: self.y0,
+            x1: self.x0 + t,
+            y1: self.y0 + t,
+        }
+    }
 }
 
 /// Which buffers a framebuffer has and their depths.

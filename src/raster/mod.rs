@@ -2,6 +2,7 @@
 //! attribute planes, binning records them per screen tile, and at a flush point the tiles are
 //! shaded in parallel, each replaying its commands in submission order.
 
+pub mod coarse;
 pub mod line;
 pub mod point;
 pub mod scene;

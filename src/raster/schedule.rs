@@ -3,6 +3,7 @@
 
 use rayon::prelude::*;
 
+use super::coarse::CoarseDepth;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
 use super::tri::raster_triangle;
@@ -163,6 +164,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     let mut levels_state = None;
     // A triangle's attribute planes spread over the full layout.
     let mut attrs = Vec::new();
+    let mut coarse = CoarseDepth::default();
     for &ci in bin {
         let command = &scene.commands[ci as usize];
         let state = match command {
@@ -175,12 +177,23 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             levels_state = Some(state);
         }
         match command {
-            Command::Clear(c) => clear_tile(c, tile),
+            Command::Clear(c) => {
+                clear_tile(c, tile);
+                if c.depth.is_some() {
+                    coarse.forget(tile, &c.rect);
+                }
+            }
             Command::Triangle(t) => {
                 let ds = &scene.states[t.state as usize];
                 let at = t.planes as usize;
                 let planes = &scene.planes[at..at + 2 + ds.live_attrs.count_ones() as usize];
+                if coarse.hides(tile, ds, &planes[0], &t.bbox.intersect(&tile.rect())) {
+                    continue;
+                }
                 raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
+                if ds.key.depth_write {
+                    coarse.forget(tile, &t.bbox);
+                }
             }
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];
@@ -194,6 +207,9 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     coverage: r.coverage,
                     shared: &shared,
                 };
+                if ds.key.depth_write {
+                    coarse.forget(tile, &r.rect);
+                }
                 let t = crate::framebuffer::TILE as i32;
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));
                 let (y0, y1) = (r.rect.y0.max(tile.y0), r.rect.y1.min(tile.y0 + t));

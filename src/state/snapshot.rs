@@ -221,8 +221,11 @@ pub struct DrawState {
     pub uniforms: Uniforms,
     /// The fragment function chosen for `key`.
     pub span: SpanFn,
-    /// The function that shades two rows of a triangle at once, for keys that have one.
+    /// The function that shades the rows of a triangle together, for keys that have one.
     pub span_pair: Option<PairFn>,
+    /// Whether triangles hidden behind the stored depths are dropped before rasterizing
+    /// (`raster::coarse`); off on the general path, so twin tests compare both.
+    pub coarse_depth: bool,
 }
 
 impl Context {
@@ -384,6 +387,7 @@ impl Context {
             uniforms,
             span: select_span(&key, self.force_general_path),
             span_pair: select_pair(&key, self.force_general_path),
+            coarse_depth: !self.force_general_path,
         });
         self.draw_state = Some(ds.clone());
         ds

@@ -1,0 +1,168 @@
+//! Coarse depth: the largest depth of each 8x8 block of a tile, so that a triangle whose
+//! fragments are all farther than everything stored in the blocks it covers is dropped before
+//! it is rasterized. Under a `LESS`, `LEQUAL` or `EQUAL` depth test such fragments all fail,
+//! and without a stencil test (`FragmentKey::stencil` is `None`) a failing fragment changes
+//! nothing, so dropping them leaves every pixel as it was. The hidden surfaces of a multipass
+//! effect (the second pass of an environment-mapped model, drawn with `LEQUAL` over the
+//! first pass's depths) cost nothing beyond their setup.
+//!
+//! The block maxima live with the worker shading one tile of one scene (the tile is its alone
+//! then), are computed on first use and forgotten for the blocks a command may write depth to.
+
+use super::setup::{Plane, Rect};
+use crate::api::convert::CompareFunc;
+use crate::fragment::span::depth_to_fixed;
+use crate::framebuffer::{Tile, TILE};
+use crate::state::DrawState;
+
+/// Pixels per side of a block.
+const BLOCK: usize = 8;
+/// Blocks per side of a tile.
+const BLOCKS: usize = TILE / BLOCK;
+
+/// The largest stored depth of each block of one tile, where known.
+#[derive(Clone, Debug)]
+pub struct CoarseDepth {
+    max: [u32; BLOCKS * BLOCKS],
+    /// Bit `b` set: `max[b]` is the largest depth of block `b` (row-major from the bottom).
+    known: u64,
+}
+
+impl Default for CoarseDepth {
+    fn default() -> Self {
+        CoarseDepth {
+            max: [0; BLOCKS * BLOCKS],
+            known: 0,
+        }
+    }
+}
+
+impl CoarseDepth {
+    /// The blocks of `tile` that the window rectangle `rect` touches (none when it misses the
+    /// tile).
+    fn blocks(tile: &Tile, rect: &Rect) -> u64 {
+        let t = TILE as i32;
+        let (x0, x1) = (rect.x0.max(tile.x0), rect.x1.min(tile.x0 + t));
+        let (y0, y1) = (rect.y0.max(tile.y0), rect.y1.min(tile.y0 + t));
+        if x0 >= x1 || y0 >= y1 {
+            return 0;
+        }
+        let b = BLOCK as i32;
+        let (bx0, bx1) = ((x0 - tile.x0) / b, (x1 - 1 - tile.x0) / b);
+        let (by0, by1) = ((y0 - tile.y0) / b, (y1 - 1 - tile.y0) / b);
+        let row = ((1u64 << (bx1 + 1)) - 1) & !((1u64 << bx0) - 1);
+        (by0..=by1).fold(0, |m, by| m | row << (BLOCKS as i32 * by))
+    }
+
+    /// Forgets the blocks that a command writing depth over `rect` may change.
+    pub fn forget(&mut self, tile: &Tile, rect: &Rect) {
+        self.known &= !Self::blocks(tile, rect);
+    }
+
+    /// The largest stored depth of block `b`.
+    fn block_max(&mut self, tile: &Tile, b: usize) -> u32 {
+        if self.known & (1 << b) == 0 {
+            let (bx, by) = (b % BLOCKS, b / BLOCKS);
+            let mut m = 0;
+            for row in 0..BLOCK {
+                let start = (by * BLOCK + row) * TILE + bx * BLOCK;
+                m = tile.depth[start..start + BLOCK]
+                    .iter()
+                    .fold(m, |m, &d| m.max(d));
+            }
+            self.max[b] = m;
+            self.known |= 1 << b;
+        }
+        self.max[b]
+    }
+
+    /// Whether every fragment of a triangle of draw `ds` with window-z plane `z` whose
+    /// fragments lie in `rect` (inside `tile`) fails the depth test.
+    pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: &Rect) -> bool {
+        let key = &ds.key;
+        let applies = ds.coarse_depth
+            && key.stencil.is_none()
+            && matches!(
+                key.depth_func,
+                Some(CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal)
+            );
+        if !applies || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
+            return false;
+        }
+        // The plane is smallest at a corner of the rectangle of pixel centres; the spans step
+        // z from each row's first pixel, which can differ from the plane by rounding only
+        // (far less than the margin).
+        let (xa, xb) = (rect.x0 as f64 + 0.5, rect.x1 as f64 - 0.5);
+        let (ya, yb) = (rect.y0 as f64 + 0.5, rect.y1 as f64 - 0.5);
+        let zmin = [z.at(xa, ya), z.at(xb, ya), z.at(xa, yb), z.at(xb, yb)]
+            .into_iter()
+            .fold(f64::INFINITY, f64::min);
+        if !zmin.is_finite() {
+            return false;
+        }
+        // depth_to_fixed does not decrease with z: no fragment is nearer than this.
+        let nearest = depth_to_fixed(zmin - 1e-9, ds.depth_max);
+        let mut blocks = Self::blocks(tile, rect);
+        while blocks != 0 {
+            let b = blocks.trailing_zeros() as usize;
+            blocks &= blocks - 1;
+            if self.block_max(tile, b) >= nearest {
+                return false;
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tile() -> Tile {
+        Tile {
+            x0: 64,
+            y0: 128,
+            color: vec![[0; 4]; TILE * TILE],
+            depth: vec![0; TILE * TILE],
+            stencil: vec![0; TILE * TILE],
+            samples_passed: 0,
+        }
+    }
+
+    #[test]
+    fn blocks_of_a_rectangle() {
+        let t = tile();
+        let r = |x0, y0, x1, y1| Rect { x0, y0, x1, y1 };
+        // The tile's first block only.
+        assert_eq!(CoarseDepth::blocks(&t, &r(64, 128, 72, 136)), 1);
+        // Pixels 71..73 x 135..137 straddle four blocks.
+        assert_eq!(
+            CoarseDepth::blocks(&t, &r(71, 135, 73, 137)),
+            0b11 | 0b11 << 8
+        );
+        // The whole tile, and a rectangle beyond it.
+        assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 1000, 1000)), u64::MAX);
+        assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 64, 1000)), 0);
+    }
+
+    #[test]
+    fn block_maxima_follow_forgotten_writes() {
+        let mut t = tile();
+        let mut c = CoarseDepth::default();
+        t.depth[TILE * 9 + 10] = 77; // block (1, 1)
+        assert_eq!(c.block_max(&t, 9), 77);
+        t.depth[TILE * 9 + 11] = 99;
+        // Not forgotten: the stale maximum.
+        assert_eq!(c.block_max(&t, 9), 77);
+        c.forget(
+            &t,
+            &Rect {
+                x0: 75,
+                y0: 137,
+                x1: 76,
+                y1: 138,
+            },
+        );
+        assert_eq!(c.block_max(&t, 9), 99);
+    }
+}
