@@ -36,14 +36,19 @@ pub fn generate(
             u - 2.0 * eye_normal * eye_normal.dot(u)
         })
     };
+    // The sphere map's r and m (shared by s and t).
+    let mut sphere: Option<(Vec3, f32)> = None;
     for (i, g) in gen.iter().enumerate() {
         let Some(g) = g else { continue };
         out[i] = match g.mode {
             TexGenMode::ObjectLinear => g.plane.dot(object),
             TexGenMode::EyeLinear => g.plane.dot(eye),
             TexGenMode::SphereMap => {
-                let r = r();
-                let m = 2.0 * (r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)).sqrt();
+                let (r, m) = *sphere.get_or_insert_with(|| {
+                    let r = r();
+                    let m = 2.0 * (r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)).sqrt();
+                    (r, m)
+                });
                 let c = if i == 0 { r.x } else { r.y };
                 if m > 0.0 {
                     c / m + 0.5
