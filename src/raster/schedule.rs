@@ -187,12 +187,12 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 let ds = &scene.states[t.state as usize];
                 let at = t.planes as usize;
                 let planes = &scene.planes[at..at + 2 + ds.live_attrs.count_ones() as usize];
-                if coarse.hides(tile, ds, &planes[0], &t.bbox.intersect(&tile.rect())) {
+                if coarse.hides(tile, ds, &planes[0], &t.bbox().intersect(&tile.rect())) {
                     continue;
                 }
                 raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
                 if ds.key.depth_write {
-                    coarse.forget(tile, &t.bbox);
+                    coarse.forget(tile, &t.bbox());
                 }
             }
             Command::Rect(r) => {

@@ -96,7 +96,7 @@ impl PlaneSetup {
 
 /// One edge function `E(p) = a*px + b*py + c` over fixed-point positions; a pixel centre is
 /// inside when `E >= bias`, with the edge's `bias` ([`Edge::new`]) kept beside it (in
-/// `TriangleCommand::bias`, to keep the command small).
+/// `TriangleCommand::edges`).
 #[derive(Clone, Copy, Debug)]
 pub struct Edge {
     pub a: i64,

@@ -2,7 +2,7 @@
 //! three edge functions directly (triangles are convex), then handed to the span function.
 
 use super::scene::TriangleCommand;
-use super::setup::{Plane, SUBPIXEL};
+use super::setup::{Edge, Plane, SUBPIXEL};
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
@@ -19,10 +19,11 @@ pub fn raster_triangle<'a>(
     tile: &mut Tile,
 ) {
     let tile_size = TILE as i32;
-    let x_lo = t.bbox.x0.max(tile.x0);
-    let x_hi = t.bbox.x1.min(tile.x0 + tile_size);
-    let y_lo = t.bbox.y0.max(tile.y0);
-    let y_hi = t.bbox.y1.min(tile.y0 + tile_size);
+    let bbox = t.bbox();
+    let x_lo = bbox.x0.max(tile.x0);
+    let x_hi = bbox.x1.min(tile.x0 + tile_size);
+    let y_lo = bbox.y0.max(tile.y0);
+    let y_hi = bbox.y1.min(tile.y0 + tile_size);
     if x_lo >= x_hi || y_lo >= y_hi {
         return;
     }
@@ -47,8 +48,9 @@ pub fn raster_triangle<'a>(
         coverage: 1.0,
         shared: &shared,
     };
+    let (edges, bias) = t.edges();
     if ds.raster.polygon_smooth {
-        smooth_rows(t, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
+        smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
         return;
     }
     let half = SUBPIXEL / 2;
@@ -58,7 +60,7 @@ pub fn raster_triangle<'a>(
         let py = y as i64 * SUBPIXEL + half;
         let mut lo = x_lo as i64;
         let mut hi = x_hi as i64; // exclusive
-        for (e, &bias) in t.edges.iter().zip(&t.bias) {
+        for (e, &bias) in edges.iter().zip(&bias) {
             // E(x) = step * x + base, with px = x * SUBPIXEL + half.
             let base = e.b * py + e.c + e.a * half;
             let step = e.a * SUBPIXEL;
@@ -109,7 +111,7 @@ pub fn raster_triangle<'a>(
 /// bounding box gets the triangle's coverage, approximated by the box-filtered distances of
 /// its centre to the three edges; runs of full coverage are shaded as spans.
 fn smooth_rows<'a>(
-    t: &TriangleCommand,
+    edges: &[Edge; 3],
     ds: &'a DrawState,
     it: &Interpolants<'a>,
     tile: &mut Tile,
@@ -117,7 +119,7 @@ fn smooth_rows<'a>(
 ) {
     let s = SUBPIXEL as f64;
     // Edge functions in pixel units: E(p) / |(a, b)| is the signed distance in pixels.
-    let edges = t.edges.map(|e| {
+    let edges = edges.map(|e| {
         let len = ((e.a as f64).powi(2) + (e.b as f64).powi(2))
             .sqrt()
             .max(1e-12);
@@ -184,7 +186,7 @@ fn stippled_row<'a>(
 }
 
 use super::scene::{Command, Scene};
-use super::setup::{centre_range, Edge, PlaneSetup, Rect};
+use super::setup::{centre_range, PlaneSetup, Rect};
 use crate::api::convert::PolygonMode;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};
@@ -220,11 +222,6 @@ pub fn bin_triangle(
         v.swap(1, 2);
         attrs.swap(1, 2);
     }
-    let [(e0, b0), (e1, b1), (e2, b2)] = [
-        Edge::new(v[0].xy, v[1].xy),
-        Edge::new(v[1].xy, v[2].xy),
-        Edge::new(v[2].xy, v[0].xy),
-    ];
     let xs = v.map(|p| p.xy[0]);
     let ys = v.map(|p| p.xy[1]);
     let (x0, x1) = centre_range(
@@ -298,14 +295,8 @@ pub fn bin_triangle(
         });
     }
 
-    scene.bin(
-        Command::Triangle(TriangleCommand {
-            state,
-            planes: offset,
-            bbox,
-            edges: [e0, e1, e2],
-            bias: [b0, b1, b2],
-        }),
-        bbox,
-    );
+    // Clipping keeps positions inside the guard band, so the command always fits.
+    if let Some(t) = TriangleCommand::new(state, offset, bbox, v.map(|w| w.xy)) {
+        scene.bin(Command::Triangle(t), bbox);
+    }
 }
