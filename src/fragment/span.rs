@@ -11,9 +11,8 @@
 //! - eight fragments at a time through one tail (`tail8`, `simd::shade8`: environment, alpha
 //!   test, blending, colour mask): [`span_textured`] (one `REPLACE`/`MODULATE` unit),
 //!   [`span_sampled8`] (any units, the cascade eight at a time), [`span_untextured8`];
-//! - whole triangles two 2x2 quads at a time for the eight-lane textured keys:
-//!   [`pair_textured`] and [`pair_sampled8`] over `for_each_quad_pair` (triangles only;
-//!   `raster/tri.rs` hands over the rows).
+//! - two rows at a time in 4x2 blocks for the eight-lane textured keys: [`pair_textured`] and
+//!   [`pair_sampled8`] over `for_each_block` (triangles only; `raster/tri.rs` pairs the rows).
 //!
 //! Every fast path computes each value as the general path does, so pictures are identical
 //! (twin tests in `tests/raster.rs` and `tests/state_combinations.rs`). Texture coordinates and
@@ -1059,22 +1058,25 @@ impl<'a> Perspective8<'a> {
         self.filter_quads(&s, &t, [0x03, 0x0C, 0x30, 0xC0], derivatives, live, out)
     }
 
-    /// The sampler of two-quad groups ([`Perspective8::texels_quads`]) of the unit at index
-    /// `k` of the draw's units, when [`Perspective8::new`] would give one. Its planes are taken
-    /// at y = 1, that is `[a, b, c]` (`b * 1.0` is `b`): each quad multiplies in its own rows.
-    fn quads(
+    /// The sampler of the 4x2 blocks of rows `y` (even) and `y + 1` of the unit at index `k`
+    /// of the draw's units ([`Perspective8::texels_block`]), when [`Perspective8::new`] would
+    /// give one.
+    fn block(
         unit: &'a TextureUnitDraw,
         k: usize,
         it: &Interpolants<'a>,
+        y: i32,
     ) -> Option<Perspective8<'a>> {
-        Self::on_rows(unit, k, it, [1.0, 1.0], false)
+        // Row 0 is row y, row 1 row y + 1 (the upper row of the block's quads).
+        Self::on_rows(unit, k, it, [y as f64 + 0.5, y as f64 + 1.5], false)
     }
 
-    /// The texels of two quads ([`QuadPair`]) from a sampler made by [`Perspective8::quads`]:
-    /// the same texels as [`Perspective8::texels_into`] gives each pixel on its own row. False
-    /// when a coordinate is beyond the filter's range.
-    fn texels_quads(&self, quads: &QuadPair, live: u8, out: &mut Texels8) -> bool {
-        let Some([vs, vt]) = simd::perspective_quads8(&self.planes[0], quads.x, quads.y) else {
+    /// The texels of a 4x2 block from a sampler made by [`Perspective8::block`]: lanes 0..4 are
+    /// the pixels centred at `x + j` on the lower row, lanes 4..8 the same columns on the upper
+    /// row, `x - 0.5` even (two whole quads). The same texels as [`Perspective8::texels_into`]
+    /// gives each pixel on its own row. False when a coordinate is beyond the filter's range.
+    fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        let Some([vs, vt]) = simd::perspective_block8(&self.planes, x) else {
             return false;
         };
         let fix = |v: f64| finite_or_zero(v as f32);
@@ -1084,7 +1086,7 @@ impl<'a> Perspective8<'a> {
             s[j] = fix(vs[j]);
             t[j] = fix(vt[j]);
         }
-        // Quad q is lanes 2q, 2q + 1 (lower row) and 2q + 4, 2q + 5 (upper row).
+        // Quad q is columns 2q and 2q + 1 of both rows: lanes 2q, 2q + 1, 2q + 4 and 2q + 5.
         let derivatives = |q: usize| {
             let (l, r) = (2 * q, 2 * q + 1);
             let dx = [fix(vs[4 + r] - vs[4 + l]), fix(vt[4 + r] - vt[4 + l]), 0.0];
@@ -1484,166 +1486,97 @@ pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
     shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
 }
 
-/// Shades the rows of a triangle: `rows[i]` is the covered pixels `x0..x1` of row `y + i`
-/// (empty when `x0 >= x1`), `y` even.
-pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, i32, &[(i32, i32)], &Interpolants<'a>);
+/// Shades two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels
+/// `x0..x1` of row `y + r` (empty when `x0 >= x1`; not both).
+pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, i32, [(i32, i32); 2], &Interpolants<'a>);
 
-/// The rows one by one, by the draw's span function.
+/// The rows of a pair one by one, by the draw's span function.
 fn pair_by_rows<'a>(
     ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
-    rows: &[(i32, i32)],
+    rows: [(i32, i32); 2],
     it: &Interpolants<'a>,
 ) {
-    for (r, &(x0, x1)) in (0..).zip(rows) {
+    for (r, (x0, x1)) in (0..).zip(rows) {
         if x0 < x1 {
             (ds.span)(ds, tile, y + r, x0, x1, it);
         }
     }
 }
 
-/// Two 2x2 quads shaded together as eight lanes: quad q's lower-left pixel is (`x[q]`,
-/// `y[q]`), both even; lanes 2q and 2q + 1 are its lower row, lanes 2q + 4 and 2q + 5 its
-/// upper row. (Two neighbouring quads of a row pair are the 4x2 block from `x[0]`.)
-#[derive(Clone, Copy, Debug, Default)]
-struct QuadPair {
-    x: [i32; 2],
-    y: [i32; 2],
-}
-
-impl QuadPair {
-    /// The lanes of quad `q`.
-    const LANES: [u8; 2] = [0x33, 0xCC];
-
-    /// The pixel of lane `lane`.
-    #[inline(always)]
-    fn pixel(&self, lane: usize) -> (i32, i32) {
-        let q = (lane % 4) / 2;
-        (self.x[q] + (lane % 2) as i32, self.y[q] + (lane / 4) as i32)
-    }
-
-    /// The pixel centre of lane `lane`.
-    #[inline(always)]
-    fn centre(&self, lane: usize) -> (f64, f64) {
-        let (x, y) = self.pixel(lane);
-        (x as f64 + 0.5, y as f64 + 0.5)
-    }
-}
-
-/// Shades a group of two quads and stores the lanes that passed the depth test.
+/// Runs the 4x2 blocks of a row pair (two whole quads each, from the even column at or left
+/// of the first covered pixel): lanes 0..4 are columns `gx..gx + 4` of row `y`, lanes 4..8
+/// the same columns of row `y + 1`. Each row's colour and depth are stepped from its own first
+/// pixel, as on the row alone. `shade(gx, group)` gets the covered lanes' inputs when one of
+/// them passes the depth test (the others change nothing: no stencil on these paths) and
+/// answers the colour words and the lanes that passed every test, which are stored.
 #[inline(always)]
-fn shade_quads(
+fn for_each_block(
     ds: &DrawState,
     tile: &mut Tile,
-    quads: &QuadPair,
-    group: &GroupInputs,
-    shade: &mut impl FnMut(&QuadPair, &GroupInputs) -> Option<([u32; 8], u8)>,
-) {
-    if let Some((words, passed)) = shade(quads, group) {
-        let mut lanes = group.pass;
-        while lanes != 0 {
-            let lane = lanes.trailing_zeros() as usize;
-            lanes &= lanes - 1;
-            let (px, py) = quads.pixel(lane);
-            let index = tile.index(px, py);
-            store_lane(ds, tile, lane, index, &words, passed, &group.depth);
-        }
-    }
-}
-
-/// Runs the quads of a triangle's rows (`rows[i]` the covered pixels of row `y + i`, `y` even)
-/// two at a time: each row pair from its even column at or left of its first covered pixel,
-/// each row's colour and depth stepped from its own first pixel, as on the row alone. Quads
-/// none of whose pixels pass the depth test are dropped (they change nothing: no stencil on
-/// these paths), so a group holds two quads that do, from anywhere in the triangle: the small
-/// triangles of a tessellated model fill the lanes about twice as well as in 4x2 blocks.
-/// `shade(quads, group)` answers the colour words and the lanes that passed every test; the
-/// lanes that passed the depth test are stored. A row alone in its pair and longer than a
-/// block goes to the draw's span function.
-#[inline(always)]
-fn for_each_quad_pair<'a>(
-    ds: &'a DrawState,
-    tile: &mut Tile,
     y: i32,
-    rows: &[(i32, i32)],
-    it: &Interpolants<'a>,
-    mut shade: impl FnMut(&QuadPair, &GroupInputs) -> Option<([u32; 8], u8)>,
+    rows: [(i32, i32); 2],
+    it: &Interpolants,
+    mut shade: impl FnMut(i32, &GroupInputs) -> Option<([u32; 8], u8)>,
 ) {
     let depth_max = group_depth_max(ds);
-    let mut group = GroupInputs::EMPTY;
-    let mut quads = QuadPair::default();
-    let mut half = 0;
-    let mut run = |group: &GroupInputs, quads: &QuadPair, tile: &mut Tile| {
-        shade_quads(ds, tile, quads, group, &mut shade)
+    let mut runs = [
+        SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
+        SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
+    ];
+    let covered = |r: usize| rows[r].0 < rows[r].1;
+    let (first, end) = match (covered(0), covered(1)) {
+        (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
+        (true, false) => rows[0],
+        (false, true) => rows[1],
+        (false, false) => return,
     };
-    const EMPTY: (i32, i32) = (0, 0);
-    for (p, pair) in rows.chunks(2).enumerate() {
-        let py = y + 2 * p as i32;
-        let pair = [pair[0], pair.get(1).copied().unwrap_or(EMPTY)];
-        let covered = |r: usize| pair[r].0 < pair[r].1;
-        let (first, end) = match (covered(0), covered(1)) {
-            (true, true) => (pair[0].0.min(pair[1].0), pair[0].1.max(pair[1].1)),
-            (true, false) if pair[0].1 - pair[0].0 > 4 => {
-                (ds.span)(ds, tile, py, pair[0].0, pair[0].1, it);
-                continue;
+    let mut gx = first & !1;
+    while gx < end {
+        let mut group = GroupInputs::EMPTY;
+        let mut live = 0u8;
+        for (r, &(x0, x1)) in rows.iter().enumerate() {
+            let row = tile.index(gx, y + r as i32);
+            for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                let (lane, j) = (4 * r + j as usize, j as usize);
+                group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
+                live |= 1 << lane;
             }
-            (false, true) if pair[1].1 - pair[1].0 > 4 => {
-                (ds.span)(ds, tile, py + 1, pair[1].0, pair[1].1, it);
-                continue;
-            }
-            (true, false) => pair[0],
-            (false, true) => pair[1],
-            (false, false) => continue,
-        };
-        let mut runs = [
-            SpanRun::new(it, pair[0].0 as f64 + 0.5, py as f64 + 0.5, 4),
-            SpanRun::new(it, pair[1].0 as f64 + 0.5, py as f64 + 1.5, 4),
-        ];
-        let mut qx = first & !1;
-        while qx < end {
-            let lanes = QuadPair::LANES[half];
-            group.pass &= !lanes;
-            for (r, &(x0, x1)) in pair.iter().enumerate() {
-                let row = tile.index(qx, py + r as i32);
-                for c in (x0 - qx).clamp(0, 2)..(x1 - qx).clamp(0, 2) {
-                    let lane = 4 * r + 2 * half + c as usize;
-                    group.add(ds, tile, lane, row + c as usize, runs[r].next(depth_max));
-                }
-            }
-            if group.pass & lanes != 0 {
-                quads.x[half] = qx;
-                quads.y[half] = py;
-                half += 1;
-                if half == 2 {
-                    run(&group, &quads, tile);
-                    group.pass = 0;
-                    half = 0;
-                }
-            }
-            qx += 2;
         }
-    }
-    if half == 1 {
-        // The second quad's lanes are dead; their coordinates repeat the first's.
-        group.pass &= QuadPair::LANES[0];
-        quads.x[1] = quads.x[0];
-        quads.y[1] = quads.y[0];
-        run(&group, &quads, tile);
+        if group.pass != 0 {
+            if let Some((words, passed)) = shade(gx, &group) {
+                for lane in 0..8 {
+                    if live & (1 << lane) != 0 {
+                        let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                        store_lane(ds, tile, lane, index, &words, passed, &group.depth);
+                    }
+                }
+            }
+        }
+        gx += 4;
     }
 }
 
-/// `span_textured`'s eight-lane perspective path over a triangle's rows, two quads at a time
-/// (`for_each_quad_pair`): the spans of small triangles are two or three pixels long, so
-/// groups of quads hold more fragments than row groups, and a quad's texture coordinates give
-/// its derivatives without evaluating other rows. Every value is computed as on the rows one
-/// by one (texels by `Perspective8::texels_quads`), so the pixels are the same; affine
-/// primitives and keys without the eight-lane tail take the rows one by one.
+/// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
+#[inline(always)]
+fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
+    let lane = lane as i32;
+    ((gx + lane % 4) as f64 + 0.5, (y + lane / 4) as f64 + 0.5)
+}
+
+/// `span_textured`'s eight-lane perspective path on two rows at once, in 4x2 blocks (two
+/// whole quads): the spans of small triangles are two or three pixels long, so a block holds
+/// about as many fragments as two eight-pixel row groups, and its texture coordinates give
+/// the quads' derivatives without evaluating other rows. Every value is computed as on the
+/// rows one by one (`for_each_block`, texels by `Perspective8::texels_block`), so the
+/// pixels are the same; affine primitives and keys without the eight-lane tail take the rows
+/// one by one.
 pub fn pair_textured<'a, const TEX: u8>(
     ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
-    rows: &[(i32, i32)],
+    rows: [(i32, i32); 2],
     it: &Interpolants<'a>,
 ) {
     let Some(unit) = ds.units.first() else {
@@ -1655,7 +1588,7 @@ pub fn pair_textured<'a, const TEX: u8>(
     let sampler = if affine || it.coverage != 1.0 || !tail8_applies(&ds.key) {
         None
     } else {
-        Perspective8::quads(unit, 0, it)
+        Perspective8::block(unit, 0, it, y)
     };
     let Some(sampler) = sampler else {
         return pair_by_rows(ds, tile, y, rows, it);
@@ -1663,11 +1596,11 @@ pub fn pair_textured<'a, const TEX: u8>(
     // Not affine: the fast unit samples one by one as the rows' fallback does.
     let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
     let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
-    for_each_quad_pair(ds, tile, y, rows, it, |quads, group| {
+    for_each_block(ds, tile, y, rows, it, |gx, group| {
         let mut tex = [[0f32; 8]; 4];
-        if !sampler.texels_quads(quads, group.pass, &mut tex) {
+        if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
             for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
-                let (x, yc) = quads.centre(lane);
+                let (x, yc) = block_lane_centre(gx, y, lane);
                 let t = if TEX == tex_mode::FAST_RGB {
                     f.texel::<3>(it, x, yc)
                 } else {
@@ -1682,15 +1615,14 @@ pub fn pair_textured<'a, const TEX: u8>(
     });
 }
 
-/// [`span_sampled8`] over a triangle's rows, two quads at a time (`for_each_quad_pair`):
-/// every unit sampled by its quad sampler (`Perspective8::texels_quads`; one by one where it
-/// does not apply), the cascade, then the eight-fragment tail. The same pixels as the rows one
-/// by one.
+/// [`span_sampled8`] on two rows at once, in 4x2 blocks (`for_each_block`): every unit
+/// sampled by its block sampler (`Perspective8::texels_block`; one by one where it does not
+/// apply), the cascade, then the eight-fragment tail. The same pixels as the rows one by one.
 pub fn pair_sampled8<'a>(
     ds: &'a DrawState,
     tile: &mut Tile,
     y: i32,
-    rows: &[(i32, i32)],
+    rows: [(i32, i32); 2],
     it: &Interpolants<'a>,
 ) {
     if it.coverage != 1.0 {
@@ -1702,19 +1634,19 @@ pub fn pair_sampled8<'a>(
         tail,
         mut by_unit,
     } = Sampled8::new(ds, it, y, true);
-    for_each_quad_pair(ds, tile, y, rows, it, |quads, group| {
+    for_each_block(ds, tile, y, rows, it, |gx, group| {
         for (k, unit) in ds.units.iter().enumerate() {
             let Some(out) = by_unit[unit.unit].as_mut() else {
                 continue;
             };
             if samplers[k]
                 .as_ref()
-                .is_some_and(|p| p.texels_quads(quads, group.pass, out))
+                .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
             {
                 continue;
             }
             for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
-                let (x, yc) = quads.centre(lane);
+                let (x, yc) = block_lane_centre(gx, y, lane);
                 let t = unit_texel(unit, it, x, yc);
                 for c in 0..4 {
                     out[c][lane] = t[c];
@@ -1869,14 +1801,14 @@ struct Sampled8<'a> {
 }
 
 impl<'a> Sampled8<'a> {
-    /// For row `y`, or with `quads` for groups of two quads anywhere. (Inlined: built in
-    /// place, not copied out.)
+    /// For row `y`, or with `block` the 4x2 blocks of rows `y` and `y + 1`. (Inlined: built
+    /// in place, not copied out, it costs nothing per row pair.)
     #[inline(always)]
-    fn new(ds: &'a DrawState, it: &Interpolants<'a>, y: i32, quads: bool) -> Sampled8<'a> {
+    fn new(ds: &'a DrawState, it: &Interpolants<'a>, y: i32, block: bool) -> Sampled8<'a> {
         let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
         for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
-            *slot = if quads {
-                Perspective8::quads(unit, k, it)
+            *slot = if block {
+                Perspective8::block(unit, k, it, y)
             } else {
                 Perspective8::new(unit, k, it, y)
             };

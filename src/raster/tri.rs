@@ -78,17 +78,28 @@ pub fn raster_triangle<'a>(
     };
     match (&ds.raster.polygon_stipple, ds.span_pair) {
         (None, Some(pair)) => {
-            // The rows from the even row at or below the first: the pair function shades
-            // them two quads at a time.
-            const EMPTY: (i32, i32) = (0, 0);
-            let y0 = y_lo & !1;
-            let mut rows = [EMPTY; TILE + 1];
-            for (r, y) in rows.iter_mut().zip(y0..y_hi) {
-                if y >= y_lo {
-                    *r = row_interval(y).unwrap_or(EMPTY);
+            // Rows in pairs (even y first): the pair function shades both at once.
+            let mut y = y_lo & !1;
+            while y < y_hi {
+                let lower = if y >= y_lo { row_interval(y) } else { None };
+                let upper = if y + 1 < y_hi {
+                    row_interval(y + 1)
+                } else {
+                    None
+                };
+                // A short lone row goes to the pair function too (a block is two quads wide);
+                // a long one is shaded as a row.
+                const EMPTY: (i32, i32) = (0, 0);
+                match (lower, upper) {
+                    (Some(a), Some(b)) => pair(ds, tile, y, [a, b], &it),
+                    (Some(a), None) if a.1 - a.0 <= 4 => pair(ds, tile, y, [a, EMPTY], &it),
+                    (None, Some(b)) if b.1 - b.0 <= 4 => pair(ds, tile, y, [EMPTY, b], &it),
+                    (Some((x0, x1)), None) => (ds.span)(ds, tile, y, x0, x1, &it),
+                    (None, Some((x0, x1))) => (ds.span)(ds, tile, y + 1, x0, x1, &it),
+                    (None, None) => {}
                 }
+                y += 2;
             }
-            pair(ds, tile, y0, &rows[..(y_hi - y0) as usize], &it);
         }
         (None, None) => {
             for y in y_lo..y_hi {

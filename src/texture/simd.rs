@@ -144,25 +144,21 @@ pub fn perspective_rows8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[[f64; 
     None
 }
 
-/// s/q and t/q (f64) at the pixel centres of two 2x2 quads, as the fragment stage computes
-/// them one by one: quad q's lower-left pixel is (`x[q]`, `y[q]`); lanes 2q and 2q + 1 are its
-/// lower row, lanes 2q + 4 and 2q + 5 its upper row. Each plane `[a, b, c]` of `planes` (s, t,
-/// q) is evaluated as `(a * x + b * y) + c` at the centre (x, y), then s and t divided by q.
-/// Answers `[s or t][lane]`; `None` without AVX2.
-#[inline(always)]
-pub fn perspective_quads8(
-    planes: &[[f64; 3]; 3],
-    x: [i32; 2],
-    y: [i32; 2],
-) -> Option<[[f64; 8]; 2]> {
+/// s/q and t/q (f64) at the pixel centres of a 4x2 block, as the fragment stage computes them
+/// one by one: lanes 0..4 are `x + j` on the row of `planes[0]`, lanes 4..8 the same columns
+/// on the row of `planes[1]`; each plane `[a, b * y, c]` (s, t, q) evaluated as
+/// `(a * x + b * y) + c`, then s and t divided by q. Answers `[s or t][lane]`; `None` without
+/// AVX2.
+#[inline]
+pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[f64; 8]; 2]> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return Some(unsafe { x86::perspective_quads8(planes, x, y) });
+            return Some(unsafe { x86::perspective_block8(planes, x) });
         }
     }
-    let _ = (planes, x, y);
+    let _ = (planes, x);
     None
 }
 
@@ -618,24 +614,13 @@ mod x86 {
 
     #[inline]
     #[target_feature(enable = "avx2")]
-    pub fn perspective_quads8(planes: &[[f64; 3]; 3], x: [i32; 2], y: [i32; 2]) -> [[f64; 8]; 2] {
-        // A row's lanes: quad 0's two columns, then quad 1's (centres, exact in f64).
-        let (xa, xb) = (x[0] as f64 + 0.5, x[1] as f64 + 0.5);
-        let xv = _mm256_set_pd(xb + 1.0, xb, xa + 1.0, xa);
+    pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[f64; 8]; 2] {
+        let xv = centres4(x);
         let mut out = [[0f64; 8]; 2];
-        for row in 0..2 {
-            let (ya, yb) = ((y[0] + row) as f64 + 0.5, (y[1] + row) as f64 + 0.5);
-            let yv = _mm256_set_pd(yb, yb, ya, ya);
-            let eval = |k: usize| {
-                let [a, b, c] = planes[k].map(|v| _mm256_set1_pd(v));
-                let by = _mm256_mul_pd(b, yv);
-                _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
-            };
-            let q = eval(2);
-            let st = [_mm256_div_pd(eval(0), q), _mm256_div_pd(eval(1), q)];
-            for (o, v) in out.iter_mut().zip(st) {
+        for (row, p) in planes.iter().enumerate() {
+            for (o, v) in out.iter_mut().zip(st_over_q4(p, xv)) {
                 // SAFETY: `o` holds eight f64; lanes 4row..4row+4; unaligned store.
-                unsafe { _mm256_storeu_pd(o.as_mut_ptr().add(4 * row as usize), v) };
+                unsafe { _mm256_storeu_pd(o.as_mut_ptr().add(4 * row), v) };
             }
         }
         out
