@@ -256,3 +256,65 @@ fn depths_raised_by_points_uncover_what_they_cover() {
     assert_eq!(specialised[32 * 64 + 32], [0, 255, 0, 255]);
     assert_eq!(specialised[10 * 64 + 10], [128, 0, 0, 255]);
 }
+
+/// A sliver whose depth plane has large terms (a vertex thousands of pixels away, inside the
+/// guard band): its spans' depths differ from the plane at the box corners by far more than a
+/// fixed margin. Redrawn with `LEQUAL` over a depth buffer cleared to its own nearest depth,
+/// its nearest fragment passes, so coarse depth must not drop it. (Found by review: with a
+/// margin of 1e-9 the redraw vanished with 32-bit depth on 2048 rows and 24-bit on 8192.)
+#[test]
+fn slivers_with_large_plane_terms_are_not_dropped() {
+    use tilegl::{ContextConfig, FramebufferConfig};
+    let red_pixels = |general: bool, h: i32, bits: u32, row: i32, x: [f32; 2], far: f32| {
+        let mut gl = Context::with_config(ContextConfig {
+            width: 64,
+            height: h,
+            framebuffer: FramebufferConfig {
+                depth_bits: bits,
+                ..Default::default()
+            },
+            threads: 1,
+        });
+        gl.set_force_general_path(general);
+        common::window_ortho(&mut gl);
+        gl.enable(GL_DEPTH_TEST);
+        gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        let yc = row as f32 + 0.5;
+        let sliver = |gl: &mut Context| {
+            gl.begin(GL_TRIANGLES);
+            gl.vertex_3f(x[0], yc, 0.0);
+            gl.vertex_3f(x[1], yc, 0.8);
+            gl.vertex_3f(far, yc - 1.0 / 256.0, 0.0);
+            gl.end();
+        };
+        gl.depth_func(GL_ALWAYS);
+        gl.color_3f(0.0, 0.0, 1.0);
+        sliver(&mut gl);
+        let fb = gl.framebuffer();
+        let max = fb.depth_max();
+        let nearest = (0..64).filter_map(|x| fb.depth_at(x, row)).min();
+        let Some(nearest) = nearest else {
+            return usize::MAX;
+        };
+        // The stored depth: the sliver's own nearest.
+        gl.clear_depth(nearest as f64 / max as f64);
+        gl.clear(GL_DEPTH_BUFFER_BIT);
+        gl.depth_func(GL_LEQUAL);
+        gl.color_3f(1.0, 0.0, 0.0);
+        sliver(&mut gl);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        read_rgba(&mut gl).iter().filter(|p| p[0] == 255).count()
+    };
+    for (h, bits, row, x, far) in [
+        (8192, 24, 8000, [10.5, 50.7], -30000.0),
+        (2048, 32, 1687, [20.5, 30.9], -2000.0),
+    ] {
+        let general = red_pixels(true, h, bits, row, x, far);
+        assert!(general > 0 && general != usize::MAX, "{general}");
+        assert_eq!(
+            red_pixels(false, h, bits, row, x, far),
+            general,
+            "{h} rows, {bits} bits"
+        );
+    }
+}

@@ -89,19 +89,27 @@ impl CoarseDepth {
         if !applies || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
             return false;
         }
-        // The plane is smallest at a corner of the rectangle of pixel centres; the spans step
-        // z from each row's first pixel, which can differ from the plane by rounding only
-        // (far less than the margin).
+        // The plane is smallest at a corner of the rectangle of pixel centres. The spans
+        // evaluate it at each row's first pixel and step z by `a` along the row (at most a
+        // tile), so their depths differ from the corners' by rounding: each evaluation by a
+        // few ulps of its largest term, each step by an ulp of the running value. The margin
+        // bounds that with room to spare; it must scale with the terms (a vertex thousands
+        // of pixels away makes `b * y` and `c` large while z stays in [0, 1]).
         let (xa, xb) = (rect.x0 as f64 + 0.5, rect.x1 as f64 - 0.5);
         let (ya, yb) = (rect.y0 as f64 + 0.5, rect.y1 as f64 - 0.5);
         let zmin = [z.at(xa, ya), z.at(xb, ya), z.at(xa, yb), z.at(xb, yb)]
             .into_iter()
             .fold(f64::INFINITY, f64::min);
-        if !zmin.is_finite() {
+        let terms = z.a.abs() * xa.abs().max(xb.abs())
+            + z.b.abs() * ya.abs().max(yb.abs())
+            + z.c.abs()
+            + z.a.abs() * TILE as f64;
+        let margin = 1e-9 + 256.0 * f64::EPSILON * terms;
+        if !zmin.is_finite() || !margin.is_finite() {
             return false;
         }
         // depth_to_fixed does not decrease with z: no fragment is nearer than this.
-        let nearest = depth_to_fixed(zmin - 1e-9, ds.depth_max);
+        let nearest = depth_to_fixed(zmin - margin, ds.depth_max);
         let mut blocks = Self::blocks(tile, rect);
         while blocks != 0 {
             let b = blocks.trailing_zeros() as usize;
