@@ -1257,3 +1257,39 @@ fn untextured_blended_spans_match_the_general_path() {
         );
     }
 }
+
+/// A colour that is the same at every vertex is the same at every fragment (section 3.5.1:
+/// interpolating equal values gives that value), also under a strong perspective where
+/// dividing colour/w by 1/w would round: 0.5 lies exactly halfway between two 8-bit values,
+/// so any rounding below it would show as 127 instead of 128.
+#[test]
+fn constant_colours_stay_exact_under_perspective() {
+    for general in [false, true] {
+        let mut gl = Context::new(96, 64);
+        gl.set_force_general_path(general);
+        gl.matrix_mode(GL_PROJECTION);
+        gl.frustum(-1.0, 1.0, -0.7, 0.7, 1.0, 1000.0);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        // A floor from near the eye to far away, in a few strips of small triangles.
+        gl.color_4f(0.5, 0.5, 0.5, 0.5);
+        for k in 0..40 {
+            let (z0, z1) = (-1.5 - k as f32 * 10.0, -1.5 - (k + 1) as f32 * 10.0);
+            gl.begin(GL_TRIANGLE_STRIP);
+            for i in 0..=20 {
+                let x = -40.0 + 4.0 * i as f32;
+                gl.vertex_3f(x, -1.0, z0);
+                gl.vertex_3f(x + 0.7, -1.0, z1);
+            }
+            gl.end();
+        }
+        let picture = read_rgba(&mut gl);
+        let floor: Vec<_> = picture.iter().filter(|p| **p != [0, 0, 0, 0]).collect();
+        assert!(floor.len() > 1000, "{}", floor.len());
+        let wrong = floor.iter().filter(|p| ***p != [128; 4]).count();
+        assert_eq!(
+            wrong, 0,
+            "general path {general}: {wrong} fragments not 128"
+        );
+    }
+}

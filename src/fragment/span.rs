@@ -43,6 +43,10 @@ pub struct Interpolants<'a> {
     /// Attribute planes: attribute/w when `perspective`, else the attribute itself.
     pub attrs: &'a [Plane],
     pub perspective: bool,
+    /// The primary colour's planes hold the colour itself, not colour/w: it is the same at
+    /// the three vertices, so it is the same at every fragment (no division by 1/w, which
+    /// would round it).
+    pub constant_primary: bool,
     /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
     pub coverage: f32,
     /// What the primitive's spans share beyond the planes. (A reference: a larger
@@ -1209,6 +1213,8 @@ struct SpanRun {
     /// How many of `color` are interpolated: 4 (primary) or 8 (with the secondary colour).
     count: usize,
     perspective: bool,
+    /// The primary colour is divided by 1/w (not for `Interpolants::constant_primary`).
+    primary_perspective: bool,
     /// The fog coordinate (divided by w under perspective), when the draw is fogged.
     fog: Option<(f32, f32)>,
 }
@@ -1225,6 +1231,7 @@ impl SpanRun {
             dcolor: [0.0; 8],
             count,
             perspective: it.perspective,
+            primary_perspective: it.perspective && !it.constant_primary,
             fog: None,
         };
         for c in 0..count {
@@ -1272,6 +1279,9 @@ impl SpanRun {
 
     #[inline(always)]
     fn primary(&self, w: f32) -> [f32; 4] {
+        if !self.primary_perspective {
+            return [self.color[0], self.color[1], self.color[2], self.color[3]];
+        }
         [
             self.color[0] * w,
             self.color[1] * w,

@@ -34,11 +34,19 @@ pub struct TriangleCommand {
     /// The snapped window positions (sub-pixel fixed point) in counter-clockwise order: inside
     /// the guard band, far from the limits of i32.
     xy: [[i32; 2]; 3],
+    /// The primary colour planes are constants (`Interpolants::constant_primary`).
+    constant_primary: bool,
 }
 
 impl TriangleCommand {
     /// The command, or `None` when a coordinate does not fit (which clipping rules out).
-    pub fn new(state: u32, planes: u32, bbox: Rect, xy: [[i64; 2]; 3]) -> Option<TriangleCommand> {
+    pub fn new(
+        state: u32,
+        planes: u32,
+        bbox: Rect,
+        xy: [[i64; 2]; 3],
+        constant_primary: bool,
+    ) -> Option<TriangleCommand> {
         let b = |v: i32| u16::try_from(v).ok();
         let p = |v: i64| i32::try_from(v).ok();
         Some(TriangleCommand {
@@ -50,7 +58,14 @@ impl TriangleCommand {
                 [p(xy[1][0])?, p(xy[1][1])?],
                 [p(xy[2][0])?, p(xy[2][1])?],
             ],
+            constant_primary,
         })
+    }
+
+    /// Whether the primary colour planes are constants.
+    #[inline(always)]
+    pub fn constant_primary(&self) -> bool {
+        self.constant_primary
     }
 
     /// Pixels that may be covered.

@@ -204,6 +204,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     inv_w: Plane::constant(1.0),
                     attrs,
                     perspective: false,
+                    constant_primary: false,
                     coverage: r.coverage,
                     shared: &shared,
                 };

@@ -45,6 +45,7 @@ pub fn raster_triangle<'a>(
         inv_w: planes[1],
         attrs,
         perspective: true,
+        constant_primary: t.constant_primary(),
         coverage: 1.0,
         shared: &shared,
     };
@@ -286,6 +287,10 @@ pub fn bin_triangle(
     // Only the attributes the fragment stage reads get planes (`DrawState::live_attrs`).
     let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
+    // A primary colour that is the same at the three vertices (lighting off, one glColor, or
+    // flat shading) is stored as is and taken without perspective division.
+    let primary = attr::COLOR0..(attr::COLOR0 + 4).min(n);
+    let constant_primary = primary.clone().all(|i| a0[i] == a1[i] && a0[i] == a2[i]);
     let offset = scene.planes.len() as u32;
     scene.planes.reserve(n + 2);
     scene.planes.push(z);
@@ -294,20 +299,24 @@ pub fn bin_triangle(
         if ds.live_attrs & (1 << i) == 0 {
             continue;
         }
-        scene.planes.push(if ds.flat && attr::is_color(i) {
-            let c = x0 as f64;
-            Plane {
-                a: inv_w.a * c,
-                b: inv_w.b * c,
-                c: inv_w.c * c,
-            }
-        } else {
-            setup.plane([x0 as f64 * w[0], x1 as f64 * w[1], x2 as f64 * w[2]])
-        });
+        scene
+            .planes
+            .push(if constant_primary && primary.contains(&i) {
+                Plane::constant(x0 as f64)
+            } else if ds.flat && attr::is_color(i) {
+                let c = x0 as f64;
+                Plane {
+                    a: inv_w.a * c,
+                    b: inv_w.b * c,
+                    c: inv_w.c * c,
+                }
+            } else {
+                setup.plane([x0 as f64 * w[0], x1 as f64 * w[1], x2 as f64 * w[2]])
+            });
     }
 
     // Clipping keeps positions inside the guard band, so the command always fits.
-    if let Some(t) = TriangleCommand::new(state, offset, bbox, v.map(|w| w.xy)) {
+    if let Some(t) = TriangleCommand::new(state, offset, bbox, v.map(|w| w.xy), constant_primary) {
         scene.bin(Command::Triangle(t), bbox);
     }
 }

@@ -558,6 +558,7 @@ impl Context {
             inv_w: Plane::constant(1.0),
             attrs: planes,
             perspective: false,
+            constant_primary: false,
             coverage: 1.0,
             shared: &shared,
         };
