@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{read_rgba, Rng};
+use common::{random_texture, read_rgba, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
@@ -62,18 +62,7 @@ fn multipass(case: u64, general: bool) -> Vec<[u8; 4]> {
     gl.clear_color(0.1, 0.1, 0.2, 1.0);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     gl.enable(GL_DEPTH_TEST);
-    let texels: Vec<u8> = (0..16 * 16 * 4).map(|_| rng.next_u64() as u8).collect();
-    gl.tex_image_2d(
-        GL_TEXTURE_2D,
-        0,
-        GL_RGBA as i32,
-        16,
-        16,
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        Some(&texels),
-    );
+    random_texture(&mut gl, &mut rng, GL_RGBA, 16, 16);
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
     let first_pass = 0xF125_7000 + case;
     triangles(&mut gl, &mut Rng(first_pass), 150);
@@ -203,58 +192,80 @@ fn a_second_pass_with_lequal_adds_exactly_over_the_visible_surface() {
     assert_eq!(centre, [64, 128, 0, 255]);
 }
 
-/// Depths raised by a point (a rectangle of fragments) after the blocks' maxima were taken
-/// must be seen by later triangles: a far grid hidden behind a near square shows where a
-/// point drawn with `ALWAYS` moved the stored depth to the far plane.
+/// Depths raised after the blocks' maxima were taken must be seen by later triangles: a far
+/// grid hidden behind a near square shows where a point (a rectangle of fragments), a
+/// scissored depth clear or a small square, drawn with `ALWAYS`, moved the stored depth to
+/// the far plane.
 #[test]
-fn depths_raised_by_points_uncover_what_they_cover() {
-    let draw = |general: bool| {
-        let mut gl = Context::new(64, 64);
-        gl.set_force_general_path(general);
-        common::window_ortho(&mut gl);
-        gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        gl.enable(GL_DEPTH_TEST);
-        // Window z: ortho near -1, far 1; z = 0.5 is depth 0.25, z = -0.9 depth 0.95.
-        let grid = |gl: &mut Context| {
-            gl.begin(GL_TRIANGLES);
-            for y in (0..64).step_by(4) {
-                for x in (0..64).step_by(4) {
-                    let (x, y) = (x as f32, y as f32);
-                    for (dx, dy) in [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0)] {
-                        gl.vertex_3f(x + dx, y + dy, -0.9);
-                    }
-                    for (dx, dy) in [(0.0, 0.0), (4.0, 4.0), (0.0, 4.0)] {
-                        gl.vertex_3f(x + dx, y + dy, -0.9);
-                    }
-                }
-            }
-            gl.end();
-        };
-        gl.color_3f(0.5, 0.0, 0.0);
-        gl.rectf(0.0, 0.0, 64.0, 64.0);
-        gl.depth_func(GL_LEQUAL);
-        gl.depth_mask(0);
-        gl.color_3f(0.0, 0.0, 1.0);
-        grid(&mut gl);
-        gl.depth_func(GL_ALWAYS);
-        gl.depth_mask(1);
+fn raised_depths_uncover_what_they_cover() {
+    // Each moves the depth of pixels 28..36 x 28..36 to the far plane.
+    let point = |gl: &mut Context| {
         gl.point_size(8.0);
-        gl.color_3f(0.0, 0.0, 0.0);
         gl.begin(GL_POINTS);
         gl.vertex_3f(32.0, 32.0, -1.0);
         gl.end();
-        gl.depth_func(GL_LEQUAL);
-        gl.depth_mask(0);
-        gl.color_3f(0.0, 1.0, 0.0);
-        grid(&mut gl);
-        assert_eq!(gl.get_error(), GL_NO_ERROR);
-        read_rgba(&mut gl)
     };
-    let (general, specialised) = (draw(true), draw(false));
-    assert_eq!(differing(&general, &specialised), 0);
-    // Under the point (pixels 28..36): the grid's green; elsewhere the near square's red.
-    assert_eq!(specialised[32 * 64 + 32], [0, 255, 0, 255]);
-    assert_eq!(specialised[10 * 64 + 10], [128, 0, 0, 255]);
+    let clear = |gl: &mut Context| {
+        gl.enable(GL_SCISSOR_TEST);
+        gl.scissor(28, 28, 8, 8);
+        gl.clear(GL_DEPTH_BUFFER_BIT);
+        gl.disable(GL_SCISSOR_TEST);
+    };
+    let square = |gl: &mut Context| {
+        gl.begin(GL_QUADS);
+        for (x, y) in [(28.0, 28.0), (36.0, 28.0), (36.0, 36.0), (28.0, 36.0)] {
+            gl.vertex_3f(x, y, -1.0);
+        }
+        gl.end();
+    };
+    let raisers: [(&str, &dyn Fn(&mut Context)); 3] =
+        [("point", &point), ("clear", &clear), ("square", &square)];
+    for (name, raise) in raisers {
+        let draw = |general: bool| {
+            let mut gl = Context::new(64, 64);
+            gl.set_force_general_path(general);
+            common::window_ortho(&mut gl);
+            gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            gl.enable(GL_DEPTH_TEST);
+            // Window z: ortho near -1, far 1; z = 0 is depth 0.5, z = -0.9 depth 0.95.
+            let grid = |gl: &mut Context| {
+                gl.begin(GL_TRIANGLES);
+                for y in (0..64).step_by(4) {
+                    for x in (0..64).step_by(4) {
+                        let (x, y) = (x as f32, y as f32);
+                        for (dx, dy) in [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0)] {
+                            gl.vertex_3f(x + dx, y + dy, -0.9);
+                        }
+                        for (dx, dy) in [(0.0, 0.0), (4.0, 4.0), (0.0, 4.0)] {
+                            gl.vertex_3f(x + dx, y + dy, -0.9);
+                        }
+                    }
+                }
+                gl.end();
+            };
+            gl.color_3f(0.5, 0.0, 0.0);
+            gl.rectf(0.0, 0.0, 64.0, 64.0);
+            gl.depth_func(GL_LEQUAL);
+            gl.depth_mask(0);
+            gl.color_3f(0.0, 0.0, 1.0);
+            grid(&mut gl);
+            gl.depth_func(GL_ALWAYS);
+            gl.depth_mask(1);
+            gl.color_3f(0.0, 0.0, 0.0);
+            raise(&mut gl);
+            gl.depth_func(GL_LEQUAL);
+            gl.depth_mask(0);
+            gl.color_3f(0.0, 1.0, 0.0);
+            grid(&mut gl);
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+            read_rgba(&mut gl)
+        };
+        let (general, specialised) = (draw(true), draw(false));
+        assert_eq!(differing(&general, &specialised), 0, "{name}");
+        // Under the raised pixels: the grid's green; elsewhere the near square's red.
+        assert_eq!(specialised[32 * 64 + 32][1], 255, "{name}");
+        assert_eq!(specialised[10 * 64 + 10], [128, 0, 0, 255], "{name}");
+    }
 }
 
 /// A sliver whose depth plane has large terms (a vertex thousands of pixels away, inside the
