@@ -218,8 +218,8 @@ fn raised_depths_uncover_what_they_cover() {
         }
         gl.end();
     };
-    let raisers: [(&str, &dyn Fn(&mut Context)); 3] =
-        [("point", &point), ("clear", &clear), ("square", &square)];
+    type Raise<'a> = &'a dyn Fn(&mut Context);
+    let raisers: [(&str, Raise); 3] = [("point", &point), ("clear", &clear), ("square", &square)];
     for (name, raise) in raisers {
         let draw = |general: bool| {
             let mut gl = Context::new(64, 64);
