@@ -1127,8 +1127,12 @@ impl<'a> Perspective8<'a> {
                 continue;
             }
             let (dx, dy) = derivatives(k);
-            let lambda = self.lod.isotropic_lambda(dx, dy);
-            *pl = match self.lod.plan(lambda) {
+            let plan = if self.lod.surely_magnified(dx, dy) {
+                self.lod.magnification()
+            } else {
+                self.lod.plan(self.lod.isotropic_lambda(dx, dy))
+            };
+            *pl = match plan {
                 LevelPlan::One { level, linear } => (level, level, linear),
                 LevelPlan::Two {
                     levels,

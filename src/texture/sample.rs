@@ -116,9 +116,45 @@ pub struct LodSelect {
     last_level: usize,
     size: [f32; 3],
     target: TextureTarget,
+    /// ρ² below which λ is surely at most the switch-over point (magnification) without
+    /// computing it ([`LodSelect::surely_magnified`]); -1 when `min_lod` lies above it.
+    magnified_below: f32,
 }
 
 impl LodSelect {
+    /// The threshold of [`LodSelect::surely_magnified`]: λ = clamp(log2 ρ + bias, min_lod,
+    /// max_lod) is at most c when log2 ρ + bias <= c and min_lod <= c (max_lod only lowers
+    /// it).
+    fn magnified_below(switch_over: f32, bias: f32, min_lod: f32) -> f32 {
+        if min_lod <= switch_over {
+            ((2.0 * (switch_over - bias)) as f64).exp2() as f32 * 0.999
+        } else {
+            -1.0
+        }
+    }
+
+    /// Whether the quad with these derivatives is surely magnified: λ (from the same ρ² as
+    /// [`LodSelect::isotropic_lambda`]) at most the switch-over point c, so that the level
+    /// plan is the magnification filter on level 0, without the square root and logarithm.
+    /// The threshold 2^(2 (c - bias)) is lowered by 0.1 %, far more than the rounding of
+    /// sqrt, log2 and the bias sum can move λ (|bias| is at most `MAX_TEXTURE_LOD_BIAS`);
+    /// values near it take the full computation, so the plan is always the one λ gives.
+    #[inline(always)]
+    pub fn surely_magnified(&self, d_dx: [f32; 3], d_dy: [f32; 3]) -> bool {
+        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let (ax, ay) = (sq(self.scaled(d_dx)), sq(self.scaled(d_dy)));
+        ax.max(ay) <= self.magnified_below
+    }
+
+    /// The level plan of magnification (what [`LodSelect::plan`] gives for λ <= c).
+    #[inline(always)]
+    pub fn magnification(&self) -> LevelPlan {
+        LevelPlan::One {
+            level: 0,
+            linear: self.mag_linear,
+        }
+    }
+
     /// The derivatives of (s, t, r) scaled to texels of the base level (u, v, w), with unused
     /// dimensions zero.
     #[inline(always)]
@@ -388,16 +424,20 @@ impl BoundTexture {
             bias = 0.0;
         }
         let [w, h, d] = self.inner.base_size;
+        let bias = bias.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS);
+        let switch_over = self.switch_over();
+        let magnified_below = LodSelect::magnified_below(switch_over, bias, p.min_lod);
         LodSelect {
-            bias: bias.clamp(-MAX_TEXTURE_LOD_BIAS, MAX_TEXTURE_LOD_BIAS),
+            bias,
             min_lod: p.min_lod,
             max_lod: p.max_lod,
-            switch_over: self.switch_over(),
+            switch_over,
             mag_linear: p.mag_filter == MagFilter::Linear,
             min_filter: p.min_filter,
             last_level: self.level_count().saturating_sub(1),
             size: [w, h, d],
             target: self.inner.target,
+            magnified_below,
         }
     }
 
@@ -854,6 +894,69 @@ impl BoundTexture {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `surely_magnified` never claims a quad that λ would minify: over biases, switch-over
+    /// points, LOD clamps, sizes and derivatives on both sides of the threshold (and NaN,
+    /// infinite and zero ones), the plan of the full λ is magnification whenever it answers
+    /// true; and it does answer true well inside the threshold.
+    #[test]
+    fn surely_magnified_quads_are_magnified() {
+        let mut seed = 0x1234_5678_9ABC_DEF1u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let (mut claimed, mut checked) = (0, 0);
+        for bias in [-16.0, -3.3, 0.0, 0.7, 16.0] {
+            for switch_over in [0.0, 0.5] {
+                for (min_lod, max_lod) in [(-1000.0, 1000.0), (-2.0, 0.2), (0.4, 3.0), (3.0, 9.0)] {
+                    for size in [64.0, 128.0, 1000.0] {
+                        let lod = LodSelect {
+                            bias,
+                            min_lod,
+                            max_lod,
+                            switch_over,
+                            mag_linear: true,
+                            min_filter: MinFilter::LinearMipmapLinear,
+                            last_level: 10,
+                            size: [size, size, 1.0],
+                            target: TextureTarget::T2D,
+                            magnified_below: LodSelect::magnified_below(switch_over, bias, min_lod),
+                        };
+                        // Derivatives around ρ = 2^(c - bias) texels, the threshold.
+                        let edge = ((switch_over - bias) as f64).exp2() as f32 / size;
+                        for k in 0..400 {
+                            let scale =
+                                edge * (0.98 + 0.04 * next()) * if k % 4 == 0 { 0.3 } else { 1.0 };
+                            let (a, b) = (next() * 2.0 - 1.0, next() * 2.0 - 1.0);
+                            let n = (a * a + b * b).sqrt().max(1e-6);
+                            let mut dx = [a / n * scale, b / n * scale, 0.0];
+                            let dy = [b / n * scale * next(), a / n * scale * next(), 0.0];
+                            match k % 50 {
+                                0 => dx[0] = f32::NAN,
+                                1 => dx[1] = f32::INFINITY,
+                                2 => dx = [0.0; 3],
+                                _ => {}
+                            }
+                            checked += 1;
+                            if lod.surely_magnified(dx, dy) {
+                                claimed += 1;
+                                let plan = lod.plan(lod.isotropic_lambda(dx, dy));
+                                assert_eq!(
+                                    plan,
+                                    lod.magnification(),
+                                    "bias {bias}, c {switch_over}, lod {min_lod}..{max_lod}, {dx:?} {dy:?}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(claimed > checked / 10, "{claimed} of {checked}");
+    }
 
     #[test]
     fn wrap_functions() {
