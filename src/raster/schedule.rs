@@ -6,7 +6,7 @@ use rayon::prelude::*;
 use super::coarse::CoarseDepth;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
-use super::tri::raster_triangle;
+use super::tri::{raster_triangle, AttrScratch};
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
@@ -163,7 +163,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     let mut levels = UnitLevels::default();
     let mut levels_state = None;
     // A triangle's attribute planes spread over the full layout.
-    let mut attrs = Vec::new();
+    let mut attrs = AttrScratch::default();
     let mut coarse = CoarseDepth::default();
     for &ci in bin {
         let command = &scene.commands[ci as usize];

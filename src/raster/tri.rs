@@ -7,15 +7,45 @@ use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
 
+/// A triangle's attribute planes spread over the draw's attribute layout (zero where an
+/// attribute is not live), reused from triangle to triangle of a tile: while the live set
+/// stays the same, only the live slots are written.
+#[derive(Debug, Default)]
+pub struct AttrScratch {
+    planes: Vec<Plane>,
+    /// The live set the zero slots are for.
+    live: u64,
+}
+
+impl AttrScratch {
+    /// `live_planes` (in attribute order) spread over `n` slots by `live`.
+    #[inline]
+    fn spread(&mut self, n: usize, live: u64, live_planes: &[Plane]) -> &[Plane] {
+        if self.planes.len() != n || self.live != live {
+            self.planes.clear();
+            self.planes.resize(n, Plane::constant(0.0));
+            self.live = live;
+        }
+        let mut from = live_planes.iter();
+        let mut mask = live & ((1u64 << n) - 1);
+        while mask != 0 {
+            let i = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            self.planes[i] = from.next().copied().unwrap_or(Plane::constant(0.0));
+        }
+        &self.planes
+    }
+}
+
 /// Shades the part of triangle `t` inside `tile`; `planes` are its window-z plane, its 1/w
 /// plane and the planes of the draw's live attributes (`DrawState::live_attrs`), which are
-/// spread over `attrs` (the others zero) unless every attribute is live.
+/// spread over `scratch` (the others zero) unless every attribute is live.
 pub fn raster_triangle<'a>(
     t: &TriangleCommand,
     ds: &'a DrawState,
     planes: &'a [Plane],
     levels: &'a UnitLevels<'a>,
-    attrs: &'a mut Vec<Plane>,
+    scratch: &'a mut AttrScratch,
     tile: &mut Tile,
 ) {
     let tile_size = TILE as i32;
@@ -31,13 +61,7 @@ pub fn raster_triangle<'a>(
     let attrs: &[Plane] = if ds.live_attrs == (1u64 << n) - 1 {
         &planes[2..]
     } else {
-        attrs.clear();
-        let mut live = planes[2..].iter();
-        attrs.extend((0..n).map(|i| match ds.live_attrs & (1 << i) {
-            0 => Plane::constant(0.0),
-            _ => live.next().copied().unwrap_or(Plane::constant(0.0)),
-        }));
-        attrs
+        scratch.spread(n, ds.live_attrs, &planes[2..])
     };
     let shared = PrimitiveShared::new(levels);
     let it = Interpolants {
