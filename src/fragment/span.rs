@@ -742,12 +742,14 @@ impl<'a> FastUnit<'a> {
         yc: f64,
     ) -> Option<AffineSpan<'a>> {
         let p = &it.attrs[base..base + 4];
+        // (Tested before the shared selection is read: that copies a few hundred bytes, and
+        // only affine primitives have one.)
+        if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
+            return None;
+        }
         if let Some(mut a) = it.shared.fast.get() {
             a.by = [p[0].b * yc, p[1].b * yc];
             return Some(a);
-        }
-        if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
-            return None;
         }
         // The coordinates are the s and t planes divided by the q plane ([`coords_at`]).
         let w = 1.0;
