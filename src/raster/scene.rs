@@ -34,7 +34,8 @@ pub struct TriangleCommand {
     /// The snapped window positions (sub-pixel fixed point) in counter-clockwise order: inside
     /// the guard band, far from the limits of i32.
     xy: [[i32; 2]; 3],
-    /// The primary colour planes are constants (`Interpolants::constant_primary`).
+    /// The primary colour is the same at the three vertices, its planes packed
+    /// ([`TriangleCommand::constant_primary`], `Interpolants::constant_primary`).
     constant_primary: bool,
 }
 
@@ -62,10 +63,18 @@ impl TriangleCommand {
         })
     }
 
-    /// Whether the primary colour planes are constants.
+    /// Whether the primary colour is the same at the three vertices; its four live planes are
+    /// then stored as two, the values packed three to a plane.
     #[inline(always)]
     pub fn constant_primary(&self) -> bool {
         self.constant_primary
+    }
+
+    /// How many planes the triangle has in `Scene::planes` (z, 1/w, the live attributes'),
+    /// for its draw state `ds`.
+    #[inline(always)]
+    pub fn plane_count(&self, ds: &DrawState) -> usize {
+        2 + ds.live_attrs.count_ones() as usize - if self.constant_primary { 2 } else { 0 }
     }
 
     /// Pixels that may be covered.

@@ -186,7 +186,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Triangle(t) => {
                 let ds = &scene.states[t.state as usize];
                 let at = t.planes as usize;
-                let planes = &scene.planes[at..at + 2 + ds.live_attrs.count_ones() as usize];
+                let planes = &scene.planes[at..at + t.plane_count(ds)];
                 if coarse.hides(tile, ds, &planes[0], &t.bbox().intersect(&tile.rect())) {
                     continue;
                 }

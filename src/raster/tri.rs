@@ -18,9 +18,17 @@ pub struct AttrScratch {
 }
 
 impl AttrScratch {
-    /// `live_planes` (in attribute order) spread over `n` slots by `live`.
+    /// `live_planes` (in attribute order) spread over `n` slots by `live`; with
+    /// `packed_primary` the first two hold the constant primary colour three values to a
+    /// plane ([`TriangleCommand::constant_primary`]), spread as constant planes.
     #[inline]
-    fn spread(&mut self, n: usize, live: u64, live_planes: &[Plane]) -> &[Plane] {
+    fn spread(
+        &mut self,
+        n: usize,
+        live: u64,
+        live_planes: &[Plane],
+        packed_primary: bool,
+    ) -> &[Plane] {
         if self.planes.len() != n || self.live != live {
             self.planes.clear();
             self.planes.resize(n, Plane::constant(0.0));
@@ -28,6 +36,18 @@ impl AttrScratch {
         }
         let mut from = live_planes.iter();
         let mut mask = live & ((1u64 << n) - 1);
+        if packed_primary {
+            let (p, q) = (
+                from.next().copied().unwrap_or(Plane::constant(0.0)),
+                from.next().copied().unwrap_or(Plane::constant(0.0)),
+            );
+            for (k, v) in [p.a, p.b, p.c, q.a].into_iter().enumerate() {
+                if let Some(slot) = self.planes.get_mut(attr::COLOR0 + k) {
+                    *slot = Plane::constant(v);
+                }
+            }
+            mask &= !(0xFu64 << attr::COLOR0);
+        }
         while mask != 0 {
             let i = mask.trailing_zeros() as usize;
             mask &= mask - 1;
@@ -58,10 +78,10 @@ pub fn raster_triangle<'a>(
         return;
     }
     let n = ds.attr_count;
-    let attrs: &[Plane] = if ds.live_attrs == (1u64 << n) - 1 {
+    let attrs: &[Plane] = if ds.live_attrs == (1u64 << n) - 1 && !t.constant_primary() {
         &planes[2..]
     } else {
-        scratch.spread(n, ds.live_attrs, &planes[2..])
+        scratch.spread(n, ds.live_attrs, &planes[2..], t.constant_primary())
     };
     let shared = PrimitiveShared::new(levels);
     let it = Interpolants {
@@ -313,30 +333,43 @@ pub fn bin_triangle(
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
     // A primary colour that is the same at the three vertices (lighting off, one glColor, or
     // flat shading) is stored as is and taken without perspective division.
-    let primary = attr::COLOR0..(attr::COLOR0 + 4).min(n);
-    let constant_primary = primary.clone().all(|i| a0[i] == a1[i] && a0[i] == a2[i]);
+    let primary = attr::COLOR0..attr::COLOR0 + 4;
+    let primary_mask = 0xFu64 << attr::COLOR0;
+    let constant_primary = n >= primary.end
+        && ds.live_attrs & primary_mask == primary_mask
+        && primary.clone().all(|i| a0[i] == a1[i] && a0[i] == a2[i]);
     let offset = scene.planes.len() as u32;
     scene.planes.reserve(n + 2);
     scene.planes.push(z);
     scene.planes.push(inv_w);
+    if constant_primary {
+        // Packed three to a plane (`AttrScratch::spread` unpacks them).
+        let c = |k: usize| a0[attr::COLOR0 + k] as f64;
+        scene.planes.push(Plane {
+            a: c(0),
+            b: c(1),
+            c: c(2),
+        });
+        scene.planes.push(Plane {
+            a: c(3),
+            b: 0.0,
+            c: 0.0,
+        });
+    }
     for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
-        if ds.live_attrs & (1 << i) == 0 {
+        if ds.live_attrs & (1 << i) == 0 || (constant_primary && primary.contains(&i)) {
             continue;
         }
-        scene
-            .planes
-            .push(if constant_primary && primary.contains(&i) {
-                Plane::constant(x0 as f64)
-            } else if ds.flat && attr::is_color(i) {
-                let c = x0 as f64;
-                Plane {
-                    a: inv_w.a * c,
-                    b: inv_w.b * c,
-                    c: inv_w.c * c,
-                }
-            } else {
-                setup.plane([x0 as f64 * w[0], x1 as f64 * w[1], x2 as f64 * w[2]])
-            });
+        scene.planes.push(if ds.flat && attr::is_color(i) {
+            let c = x0 as f64;
+            Plane {
+                a: inv_w.a * c,
+                b: inv_w.b * c,
+                c: inv_w.c * c,
+            }
+        } else {
+            setup.plane([x0 as f64 * w[0], x1 as f64 * w[1], x2 as f64 * w[2]])
+        });
     }
 
     // Clipping keeps positions inside the guard band, so the command always fits.
