@@ -461,30 +461,12 @@ struct TexCase {
 fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
     let mut rng = Rng(seed);
     let (w, h) = c.size;
-    let comps = if c.format == GL_RGB { 3 } else { 4 };
-    let texels: Vec<u8> = (0..w * h * comps)
-        .map(|_| (rng.next_u64() >> 56) as u8)
-        .collect();
-    let mut name = [0u32];
-    gl.gen_textures(1, &mut name);
-    gl.bind_texture(GL_TEXTURE_2D, name[0]);
-    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, 1);
+    random_texture(gl, &mut rng, c.format, w, h);
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, c.min as i32);
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, c.mag as i32);
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, c.wrap as i32);
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT as i32);
     gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_LOD_BIAS, c.lod_bias);
-    gl.tex_image_2d(
-        GL_TEXTURE_2D,
-        0,
-        c.format as i32,
-        w,
-        h,
-        0,
-        c.format,
-        GL_UNSIGNED_BYTE,
-        Some(&texels),
-    );
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, c.env as i32);
     gl.enable(GL_TEXTURE_2D);
     gl.enable(GL_DEPTH_TEST);
