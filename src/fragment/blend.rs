@@ -117,3 +117,31 @@ pub fn blend_alpha_over(src: [u8; 4], dst: [u8; 4]) -> [u8; 4] {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The eight-lane tail blends `ONE, ONE` as a saturating byte add (`simd::shade8`): that
+    /// must be exactly what [`blend`] computes, for every pair of bytes.
+    #[test]
+    fn add_one_one_is_a_saturating_byte_add() {
+        let key = BlendKey {
+            equation: BlendEquation::Add,
+            equation_alpha: BlendEquation::Add,
+            src_rgb: BlendFactor::One,
+            dst_rgb: BlendFactor::One,
+            src_alpha: BlendFactor::One,
+            dst_alpha: BlendFactor::One,
+        };
+        assert!(key.is_add_one_one());
+        for s in 0..=255u8 {
+            for d in 0..=255u8 {
+                let src = [s, d, s, 255 - s];
+                let dst = [d, s, 255 - d, d];
+                let want: [u8; 4] = std::array::from_fn(|c| src[c].saturating_add(dst[c]));
+                assert_eq!(blend(&key, src, dst, [0.0; 4]), want, "{src:?} + {dst:?}");
+            }
+        }
+    }
+}

@@ -107,29 +107,42 @@ impl<'a> UnitLevels<'a> {
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
 pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
 
-/// Converts window z to a stored depth value (round to nearest, clamped).
+/// Converts window z to a stored depth value (round to nearest, clamped): `z * max + 0.5`
+/// truncated, NaN and negatives as 0, at most `depth_max` (Rust's `as` saturates, without
+/// branches).
 #[inline(always)]
 pub fn depth_to_fixed(z: f64, depth_max: u32) -> u32 {
-    let v = z * depth_max as f64 + 0.5;
-    if v >= depth_max as f64 {
-        depth_max
-    } else if v > 0.0 {
-        v as u32
-    } else {
-        0
-    }
+    ((z * depth_max as f64 + 0.5) as u32).min(depth_max)
 }
 
-/// Converts a colour component to 8 bits (section 2.14.9: round to nearest after clamping).
+/// Converts a colour component to 8 bits (section 2.14.9: round to nearest after clamping):
+/// `c * 255 + 0.5` truncated, NaN and negatives as 0, at most 255 (Rust's `as` saturates).
 #[inline(always)]
 pub fn color_to_u8(c: f32) -> u8 {
-    let v = c * 255.0 + 0.5;
-    if v >= 255.0 {
-        255
-    } else if v > 0.0 {
-        v as u8
-    } else {
-        0
+    (c * 255.0 + 0.5) as u8
+}
+
+/// [`color_to_u8`] of four components at once, with SSE2 (part of every x86-64 processor):
+/// the fragment paths convert every fragment's colour.
+#[inline(always)]
+pub fn color4_to_u8(c: [f32; 4]) -> [u8; 4] {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE and SSE2 are part of the x86-64 baseline; no memory is accessed.
+    unsafe {
+        use std::arch::x86_64::*;
+        let v = _mm_add_ps(
+            _mm_mul_ps(_mm_setr_ps(c[0], c[1], c[2], c[3]), _mm_set1_ps(255.0)),
+            _mm_set1_ps(0.5),
+        );
+        // max_ps answers its second operand (0) when v is NaN.
+        let v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(255.0));
+        let i = _mm_cvttps_epi32(v);
+        let bytes = _mm_packus_epi16(_mm_packs_epi32(i, i), _mm_setzero_si128());
+        (_mm_cvtsi128_si32(bytes) as u32).to_le_bytes()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        c.map(color_to_u8)
     }
 }
 
@@ -269,7 +282,7 @@ fn finish_fragment<
     if write_depth {
         tile.depth[idx] = depth;
     }
-    let mut rgba = color.map(color_to_u8);
+    let mut rgba = color4_to_u8(color);
     if !SIMPLE {
         let dst = tile.color[idx];
         if let Some(op) = key.logic_op {
@@ -1609,12 +1622,13 @@ pub fn pair_textured<'a, const TEX: u8>(
     let Some(sampler) = sampler else {
         return pair_by_rows(ds, tile, y, rows, it);
     };
-    // Not affine: the fast unit samples one by one as the rows' fallback does.
-    let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
-    let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
+    let modulate = unit.env.mode == TexEnvMode::Modulate;
+    let tail = tail8(ds, modulate, false, TEX == tex_mode::FAST_RGB);
     for_each_block(ds, tile, y, rows, it, |gx, group| {
         let mut tex = [[0f32; 8]; 4];
         if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+            // Not affine: the fast unit samples one by one as the rows' fallback does.
+            let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
             for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
                 let (x, yc) = block_lane_centre(gx, y, lane);
                 let t = if TEX == tex_mode::FAST_RGB {

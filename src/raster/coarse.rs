@@ -63,14 +63,13 @@ impl CoarseDepth {
     fn block_max(&mut self, tile: &Tile, b: usize) -> u32 {
         if self.known & (1 << b) == 0 {
             let (bx, by) = (b % BLOCKS, b / BLOCKS);
-            let mut m = 0;
-            for row in 0..BLOCK {
+            let rows: [&[u32; BLOCK]; BLOCK] = std::array::from_fn(|row| {
                 let start = (by * BLOCK + row) * TILE + bx * BLOCK;
-                m = tile.depth[start..start + BLOCK]
-                    .iter()
-                    .fold(m, |m, &d| m.max(d));
-            }
-            self.max[b] = m;
+                tile.depth[start..start + BLOCK]
+                    .try_into()
+                    .expect("a block row is BLOCK depths")
+            });
+            self.max[b] = block_max(&rows);
             self.known |= 1 << b;
         }
         self.max[b]
@@ -122,6 +121,36 @@ impl CoarseDepth {
     }
 }
 
+/// The largest of a block's depths (AVX2 where the processor has it: without SSE4.1 the
+/// unsigned maximum is not vectorized, and blocks are recomputed after every depth write).
+#[inline]
+fn block_max(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if crate::texture::simd::available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { block_max_avx2(rows) };
+        }
+    }
+    rows.iter().flat_map(|r| r.iter()).fold(0, |m, &d| m.max(d))
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn block_max_avx2(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
+    use std::arch::x86_64::*;
+    let mut m = _mm256_setzero_si256();
+    for row in rows {
+        // SAFETY: each row holds BLOCK = 8 u32, 32 bytes; unaligned load.
+        let v = unsafe { _mm256_loadu_si256(row.as_ptr() as *const __m256i) };
+        m = _mm256_max_epu32(m, v);
+    }
+    let m = _mm_max_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256::<1>(m));
+    let m = _mm_max_epu32(m, _mm_shuffle_epi32::<0b01_00_11_10>(m));
+    let m = _mm_max_epu32(m, _mm_shuffle_epi32::<0b10_11_00_01>(m));
+    _mm_cvtsi128_si32(m) as u32
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -151,6 +180,20 @@ mod tests {
         // The whole tile, and a rectangle beyond it.
         assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 1000, 1000)), u64::MAX);
         assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 64, 1000)), 0);
+    }
+
+    #[test]
+    fn block_max_finds_the_largest_depth_anywhere_in_the_block() {
+        // Every position in turn holds the largest value, including values above 2^31
+        // (unsigned order).
+        for big in [1u32, 77, 0x00FF_FFFF, 0x8000_0001, u32::MAX] {
+            for at in 0..BLOCK * BLOCK {
+                let mut data = [[3u32; BLOCK]; BLOCK];
+                data[at / BLOCK][at % BLOCK] = big;
+                let rows = std::array::from_fn(|r| &data[r]);
+                assert_eq!(block_max(&rows), big.max(3), "{big} at {at}");
+            }
+        }
     }
 
     #[test]

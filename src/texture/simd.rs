@@ -505,14 +505,21 @@ mod x86 {
             _mm256_srli_epi32::<16>(old),
             _mm256_srli_epi32::<24>(old),
         ];
-        let out: [__m256i; 4] = if tail.blend == super::TailBlend::AddOneOne {
-            let mut out = [_mm256_setzero_si256(); 4];
-            for c in 0..4 {
-                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
-                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
-                out[c] = to_u8(_mm256_add_ps(s, d));
-            }
-            out
+        let pack = |out: &[__m256i; 4]| {
+            _mm256_or_si256(
+                _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
+                _mm256_or_si256(
+                    _mm256_slli_epi32::<16>(out[2]),
+                    _mm256_slli_epi32::<24>(out[3]),
+                ),
+            )
+        };
+        let word = if tail.blend == super::TailBlend::AddOneOne {
+            // ONE, ONE: `color_to_u8(s / 255 + d / 255)` is exactly min(s + d, 255) for bytes
+            // s and d (the f32 errors stay far below the 0.5 of rounding;
+            // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
+            // saturation.
+            _mm256_adds_epu8(pack(&src), old)
         } else if tail.blend == super::TailBlend::AlphaOver {
             let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
             let inv = _mm256_sub_ps(one, sa);
@@ -522,7 +529,7 @@ mod x86 {
                 let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
                 out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
             }
-            out
+            pack(&out)
         } else if let super::TailBlend::General(key, constant) = &tail.blend {
             let s: [__m256; 4] = [0, 1, 2, 3].map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
             let d: [__m256; 4] = [0, 1, 2, 3]
@@ -549,17 +556,10 @@ mod x86 {
                 };
                 out[ch] = to_u8(v);
             }
-            out
+            pack(&out)
         } else {
-            src
+            pack(&src)
         };
-        let word = _mm256_or_si256(
-            _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
-            _mm256_or_si256(
-                _mm256_slli_epi32::<16>(out[2]),
-                _mm256_slli_epi32::<24>(out[3]),
-            ),
-        );
         let cm = _mm256_set1_epi32(tail.color_mask as i32);
         let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));
         let word = _mm256_blendv_epi8(old, word, _mm256_castps_si256(keep));
