@@ -1116,6 +1116,28 @@ impl<'a> Perspective8<'a> {
             .is_some()
     }
 
+    /// [`Perspective8::texels_block`] and the tail in one go ([`simd::block_shaded8`]) for a
+    /// block whose live quads take one level: the draw's fixed plan, or magnification of a 2D
+    /// texture. `None` otherwise (the caller takes the usual route: the same pixels).
+    #[inline(always)]
+    fn shaded_block(&self, x: f64, group: &GroupInputs, tail: &Tail8) -> Option<([u32; 8], u8)> {
+        let (level, linear, lod) = match self.fixed_plan {
+            Some((level, linear)) => (level, linear, None),
+            None => (0, self.lod.mag_linear(), Some(self.lod.magnified_test()?)),
+        };
+        simd::block_shaded8(
+            &self.planes,
+            x,
+            &self.level(level)?,
+            linear,
+            lod,
+            group.pass,
+            tail,
+            &group.primary,
+            &group.dst,
+        )
+    }
+
     /// The texels at lane coordinates `s`, `t` into `out` (lanes set in `live`), quad k (lanes
     /// `quads[k]`, x and y derivatives `derivatives(k)`, asked only when λ is needed) with its
     /// own λ and level plan, quads of one plan filtered together.
@@ -1625,6 +1647,9 @@ pub fn pair_textured<'a, const TEX: u8>(
     let modulate = unit.env.mode == TexEnvMode::Modulate;
     let tail = tail8(ds, modulate, false, TEX == tex_mode::FAST_RGB);
     for_each_block(ds, tile, y, rows, it, |gx, group| {
+        if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
+            return Some(shaded);
+        }
         let mut tex = [[0f32; 8]; 4];
         if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
             // Not affine: the fast unit samples one by one as the rows' fallback does.

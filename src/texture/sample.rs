@@ -146,6 +146,21 @@ impl LodSelect {
         ax.max(ay) <= self.magnified_below
     }
 
+    /// What the eight-lane block kernel needs to test [`LodSelect::surely_magnified`] itself
+    /// (`simd::BlockLod`): the threshold and the base level's width and height, for 2D
+    /// textures (`None` for other targets).
+    #[inline(always)]
+    pub fn magnified_test(&self) -> Option<(f32, [f32; 2])> {
+        (self.target == TextureTarget::T2D)
+            .then_some((self.magnified_below, [self.size[0], self.size[1]]))
+    }
+
+    /// Whether magnification filters linearly.
+    #[inline(always)]
+    pub fn mag_linear(&self) -> bool {
+        self.mag_linear
+    }
+
     /// The level plan of magnification (what [`LodSelect::plan`] gives for λ <= c).
     #[inline(always)]
     pub fn magnification(&self) -> LevelPlan {

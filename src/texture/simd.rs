@@ -162,6 +162,43 @@ pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[f64; 
     None
 }
 
+/// How the quads of a block choose their level for [`block_shaded8`]: `None` when the level
+/// is fixed for the draw; `Some((magnified_below, [width, height]))` when every live quad must
+/// be surely magnified (`LodSelect::surely_magnified` on a 2D texture of that base size).
+pub type BlockLod = Option<(f32, [f32; 2])>;
+
+/// A 4x2 block of a perspective textured span in one go: the texture coordinates as
+/// [`perspective_block8`] computes them (rounded to f32, non-finite as 0), each quad's
+/// derivatives and level test as `Perspective8::texels_block` does, [`filter8`] on `level`,
+/// then [`shade8`] with lanes `live`. `None` without AVX2, when a live quad is not surely
+/// magnified (`lod`), or when [`filter8`] would answer `None`: the caller takes the usual
+/// route, which gives the same pixels.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn block_shaded8(
+    planes: &[[[f64; 3]; 3]; 2],
+    x: f64,
+    level: &Level8,
+    linear: bool,
+    lod: BlockLod,
+    live: u8,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    dst: &[u32; 8],
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::block_shaded8(planes, x, level, linear, lod, live, tail, primary, dst)
+            };
+        }
+    }
+    let _ = (planes, x, level, linear, lod, live, tail, primary, dst);
+    None
+}
+
 /// The blending [`shade8`] does: none, the two common cases by their own code, or any other.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TailBlend {
@@ -450,13 +487,32 @@ mod x86 {
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+        let mut tex_v = [_mm256_setzero_ps(); 4];
+        for c in 0..4 {
+            tex_v[c] = load(&tex[c]);
+        }
+        shade8_regs(tail, primary, &tex_v, dst, pass)
+    }
+
+    /// [`shade8`] with the texels in registers.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn shade8_regs(
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        tex: &[__m256; 4],
+        dst: &[u32; 8],
+        pass: u8,
+    ) -> ([u32; 8], u8) {
+        // SAFETY: each array holds eight f32; unaligned loads.
+        let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
         let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
         // c.max(0.0).min(1.0): max_ps answers 0 for NaN.
         // (Loops rather than `array::from_fn`/`map`: closures passed to functions without
         // AVX2 would not be inlined.)
         let mut color = [zero; 4];
         for c in 0..4 {
-            let ct = load(&tex[c]);
+            let ct = tex[c];
             color[c] = if c < 3 && tail.rgb_from_primary {
                 _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one)
             } else if tail.modulate {
@@ -612,6 +668,68 @@ mod x86 {
         _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0))
     }
 
+    /// `finite_or_zero(v as f32)` per lane.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn finite_f32(v: __m256d) -> __m128 {
+        let f = _mm256_cvtpd_ps(v);
+        // f - f is 0 exactly when f is finite.
+        _mm_and_ps(f, _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps()))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn block_shaded8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        level: &Level8,
+        linear: bool,
+        lod: super::BlockLod,
+        live: u8,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+    ) -> Option<([u32; 8], u8)> {
+        let xv = centres4(x);
+        // Lanes 0..4: the lower row (planes[0]); 4..8: the upper row.
+        let [s0, t0] = st_over_q4(&planes[0], xv);
+        let [s1, t1] = st_over_q4(&planes[1], xv);
+        if let Some((magnified_below, [w, h])) = lod {
+            // Quad q is columns 2q, 2q + 1: its x derivative from the upper row, its y
+            // derivative from the left column (in f64, then rounded as the lanes are), in
+            // lanes 0 (q = 0) and 2 (q = 1).
+            let dx = |v: __m256d| finite_f32(_mm256_sub_pd(_mm256_permute_pd::<0b0101>(v), v));
+            let dy = |lo: __m256d, hi: __m256d| finite_f32(_mm256_sub_pd(hi, lo));
+            let (wv, hv) = (_mm_set1_ps(w), _mm_set1_ps(h));
+            let rho2 = |ds: __m128, dt: __m128| {
+                let (u, v) = (_mm_mul_ps(ds, wv), _mm_mul_ps(dt, hv));
+                _mm_add_ps(_mm_mul_ps(u, u), _mm_mul_ps(v, v))
+            };
+            let ax = rho2(dx(s1), dx(t1));
+            let ay = rho2(dy(s0, s1), dy(t0, t1));
+            // Both at most the threshold (false for NaN): then so is their maximum, which is
+            // what `surely_magnified` compares.
+            let below = _mm_set1_ps(magnified_below);
+            let ok = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(ax, below), _mm_cmple_ps(ay, below)));
+            let need = (if live & 0x33 != 0 { 0b0001 } else { 0 })
+                | (if live & 0xCC != 0 { 0b0100 } else { 0 });
+            if ok & need != need {
+                return None;
+            }
+        }
+        // Lanes outside `live` are filtered at 0 (their results are not stored).
+        let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        let keep = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(live as i32), bits),
+            bits,
+        ));
+        let s = _mm256_and_ps(_mm256_set_m128(finite_f32(s1), finite_f32(s0)), keep);
+        let t = _mm256_and_ps(_mm256_set_m128(finite_f32(t1), finite_f32(t0)), keep);
+        let tex = filter8_regs(level, linear, s, t)?;
+        Some(shade8_regs(tail, primary, &tex, dst, live))
+    }
+
     #[inline]
     #[target_feature(enable = "avx2")]
     pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[f64; 8]; 2] {
@@ -701,6 +819,19 @@ mod x86 {
     pub fn filter8(lvl: &Level8, linear: bool, s: &[f32; 8], t: &[f32; 8]) -> Option<Texels8> {
         // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
         let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        let out = filter8_regs(lvl, linear, s, t)?;
+        let mut res = [[0f32; 8]; 4];
+        for c in 0..4 {
+            // SAFETY: `res[c]` holds eight f32; unaligned store.
+            unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
+        }
+        Some(res)
+    }
+
+    /// [`filter8`] with coordinates and texels in registers.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn filter8_regs(lvl: &Level8, linear: bool, s: __m256, t: __m256) -> Option<[__m256; 4]> {
         let [w, h] = lvl.size;
         let [mx, my] = lvl.repeat_mask;
         let out: [__m256; 4] = if !linear {
@@ -725,11 +856,6 @@ mod x86 {
             }
             out
         };
-        let mut res = [[0f32; 8]; 4];
-        for c in 0..4 {
-            // SAFETY: `res[c]` holds eight f32; unaligned store.
-            unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
-        }
-        Some(res)
+        Some(out)
     }
 }
