@@ -5,6 +5,12 @@ use crate::api::convert::{Face, Winding};
 /// Twice the signed area of a polygon given in fixed-point window coordinates (y up):
 /// positive for counter-clockwise.
 pub fn signed_area2(points: &[[i64; 2]]) -> i128 {
+    if let [a, b, c] = points {
+        // A triangle (the common case): the same integer, from two edge vectors.
+        let w = |v: i64| v as i128;
+        return (w(b[0]) - w(a[0])) * (w(c[1]) - w(a[1]))
+            - (w(c[0]) - w(a[0])) * (w(b[1]) - w(a[1]));
+    }
     let n = points.len();
     (0..n)
         .map(|i| {
@@ -29,5 +35,37 @@ pub fn is_culled(cull: Option<Face>, front_facing: bool) -> bool {
         Some(Face::FrontAndBack) => true,
         Some(Face::Front) => front_facing,
         Some(Face::Back) => !front_facing,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn triangle_area_matches_the_shoelace_sum() {
+        let shoelace = |p: &[[i64; 2]]| -> i128 {
+            (0..p.len())
+                .map(|i| {
+                    let (a, b) = (p[i], p[(i + 1) % p.len()]);
+                    a[0] as i128 * b[1] as i128 - b[0] as i128 * a[1] as i128
+                })
+                .sum()
+        };
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 16) as i64 % (1 << 40) - (1 << 39)
+        };
+        for _ in 0..1000 {
+            let tri = [[next(), next()], [next(), next()], [next(), next()]];
+            assert_eq!(signed_area2(&tri), shoelace(&tri));
+        }
+        let ccw = [[0, 0], [4, 0], [0, 4]];
+        assert_eq!(signed_area2(&ccw), 16);
+        let quad = [[0, 0], [4, 0], [4, 4], [0, 4]];
+        assert_eq!(signed_area2(&quad), 32);
     }
 }

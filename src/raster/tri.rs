@@ -356,10 +356,15 @@ pub fn bin_triangle(
             c: 0.0,
         });
     }
-    for (i, ((&x0, &x1), &x2)) in a0.iter().zip(a1).zip(a2).enumerate() {
-        if ds.live_attrs & (1 << i) == 0 || (constant_primary && primary.contains(&i)) {
-            continue;
-        }
+    // The live attributes in order (the planes' layout), the packed primary left out.
+    let mut live = ds.live_attrs & ((1u64 << n) - 1);
+    if constant_primary {
+        live &= !primary_mask;
+    }
+    while live != 0 {
+        let i = live.trailing_zeros() as usize;
+        live &= live - 1;
+        let (x0, x1, x2) = (a0[i], a1[i], a2[i]);
         scene.planes.push(if ds.flat && attr::is_color(i) {
             let c = x0 as f64;
             Plane {
