@@ -47,11 +47,17 @@ impl CoarseDepth {
         if x0 >= x1 || y0 >= y1 {
             return 0;
         }
-        let b = BLOCK as i32;
-        let (bx0, bx1) = ((x0 - tile.x0) / b, (x1 - 1 - tile.x0) / b);
-        let (by0, by1) = ((y0 - tile.y0) / b, (y1 - 1 - tile.y0) / b);
-        let row = ((1u64 << (bx1 + 1)) - 1) & !((1u64 << bx0) - 1);
-        (by0..=by1).fold(0, |m, by| m | row << (BLOCKS as i32 * by))
+        // Offsets inside the tile (not negative): blocks by unsigned division.
+        let b = BLOCK as u32;
+        let (bx0, bx1) = ((x0 - tile.x0) as u32 / b, (x1 - 1 - tile.x0) as u32 / b);
+        let (by0, by1) = ((y0 - tile.y0) as u32 / b, (y1 - 1 - tile.y0) as u32 / b);
+        // Block columns bx0..=bx1 of one block row (eight bits), then a marker bit at the
+        // start of each block row by0..=by1: their product repeats the row on those rows.
+        const _: () = assert!(BLOCKS == 8);
+        let row = (0xFFu64 >> (7 - bx1)) & (0xFFu64 << bx0);
+        let rows =
+            0x0101_0101_0101_0101u64 & (u64::MAX >> (8 * (7 - by1))) & (u64::MAX << (8 * by0));
+        rows * row
     }
 
     /// Forgets the blocks that a command writing depth over `rect` may change.
@@ -192,6 +198,43 @@ mod tests {
                 data[at / BLOCK][at % BLOCK] = big;
                 let rows = std::array::from_fn(|r| &data[r]);
                 assert_eq!(block_max(&rows), big.max(3), "{big} at {at}");
+            }
+        }
+    }
+
+    #[test]
+    fn blocks_of_every_rectangle_inside_a_tile() {
+        let t = tile();
+        let naive = |x0: i32, x1: i32, y0: i32, y1: i32| {
+            let mut m = 0u64;
+            for y in y0..y1 {
+                for x in x0..x1 {
+                    m |= 1 << ((y / 8) * 8 + x / 8);
+                }
+            }
+            m
+        };
+        let ranges: Vec<(i32, i32)> = (0..64)
+            .flat_map(|a| (a + 1..=64).map(move |b| (a, b)))
+            .collect();
+        let block_ranges: Vec<(i32, i32)> = ranges
+            .iter()
+            .copied()
+            .filter(|&(a, b)| a % 3 == 0 || b % 5 == 0)
+            .collect();
+        for &(x0, x1) in &ranges {
+            for &(y0, y1) in &block_ranges {
+                let r = Rect {
+                    x0: t.x0 + x0,
+                    y0: t.y0 + y0,
+                    x1: t.x0 + x1,
+                    y1: t.y0 + y1,
+                };
+                assert_eq!(
+                    CoarseDepth::blocks(&t, &r),
+                    naive(x0, x1, y0, y1),
+                    "{x0}..{x1} x {y0}..{y1}"
+                );
             }
         }
     }

@@ -24,19 +24,33 @@ pub fn generate(
     let mut out = current.to_array();
     // The reflection vector r = u - 2 n (n . u), with u the unit vector from the eye to the
     // vertex (computed once, only when a mode needs it).
-    let mut reflection: Option<Vec3> = None;
-    let mut r = || {
-        *reflection.get_or_insert_with(|| {
-            let e = if eye.w != 0.0 {
-                eye.truncate() / eye.w
-            } else {
-                eye.truncate()
-            };
-            let u = e.normalize_or_zero();
-            u - 2.0 * eye_normal * eye_normal.dot(u)
-        })
+    let reflect = || {
+        let e = if eye.w != 0.0 {
+            eye.truncate() / eye.w
+        } else {
+            eye.truncate()
+        };
+        let u = e.normalize_or_zero();
+        u - 2.0 * eye_normal * eye_normal.dot(u)
     };
     // The sphere map's r and m (shared by s and t).
+    let sphere_of = |r: Vec3| {
+        let m = 2.0 * (r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)).sqrt();
+        (r, m)
+    };
+    let sphere_coord = |c: f32, m: f32| if m > 0.0 { c / m + 0.5 } else { 0.5 };
+    // The usual environment map (s and t by SPHERE_MAP, r and q as they are) without the
+    // general loop's bookkeeping: the same arithmetic.
+    if let [Some(gs), Some(gt), None, None] = gen {
+        if gs.mode == TexGenMode::SphereMap && gt.mode == TexGenMode::SphereMap {
+            let (r, m) = sphere_of(reflect());
+            out[0] = sphere_coord(r.x, m);
+            out[1] = sphere_coord(r.y, m);
+            return Vec4::from_array(out);
+        }
+    }
+    let mut reflection: Option<Vec3> = None;
+    let mut r = || *reflection.get_or_insert_with(reflect);
     let mut sphere: Option<(Vec3, f32)> = None;
     for (i, g) in gen.iter().enumerate() {
         let Some(g) = g else { continue };
@@ -44,17 +58,8 @@ pub fn generate(
             TexGenMode::ObjectLinear => g.plane.dot(object),
             TexGenMode::EyeLinear => g.plane.dot(eye),
             TexGenMode::SphereMap => {
-                let (r, m) = *sphere.get_or_insert_with(|| {
-                    let r = r();
-                    let m = 2.0 * (r.x * r.x + r.y * r.y + (r.z + 1.0) * (r.z + 1.0)).sqrt();
-                    (r, m)
-                });
-                let c = if i == 0 { r.x } else { r.y };
-                if m > 0.0 {
-                    c / m + 0.5
-                } else {
-                    0.5
-                }
+                let (r, m) = *sphere.get_or_insert_with(|| sphere_of(r()));
+                sphere_coord(if i == 0 { r.x } else { r.y }, m)
             }
             TexGenMode::ReflectionMap => r()[i],
             TexGenMode::NormalMap => eye_normal[i],
