@@ -1031,8 +1031,10 @@ impl<'a> Perspective8<'a> {
 
     /// Level `l` prepared for the eight-pixel filter, or `None` when it does not take it.
     #[inline(always)]
-    fn level(&self, l: usize) -> Option<Level8<'a>> {
-        *self.levels.get(l)?
+    fn level(&self, l: usize) -> Option<&'a Level8<'a>> {
+        // A reference into the table, not a copy: the filter reads the level right away, and
+        // a fresh copy's stores would not forward to its wider loads.
+        self.levels.get(l)?.as_ref()
     }
 
     /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
@@ -1079,7 +1081,9 @@ impl<'a> Perspective8<'a> {
 
     /// The sampler of the 4x2 blocks of rows `y` (even) and `y + 1` of the unit at index `k`
     /// of the draw's units ([`Perspective8::texels_block`]), when [`Perspective8::new`] would
-    /// give one.
+    /// give one. (Inlined: built in place, the sampler is not copied through memory, whose
+    /// stores the block kernels' loads of the planes would wait for.)
+    #[inline(always)]
     fn block(
         unit: &'a TextureUnitDraw,
         k: usize,
@@ -1095,6 +1099,21 @@ impl<'a> Perspective8<'a> {
     /// row, `x - 0.5` even (two whole quads). The same texels as [`Perspective8::texels_into`]
     /// gives each pixel on its own row. False when a coordinate is beyond the filter's range.
     fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        // A 2D texture (or a fixed plan) in one go: the same texels.
+        let levels: &[Option<Level8>] = self.levels;
+        if simd::block_texels8(
+            &self.planes,
+            x,
+            live,
+            self.fixed_plan,
+            self.lod,
+            levels,
+            out,
+        )
+        .is_some()
+        {
+            return true;
+        }
         let Some([vs, vt]) = simd::perspective_block8(&self.planes, x) else {
             return false;
         };
@@ -1128,7 +1147,7 @@ impl<'a> Perspective8<'a> {
         simd::block_shaded8(
             &self.planes,
             x,
-            &self.level(level)?,
+            self.level(level)?,
             linear,
             lod,
             group.pass,
@@ -1201,11 +1220,11 @@ impl<'a> Perspective8<'a> {
             lanes &= !done;
             done |= lanes;
             let all = done == 0xFF && lanes == live;
-            let t1 = simd::filter8(&self.level(d1)?, linear, s, t)?;
+            let t1 = simd::filter8(self.level(d1)?, linear, s, t)?;
             let texels = if d2 == d1 {
                 t1
             } else {
-                let t2 = simd::filter8(&self.level(d2)?, linear, s, t)?;
+                let t2 = simd::filter8(self.level(d2)?, linear, s, t)?;
                 let mut mixed = [[0f32; 8]; 4];
                 for c in 0..4 {
                     for j in 0..8 {

@@ -155,6 +155,20 @@ impl LodSelect {
             .then_some((self.magnified_below, [self.size[0], self.size[1]]))
     }
 
+    /// The level plan of a quad whose derivatives of a 2D texture give squared scaled lengths
+    /// `ax` (x) and `ay` (y): what [`LodSelect::surely_magnified`] followed by
+    /// [`LodSelect::plan`] of [`LodSelect::isotropic_lambda`] give for the same derivatives
+    /// (the same arithmetic after the squares).
+    #[inline(always)]
+    pub fn plan_for_rho2(&self, ax: f32, ay: f32) -> LevelPlan {
+        let m = ax.max(ay);
+        if m <= self.magnified_below {
+            self.magnification()
+        } else {
+            self.plan(self.lambda_from_rho(m.sqrt()))
+        }
+    }
+
     /// Whether magnification filters linearly.
     #[inline(always)]
     pub fn mag_linear(&self) -> bool {

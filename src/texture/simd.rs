@@ -6,7 +6,7 @@
 //! `textured_fast_paths_match_the_general_path` checks it.
 
 use super::format::BaseFormat;
-use super::sample::FastLevel;
+use super::sample::{FastLevel, LevelPlan, LodSelect};
 use crate::api::convert::{CompareFunc, WrapMode};
 use crate::fragment::key::BlendKey;
 
@@ -199,6 +199,35 @@ pub fn block_shaded8(
     None
 }
 
+/// The texels of a 4x2 block of a perspective span in one go, as `Perspective8::texels_block`
+/// computes them (coordinates by [`perspective_block8`] rounded to f32, non-finite as 0;
+/// each live quad's level plan from its derivatives, or the draw's `fixed_plan`; quads of one
+/// plan filtered together, two levels mixed per lane) for a 2D texture whose levels are
+/// `levels`; lanes outside `live` are filtered at 0. `None` without AVX2, for other targets,
+/// where a level does not take the filter or [`filter8`] would answer `None` (the caller
+/// then takes the usual route, which gives the same texels).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn block_texels8(
+    planes: &[[[f64; 3]; 3]; 2],
+    x: f64,
+    live: u8,
+    fixed_plan: Option<(usize, bool)>,
+    lod: &LodSelect,
+    levels: &[Option<Level8>],
+    out: &mut Texels8,
+) -> Option<()> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::block_texels8(planes, x, live, fixed_plan, lod, levels, out) };
+        }
+    }
+    let _ = (planes, x, live, fixed_plan, lod, levels, out);
+    None
+}
+
 /// The blending [`shade8`] does: none, the two common cases by their own code, or any other.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TailBlend {
@@ -310,7 +339,7 @@ pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Level8, Sampling8, Tail8, Texels8};
+    use super::{Level8, LevelPlan, LodSelect, Sampling8, Tail8, Texels8};
     use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc};
     use crate::texture::format::BaseFormat;
 
@@ -728,6 +757,148 @@ mod x86 {
         let t = _mm256_and_ps(_mm256_set_m128(finite_f32(t1), finite_f32(t0)), keep);
         let tex = filter8_regs(level, linear, s, t)?;
         Some(shade8_regs(tail, primary, &tex, dst, live))
+    }
+
+    /// The block's coordinates (lanes outside `live` at 0) and, per quad (lanes 0 and 2),
+    /// the squared scaled lengths of its x and y derivatives for a `w` x `h` texture.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn block_coords8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        live: u8,
+        size: Option<[f32; 2]>,
+    ) -> (__m256, __m256, __m128, __m128) {
+        let xv = centres4(x);
+        // Lanes 0..4: the lower row (planes[0]); 4..8: the upper row.
+        let [s0, t0] = st_over_q4(&planes[0], xv);
+        let [s1, t1] = st_over_q4(&planes[1], xv);
+        let (mut ax, mut ay) = (_mm_setzero_ps(), _mm_setzero_ps());
+        if let Some([w, h]) = size {
+            // Quad q is columns 2q, 2q + 1: its x derivative from the upper row, its y
+            // derivative from the left column (in f64, then rounded as the lanes are), in
+            // lanes 0 (q = 0) and 2 (q = 1).
+            let dx = |v: __m256d| finite_f32(_mm256_sub_pd(_mm256_permute_pd::<0b0101>(v), v));
+            let dy = |lo: __m256d, hi: __m256d| finite_f32(_mm256_sub_pd(hi, lo));
+            let (wv, hv) = (_mm_set1_ps(w), _mm_set1_ps(h));
+            let rho2 = |ds: __m128, dt: __m128| {
+                let (u, v) = (_mm_mul_ps(ds, wv), _mm_mul_ps(dt, hv));
+                _mm_add_ps(_mm_mul_ps(u, u), _mm_mul_ps(v, v))
+            };
+            ax = rho2(dx(s1), dx(t1));
+            ay = rho2(dy(s0, s1), dy(t0, t1));
+        }
+        let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        let keep = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(live as i32), bits),
+            bits,
+        ));
+        let s = _mm256_and_ps(_mm256_set_m128(finite_f32(s1), finite_f32(s0)), keep);
+        let t = _mm256_and_ps(_mm256_set_m128(finite_f32(t1), finite_f32(t0)), keep);
+        (s, t, ax, ay)
+    }
+
+    /// The texels of one level plan at `s`, `t`, two levels mixed with `weight` per lane.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn filter_plan8(
+        levels: &[Option<Level8>],
+        (first, second, linear): (usize, usize, bool),
+        weight: __m256,
+        s: __m256,
+        t: __m256,
+    ) -> Option<[__m256; 4]> {
+        let level = |l: usize| levels.get(l)?.as_ref();
+        let t1 = filter8_regs(level(first)?, linear, s, t)?;
+        if second == first {
+            return Some(t1);
+        }
+        let t2 = filter8_regs(level(second)?, linear, s, t)?;
+        let mut mixed = t1;
+        for c in 0..4 {
+            mixed[c] = _mm256_add_ps(t1[c], _mm256_mul_ps(_mm256_sub_ps(t2[c], t1[c]), weight));
+        }
+        Some(mixed)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn block_texels8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        live: u8,
+        fixed_plan: Option<(usize, bool)>,
+        lod: &LodSelect,
+        levels: &[Option<Level8>],
+        out: &mut Texels8,
+    ) -> Option<()> {
+        let store = |out: &mut Texels8, tex: [__m256; 4]| {
+            for c in 0..4 {
+                // SAFETY: `out[c]` holds eight f32; unaligned store.
+                unsafe { _mm256_storeu_ps(out[c].as_mut_ptr(), tex[c]) };
+            }
+        };
+        let zero = _mm256_setzero_ps();
+        if let Some((level, linear)) = fixed_plan {
+            let (s, t, _, _) = block_coords8(planes, x, live, None);
+            store(
+                out,
+                filter_plan8(levels, (level, level, linear), zero, s, t)?,
+            );
+            return Some(());
+        }
+        let (_, size) = lod.magnified_test()?;
+        let (s, t, ax, ay) = block_coords8(planes, x, live, Some(size));
+        let (mut axs, mut ays) = ([0f32; 4], [0f32; 4]);
+        // SAFETY: four f32 each; unaligned stores.
+        unsafe {
+            _mm_storeu_ps(axs.as_mut_ptr(), ax);
+            _mm_storeu_ps(ays.as_mut_ptr(), ay);
+        }
+        // Per quad (lanes 0, 1, 4, 5 and 2, 3, 6, 7), when it has live lanes: its levels and
+        // its weight between them.
+        let plan = |q: usize| match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
+            LevelPlan::One { level, linear } => ((level, level, linear), 0.0),
+            LevelPlan::Two {
+                levels: [a, b],
+                linear,
+                weight,
+            } => ((a, b, linear), weight),
+        };
+        let quad_lanes = [0x33u8, 0xCC];
+        let plans = [0, 1].map(|q| (live & quad_lanes[q] != 0).then(|| plan(q)));
+        let lanes_of = |m: u8| {
+            let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+            _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                _mm256_and_si256(_mm256_set1_epi32(m as i32), bits),
+                bits,
+            ))
+        };
+        let tex = match plans {
+            [Some((p0, w0)), Some((p1, w1))] if p0 == p1 => {
+                // One plan: filtered together, each quad with its own weight.
+                let weight =
+                    _mm256_blendv_ps(_mm256_set1_ps(w1), _mm256_set1_ps(w0), lanes_of(0x33));
+                filter_plan8(levels, p0, weight, s, t)?
+            }
+            [Some((p0, w0)), Some((p1, w1))] => {
+                let a = filter_plan8(levels, p0, _mm256_set1_ps(w0), s, t)?;
+                let b = filter_plan8(levels, p1, _mm256_set1_ps(w1), s, t)?;
+                let first = lanes_of(0x33);
+                let mut tex = a;
+                for c in 0..4 {
+                    tex[c] = _mm256_blendv_ps(b[c], a[c], first);
+                }
+                tex
+            }
+            [Some((p, w)), None] | [None, Some((p, w))] => {
+                filter_plan8(levels, p, _mm256_set1_ps(w), s, t)?
+            }
+            [None, None] => [zero; 4],
+        };
+        store(out, tex);
+        Some(())
     }
 
     #[inline]
