@@ -76,6 +76,47 @@ impl Lanes for Lanes8 {
     }
 }
 
+/// Eight fragments' values of one channel in an AVX2 register, for the environment compiled
+/// inside an AVX2 function (`span::environment8_avx2`): the same operations as [`Lanes8`] lane by lane
+/// (`clamp01` by `max` then `min` with NaN to 0, as `f32::max` and `f32::min` give it).
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy, Debug)]
+pub struct Avx8(pub std::arch::x86_64::__m256);
+
+#[cfg(target_arch = "x86_64")]
+impl Lanes for Avx8 {
+    // SAFETY (every method): these run only inlined into `span::environment8_avx2`, an AVX2
+    // function entered after run-time detection; they touch no memory.
+
+    #[inline(always)]
+    fn splat(v: f32) -> Avx8 {
+        Avx8(unsafe { std::arch::x86_64::_mm256_set1_ps(v) })
+    }
+    #[inline(always)]
+    fn add(self, o: Avx8) -> Avx8 {
+        Avx8(unsafe { std::arch::x86_64::_mm256_add_ps(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn sub(self, o: Avx8) -> Avx8 {
+        Avx8(unsafe { std::arch::x86_64::_mm256_sub_ps(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn mul(self, o: Avx8) -> Avx8 {
+        Avx8(unsafe { std::arch::x86_64::_mm256_mul_ps(self.0, o.0) })
+    }
+    #[inline(always)]
+    fn clamp01(self) -> Avx8 {
+        use std::arch::x86_64::*;
+        // max_ps answers its second operand (0) for NaN.
+        Avx8(unsafe {
+            _mm256_min_ps(
+                _mm256_max_ps(self.0, _mm256_setzero_ps()),
+                _mm256_set1_ps(1.0),
+            )
+        })
+    }
+}
+
 /// R, G, B, A of one fragment or of eight.
 type Rgba<L> = [L; 4];
 
@@ -234,8 +275,29 @@ pub fn combine<L: Lanes>(
     cc: Rgba<L>,
     inputs: &CombineInputs<L>,
 ) -> Rgba<L> {
-    let arg_rgb = |i: usize| operand_rgb(k.op_rgb[i], source(k.src_rgb[i], cf, ct, cc, inputs));
-    let arg_a = |i: usize| operand_alpha(k.op_alpha[i], source(k.src_alpha[i], cf, ct, cc, inputs));
+    // (Functions rather than closures: closures are not always inlined, and the eight-lane
+    // forms must be, to stay in registers.)
+    #[inline(always)]
+    fn arg_rgb<L: Lanes>(
+        k: &Combine,
+        i: usize,
+        (cf, ct, cc): (Rgba<L>, Rgba<L>, Rgba<L>),
+        inputs: &CombineInputs<L>,
+    ) -> [L; 3] {
+        operand_rgb(k.op_rgb[i], source(k.src_rgb[i], cf, ct, cc, inputs))
+    }
+    #[inline(always)]
+    fn arg_alpha<L: Lanes>(
+        k: &Combine,
+        i: usize,
+        (cf, ct, cc): (Rgba<L>, Rgba<L>, Rgba<L>),
+        inputs: &CombineInputs<L>,
+    ) -> L {
+        operand_alpha(k.op_alpha[i], source(k.src_alpha[i], cf, ct, cc, inputs))
+    }
+    let colors = (cf, ct, cc);
+    let arg_rgb = |i: usize| arg_rgb(k, i, colors, inputs);
+    let arg_a = |i: usize| arg_alpha(k, i, colors, inputs);
     // Only INTERPOLATE (and COMBINE4's sums) read the third argument.
     let third = |f: CombineFunc| f == CombineFunc::Interpolate || four;
     let (a0, a1) = (arg_rgb(0), arg_rgb(1));
@@ -410,6 +472,10 @@ mod tests {
                 texels: &texels8,
             };
             let out8 = apply(&env, base, 1, cf, ct, &inputs8);
+            // The AVX2 register form (`Avx8`), where the processor has it.
+            #[cfg(target_arch = "x86_64")]
+            let out_avx = std::arch::is_x86_feature_detected!("avx2")
+                .then(|| apply_avx8(&env, base, [cf, ct, primary, t0, t1]));
             for j in 0..8 {
                 let at = |v: [Lanes8; 4]| v.map(|c| c[j]);
                 let mut texels: [Option<[f32; 4]>; 8] = [None; 8];
@@ -429,7 +495,44 @@ mod tests {
                     bits(at(out8)),
                     "case {case}, lane {j}: {env:?} {base:?}"
                 );
+                #[cfg(target_arch = "x86_64")]
+                if let Some(avx) = out_avx {
+                    assert_eq!(
+                        bits(out),
+                        bits(at(avx)),
+                        "AVX2, case {case}, lane {j}: {env:?} {base:?}"
+                    );
+                }
             }
+        }
+    }
+
+    /// `apply::<Avx8>` on unit 1 with texels of units 0 and 1, as `span::environment8_avx2`
+    /// runs it. The caller checked that the processor has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    fn apply_avx8(
+        env: &TexEnv,
+        base: BaseFormat,
+        [cf, ct, primary, t0, t1]: [[Lanes8; 4]; 5],
+    ) -> [Lanes8; 4] {
+        use std::arch::x86_64::*;
+        // SAFETY: AVX2 is present (checked by the caller); each array holds eight f32
+        // (unaligned loads and stores).
+        unsafe {
+            let load = |v: [Lanes8; 4]| v.map(|c| Avx8(_mm256_loadu_ps(c.as_ptr())));
+            let mut texels: [Option<[Avx8; 4]>; 8] = [None; 8];
+            texels[0] = Some(load(t0));
+            texels[1] = Some(load(t1));
+            let inputs = CombineInputs {
+                primary: load(primary),
+                texels: &texels,
+            };
+            let out = apply(env, base, 1, load(cf), load(ct), &inputs);
+            out.map(|c| {
+                let mut a = [0f32; 8];
+                _mm256_storeu_ps(a.as_mut_ptr(), c.0);
+                a
+            })
         }
     }
 }
