@@ -386,11 +386,11 @@ mod x86 {
         }
     }
 
-    /// The texels at (x, y) as four channel vectors (R, G, B, A after the base format's
-    /// expansion), each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch` converts.
+    /// The stored components of the texels at (x, y) in order, each byte as
+    /// `byte as f32 * (1 / 255)` (the first `components` of the four).
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
+    fn stored8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
         let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(lvl.size[0])), x);
         let base_ptr = match &lvl.tiny {
             Some(t) => t.as_ptr(),
@@ -423,33 +423,43 @@ mod x86 {
         let byte = _mm256_set1_epi32(0xFF);
         let k = _mm256_set1_ps(1.0 / 255.0);
         let ch = |v: __m256i| _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k);
+        // The stored components in order (only the first `components` are read).
+        let mut stored = [_mm256_setzero_ps(); 4];
+        stored[0] = ch(texels);
+        if lvl.components > 1 {
+            stored[1] = ch(_mm256_srli_epi32::<8>(texels));
+        }
+        if lvl.components > 2 {
+            stored[2] = ch(_mm256_srli_epi32::<16>(texels));
+        }
+        if lvl.components > 3 {
+            stored[3] = ch(_mm256_srli_epi32::<24>(texels));
+        }
+        stored
+    }
+
+    /// The texels at (x, y) as four channel vectors (R, G, B, A after the base format's
+    /// expansion), each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch` converts.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
+        expand8(lvl.base, stored8(lvl, x, y))
+    }
+
+    /// R, G, B, A from a texel's stored components by its base format. (Filtering the stored
+    /// components, then expanding, gives what expanding first would: the expansion copies
+    /// components or puts constants, which lerps leave as they are.)
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn expand8(base: BaseFormat, c: [__m256; 4]) -> [__m256; 4] {
         let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-        match lvl.base {
-            BaseFormat::Rgba => [
-                ch(texels),
-                ch(_mm256_srli_epi32::<8>(texels)),
-                ch(_mm256_srli_epi32::<16>(texels)),
-                ch(_mm256_srli_epi32::<24>(texels)),
-            ],
-            BaseFormat::Rgb => [
-                ch(texels),
-                ch(_mm256_srli_epi32::<8>(texels)),
-                ch(_mm256_srli_epi32::<16>(texels)),
-                one,
-            ],
-            BaseFormat::LuminanceAlpha => {
-                let l = ch(texels);
-                [l, l, l, ch(_mm256_srli_epi32::<8>(texels))]
-            }
-            BaseFormat::Intensity => {
-                let i = ch(texels);
-                [i, i, i, i]
-            }
-            BaseFormat::Alpha => [zero, zero, zero, ch(texels)],
-            _ => {
-                let l = ch(texels);
-                [l, l, l, one]
-            }
+        match base {
+            BaseFormat::Rgba => c,
+            BaseFormat::Rgb => [c[0], c[1], c[2], one],
+            BaseFormat::LuminanceAlpha => [c[0], c[0], c[0], c[1]],
+            BaseFormat::Intensity => [c[0]; 4],
+            BaseFormat::Alpha => [zero, zero, zero, c[0]],
+            _ => [c[0], c[0], c[0], one],
         }
     }
 
@@ -1015,17 +1025,18 @@ mod x86 {
             let one = _mm256_set1_epi32(1);
             let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
             let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
-            let t00 = fetch8(lvl, x0, y0);
-            let t10 = fetch8(lvl, x1, y0);
-            let t01 = fetch8(lvl, x0, y1);
-            let t11 = fetch8(lvl, x1, y1);
+            let t00 = stored8(lvl, x0, y0);
+            let t10 = stored8(lvl, x1, y0);
+            let t01 = stored8(lvl, x0, y1);
+            let t11 = stored8(lvl, x1, y1);
+            // Only the stored components are filtered, then expanded.
             let mut out = [_mm256_setzero_ps(); 4];
-            for c in 0..4 {
+            for c in 0..lvl.components as usize {
                 let row0 = lerp(t00[c], t10[c], wx);
                 let row1 = lerp(t01[c], t11[c], wx);
                 out[c] = lerp(row0, row1, wy);
             }
-            out
+            expand8(lvl.base, out)
         };
         Some(out)
     }
