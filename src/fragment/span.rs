@@ -1653,16 +1653,58 @@ fn for_each_block(
         (false, true) => rows[1],
         (false, false) => return,
     };
+    // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
+    // every pixel has the first one's) leaves only z to step per pixel; the lanes' depths are
+    // then rounded and tested eight at a time, and the colour written to the lanes whole.
+    let constant = it
+        .constant_primary
+        .then(|| [0, 1, 2, 3].map(|c| [runs[0].color[c]; 8]));
+    let mut z = [runs[0].z, runs[1].z];
     let mut gx = first & !1;
     while gx < end {
         let mut group = GroupInputs::EMPTY;
         let mut live = 0u8;
-        for (r, &(x0, x1)) in rows.iter().enumerate() {
-            let row = tile.index(gx, y + r as i32);
-            for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
-                let (lane, j) = (4 * r + j as usize, j as usize);
-                group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
-                live |= 1 << lane;
+        if let Some(primary) = constant {
+            let mut lane_z = [0f64; 8];
+            let mut stored = [0u32; 8];
+            for (r, &(x0, x1)) in rows.iter().enumerate() {
+                let row = tile.index(gx, y + r as i32);
+                for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                    let (lane, j) = (4 * r + j as usize, j as usize);
+                    // As `SpanRun::next` steps it.
+                    lane_z[lane] = z[r];
+                    z[r] += runs[r].dz;
+                    stored[lane] = tile.depth[row + j];
+                    group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
+                    live |= 1 << lane;
+                }
+            }
+            group.primary = primary;
+            (group.depth, group.pass) = match depth_max {
+                None => ([0; 8], live),
+                Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
+                    .unwrap_or_else(|| {
+                        let mut depth = [0u32; 8];
+                        let mut pass = 0u8;
+                        for lane in (0..8).filter(|j| live & (1 << j) != 0) {
+                            depth[lane] = depth_to_fixed(lane_z[lane], max);
+                            let ok = match ds.key.depth_func {
+                                None | Some(CompareFunc::Always) => true,
+                                Some(func) => func.test(depth[lane], stored[lane]),
+                            };
+                            pass |= u8::from(ok) << lane;
+                        }
+                        (depth, pass)
+                    }),
+            };
+        } else {
+            for (r, &(x0, x1)) in rows.iter().enumerate() {
+                let row = tile.index(gx, y + r as i32);
+                for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                    let (lane, j) = (4 * r + j as usize, j as usize);
+                    group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
+                    live |= 1 << lane;
+                }
             }
         }
         if group.pass != 0 {

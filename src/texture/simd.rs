@@ -323,6 +323,29 @@ pub fn textured8(
     None
 }
 
+/// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
+/// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
+/// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
+/// and the lanes of `live` that pass. `None` without AVX2 or when `depth_max` needs 32 bits.
+#[inline]
+pub fn depth8(
+    z: &[f64; 8],
+    stored: &[u32; 8],
+    live: u8,
+    depth_max: u32,
+    func: Option<CompareFunc>,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() && depth_max < 1 << 31 {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::depth8(z, stored, live, depth_max, func) });
+        }
+    }
+    let _ = (z, stored, live, depth_max, func);
+    None
+}
+
 /// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
 #[inline(always)]
 pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
@@ -909,6 +932,50 @@ mod x86 {
         };
         store(out, tex);
         Some(())
+    }
+
+    #[target_feature(enable = "avx2")]
+    pub fn depth8(
+        z: &[f64; 8],
+        stored: &[u32; 8],
+        live: u8,
+        depth_max: u32,
+        func: Option<CompareFunc>,
+    ) -> ([u32; 8], u8) {
+        let maxv = _mm256_set1_pd(depth_max as f64);
+        let half = |z: __m256d| {
+            let v = _mm256_add_pd(_mm256_mul_pd(z, maxv), _mm256_set1_pd(0.5));
+            // max_pd answers its second operand (0) when v is NaN.
+            _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(v, _mm256_setzero_pd()), maxv))
+        };
+        // SAFETY: `z` holds eight f64, `stored` eight u32; unaligned loads.
+        let (lo, hi, old) = unsafe {
+            (
+                _mm256_loadu_pd(z.as_ptr()),
+                _mm256_loadu_pd(z.as_ptr().add(4)),
+                _mm256_loadu_si256(stored.as_ptr() as *const __m256i),
+            )
+        };
+        let d = _mm256_set_m128i(half(hi), half(lo));
+        let mut depth = [0u32; 8];
+        // SAFETY: `depth` holds eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(depth.as_mut_ptr() as *mut __m256i, d) };
+        // Unsigned order through signed comparisons: both sides with the top bit flipped.
+        let flip = _mm256_set1_epi32(i32::MIN);
+        let (a, b) = (_mm256_xor_si256(d, flip), _mm256_xor_si256(old, flip));
+        let all = _mm256_set1_epi32(-1);
+        let ok = match func {
+            None | Some(CompareFunc::Always) => all,
+            Some(CompareFunc::Never) => _mm256_setzero_si256(),
+            Some(CompareFunc::Less) => _mm256_cmpgt_epi32(b, a),
+            Some(CompareFunc::LessEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), all),
+            Some(CompareFunc::Equal) => _mm256_cmpeq_epi32(a, b),
+            Some(CompareFunc::Greater) => _mm256_cmpgt_epi32(a, b),
+            Some(CompareFunc::GreaterEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), all),
+            Some(CompareFunc::NotEqual) => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), all),
+        };
+        let pass = _mm256_movemask_ps(_mm256_castsi256_ps(ok)) as u8;
+        (depth, live & pass)
     }
 
     #[inline]
