@@ -1108,3 +1108,84 @@ mod x86 {
         Some(out)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fragment::span::depth_to_fixed;
+
+    /// `depth8` rounds and tests as `depth_to_fixed` and `CompareFunc::test` do one by one, for
+    /// every function, several depth ranges, stored values around the fragments' and z from far
+    /// outside [0, 1] to NaN.
+    #[test]
+    fn depth8_matches_the_scalar_depth_test() {
+        if !available() {
+            return;
+        }
+        let funcs = [
+            None,
+            Some(CompareFunc::Never),
+            Some(CompareFunc::Less),
+            Some(CompareFunc::Equal),
+            Some(CompareFunc::LessEqual),
+            Some(CompareFunc::Greater),
+            Some(CompareFunc::NotEqual),
+            Some(CompareFunc::GreaterEqual),
+            Some(CompareFunc::Always),
+        ];
+        let specials = [
+            0.0,
+            -0.0,
+            1.0,
+            -1e30,
+            1e30,
+            f64::NAN,
+            f64::INFINITY,
+            0.5,
+            1.0 - 1e-9,
+        ];
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        for case in 0..3000 {
+            let max = [0xFFFFu32, 0xFF_FFFF, (1 << 31) - 1][case % 3];
+            let mut z = [0f64; 8];
+            let mut stored = [0u32; 8];
+            for j in 0..8 {
+                let r = next();
+                z[j] = if r % 5 == 0 {
+                    specials[(r >> 8) as usize % specials.len()]
+                } else {
+                    (r >> 11) as f64 / (1u64 << 53) as f64 * 1.2 - 0.1
+                };
+                // Often equal to the fragment's own depth, otherwise near it or anywhere.
+                let own = depth_to_fixed(z[j], max);
+                stored[j] = match next() % 3 {
+                    0 => own,
+                    1 => own
+                        .saturating_add((next() % 3) as u32)
+                        .min(max)
+                        .saturating_sub(1),
+                    _ => (next() % (max as u64 + 1)) as u32,
+                };
+            }
+            let live = (next() & 0xFF) as u8;
+            let func = funcs[case % funcs.len()];
+            let (depth, pass) = depth8(&z, &stored, live, max, func).expect("AVX2, 31 bits");
+            for j in 0..8 {
+                let d = depth_to_fixed(z[j], max);
+                assert_eq!(depth[j], d, "case {case} lane {j}: z {}", z[j]);
+                let ok = match func {
+                    None | Some(CompareFunc::Always) => true,
+                    Some(f) => f.test(d, stored[j]),
+                };
+                let want = ok && live & (1 << j) != 0;
+                assert_eq!(pass & (1 << j) != 0, want, "case {case} lane {j} {func:?}");
+            }
+        }
+    }
+}
