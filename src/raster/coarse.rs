@@ -40,7 +40,7 @@ impl Default for CoarseDepth {
 impl CoarseDepth {
     /// The blocks of `tile` that the window rectangle `rect` touches (none when it misses the
     /// tile).
-    fn blocks(tile: &Tile, rect: &Rect) -> u64 {
+    fn blocks(tile: &Tile, rect: Rect) -> u64 {
         let t = TILE as i32;
         let (x0, x1) = (rect.x0.max(tile.x0), rect.x1.min(tile.x0 + t));
         let (y0, y1) = (rect.y0.max(tile.y0), rect.y1.min(tile.y0 + t));
@@ -61,7 +61,7 @@ impl CoarseDepth {
     }
 
     /// Forgets the blocks that a command writing depth over `rect` may change.
-    pub fn forget(&mut self, tile: &Tile, rect: &Rect) {
+    pub fn forget(&mut self, tile: &Tile, rect: Rect) {
         self.known &= !Self::blocks(tile, rect);
     }
 
@@ -83,7 +83,9 @@ impl CoarseDepth {
 
     /// Whether every fragment of a triangle of draw `ds` with window-z plane `z` whose
     /// fragments lie in `rect` (inside `tile`) fails the depth test.
-    pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: &Rect) -> bool {
+    /// (`rect` by value: built just before the call, it would be read back through memory
+    /// by wide loads its narrow stores cannot forward to.)
+    pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: Rect) -> bool {
         let key = &ds.key;
         let applies = ds.coarse_depth
             && key.stencil.is_none()
@@ -177,15 +179,15 @@ mod tests {
         let t = tile();
         let r = |x0, y0, x1, y1| Rect { x0, y0, x1, y1 };
         // The tile's first block only.
-        assert_eq!(CoarseDepth::blocks(&t, &r(64, 128, 72, 136)), 1);
+        assert_eq!(CoarseDepth::blocks(&t, r(64, 128, 72, 136)), 1);
         // Pixels 71..73 x 135..137 straddle four blocks.
         assert_eq!(
-            CoarseDepth::blocks(&t, &r(71, 135, 73, 137)),
+            CoarseDepth::blocks(&t, r(71, 135, 73, 137)),
             0b11 | 0b11 << 8
         );
         // The whole tile, and a rectangle beyond it.
-        assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 1000, 1000)), u64::MAX);
-        assert_eq!(CoarseDepth::blocks(&t, &r(0, 0, 64, 1000)), 0);
+        assert_eq!(CoarseDepth::blocks(&t, r(0, 0, 1000, 1000)), u64::MAX);
+        assert_eq!(CoarseDepth::blocks(&t, r(0, 0, 64, 1000)), 0);
     }
 
     #[test]
@@ -231,7 +233,7 @@ mod tests {
                     y1: t.y0 + y1,
                 };
                 assert_eq!(
-                    CoarseDepth::blocks(&t, &r),
+                    CoarseDepth::blocks(&t, r),
                     naive(x0, x1, y0, y1),
                     "{x0}..{x1} x {y0}..{y1}"
                 );
@@ -250,7 +252,7 @@ mod tests {
         assert_eq!(c.block_max(&t, 9), 77);
         c.forget(
             &t,
-            &Rect {
+            Rect {
                 x0: 75,
                 y0: 137,
                 x1: 76,

@@ -256,19 +256,19 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Clear(c) => {
                 clear_tile(c, tile);
                 if c.depth.is_some() {
-                    coarse.forget(tile, &c.rect);
+                    coarse.forget(tile, c.rect);
                 }
             }
             Command::Triangle(t) => {
                 let ds = &scene.states[t.state as usize];
                 let at = t.planes as usize;
                 let planes = &scene.planes[at..at + t.plane_count(ds)];
-                if coarse.hides(tile, ds, &planes[0], &t.bbox().intersect(&tile.rect())) {
+                if coarse.hides(tile, ds, &planes[0], t.bbox().intersect(&tile.rect())) {
                     continue;
                 }
                 raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
                 if ds.key.depth_write {
-                    coarse.forget(tile, &t.bbox());
+                    coarse.forget(tile, t.bbox());
                 }
             }
             Command::Rect(r) => {
@@ -285,7 +285,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     shared: &shared,
                 };
                 if ds.key.depth_write {
-                    coarse.forget(tile, &r.rect);
+                    coarse.forget(tile, r.rect);
                 }
                 let t = crate::framebuffer::TILE as i32;
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));
