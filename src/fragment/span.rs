@@ -1345,7 +1345,17 @@ impl SpanRun {
             primary_perspective: it.perspective && !it.constant_primary,
             fog: None,
         };
-        for c in 0..count {
+        // A constant primary colour's planes are 0 x + 0 y + c, which is c + 0 at any pixel
+        // centre (x and y finite and positive): no evaluation needed.
+        let evaluated = if it.constant_primary {
+            for c in 0..count.min(4) {
+                run.color[c] = (it.attrs[attr::color(c)].c + 0.0) as f32;
+            }
+            count.min(4)..count
+        } else {
+            0..count
+        };
+        for c in evaluated {
             run.color[c] = it.attrs[attr::color(c)].at(xc0, yc) as f32;
             run.dcolor[c] = it.attrs[attr::color(c)].a as f32;
         }
