@@ -109,9 +109,10 @@ pub fn raster_triangle<'a>(
             // E(x) = step * x + base, with px = x * SUBPIXEL + half.
             let base = e.b * py + e.c + e.a * half;
             let step = e.a * SUBPIXEL;
-            let need = i64::from(bias) - base; // inside when step * x >= need
-                                               // Quotients by truncating division, rounded up or down by the remainder's sign (one
-                                               // division, fewer fix-ups than the Euclidean forms).
+            // Inside when step * x >= need.
+            let need = i64::from(bias) - base;
+            // Quotients by truncating division, rounded up or down by the remainder's sign
+            // (one division, fewer fix-ups than the Euclidean forms).
             if step > 0 {
                 // ceil(need / step)
                 lo = lo.max(need / step + i64::from(need % step > 0));
