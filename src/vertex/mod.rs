@@ -183,7 +183,11 @@ impl Context {
                     if let Some(w) = inside {
                         // Filled and inside the guard band (the common case): no clipping, no
                         // copies.
-                        let area = signed_area2(&[w[0].xy, w[1].xy, w[2].xy]);
+                        // Inside the guard band coordinates stay below 2^23 sub-pixels, so
+                        // the cross product fits i64 (as `tri::bin_triangle` computes it).
+                        let [a, b, c] = [w[0].xy, w[1].xy, w[2].xy];
+                        let area =
+                            ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])) as i128;
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
                         }
