@@ -82,6 +82,9 @@ impl<'a> PrimitiveShared<'a> {
 #[derive(Clone, Debug, Default)]
 pub struct UnitLevels<'a> {
     units: Vec<[Option<Level8<'a>>; MAX_FAST_LEVELS]>,
+    /// `pair_textured`'s tail for the draw (one REPLACE/MODULATE unit on the fast 2D path,
+    /// fragments finishing eight at a time), built once here instead of per row pair.
+    textured_tail: Option<Tail8>,
 }
 
 impl<'a> UnitLevels<'a> {
@@ -89,8 +92,16 @@ impl<'a> UnitLevels<'a> {
     /// `simd_units`, which the eight-pixel samplers require).
     pub fn prepare(&mut self, ds: &'a DrawState) {
         self.units.clear();
+        self.textured_tail = None;
         if !ds.key.simd_units || !simd::available() {
             return;
+        }
+        if let (Some(layout), Some(unit)) = (ds.key.fast_texture, ds.units.first()) {
+            if tail8_applies(&ds.key) {
+                let modulate = unit.env.mode == TexEnvMode::Modulate;
+                let rgb = layout == super::key::FastTexture::Rgb;
+                self.textured_tail = Some(tail8(ds, modulate, false, rgb));
+            }
         }
         for unit in &ds.units {
             let tex = &unit.texture;
@@ -1758,16 +1769,15 @@ pub fn pair_textured<'a, const TEX: u8>(
     let q = &it.attrs[attr::TEX + 4 * unit.unit + 3];
     // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
     let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
-    let sampler = if affine || it.coverage != 1.0 || !tail8_applies(&ds.key) {
-        None
-    } else {
-        Perspective8::block(unit, 0, it, y)
+    // The tail (prepared with the levels) exists where the eight-fragment tail applies.
+    let tail = it.shared.levels.textured_tail;
+    let sampler = match tail {
+        Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, y),
+        _ => None,
     };
-    let Some(sampler) = sampler else {
+    let (Some(sampler), Some(tail)) = (sampler, tail) else {
         return pair_by_rows(ds, tile, y, rows, it);
     };
-    let modulate = unit.env.mode == TexEnvMode::Modulate;
-    let tail = tail8(ds, modulate, false, TEX == tex_mode::FAST_RGB);
     for_each_block(ds, tile, y, rows, it, |gx, group| {
         if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
             return Some(shaded);
