@@ -1499,12 +1499,18 @@ impl GroupInputs {
             self.primary[c][j] = color[c];
         }
         self.depth[j] = d;
-        let ok = match ds.key.depth_func {
-            None | Some(CompareFunc::Always) => true,
-            Some(func) => func.test(d, tile.depth[index]),
-        };
-        self.pass |= u8::from(ok) << j;
+        self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
         self.dst[j] = u32::from_le_bytes(tile.color[index]);
+    }
+}
+
+/// Whether a fragment of stored depth `d` passes the eight-lane paths' depth test against
+/// `stored` (no test, or `ALWAYS`: it passes).
+#[inline(always)]
+fn depth_passes(ds: &DrawState, d: u32, stored: u32) -> bool {
+    match ds.key.depth_func {
+        None | Some(CompareFunc::Always) => true,
+        Some(func) => func.test(d, stored),
     }
 }
 
@@ -1709,10 +1715,7 @@ fn for_each_block(
                         let mut pass = 0u8;
                         for lane in (0..8).filter(|j| live & (1 << j) != 0) {
                             depth[lane] = depth_to_fixed(lane_z[lane], max);
-                            let ok = match ds.key.depth_func {
-                                None | Some(CompareFunc::Always) => true,
-                                Some(func) => func.test(depth[lane], stored[lane]),
-                            };
+                            let ok = depth_passes(ds, depth[lane], stored[lane]);
                             pass |= u8::from(ok) << lane;
                         }
                         (depth, pass)

@@ -586,12 +586,7 @@ mod x86 {
                 ct
             };
         }
-        let lanes = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
-        let live = _mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(pass as i32), lanes),
-            lanes,
-        );
-        let mut keep = _mm256_castsi256_ps(live);
+        let mut keep = lane_mask(pass);
         if let Some((func, reference)) = tail.alpha_test {
             // alpha.clamp(0.0, 1.0), keeping NaN (min_ps and max_ps answer their second
             // operand for NaN), then `alpha OP reference` as `CompareFunc::test`.
@@ -730,6 +725,17 @@ mod x86 {
         _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0))
     }
 
+    /// All ones in the lanes whose bit is set in `m`, zeros elsewhere.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn lane_mask(m: u8) -> __m256 {
+        let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+            _mm256_and_si256(_mm256_set1_epi32(m as i32), bits),
+            bits,
+        ))
+    }
+
     /// `finite_or_zero(v as f32)` per lane.
     #[inline]
     #[target_feature(enable = "avx2")]
@@ -753,23 +759,8 @@ mod x86 {
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
     ) -> Option<([u32; 8], u8)> {
-        let xv = centres4(x);
-        // Lanes 0..4: the lower row (planes[0]); 4..8: the upper row.
-        let [s0, t0] = st_over_q4(&planes[0], xv);
-        let [s1, t1] = st_over_q4(&planes[1], xv);
-        if let Some((magnified_below, [w, h])) = lod {
-            // Quad q is columns 2q, 2q + 1: its x derivative from the upper row, its y
-            // derivative from the left column (in f64, then rounded as the lanes are), in
-            // lanes 0 (q = 0) and 2 (q = 1).
-            let dx = |v: __m256d| finite_f32(_mm256_sub_pd(_mm256_permute_pd::<0b0101>(v), v));
-            let dy = |lo: __m256d, hi: __m256d| finite_f32(_mm256_sub_pd(hi, lo));
-            let (wv, hv) = (_mm_set1_ps(w), _mm_set1_ps(h));
-            let rho2 = |ds: __m128, dt: __m128| {
-                let (u, v) = (_mm_mul_ps(ds, wv), _mm_mul_ps(dt, hv));
-                _mm_add_ps(_mm_mul_ps(u, u), _mm_mul_ps(v, v))
-            };
-            let ax = rho2(dx(s1), dx(t1));
-            let ay = rho2(dy(s0, s1), dy(t0, t1));
+        let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
+        if let Some((magnified_below, _)) = lod {
             // Both at most the threshold (false for NaN): then so is their maximum, which is
             // what `surely_magnified` compares.
             let below = _mm_set1_ps(magnified_below);
@@ -780,14 +771,6 @@ mod x86 {
                 return None;
             }
         }
-        // Lanes outside `live` are filtered at 0 (their results are not stored).
-        let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
-        let keep = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(live as i32), bits),
-            bits,
-        ));
-        let s = _mm256_and_ps(_mm256_set_m128(finite_f32(s1), finite_f32(s0)), keep);
-        let t = _mm256_and_ps(_mm256_set_m128(finite_f32(t1), finite_f32(t0)), keep);
         let tex = filter8_regs(level, linear, s, t)?;
         Some(shade8_regs(tail, primary, &tex, dst, live))
     }
@@ -821,11 +804,8 @@ mod x86 {
             ax = rho2(dx(s1), dx(t1));
             ay = rho2(dy(s0, s1), dy(t0, t1));
         }
-        let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
-        let keep = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-            _mm256_and_si256(_mm256_set1_epi32(live as i32), bits),
-            bits,
-        ));
+        // Lanes outside `live` are filtered at 0 (their results are not stored).
+        let keep = lane_mask(live);
         let s = _mm256_and_ps(_mm256_set_m128(finite_f32(s1), finite_f32(s0)), keep);
         let t = _mm256_and_ps(_mm256_set_m128(finite_f32(t1), finite_f32(t0)), keep);
         (s, t, ax, ay)
@@ -901,24 +881,17 @@ mod x86 {
         };
         let quad_lanes = [0x33u8, 0xCC];
         let plans = [0, 1].map(|q| (live & quad_lanes[q] != 0).then(|| plan(q)));
-        let lanes_of = |m: u8| {
-            let bits = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
-            _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                _mm256_and_si256(_mm256_set1_epi32(m as i32), bits),
-                bits,
-            ))
-        };
         let tex = match plans {
             [Some((p0, w0)), Some((p1, w1))] if p0 == p1 => {
                 // One plan: filtered together, each quad with its own weight.
                 let weight =
-                    _mm256_blendv_ps(_mm256_set1_ps(w1), _mm256_set1_ps(w0), lanes_of(0x33));
+                    _mm256_blendv_ps(_mm256_set1_ps(w1), _mm256_set1_ps(w0), lane_mask(0x33));
                 filter_plan8(levels, p0, weight, s, t)?
             }
             [Some((p0, w0)), Some((p1, w1))] => {
                 let a = filter_plan8(levels, p0, _mm256_set1_ps(w0), s, t)?;
                 let b = filter_plan8(levels, p1, _mm256_set1_ps(w1), s, t)?;
-                let first = lanes_of(0x33);
+                let first = lane_mask(0x33);
                 let mut tex = a;
                 for c in 0..4 {
                     tex[c] = _mm256_blendv_ps(b[c], a[c], first);
