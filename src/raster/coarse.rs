@@ -11,6 +11,7 @@
 
 use super::setup::{Plane, Rect};
 use crate::api::convert::CompareFunc;
+use crate::fragment::key::FragmentKey;
 use crate::fragment::span::depth_to_fixed;
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
@@ -86,14 +87,7 @@ impl CoarseDepth {
     /// (`rect` by value: built just before the call, it would be read back through memory
     /// by wide loads its narrow stores cannot forward to.)
     pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: Rect) -> bool {
-        let key = &ds.key;
-        let applies = ds.coarse_depth
-            && key.stencil.is_none()
-            && matches!(
-                key.depth_func,
-                Some(CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal)
-            );
-        if !applies || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
+        if !ds.coarse_depth || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
             return false;
         }
         // The plane is smallest at a corner of the rectangle of pixel centres. The spans
@@ -104,9 +98,7 @@ impl CoarseDepth {
         // of pixels away makes `b * y` and `c` large while z stays in [0, 1]).
         let (xa, xb) = (rect.x0 as f64 + 0.5, rect.x1 as f64 - 0.5);
         let (ya, yb) = (rect.y0 as f64 + 0.5, rect.y1 as f64 - 0.5);
-        let zmin = [z.at(xa, ya), z.at(xb, ya), z.at(xa, yb), z.at(xb, yb)]
-            .into_iter()
-            .fold(f64::INFINITY, f64::min);
+        let zmin = lowest_corner(z, xa, xb, ya, yb);
         let terms = z.a.abs() * xa.abs().max(xb.abs())
             + z.b.abs() * ya.abs().max(yb.abs())
             + z.c.abs()
@@ -127,6 +119,25 @@ impl CoarseDepth {
         }
         true
     }
+}
+
+/// The least of `z` at the four corners (`Plane::at`) of `xa..=xb` x `ya..=yb`, evaluated once:
+/// rounded addition does not decrease in either argument, so the smaller products give exactly
+/// the least of the four evaluations.
+#[inline(always)]
+fn lowest_corner(z: &Plane, xa: f64, xb: f64, ya: f64, yb: f64) -> f64 {
+    (z.a * xa).min(z.a * xb) + (z.b * ya).min(z.b * yb) + z.c
+}
+
+/// Whether a key's fragments that fail the depth test change nothing, and a triangle whose
+/// fragments are all farther than the stored depths therefore fails everywhere: a `LESS`,
+/// `LEQUAL` or `EQUAL` depth test and no stencil test.
+pub fn applies(key: &FragmentKey) -> bool {
+    key.stencil.is_none()
+        && matches!(
+            key.depth_func,
+            Some(CompareFunc::Less | CompareFunc::LessEqual | CompareFunc::Equal)
+        )
 }
 
 /// The largest of a block's depths (AVX2 where the processor has it: without SSE4.1 the
@@ -238,6 +249,36 @@ mod tests {
                     "{x0}..{x1} x {y0}..{y1}"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn lowest_corner_is_the_least_of_the_four_evaluations() {
+        // Planes of every sign and magnitude (tiny to huge, cancelling terms), random corners.
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let unit = (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            unit * 10f64.powi((seed % 17) as i32 - 8)
+        };
+        for _ in 0..100_000 {
+            let z = Plane {
+                a: next(),
+                b: next(),
+                c: next(),
+            };
+            let (x, y) = (next().abs() * 1e-3, next().abs() * 1e-3);
+            let (xa, xb, ya, yb) = (x, x + next().abs(), y, y + next().abs());
+            let four = [z.at(xa, ya), z.at(xb, ya), z.at(xa, yb), z.at(xb, yb)]
+                .into_iter()
+                .fold(f64::INFINITY, f64::min);
+            assert_eq!(
+                lowest_corner(&z, xa, xb, ya, yb),
+                four,
+                "{z:?} {xa} {xb} {ya} {yb}"
+            );
         }
     }
 

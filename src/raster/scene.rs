@@ -174,7 +174,7 @@ impl Scene {
     }
 
     /// Records `cmd` in every tile that `rect` touches.
-    #[inline]
+    #[inline(always)]
     pub fn bin(&mut self, cmd: Command, rect: Rect) {
         if rect.is_empty() {
             return;

@@ -241,7 +241,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     // A triangle's attribute planes spread over the full layout.
     let mut attrs = AttrScratch::default();
     let mut coarse = CoarseDepth::default();
-    for &ci in bin {
+    for (k, &ci) in bin.iter().enumerate() {
+        prefetch_ahead(scene, bin, k);
         let command = &scene.commands[ci as usize];
         let state = match command {
             Command::Clear(_) => None,
@@ -294,6 +295,43 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     for y in y0..y1 {
                         (ds.span)(ds, tile, y, x0, x1, &it);
                     }
+                }
+            }
+        }
+    }
+}
+
+/// Bin entries ahead of the one being shaded whose command, and (nearer) whose planes, are
+/// prefetched: the front end wrote them long before (or on another core), and a tile's
+/// commands are scattered over the scene, so each first touch would otherwise wait on memory.
+const PREFETCH_COMMAND_AHEAD: usize = 8;
+const PREFETCH_PLANES_AHEAD: usize = 4;
+
+#[inline(always)]
+fn prefetch_ahead(scene: &Scene, bin: &[u32], k: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let prefetch = |p: *const u8| {
+            // SAFETY: a prefetch is only a hint: it never faults or changes memory, whatever
+            // the address.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(p as *const i8) }
+        };
+        if let Some(c) = bin
+            .get(k + PREFETCH_COMMAND_AHEAD)
+            .and_then(|&c| scene.commands.get(c as usize))
+        {
+            prefetch(c as *const Command as *const u8);
+        }
+        if let Some(Command::Triangle(t)) = bin
+            .get(k + PREFETCH_PLANES_AHEAD)
+            .and_then(|&c| scene.commands.get(c as usize))
+        {
+            if let Some(p) = scene.planes.get(t.planes as usize) {
+                let p = p as *const Plane as *const u8;
+                // Up to six planes of 24 bytes: three cache lines.
+                for line in 0..3 {
+                    prefetch(p.wrapping_add(64 * line));
                 }
             }
         }

@@ -224,7 +224,8 @@ pub struct DrawState {
     /// The function that shades the rows of a triangle together, for keys that have one.
     pub span_pair: Option<PairFn>,
     /// Whether triangles hidden behind the stored depths are dropped before rasterizing
-    /// (`raster::coarse`); off on the general path, so twin tests compare both.
+    /// (`raster::coarse`): the key allows it (`coarse::applies`), and off on the general path,
+    /// so twin tests compare both.
     pub coarse_depth: bool,
 }
 
@@ -387,7 +388,7 @@ impl Context {
             uniforms,
             span: select_span(&key, self.force_general_path),
             span_pair: select_pair(&key, self.force_general_path),
-            coarse_depth: !self.force_general_path,
+            coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
         });
         self.draw_state = Some(ds.clone());
         ds
