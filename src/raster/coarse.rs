@@ -84,8 +84,9 @@ impl CoarseDepth {
 
     /// Whether every fragment of a triangle of draw `ds` with window-z plane `z` whose
     /// fragments lie in `rect` (inside `tile`) fails the depth test.
-    /// (`rect` by value: built just before the call, it would be read back through memory
-    /// by wide loads its narrow stores cannot forward to.)
+    /// (Inlined, `rect` by value: built just before the call, it would otherwise be passed
+    /// through memory and read back by wide loads its narrow stores cannot forward to.)
+    #[inline(always)]
     pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: Rect) -> bool {
         if !ds.coarse_depth || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
             return false;
