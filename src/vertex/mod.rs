@@ -21,6 +21,8 @@ use std::sync::Arc;
 /// Batches at least this large are transformed in parallel (below, the hand-off costs more
 /// than it saves).
 const PARALLEL_TRANSFORM_MIN: usize = 4096;
+/// Vertices per parallel transform job (a multiple of the eight lanes of `to_clip_batch`).
+const TRANSFORM_CHUNK: usize = 256;
 
 /// Flat shading: every vertex of a primitive takes the provoking vertex's colours (front and
 /// back), before clipping so that clipped vertices inherit them too.
@@ -80,18 +82,16 @@ impl Context {
             {
                 use rayon::prelude::*;
                 pool.install(|| {
-                    clip.par_iter_mut()
-                        .zip(verts.par_iter())
-                        .for_each(|(c, v)| transform::to_clip_into(&ds, v, c));
+                    clip.par_chunks_mut(TRANSFORM_CHUNK)
+                        .zip(verts.par_chunks(TRANSFORM_CHUNK))
+                        .for_each(|(c, v)| transform::to_clip_batch(&ds, v, c));
                     if shared_windows {
                         windows.par_extend(clip.par_iter().map(window));
                     }
                 });
             }
             _ => {
-                for (c, v) in clip.iter_mut().zip(verts) {
-                    transform::to_clip_into(&ds, v, c);
-                }
+                transform::to_clip_batch(&ds, verts, &mut clip);
                 if shared_windows {
                     windows.extend(clip.iter().map(window));
                 }

@@ -20,6 +20,68 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
 /// reused buffer instead of being built and then copied (a clip vertex is 264 bytes).
 #[inline]
 pub fn to_clip_into(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex) {
+    to_clip_except(ds, v, out, false);
+}
+
+/// [`to_clip_into`] for a batch (`out[i]` from `verts[i]`): units whose generation is the
+/// sphere map (`texgen::is_sphere_map`) get it eight vertices at a time
+/// (`texgen::sphere_map8`, the same values). The same clip vertices as one by one.
+pub fn to_clip_batch(ds: &DrawState, verts: &[ImmVertex], out: &mut [ClipVertex]) {
+    let deferred = crate::texture::simd::available()
+        && ds.units.iter().any(|u| texgen::is_sphere_map(&u.texgen));
+    if !deferred {
+        for (c, v) in out.iter_mut().zip(verts) {
+            to_clip_into(ds, v, c);
+        }
+        return;
+    }
+    for (vs, cs) in verts.chunks(8).zip(out.chunks_mut(8)) {
+        for (c, v) in cs.iter_mut().zip(vs) {
+            to_clip_except(ds, v, c, true);
+        }
+        for u in ds.units.iter().filter(|u| texgen::is_sphere_map(&u.texgen)) {
+            let mut eye = [[0f32; 8]; 4];
+            let mut normal = [[0f32; 8]; 3];
+            let normals: Vec3x8 = std::array::from_fn(|lane| {
+                vs.get(lane)
+                    .map(|v| ds.normal_transform.apply(v.normal, ds.normalize))
+            });
+            for (lane, c) in cs.iter().enumerate() {
+                let e = c.eye.as_vec4().to_array();
+                for k in 0..4 {
+                    eye[k][lane] = e[k];
+                }
+                if let Some(n) = normals[lane] {
+                    for k in 0..3 {
+                        normal[k][lane] = n[k];
+                    }
+                }
+            }
+            let st = texgen::sphere_map8(&eye, &normal);
+            for (lane, (c, v)) in cs.iter_mut().zip(vs).enumerate() {
+                let mut tc = v.texcoords[u.unit];
+                match st {
+                    Some(st) => (tc.x, tc.y) = (st[0][lane], st[1][lane]),
+                    None => {
+                        let n = normals[lane].unwrap_or_default();
+                        tc = texgen::generate(&u.texgen, tc, v.position, c.eye.as_vec4(), n);
+                    }
+                }
+                let tc = u.matrix * tc;
+                c.attrs[attr::TEX + 4 * u.unit..attr::TEX + 4 * u.unit + 4]
+                    .copy_from_slice(&tc.to_array());
+            }
+        }
+    }
+}
+
+/// Eye normals of up to eight vertices.
+type Vec3x8 = [Option<glam::Vec3>; 8];
+
+/// [`to_clip_into`], leaving the texture coordinates of sphere-mapped units (0) to the caller
+/// when `defer_sphere_map`.
+#[inline(always)]
+fn to_clip_except(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex, defer_sphere_map: bool) {
     let pos = (ds.mvp * v.position).as_dvec4();
     let needs_eye = !ds.clip_planes.is_empty()
         || ds.raster.point_attenuation.is_some()
@@ -50,6 +112,9 @@ pub fn to_clip_into(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex) {
         }
     }
     for u in &ds.units {
+        if defer_sphere_map && texgen::is_sphere_map(&u.texgen) {
+            continue;
+        }
         let mut tc = v.texcoords[u.unit];
         if u.texgen.iter().any(|g| g.is_some()) {
             let n = ds.normal_transform.apply(v.normal, ds.normalize);
