@@ -1688,12 +1688,17 @@ fn for_each_block(
         .then(|| [0, 1, 2, 3].map(|c| [runs[0].color[c]; 8]));
     let mut z = [runs[0].z, runs[1].z];
     let mut gx = first & !1;
+    // With a constant colour every lane's inputs are written for each block (the colour
+    // once): lanes outside a block's covered ones keep stale values, which nothing reads.
+    let mut group = GroupInputs::EMPTY;
+    if let Some(primary) = constant {
+        group.primary = primary;
+    }
+    let mut lane_z = [0f64; 8];
+    let mut stored = [0u32; 8];
     while gx < end {
-        let mut group = GroupInputs::EMPTY;
         let mut live = 0u8;
-        if let Some(primary) = constant {
-            let mut lane_z = [0f64; 8];
-            let mut stored = [0u32; 8];
+        if constant.is_some() {
             for (r, &(x0, x1)) in rows.iter().enumerate() {
                 let row = tile.index(gx, y + r as i32);
                 for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
@@ -1706,7 +1711,6 @@ fn for_each_block(
                     live |= 1 << lane;
                 }
             }
-            group.primary = primary;
             (group.depth, group.pass) = match depth_max {
                 None => ([0; 8], live),
                 Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
@@ -1722,6 +1726,7 @@ fn for_each_block(
                     }),
             };
         } else {
+            group = GroupInputs::EMPTY;
             for (r, &(x0, x1)) in rows.iter().enumerate() {
                 let row = tile.index(gx, y + r as i32);
                 for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
