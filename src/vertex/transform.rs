@@ -135,3 +135,89 @@ fn to_clip_except(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex, defer_sph
     out.eye = eye;
     out.edge = v.edge_flag;
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::{Vec3, Vec4};
+
+    use super::*;
+    use crate::api::enums::*;
+    use crate::state::Context;
+
+    /// The batch path (sphere-mapped units eight vertices at a time) gives every clip vertex
+    /// bit for bit as one by one: two sphere-mapped units, one under a texture matrix, beside
+    /// an object-linear one, for batch lengths around multiples of eight.
+    #[test]
+    fn batches_transform_as_vertices_one_by_one() {
+        let mut gl = Context::new(16, 16);
+        gl.matrix_mode(GL_MODELVIEW);
+        gl.translatef(0.1, -0.2, -3.0);
+        gl.rotatef(30.0, 1.0, 0.5, 0.0);
+        gl.enable(GL_NORMALIZE);
+        let texel = [200u8, 100, 50, 255];
+        for unit in 0..3 {
+            gl.active_texture(GL_TEXTURE0 + unit);
+            gl.tex_image_2d(
+                GL_TEXTURE_2D,
+                0,
+                GL_RGBA as i32,
+                1,
+                1,
+                0,
+                GL_RGBA,
+                GL_UNSIGNED_BYTE,
+                Some(&texel),
+            );
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_TEXTURE_GEN_S);
+            gl.enable(GL_TEXTURE_GEN_T);
+            let mode = if unit == 2 {
+                GL_OBJECT_LINEAR
+            } else {
+                GL_SPHERE_MAP
+            };
+            gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, mode as i32);
+            gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, mode as i32);
+        }
+        gl.active_texture(GL_TEXTURE1);
+        gl.matrix_mode(GL_TEXTURE);
+        gl.rotatef(40.0, 0.0, 0.0, 1.0);
+        gl.scalef(2.0, 0.5, 1.0);
+        let ds = gl.snapshot();
+        assert_eq!(ds.units.len(), 3);
+        let mut seed = 0x5EED_1234_ABCD_0001u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f32 / (1u64 << 24) as f32 * 4.0 - 2.0
+        };
+        for n in [1, 7, 8, 9, 16, 23] {
+            let verts: Vec<ImmVertex> = (0..n)
+                .map(|_| {
+                    let position = Vec4::new(next(), next(), next(), 1.0);
+                    let texcoords = std::array::from_fn(|_| Vec4::new(next(), next(), next(), 1.0));
+                    ImmVertex {
+                        position,
+                        color: Vec4::new(next(), next(), next(), 1.0),
+                        secondary_color: Vec4::ZERO,
+                        back_colors: [Vec4::ONE; 2],
+                        normal: Vec3::new(next(), next(), next()),
+                        texcoords,
+                        fog_coord: 0.0,
+                        edge_flag: true,
+                    }
+                })
+                .collect();
+            let mut batch = vec![ClipVertex::ZERO; n];
+            to_clip_batch(&ds, &verts, &mut batch);
+            for (i, (b, v)) in batch.iter().zip(&verts).enumerate() {
+                let one = to_clip(&ds, v);
+                assert_eq!(b.pos, one.pos, "batch of {n}, vertex {i}");
+                let bits = |c: &ClipVertex| c.attrs.map(f32::to_bits);
+                assert_eq!(bits(b), bits(&one), "batch of {n}, vertex {i}");
+            }
+        }
+    }
+}
