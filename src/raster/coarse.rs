@@ -100,8 +100,9 @@ impl CoarseDepth {
         let (xa, xb) = (rect.x0 as f64 + 0.5, rect.x1 as f64 - 0.5);
         let (ya, yb) = (rect.y0 as f64 + 0.5, rect.y1 as f64 - 0.5);
         let zmin = lowest_corner(z, xa, xb, ya, yb);
-        let terms = z.a.abs() * xa.abs().max(xb.abs())
-            + z.b.abs() * ya.abs().max(yb.abs())
+        let most = |p: f64, q: f64| if q > p { q } else { p };
+        let terms = z.a.abs() * most(xa.abs(), xb.abs())
+            + z.b.abs() * most(ya.abs(), yb.abs())
             + z.c.abs()
             + z.a.abs() * TILE as f64;
         let margin = 1e-9 + 256.0 * f64::EPSILON * terms;
@@ -127,7 +128,10 @@ impl CoarseDepth {
 /// the least of the four evaluations.
 #[inline(always)]
 fn lowest_corner(z: &Plane, xa: f64, xb: f64, ya: f64, yb: f64) -> f64 {
-    (z.a * xa).min(z.a * xb) + (z.b * ya).min(z.b * yb) + z.c
+    // Plain comparisons, not `f64::min` (whose NaN handling costs more): the callers pass
+    // finite planes and corners, whose products are not NaN.
+    let least = |p: f64, q: f64| if q < p { q } else { p };
+    least(z.a * xa, z.a * xb) + least(z.b * ya, z.b * yb) + z.c
 }
 
 /// Whether a key's fragments that fail the depth test change nothing, and a triangle whose

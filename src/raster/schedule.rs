@@ -118,10 +118,17 @@ impl Context {
     /// `triangles`). Scenes still execute one after the other and each tile replays its bins
     /// in order, so pictures do not change. A single worker (`threads` = 1) keeps flushing
     /// synchronously, so "one thread" means one.
+    #[inline]
     pub(crate) fn flush_in_background(&mut self) {
-        if self.scene.commands.len() < BACKGROUND_COMMANDS {
-            return;
+        // Checked for every primitive: the hand-off itself is rare and stays out of line.
+        if self.scene.commands.len() >= BACKGROUND_COMMANDS {
+            self.hand_off_scene();
         }
+    }
+
+    /// [`Context::flush_in_background`] past its threshold.
+    #[inline(never)]
+    fn hand_off_scene(&mut self) {
         let workers = match &self.pool {
             Some(p) => p.current_num_threads(),
             None => rayon::current_num_threads(),
