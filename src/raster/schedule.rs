@@ -336,7 +336,7 @@ fn prefetch_ahead(scene: &Scene, bin: &[u32], k: usize) {
         {
             if let Some(p) = scene.planes.get(t.planes as usize) {
                 let p = p as *const Plane as *const u8;
-                // Up to six planes of 24 bytes: three cache lines.
+                // The first three cache lines: the z and 1/w planes and most attributes'.
                 for line in 0..3 {
                     prefetch(p.wrapping_add(64 * line));
                 }
