@@ -55,3 +55,16 @@ pub use api::Gl;
 pub use framebuffer::{Framebuffer, FramebufferConfig};
 pub use state::evaluators::MeshFill;
 pub use state::{Context, ContextConfig};
+
+/// Helpers shared by the unit tests.
+#[cfg(test)]
+pub(crate) mod test_support {
+    /// One step of the xorshift64 generator the randomized unit tests draw from: advances
+    /// `state` and answers it.
+    pub fn xorshift(state: &mut u64) -> u64 {
+        *state ^= *state << 13;
+        *state ^= *state >> 7;
+        *state ^= *state << 17;
+        *state
+    }
+}

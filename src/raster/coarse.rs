@@ -262,9 +262,7 @@ mod tests {
         // Planes of every sign and magnitude (tiny to huge, cancelling terms), random corners.
         let mut seed = 0x9E37_79B9_7F4A_7C15u64;
         let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = crate::test_support::xorshift(&mut seed);
             let unit = (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
             unit * 10f64.powi((seed % 17) as i32 - 8)
         };

@@ -932,9 +932,7 @@ mod tests {
     fn surely_magnified_quads_are_magnified() {
         let mut seed = 0x1234_5678_9ABC_DEF1u64;
         let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = crate::test_support::xorshift(&mut seed);
             (seed >> 40) as f32 / (1u64 << 24) as f32
         };
         let (mut claimed, mut checked) = (0, 0);

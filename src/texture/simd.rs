@@ -1118,12 +1118,7 @@ mod tests {
             1.0 - 1e-9,
         ];
         let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed
-        };
+        let mut next = || crate::test_support::xorshift(&mut seed);
         for case in 0..3000 {
             let max = [0xFFFFu32, 0xFF_FFFF, (1 << 31) - 1][case % 3];
             let mut z = [0f64; 8];

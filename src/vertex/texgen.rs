@@ -41,13 +41,11 @@ pub fn generate(
     let sphere_coord = |c: f32, m: f32| if m > 0.0 { c / m + 0.5 } else { 0.5 };
     // The usual environment map (s and t by SPHERE_MAP, r and q as they are) without the
     // general loop's bookkeeping: the same arithmetic.
-    if let [Some(gs), Some(gt), None, None] = gen {
-        if gs.mode == TexGenMode::SphereMap && gt.mode == TexGenMode::SphereMap {
-            let (r, m) = sphere_of(reflect());
-            out[0] = sphere_coord(r.x, m);
-            out[1] = sphere_coord(r.y, m);
-            return Vec4::from_array(out);
-        }
+    if is_sphere_map(gen) {
+        let (r, m) = sphere_of(reflect());
+        out[0] = sphere_coord(r.x, m);
+        out[1] = sphere_coord(r.y, m);
+        return Vec4::from_array(out);
     }
     let mut reflection: Option<Vec3> = None;
     let mut r = || *reflection.get_or_insert_with(reflect);
@@ -180,9 +178,7 @@ mod tests {
         assert!(is_sphere_map(&gen));
         let mut seed = 0x0DDB_1A5E_5BAD_5EEDu64;
         let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = crate::test_support::xorshift(&mut seed);
             let unit = (seed >> 40) as f32 / (1u64 << 24) as f32 - 0.5;
             match seed % 23 {
                 0 => 0.0,

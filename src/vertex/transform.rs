@@ -188,9 +188,7 @@ mod tests {
         assert_eq!(ds.units.len(), 3);
         let mut seed = 0x5EED_1234_ABCD_0001u64;
         let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
+            let seed = crate::test_support::xorshift(&mut seed);
             (seed >> 40) as f32 / (1u64 << 24) as f32 * 4.0 - 2.0
         };
         for n in [1, 7, 8, 9, 16, 23] {
