@@ -19,6 +19,10 @@ use crate::state::Context;
 /// recording the next one (see `Context::flush_in_background`).
 pub const BACKGROUND_COMMANDS: usize = 1 << 12;
 
+/// Recorded commands after which a draw hands the scene over early, when no worker has tiles
+/// left to claim (at the start of a frame, or when the workers have caught up with the caller).
+pub const EARLY_BACKGROUND_COMMANDS: usize = 1 << 10;
+
 /// A scene being shaded in the background while the caller's thread records the next one
 /// (see `Context::flush_in_background`): it owns the framebuffer's tiles until the caller
 /// joins it.
@@ -121,9 +125,22 @@ impl Context {
     #[inline]
     pub(crate) fn flush_in_background(&mut self) {
         // Checked for every primitive: the hand-off itself is rare and stays out of line.
-        if self.scene.commands.len() >= BACKGROUND_COMMANDS {
+        let n = self.scene.commands.len();
+        if n >= BACKGROUND_COMMANDS
+            || (n >= EARLY_BACKGROUND_COMMANDS
+                && n.is_multiple_of(EARLY_BACKGROUND_COMMANDS)
+                && self.workers_waiting())
+        {
             self.hand_off_scene();
         }
+    }
+
+    /// Whether the background workers have no tile left to claim (or there is no background
+    /// scene).
+    fn workers_waiting(&self) -> bool {
+        self.in_flight
+            .as_ref()
+            .is_none_or(|f| f.shared.next.load(Ordering::Relaxed) >= f.shared.order.len())
     }
 
     /// [`Context::flush_in_background`] past its threshold.
