@@ -42,9 +42,14 @@ pub struct BenchConfig {
     pub width: i32,
     pub height: i32,
     pub triangles: usize,
-    /// Timed frames per implementation (the median is reported); one untimed warm-up frame
-    /// comes first.
+    /// Timed frames per implementation, at least (the median is reported); one untimed
+    /// warm-up frame comes first.
     pub frames: usize,
+    /// Keep adding timed frames until an implementation has been timed this long (within the
+    /// budget): the machine's slow spells last up to about a second, and a fast
+    /// implementation's few frames would otherwise fall inside one while a slow one's span
+    /// it, which skews their ratio either way.
+    pub min_time: Duration,
     /// Stop adding timed frames once an implementation has used this much time (at least one
     /// timed frame always runs).
     pub budget: Duration,
@@ -63,6 +68,7 @@ impl Default for BenchConfig {
             height: 768,
             triangles: 100_000,
             frames: 5,
+            min_time: Duration::from_millis(1500),
             budget: Duration::from_secs(15),
             seed: 0x5EED_1234_ABCD_0001,
             tilegl_threads: vec![1, 2],
@@ -759,7 +765,7 @@ pub fn run_frames(name: &str, gl: &mut dyn Gl, cfg: &BenchConfig, data: &WorkDat
     frame(gl, data);
     let mut frame_ms = Vec::new();
     let start = Instant::now();
-    while frame_ms.len() < cfg.frames.max(1) {
+    while frame_ms.len() < cfg.frames.max(1) || start.elapsed() < cfg.min_time {
         let t = Instant::now();
         frame(gl, data);
         frame_ms.push(t.elapsed().as_secs_f64() * 1000.0);
@@ -843,6 +849,7 @@ pub fn run_mesa_subprocess(
     let frames = cfg.frames.to_string();
     let tris = cfg.triangles.to_string();
     let budget = cfg.budget.as_secs_f64().to_string();
+    let min_time = cfg.min_time.as_secs_f64().to_string();
     let mut args: Vec<&str> = extra_args.to_vec();
     let quality = cfg.quality.to_string();
     args.extend_from_slice(&[
@@ -858,6 +865,8 @@ pub fn run_mesa_subprocess(
         &tris,
         "--budget",
         &budget,
+        "--min-time",
+        &min_time,
     ]);
     mesa::run_self_with_driver(driver, &args, &[]).map_err(|e| e.to_string())?;
     let bytes = std::fs::read(&out).map_err(|e| e.to_string())?;
@@ -922,6 +931,12 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
                 }
                 i += 1;
             }
+            ("--min-time", Some(v)) => {
+                if let Ok(s) = v.parse::<f64>() {
+                    cfg.min_time = Duration::from_secs_f64(s.clamp(0.0, 3600.0));
+                }
+                i += 1;
+            }
             _ => {}
         }
         i += 1;
@@ -930,7 +945,7 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
 }
 
 /// The benchmark's command line: `[--workload triangles|sprites|fog|all] [--frames N]
-/// [--triangles N] [--budget SECONDS] [--threads N] [--no-mesa]`. Prints one table per workload and returns the process
+/// [--triangles N] [--budget SECONDS] [--min-time SECONDS] [--threads N] [--no-mesa]`. Prints one table per workload and returns the process
 /// exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -994,6 +1009,8 @@ pub fn run_lighting_scaling(cfg: &BenchConfig) {
     // Lighting at glEnd costs a few ns a vertex: the difference of two medians needs many
     // frames to stand out of the machine's noise.
     c.frames = c.frames.max(25);
+    // Its own alternation (below) guards against slow spells.
+    c.min_time = Duration::ZERO;
     let mut points = Vec::new();
     for k in [1usize, 2, 4, 8, 16, 32, 64] {
         let (stacks, slices) = (32, 32 * k);
@@ -1093,6 +1110,7 @@ pub fn run_ladder(cfg: &BenchConfig) {
         big.height = c.height * 4;
         big.quality = LADDER.len() - 1;
         big.frames = 1;
+        big.min_time = Duration::ZERO;
         let r = run_tilegl(&big, &data, 0);
         downsample(&r.image, 4)
     };
@@ -1220,12 +1238,15 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
     let data = work_data(cfg);
     println!();
     println!(
-        "== {}: {} at {}x{}, median of up to {} frames (after 1 warm-up), each ending in glFinish",
+        "== {}: {} at {}x{}, median of at least {} frames and {:.1} s (after 1 warm-up; at \
+         most {:.0} s), each ending in glFinish",
         cfg.workload.name(),
         describe(cfg),
         cfg.width,
         cfg.height,
-        cfg.frames
+        cfg.frames,
+        cfg.min_time.as_secs_f64(),
+        cfg.budget.as_secs_f64()
     );
     let mut results: Vec<BenchResult> = cfg
         .tilegl_threads
@@ -1262,20 +1283,28 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
 
     let base = results[0].median_ms();
     println!(
-        "{:<16} {:>10} {:>10} {:>8}  frames(ms)",
+        "{:<16} {:>10} {:>10} {:>8}  timed frames: count, fastest, 90th percentile, slowest (ms)",
         "implementation", "ms/frame", "vs tilegl1", "glError"
     );
     for r in &results {
+        let mut sorted = r.frame_ms.clone();
+        sorted.sort_by(f64::total_cmp);
+        let at = |q: f64| {
+            sorted
+                .get(((sorted.len() as f64 - 1.0) * q).round() as usize)
+                .copied()
+                .unwrap_or(f64::NAN)
+        };
         println!(
-            "{:<16} {:>10.1} {:>9.2}x {:>#8x}  {:?}",
+            "{:<16} {:>10.1} {:>9.2}x {:>#8x}  {} frames: {:.1}, {:.1}, {:.1}",
             r.name,
             r.median_ms(),
             r.median_ms() / base,
             r.error,
-            r.frame_ms
-                .iter()
-                .map(|m| (m * 10.0).round() / 10.0)
-                .collect::<Vec<_>>()
+            sorted.len(),
+            at(0.0),
+            at(0.9),
+            at(1.0)
         );
     }
     if let Some(dir) = std::env::var_os("TILEGL_BENCH_DUMP") {
