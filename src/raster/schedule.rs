@@ -126,6 +126,9 @@ impl Context {
     pub(crate) fn flush_in_background(&mut self) {
         // Checked for every primitive: the hand-off itself is rare and stays out of line.
         let n = self.scene.commands.len();
+        if self.shading_threads < 2 {
+            return;
+        }
         if n >= BACKGROUND_COMMANDS
             || (n >= EARLY_BACKGROUND_COMMANDS
                 && n.is_multiple_of(EARLY_BACKGROUND_COMMANDS)
@@ -146,10 +149,7 @@ impl Context {
     /// [`Context::flush_in_background`] past its threshold.
     #[inline(never)]
     fn hand_off_scene(&mut self) {
-        let workers = match &self.pool {
-            Some(p) => p.current_num_threads(),
-            None => rayon::current_num_threads(),
-        };
+        let workers = self.shading_threads;
         let DrawTarget::One(buffer) = self.framebuffer.draw else {
             return;
         };

@@ -124,6 +124,9 @@ pub struct Context {
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
     pub(crate) draw_state: Option<Arc<DrawState>>,
     pub(crate) pool: Option<rayon::ThreadPool>,
+    /// Threads that shade tiles (the pool's, or rayon's global pool's): background shading
+    /// needs at least two.
+    pub(crate) shading_threads: usize,
     /// The scene the workers are shading in the background, if any (it holds the tiles).
     pub(crate) in_flight: Option<crate::raster::schedule::InFlight>,
     /// A reset scene to record into after the next background hand-off.
@@ -188,6 +191,10 @@ impl Context {
         } else {
             None
         };
+        let shading_threads = match &pool {
+            Some(p) => p.current_num_threads(),
+            None => rayon::current_num_threads(),
+        };
         let framebuffer = Framebuffer::new(width, height, config.framebuffer);
         let scene = Scene::new(&framebuffer);
         Context {
@@ -222,6 +229,7 @@ impl Context {
             spare_scene: None,
             draw_state: None,
             pool,
+            shading_threads,
             strings: HashMap::new(),
             present_requested: false,
             force_general_path: false,
