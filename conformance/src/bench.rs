@@ -1307,6 +1307,18 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
             at(1.0)
         );
     }
+    // The issues' targets are speeds relative to Mesa's drivers: each tilegl run's speed
+    // against each Mesa run's (above 1: tilegl is faster).
+    for t in results.iter().filter(|r| r.name.starts_with("tilegl")) {
+        let speeds: Vec<String> = results
+            .iter()
+            .filter(|r| r.name.starts_with("mesa"))
+            .map(|m| format!("{:.2}x {}", m.median_ms() / t.median_ms(), m.name))
+            .collect();
+        if !speeds.is_empty() {
+            println!("speed of {}: {}", t.name, speeds.join(", "));
+        }
+    }
     if let Some(dir) = std::env::var_os("TILEGL_BENCH_DUMP") {
         // Pictures for a closer look: DIR/WORKLOAD-IMPLEMENTATION.ppm.
         let dir = std::path::PathBuf::from(dir);
