@@ -21,7 +21,7 @@ pub const BACKGROUND_COMMANDS: usize = 1 << 12;
 
 /// Recorded commands after which a draw hands the scene over early, when no worker has tiles
 /// left to claim (at the start of a frame, or when the workers have caught up with the caller).
-pub const EARLY_BACKGROUND_COMMANDS: usize = 1 << 10;
+pub const EARLY_BACKGROUND_COMMANDS: usize = 1 << 9;
 
 /// A scene being shaded in the background while the caller's thread records the next one
 /// (see `Context::flush_in_background`): it owns the framebuffer's tiles until the caller
@@ -125,10 +125,10 @@ impl Context {
     #[inline]
     pub(crate) fn flush_in_background(&mut self) {
         // Checked for every primitive: the hand-off itself is rare and stays out of line.
-        let n = self.scene.commands.len();
         if self.shading_threads < 2 {
             return;
         }
+        let n = self.scene.commands.len();
         if n >= BACKGROUND_COMMANDS
             || (n >= EARLY_BACKGROUND_COMMANDS
                 && n.is_multiple_of(EARLY_BACKGROUND_COMMANDS)
@@ -146,16 +146,14 @@ impl Context {
             .is_none_or(|f| f.shared.next.load(Ordering::Relaxed) >= f.shared.order.len())
     }
 
-    /// [`Context::flush_in_background`] past its threshold.
+    /// [`Context::flush_in_background`] past its threshold (with at least two shading
+    /// threads).
     #[inline(never)]
     fn hand_off_scene(&mut self) {
         let workers = self.shading_threads;
         let DrawTarget::One(buffer) = self.framebuffer.draw else {
             return;
         };
-        if workers < 2 {
-            return;
-        }
         self.join_background();
         self.framebuffer.make_resident(buffer);
         let tiles = std::mem::take(&mut self.framebuffer.tiles);
