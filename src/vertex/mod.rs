@@ -8,10 +8,10 @@ pub mod transform;
 
 use crate::api::convert::{PolygonMode, PrimitiveMode};
 use crate::primitive::assemble::{self, Primitive};
-use crate::primitive::clip::{clip_line, clip_polygon, in_guard_band, point_visible, ClipVertex};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
-use crate::primitive::viewport::to_window;
 use crate::primitive::viewport::WindowVertex;
+use crate::primitive::viewport::{guard_band_windows, to_window};
 use crate::raster::{line, point, tri};
 use crate::state::snapshot::{attr, MAX_ATTRS};
 use crate::state::{Context, DrawState};
@@ -72,8 +72,6 @@ impl Context {
                     | PrimitiveMode::LineLoop
                     | PrimitiveMode::LineStrip
             );
-        let window =
-            |c: &ClipVertex| in_guard_band(c, &ds.clip_planes, ds.guard).then(|| to_window(&ds, c));
         // Large batches are transformed on the worker threads too (each vertex independently,
         // results in order, so the output does not depend on the thread count).
         match &self.pool {
@@ -86,14 +84,19 @@ impl Context {
                         .zip(verts.par_chunks(TRANSFORM_CHUNK))
                         .for_each(|(c, v)| transform::to_clip_batch(&ds, v, c));
                     if shared_windows {
-                        windows.par_extend(clip.par_iter().map(window));
+                        windows.resize(clip.len(), None);
+                        windows
+                            .par_chunks_mut(TRANSFORM_CHUNK)
+                            .zip(clip.par_chunks(TRANSFORM_CHUNK))
+                            .for_each(|(w, c)| guard_band_windows(&ds, c, w));
                     }
                 });
             }
             _ => {
                 transform::to_clip_batch(&ds, verts, &mut clip);
                 if shared_windows {
-                    windows.extend(clip.iter().map(window));
+                    windows.resize(clip.len(), None);
+                    guard_band_windows(&ds, &clip, &mut windows);
                 }
             }
         }
