@@ -1634,21 +1634,22 @@ pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
     shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
 }
 
-/// Shades two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels
-/// `x0..x1` of row `y + r` (empty when `x0 >= x1`; not both).
-pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, i32, [(i32, i32); 2], &Interpolants<'a>);
+/// Two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels `x0..x1`
+/// of row `y + r` (empty when `x0 >= x1`; not both).
+pub type RowPair = (i32, [(i32, i32); 2]);
 
-/// The rows of a pair one by one, by the draw's span function.
-fn pair_by_rows<'a>(
-    ds: &'a DrawState,
-    tile: &mut Tile,
-    y: i32,
-    rows: [(i32, i32); 2],
-    it: &Interpolants<'a>,
-) {
-    for (r, (x0, x1)) in (0..).zip(rows) {
-        if x0 < x1 {
-            (ds.span)(ds, tile, y + r, x0, x1, it);
+/// Shades row pairs of one primitive in a tile (distinct rows: within a primitive no pixel is
+/// covered twice, so their order does not matter). One call per primitive and tile, so that
+/// what does not depend on the rows is prepared once (a tiny triangle has one to three pairs).
+pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, &[RowPair], &Interpolants<'a>);
+
+/// The rows of the pairs one by one, by the draw's span function.
+fn pair_by_rows<'a>(ds: &'a DrawState, tile: &mut Tile, pairs: &[RowPair], it: &Interpolants<'a>) {
+    for &(y, rows) in pairs {
+        for (r, (x0, x1)) in (0..).zip(rows) {
+            if x0 < x1 {
+                (ds.span)(ds, tile, y + r, x0, x1, it);
+            }
         }
     }
 }
@@ -1663,31 +1664,19 @@ fn pair_by_rows<'a>(
 fn for_each_block(
     ds: &DrawState,
     tile: &mut Tile,
-    y: i32,
-    rows: [(i32, i32); 2],
+    pairs: &[RowPair],
     it: &Interpolants,
-    mut shade: impl FnMut(i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    mut shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
 ) {
     let depth_max = group_depth_max(ds);
-    let mut runs = [
-        SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
-        SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
-    ];
-    let covered = |r: usize| rows[r].0 < rows[r].1;
-    let (first, end) = match (covered(0), covered(1)) {
-        (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
-        (true, false) => rows[0],
-        (false, true) => rows[1],
-        (false, false) => return,
-    };
     // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
     // every pixel has the first one's) leaves only z to step per pixel; the lanes' depths are
     // then rounded and tested eight at a time, and the colour written to the lanes whole.
-    let constant = it
-        .constant_primary
-        .then(|| [0, 1, 2, 3].map(|c| [runs[0].color[c]; 8]));
-    let mut z = [runs[0].z, runs[1].z];
-    let mut gx = first & !1;
+    let constant = it.constant_primary.then(|| {
+        let (y, rows) = pairs.first().copied().unwrap_or_default();
+        let run = SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4);
+        [0, 1, 2, 3].map(|c| [run.color[c]; 8])
+    });
     // With a constant colour every lane's inputs are written for each block (the colour
     // once): lanes outside a block's covered ones keep stale values, which nothing reads.
     let mut group = GroupInputs::EMPTY;
@@ -1696,57 +1685,72 @@ fn for_each_block(
     }
     let mut lane_z = [0f64; 8];
     let mut stored = [0u32; 8];
-    while gx < end {
-        let mut live = 0u8;
-        if constant.is_some() {
-            for (r, &(x0, x1)) in rows.iter().enumerate() {
-                let row = tile.index(gx, y + r as i32);
-                for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
-                    let (lane, j) = (4 * r + j as usize, j as usize);
-                    // As `SpanRun::next` steps it.
-                    lane_z[lane] = z[r];
-                    z[r] += runs[r].dz;
-                    stored[lane] = tile.depth[row + j];
-                    group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
-                    live |= 1 << lane;
+    for &(y, rows) in pairs {
+        let mut runs = [
+            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
+            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
+        ];
+        let covered = |r: usize| rows[r].0 < rows[r].1;
+        let (first, end) = match (covered(0), covered(1)) {
+            (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
+            (true, false) => rows[0],
+            (false, true) => rows[1],
+            (false, false) => continue,
+        };
+        let mut z = [runs[0].z, runs[1].z];
+        let mut gx = first & !1;
+        while gx < end {
+            let mut live = 0u8;
+            if constant.is_some() {
+                for (r, &(x0, x1)) in rows.iter().enumerate() {
+                    let row = tile.index(gx, y + r as i32);
+                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                        let (lane, j) = (4 * r + j as usize, j as usize);
+                        // As `SpanRun::next` steps it.
+                        lane_z[lane] = z[r];
+                        z[r] += runs[r].dz;
+                        stored[lane] = tile.depth[row + j];
+                        group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
+                        live |= 1 << lane;
+                    }
                 }
-            }
-            (group.depth, group.pass) = match depth_max {
-                None => ([0; 8], live),
-                Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
-                    .unwrap_or_else(|| {
-                        let mut depth = [0u32; 8];
-                        let mut pass = 0u8;
-                        for lane in (0..8).filter(|j| live & (1 << j) != 0) {
-                            depth[lane] = depth_to_fixed(lane_z[lane], max);
-                            let ok = depth_passes(ds, depth[lane], stored[lane]);
-                            pass |= u8::from(ok) << lane;
-                        }
-                        (depth, pass)
-                    }),
-            };
-        } else {
-            group = GroupInputs::EMPTY;
-            for (r, &(x0, x1)) in rows.iter().enumerate() {
-                let row = tile.index(gx, y + r as i32);
-                for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
-                    let (lane, j) = (4 * r + j as usize, j as usize);
-                    group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
-                    live |= 1 << lane;
-                }
-            }
-        }
-        if group.pass != 0 {
-            if let Some((words, passed)) = shade(gx, &group) {
-                for lane in 0..8 {
-                    if live & (1 << lane) != 0 {
-                        let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
-                        store_lane(ds, tile, lane, index, &words, passed, &group.depth);
+                (group.depth, group.pass) = match depth_max {
+                    None => ([0; 8], live),
+                    Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
+                        .unwrap_or_else(|| {
+                            let mut depth = [0u32; 8];
+                            let mut pass = 0u8;
+                            for lane in (0..8).filter(|j| live & (1 << j) != 0) {
+                                depth[lane] = depth_to_fixed(lane_z[lane], max);
+                                let ok = depth_passes(ds, depth[lane], stored[lane]);
+                                pass |= u8::from(ok) << lane;
+                            }
+                            (depth, pass)
+                        }),
+                };
+            } else {
+                group = GroupInputs::EMPTY;
+                for (r, &(x0, x1)) in rows.iter().enumerate() {
+                    let row = tile.index(gx, y + r as i32);
+                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                        let (lane, j) = (4 * r + j as usize, j as usize);
+                        group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
+                        live |= 1 << lane;
                     }
                 }
             }
+            if group.pass != 0 {
+                if let Some((words, passed)) = shade(y, gx, &group) {
+                    for lane in 0..8 {
+                        if live & (1 << lane) != 0 {
+                            let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                            store_lane(ds, tile, lane, index, &words, passed, &group.depth);
+                        }
+                    }
+                }
+            }
+            gx += 4;
         }
-        gx += 4;
     }
 }
 
@@ -1767,12 +1771,11 @@ fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
 pub fn pair_textured<'a, const TEX: u8>(
     ds: &'a DrawState,
     tile: &mut Tile,
-    y: i32,
-    rows: [(i32, i32); 2],
+    pairs: &[RowPair],
     it: &Interpolants<'a>,
 ) {
-    let Some(unit) = ds.units.first() else {
-        return pair_by_rows(ds, tile, y, rows, it);
+    let (Some(unit), Some(&(first_y, _))) = (ds.units.first(), pairs.first()) else {
+        return pair_by_rows(ds, tile, pairs, it);
     };
     let q = &it.attrs[attr::TEX + 4 * unit.unit + 3];
     // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
@@ -1780,13 +1783,21 @@ pub fn pair_textured<'a, const TEX: u8>(
     // The tail (prepared with the levels) exists where the eight-fragment tail applies.
     let tail = it.shared.levels.textured_tail;
     let sampler = match tail {
-        Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, y),
+        Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, first_y),
         _ => None,
     };
-    let (Some(sampler), Some(tail)) = (sampler, tail) else {
-        return pair_by_rows(ds, tile, y, rows, it);
+    let (Some(mut sampler), Some(tail)) = (sampler, tail) else {
+        return pair_by_rows(ds, tile, pairs, it);
     };
-    for_each_block(ds, tile, y, rows, it, |gx, group| {
+    let mut sampler_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != sampler_y {
+            // The same unit and levels as the first pair's: only the rows' planes move.
+            if let Some(s) = Perspective8::block(unit, 0, it, y) {
+                sampler = s;
+            }
+            sampler_y = y;
+        }
         if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
             return Some(shaded);
         }
@@ -1816,20 +1827,29 @@ pub fn pair_textured<'a, const TEX: u8>(
 pub fn pair_sampled8<'a>(
     ds: &'a DrawState,
     tile: &mut Tile,
-    y: i32,
-    rows: [(i32, i32); 2],
+    pairs: &[RowPair],
     it: &Interpolants<'a>,
 ) {
+    let Some(&(first_y, _)) = pairs.first() else {
+        return;
+    };
     if it.coverage != 1.0 {
-        return pair_by_rows(ds, tile, y, rows, it);
+        return pair_by_rows(ds, tile, pairs, it);
     }
     let Sampled8 {
-        samplers,
+        mut samplers,
         single,
         tail,
         mut by_unit,
-    } = Sampled8::new(ds, it, y, true);
-    for_each_block(ds, tile, y, rows, it, |gx, group| {
+    } = Sampled8::new(ds, it, first_y, true);
+    let mut samplers_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != samplers_y {
+            for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+                *slot = Perspective8::block(unit, k, it, y);
+            }
+            samplers_y = y;
+        }
         for (k, unit) in ds.units.iter().enumerate() {
             let Some(out) = by_unit[unit.unit].as_mut() else {
                 continue;

@@ -186,12 +186,7 @@ mod tests {
     use glam::DVec4;
 
     fn bits(w: &Option<WindowVertex>) -> Option<([i64; 2], [u64; 4])> {
-        w.map(|w| {
-            (
-                w.xy,
-                [w.pos[0], w.pos[1], w.z, w.inv_w].map(f64::to_bits),
-            )
-        })
+        w.map(|w| (w.xy, [w.pos[0], w.pos[1], w.z, w.inv_w].map(f64::to_bits)))
     }
 
     /// The four-lane form gives `in_guard_band` + `to_window` bit for bit, on random vertices

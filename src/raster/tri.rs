@@ -128,7 +128,13 @@ pub fn raster_triangle<'a>(
     };
     match (&ds.raster.polygon_stipple, ds.span_pair) {
         (None, Some(pair)) => {
-            // Rows in pairs (even y first): the pair function shades both at once.
+            // Rows in pairs (even y first), gathered for one call of the pair function, which
+            // then prepares what does not depend on the rows once per triangle (a tile has at
+            // most TILE / 2 pairs). A triangle covers no pixel twice, so shading its long lone
+            // rows on the way, before the pairs, gives the same pixels.
+            const EMPTY: (i32, i32) = (0, 0);
+            let mut pairs = [(0, [EMPTY; 2]); TILE / 2];
+            let mut n = 0;
             let mut y = y_lo & !1;
             while y < y_hi {
                 let lower = if y >= y_lo { row_interval(y) } else { None };
@@ -139,16 +145,32 @@ pub fn raster_triangle<'a>(
                 };
                 // A short lone row goes to the pair function too (a block is two quads wide);
                 // a long one is shaded as a row.
-                const EMPTY: (i32, i32) = (0, 0);
-                match (lower, upper) {
-                    (Some(a), Some(b)) => pair(ds, tile, y, [a, b], &it),
-                    (Some(a), None) if a.1 - a.0 <= 4 => pair(ds, tile, y, [a, EMPTY], &it),
-                    (None, Some(b)) if b.1 - b.0 <= 4 => pair(ds, tile, y, [EMPTY, b], &it),
-                    (Some((x0, x1)), None) => (ds.span)(ds, tile, y, x0, x1, &it),
-                    (None, Some((x0, x1))) => (ds.span)(ds, tile, y + 1, x0, x1, &it),
-                    (None, None) => {}
+                let rows = match (lower, upper) {
+                    (Some(a), Some(b)) => Some([a, b]),
+                    (Some(a), None) if a.1 - a.0 <= 4 => Some([a, EMPTY]),
+                    (None, Some(b)) if b.1 - b.0 <= 4 => Some([EMPTY, b]),
+                    (Some((x0, x1)), None) => {
+                        (ds.span)(ds, tile, y, x0, x1, &it);
+                        None
+                    }
+                    (None, Some((x0, x1))) => {
+                        (ds.span)(ds, tile, y + 1, x0, x1, &it);
+                        None
+                    }
+                    (None, None) => None,
+                };
+                if let Some(rows) = rows {
+                    if n == pairs.len() {
+                        pair(ds, tile, &pairs, &it);
+                        n = 0;
+                    }
+                    pairs[n] = (y, rows);
+                    n += 1;
                 }
                 y += 2;
+            }
+            if n > 0 {
+                pair(ds, tile, &pairs[..n], &it);
             }
         }
         (None, None) => {
