@@ -1073,6 +1073,67 @@ fn background_shading_changes_nothing() {
     assert_ne!(one.0, one.1, "the last part drew nothing");
 }
 
+/// More background scenes than may be in flight at once, all over the same six tiles, with
+/// order-sensitive blending and depth writes: every tile must shade its queued scenes in the
+/// order they were recorded, whichever thread takes it, so 2, 3 and 8 threads give the
+/// pictures and depth of one synchronous worker bit for bit.
+#[test]
+fn queued_background_scenes_keep_each_tiles_order() {
+    let per_scene = tilegl::raster::schedule::BACKGROUND_COMMANDS + 10;
+    let render = |threads| {
+        let mut gl = Context::with_config(ContextConfig {
+            width: 130,
+            height: 70,
+            threads,
+            ..ContextConfig::default()
+        });
+        let mut rng = Rng(0x51);
+        gl.enable(GL_DEPTH_TEST);
+        gl.depth_func(GL_LEQUAL);
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        window_ortho(&mut gl);
+        gl.begin(GL_TRIANGLES);
+        for scene in 0..10 {
+            for _ in 0..per_scene {
+                // Each scene's triangles have their own colour, nearer scene after scene.
+                gl.color_4f(
+                    scene as f32 / 10.0,
+                    rng.range(0.0, 1.0),
+                    1.0 - scene as f32 / 10.0,
+                    rng.range(0.3, 0.8),
+                );
+                let (cx, cy) = (rng.range(0.0, 130.0), rng.range(0.0, 70.0));
+                for _ in 0..3 {
+                    gl.vertex_3f(
+                        cx + rng.range(-8.0, 8.0),
+                        cy + rng.range(-8.0, 8.0),
+                        0.9 - scene as f32 * 0.15 + rng.range(-0.2, 0.2),
+                    );
+                }
+            }
+        }
+        gl.end();
+        let mut depth = vec![0u8; 130 * 70 * 4];
+        gl.read_pixels(
+            0,
+            0,
+            130,
+            70,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT,
+            &mut depth,
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        (read_rgba(&mut gl), depth)
+    };
+    let one = render(1);
+    assert_eq!(one, render(2));
+    assert_eq!(one, render(3));
+    assert_eq!(one, render(8));
+}
+
 /// One texture unit of every one-byte base format under REPLACE and MODULATE, with several
 /// blends: the eight-fragment tail applies the environment itself (with the base format's
 /// table of which components the texture has) and must match the general path bit for bit.

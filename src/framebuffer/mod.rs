@@ -13,7 +13,7 @@ pub const TILE: usize = 64;
 pub const TILE_PIXELS: usize = TILE * TILE;
 
 /// One tile of every buffer.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Tile {
     /// Window x of the tile's lower-left pixel.
     pub x0: i32,

@@ -127,8 +127,11 @@ pub struct Context {
     /// Threads that shade tiles (the pool's, or rayon's global pool's): background shading
     /// needs at least two.
     pub(crate) shading_threads: usize,
-    /// The scene the workers are shading in the background, if any (it holds the tiles).
+    /// The tiles and the scenes queued on them while workers shade in the background, if
+    /// any.
     pub(crate) in_flight: Option<crate::raster::schedule::InFlight>,
+    /// Background scenes shaded everywhere, for reuse, and how many are still in flight.
+    pub(crate) recycle: Arc<crate::raster::schedule::Recycle>,
     /// A reset scene to record into after the next background hand-off.
     pub(crate) spare_scene: Option<Scene>,
     /// Strings handed out through the C ABI (`glGetString`), kept alive with the context.
@@ -226,6 +229,7 @@ impl Context {
             framebuffer,
             scene,
             in_flight: None,
+            recycle: Default::default(),
             spare_scene: None,
             draw_state: None,
             pool,
@@ -257,6 +261,7 @@ impl Context {
         self.apply_buffer_selection();
         self.scene = Scene::new(&self.framebuffer);
         self.spare_scene = None;
+        self.recycle.clear();
         self.draw_state = None;
     }
 
