@@ -1,5 +1,7 @@
-//! Flush points: shade every tile in parallel, each replaying its bin in submission order. The
-//! result does not depend on the number of threads or the order tiles are picked.
+//! Tile shading at flush points and in the background: tiles are shaded in parallel, each
+//! replaying its commands in submission order (its bin, and in the background its queued
+//! scenes oldest first), so the result does not depend on the number of threads or on the
+//! order tiles are picked.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
