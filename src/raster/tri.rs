@@ -305,8 +305,10 @@ pub fn bin_triangle(
         v.swap(1, 2);
         attrs.swap(1, 2);
     }
-    let xs = v.map(|p| p.xy[0]);
-    let ys = v.map(|p| p.xy[1]);
+    // Arrays written out rather than built by `map` (whose iterator machinery costs more
+    // than the set-up arithmetic in this hot function; the same values).
+    let xs = [v[0].xy[0], v[1].xy[0], v[2].xy[0]];
+    let ys = [v[0].xy[1], v[1].xy[1], v[2].xy[1]];
     let (x0, x1) = centre_range(
         *xs.iter().min().unwrap_or(&0),
         *xs.iter().max().unwrap_or(&0),
@@ -330,9 +332,10 @@ pub fn bin_triangle(
         return;
     }
     let s = SUBPIXEL as f64;
-    let p = v.map(|w| [w.xy[0] as f64 / s, w.xy[1] as f64 / s]);
+    let snapped = |w: &WindowVertex| [w.xy[0] as f64 / s, w.xy[1] as f64 / s];
+    let p = [snapped(v[0]), snapped(v[1]), snapped(v[2])];
     let inv_det = (s * s) / area2.unsigned_abs() as f64;
-    let mut z = Plane::through(p, v.map(|w| w.z), inv_det);
+    let mut z = Plane::through(p, [v[0].z, v[1].z, v[2].z], inv_det);
     if let Some(o) = &ds.raster.offset {
         z.c += o.for_plane(PolygonMode::Fill, z.a, z.b, ds.depth_max);
     }
@@ -340,7 +343,7 @@ pub fn bin_triangle(
     // snapping moves a vertex by up to half a sub-pixel, which tilts the planes of long thin
     // triangles enough to shift texture coordinates by several texels near a horizon.
     let (p, inv_det) = {
-        let q = v.map(|w| w.pos);
+        let q = [v[0].pos, v[1].pos, v[2].pos];
         let det =
             (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]);
         if det != 0.0 && det.is_finite() && (1.0 / det).is_finite() {
@@ -350,7 +353,7 @@ pub fn bin_triangle(
         }
     };
     let setup = PlaneSetup::new(p, inv_det);
-    let inv_w = setup.plane(v.map(|w| w.inv_w));
+    let inv_w = setup.plane([v[0].inv_w, v[1].inv_w, v[2].inv_w]);
     let n = ds.attr_count.min(MAX_ATTRS);
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
     // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
@@ -405,7 +408,8 @@ pub fn bin_triangle(
     }
 
     // Clipping keeps positions inside the guard band, so the command always fits.
-    if let Some(t) = TriangleCommand::new(state, offset, bbox, v.map(|w| w.xy), constant_primary) {
+    let xy = [v[0].xy, v[1].xy, v[2].xy];
+    if let Some(t) = TriangleCommand::new(state, offset, bbox, xy, constant_primary) {
         scene.bin(Command::Triangle(t), bbox);
     }
 }
