@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{pixel, random_texture, read_rgba, window_ortho, Rng};
+use common::{pixel, random_texture, read_depth, read_rgba, window_ortho, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, ContextConfig, Gl};
 
@@ -358,16 +358,7 @@ fn output_is_identical_for_1_2_and_8_threads() {
             ..ContextConfig::default()
         });
         busy_scene(&mut gl);
-        let mut depth = vec![0u8; 200 * 150 * 4];
-        gl.read_pixels(
-            0,
-            0,
-            200,
-            150,
-            GL_DEPTH_COMPONENT,
-            GL_UNSIGNED_INT,
-            &mut depth,
-        );
+        let depth = read_depth(&mut gl);
         (read_rgba(&mut gl), depth)
     };
     let one = render(1);
@@ -1054,16 +1045,7 @@ fn background_shading_changes_nothing() {
                 mid = read_rgba(&mut gl);
             }
         }
-        let mut depth = vec![0u8; 160 * 120 * 4];
-        gl.read_pixels(
-            0,
-            0,
-            160,
-            120,
-            GL_DEPTH_COMPONENT,
-            GL_UNSIGNED_INT,
-            &mut depth,
-        );
+        let depth = read_depth(&mut gl);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         (mid, read_rgba(&mut gl), depth)
     };
@@ -1115,16 +1097,7 @@ fn queued_background_scenes_keep_each_tiles_order() {
             }
         }
         gl.end();
-        let mut depth = vec![0u8; 130 * 70 * 4];
-        gl.read_pixels(
-            0,
-            0,
-            130,
-            70,
-            GL_DEPTH_COMPONENT,
-            GL_UNSIGNED_INT,
-            &mut depth,
-        );
+        let depth = read_depth(&mut gl);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
         (read_rgba(&mut gl), depth)
     };

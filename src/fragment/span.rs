@@ -1845,9 +1845,7 @@ pub fn pair_sampled8<'a>(
     let mut samplers_y = first_y;
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
-            for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
-                *slot = Perspective8::block(unit, k, it, y);
-            }
+            Sampled8::place_samplers(&mut samplers, ds, it, y, true);
             samplers_y = y;
         }
         for (k, unit) in ds.units.iter().enumerate() {
@@ -2021,13 +2019,7 @@ impl<'a> Sampled8<'a> {
     #[inline(always)]
     fn new(ds: &'a DrawState, it: &Interpolants<'a>, y: i32, block: bool) -> Sampled8<'a> {
         let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
-        for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
-            *slot = if block {
-                Perspective8::block(unit, k, it, y)
-            } else {
-                Perspective8::new(unit, k, it, y)
-            };
-        }
+        Self::place_samplers(&mut samplers, ds, it, y, block);
         let (single, tail) = sampled8_tail(ds);
         let mut by_unit = [None; MAX_TEXTURE_UNITS];
         for unit in &ds.units {
@@ -2038,6 +2030,24 @@ impl<'a> Sampled8<'a> {
             single,
             tail,
             by_unit,
+        }
+    }
+
+    /// Each unit's sampler for row `y`, or with `block` the 4x2 blocks of rows `y` and `y + 1`.
+    #[inline(always)]
+    fn place_samplers(
+        samplers: &mut [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
+        ds: &'a DrawState,
+        it: &Interpolants<'a>,
+        y: i32,
+        block: bool,
+    ) {
+        for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+            *slot = if block {
+                Perspective8::block(unit, k, it, y)
+            } else {
+                Perspective8::new(unit, k, it, y)
+            };
         }
     }
 }

@@ -20,6 +20,14 @@ pub fn signed_area2(points: &[[i64; 2]]) -> i128 {
         .sum()
 }
 
+/// Twice the signed area of a triangle of window vertices in the guard band (fixed point,
+/// y up), in i64: there coordinates stay below 2^23 sub-pixels, so the cross product fits.
+/// The same value as [`signed_area2`] of the three points.
+#[inline(always)]
+pub fn triangle_area2([a, b, c]: [[i64; 2]; 3]) -> i64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
+}
+
 /// Whether a polygon of signed area `area2` is front-facing under `front`.
 pub fn is_front(area2: i128, front: Winding) -> bool {
     match front {
@@ -62,6 +70,12 @@ mod tests {
         for _ in 0..1000 {
             let tri = [[next(), next()], [next(), next()], [next(), next()]];
             assert_eq!(signed_area2(&tri), shoelace(&tri));
+        }
+        // Guard-band range (below 2^23 sub-pixels): the i64 form gives the same.
+        for _ in 0..1000 {
+            let mut small = || next() % (1 << 23);
+            let tri = [[small(), small()], [small(), small()], [small(), small()]];
+            assert_eq!(i128::from(triangle_area2(tri)), shoelace(&tri));
         }
         let ccw = [[0, 0], [4, 0], [0, 4]];
         assert_eq!(signed_area2(&ccw), 16);

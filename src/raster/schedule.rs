@@ -70,10 +70,7 @@ pub(crate) struct Recycle {
 impl Recycle {
     /// Forgets the spare scenes (their bins no longer match a resized framebuffer).
     pub(crate) fn clear(&self) {
-        self.scenes
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .clear();
+        lock(&self.scenes).clear();
     }
 }
 
@@ -88,11 +85,7 @@ impl Drop for SceneJob {
     fn drop(&mut self) {
         if let Some(mut scene) = self.scene.take() {
             scene.reset();
-            self.recycle
-                .scenes
-                .lock()
-                .unwrap_or_else(|p| p.into_inner())
-                .push(scene);
+            lock(&self.recycle.scenes).push(scene);
         }
         self.recycle.in_flight.fetch_sub(1, Ordering::AcqRel);
     }

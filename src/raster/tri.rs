@@ -271,13 +271,13 @@ fn stippled_row<'a>(
 use super::scene::{Command, Scene};
 use super::setup::{centre_range, PlaneSetup, Rect};
 use crate::api::convert::PolygonMode;
+use crate::primitive::cull::triangle_area2;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};
 
 /// The window-z plane of a triangle (for polygon offset), or `None` when it has no area.
 pub fn depth_plane(v: [&WindowVertex; 3]) -> Option<Plane> {
-    let area2 = (v[1].xy[0] - v[0].xy[0]) * (v[2].xy[1] - v[0].xy[1])
-        - (v[2].xy[0] - v[0].xy[0]) * (v[1].xy[1] - v[0].xy[1]);
+    let area2 = triangle_area2([v[0].xy, v[1].xy, v[2].xy]);
     if area2 == 0 {
         return None;
     }
@@ -296,8 +296,7 @@ pub fn bin_triangle(
     scene: &mut Scene,
 ) {
     let (mut v, mut attrs) = (v, attrs);
-    let area2 = (v[1].xy[0] - v[0].xy[0]) * (v[2].xy[1] - v[0].xy[1])
-        - (v[2].xy[0] - v[0].xy[0]) * (v[1].xy[1] - v[0].xy[1]);
+    let area2 = triangle_area2([v[0].xy, v[1].xy, v[2].xy]);
     if area2 == 0 {
         return;
     }

@@ -9,7 +9,7 @@ pub mod transform;
 use crate::api::convert::{PolygonMode, PrimitiveMode};
 use crate::primitive::assemble::{self, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
-use crate::primitive::cull::{is_culled, is_front, signed_area2};
+use crate::primitive::cull::{is_culled, is_front, signed_area2, triangle_area2};
 use crate::primitive::viewport::WindowVertex;
 use crate::primitive::viewport::{guard_band_windows, to_window};
 use crate::raster::{line, point, tri};
@@ -186,11 +186,7 @@ impl Context {
                     if let Some(w) = inside {
                         // Filled and inside the guard band (the common case): no clipping, no
                         // copies.
-                        // Inside the guard band coordinates stay below 2^23 sub-pixels, so
-                        // the cross product fits i64 (as `tri::bin_triangle` computes it).
-                        let [a, b, c] = [w[0].xy, w[1].xy, w[2].xy];
-                        let area =
-                            ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])) as i128;
+                        let area = triangle_area2([w[0].xy, w[1].xy, w[2].xy]) as i128;
                         if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
                             continue;
                         }

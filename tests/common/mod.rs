@@ -12,6 +12,15 @@ pub fn read_rgba(gl: &mut Context) -> Vec<[u8; 4]> {
     buf.chunks(4).map(|c| [c[0], c[1], c[2], c[3]]).collect()
 }
 
+/// Reads the whole depth buffer as `GL_UNSIGNED_INT` values (native-endian bytes), bottom
+/// row first.
+pub fn read_depth(gl: &mut Context) -> Vec<u8> {
+    let (w, h) = gl.size();
+    let mut buf = vec![0u8; (w * h * 4) as usize];
+    gl.read_pixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &mut buf);
+    buf
+}
+
 /// One pixel.
 pub fn pixel(gl: &mut Context, x: i32, y: i32) -> [u8; 4] {
     let mut p = [0u8; 4];
