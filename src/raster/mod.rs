@@ -5,6 +5,7 @@
 pub mod coarse;
 pub mod line;
 pub mod point;
+pub mod prefetch;
 pub mod scene;
 pub mod schedule;
 pub mod setup;

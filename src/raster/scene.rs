@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::prefetch;
 use super::setup::{Edge, Plane, Rect};
 use crate::framebuffer::{Framebuffer, TILE};
 use crate::state::DrawState;
@@ -180,6 +181,11 @@ impl Scene {
             return;
         }
         let index = self.commands.len() as u32;
+        prefetch::write_past(
+            &self.commands,
+            prefetch::WRITE_AHEAD,
+            std::mem::size_of::<Command>(),
+        );
         self.commands.push(cmd);
         let t = TILE as i32;
         let tx0 = (rect.x0.max(0) / t) as usize;
@@ -188,7 +194,10 @@ impl Scene {
         let ty1 = (((rect.y1 - 1).max(0) / t) as usize).min(self.tiles_y.saturating_sub(1));
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
-                self.bins[ty * self.tiles_x + tx].push(index);
+                let bin = &mut self.bins[ty * self.tiles_x + tx];
+                // The bin's next line (its entries are 4 bytes, written one by one).
+                prefetch::write_past(bin, 64, 4);
+                bin.push(index);
             }
         }
     }

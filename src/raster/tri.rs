@@ -369,6 +369,8 @@ pub fn bin_triangle(
         && primary.clone().all(|i| a0[i] == a1[i] && a0[i] == a2[i]);
     let offset = scene.planes.len() as u32;
     scene.planes.reserve(n + 2);
+    // A triangle's planes take two or three lines: the next triangles' asked for now.
+    super::prefetch::write_past(&scene.planes, super::prefetch::WRITE_AHEAD, 192);
     scene.planes.push(z);
     scene.planes.push(inv_w);
     if constant_primary {
