@@ -28,6 +28,7 @@ use tilegl::enums::*;
 use tilegl::{Context, ContextConfig, Gl};
 
 use crate::compare::{diff, Image};
+use crate::machine::cross_core_round_trip_ns;
 use crate::mesa::{self, MesaContext, Oracle, OracleInfo};
 use crate::prng::XorShift;
 
@@ -1248,14 +1249,17 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
         cfg.min_time.as_secs_f64(),
         cfg.budget.as_secs_f64()
     );
-    let mut results: Vec<BenchResult> = cfg
-        .tilegl_threads
-        .iter()
-        .map(|&t| run_tilegl(cfg, &data, t))
-        .collect();
+    // The cross-core round trip just before each implementation's run (`machine`).
+    let mut round_trip = Vec::new();
+    let mut results: Vec<BenchResult> = Vec::new();
+    for &t in &cfg.tilegl_threads {
+        round_trip.push(cross_core_round_trip_ns());
+        results.push(run_tilegl(cfg, &data, t));
+    }
     let mesa = if args.iter().any(|a| a == "--no-mesa") {
         Err("--no-mesa".to_string())
     } else {
+        round_trip.push(cross_core_round_trip_ns());
         run_mesa(cfg, &data)
     };
     match mesa {
@@ -1273,8 +1277,12 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
                 .filter(|a| a.as_str() == "--bench")
                 .map(|s| s.as_str())
                 .collect();
+            let before = cross_core_round_trip_ns();
             match run_mesa_subprocess(other, cfg, &extra) {
-                Ok(r) => results.push(r),
+                Ok(r) => {
+                    results.push(r);
+                    round_trip.push(before);
+                }
                 Err(e) => println!("mesa {other}: unavailable ({e})"),
             }
         }
@@ -1283,10 +1291,12 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
 
     let base = results[0].median_ms();
     println!(
-        "{:<16} {:>10} {:>10} {:>8}  timed frames: count, fastest, 90th percentile, slowest (ms)",
-        "implementation", "ms/frame", "vs tilegl1", "glError"
+        "{:<16} {:>10} {:>10} {:>8} {:>7}  timed frames: count, fastest, 90th percentile, \
+         slowest (ms)",
+        "implementation", "ms/frame", "vs tilegl1", "glError", "xcore"
     );
-    for r in &results {
+    for (r, trip) in results.iter().zip(&round_trip) {
+        let trip = trip.map_or("-".to_string(), |ns| format!("{ns:.0} ns"));
         let mut sorted = r.frame_ms.clone();
         sorted.sort_by(f64::total_cmp);
         let at = |q: f64| {
@@ -1296,17 +1306,23 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
                 .unwrap_or(f64::NAN)
         };
         println!(
-            "{:<16} {:>10.1} {:>9.2}x {:>#8x}  {} frames: {:.1}, {:.1}, {:.1}",
+            "{:<16} {:>10.1} {:>9.2}x {:>#8x} {:>7}  {} frames: {:.1}, {:.1}, {:.1}",
             r.name,
             r.median_ms(),
             r.median_ms() / base,
             r.error,
+            trip,
             sorted.len(),
             at(0.0),
             at(0.9),
             at(1.0)
         );
     }
+    println!(
+        "xcore: a cache line's round trip between CPU 0 and CPU 1 just before the run \
+         (machine::cross_core_round_trip_ns; the development VM has phases of ~100 and ~400 ns, \
+         and multi-threaded renderers are slower in the second)"
+    );
     // The issues' targets are speeds relative to Mesa's drivers: each tilegl run's speed
     // against each Mesa run's (above 1: tilegl is faster).
     for t in results.iter().filter(|r| r.name.starts_with("tilegl")) {

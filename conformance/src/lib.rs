@@ -6,6 +6,7 @@ pub mod bench;
 pub mod compare;
 pub mod example_support;
 pub mod known_failures;
+pub mod machine;
 pub mod mesa;
 pub mod prng;
 pub mod scenes;
