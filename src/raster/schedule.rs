@@ -59,6 +59,18 @@ struct TileSlot {
     queue: Mutex<std::collections::VecDeque<Arc<SceneJob>>>,
     /// In `ready`, or being shaded (by whoever cleared it from `ready`).
     scheduled: std::sync::atomic::AtomicBool,
+    /// The token of the thread that shaded the tile last (`thread_token`): a thread takes
+    /// the ready tiles it shaded before first, whose pixels are still in its core's cache.
+    /// (When the VM's two cores are far apart, each line of a tile that moved between them
+    /// waits about 400 ns: spheremap 2T 1-2 % faster there, the same otherwise.)
+    last: AtomicUsize,
+}
+
+/// A number for the current thread, distinct from every other thread's.
+fn thread_token() -> usize {
+    static NEXT: AtomicUsize = AtomicUsize::new(1);
+    thread_local!(static TOKEN: usize = NEXT.fetch_add(1, Ordering::Relaxed));
+    TOKEN.with(|t| *t)
 }
 
 /// Scenes that were shaded everywhere, reset for reuse, and the count of those in flight.
@@ -107,6 +119,7 @@ impl Background {
                     pixels: Mutex::new(t),
                     queue: Mutex::new(Default::default()),
                     scheduled: Default::default(),
+                    last: Default::default(),
                 })
                 .collect(),
             ready: Mutex::new(Default::default()),
@@ -139,13 +152,23 @@ impl Background {
 
     /// Shades queued tiles until none is ready.
     fn shade_ready(&self) {
-        loop {
-            // The lock is released before shading (a `while let` would hold it).
-            let next = lock(&self.ready).pop_front();
-            let Some(t) = next else {
-                return;
-            };
+        let me = thread_token();
+        // The lock is released before shading (a `while let` would hold it).
+        while let Some(t) = self.take_ready(me) {
             self.shade_queue(t);
+        }
+    }
+
+    /// Takes a ready tile for the thread with token `me`: one it shaded last if any is ready,
+    /// else the one ready longest.
+    fn take_ready(&self, me: usize) -> Option<usize> {
+        let mut ready = lock(&self.ready);
+        let own = ready
+            .iter()
+            .position(|&t| self.tiles[t].last.load(Ordering::Relaxed) == me);
+        match own {
+            Some(i) => ready.remove(i),
+            None => ready.pop_front(),
         }
     }
 
@@ -153,6 +176,7 @@ impl Background {
     fn shade_queue(&self, t: usize) {
         let slot = &self.tiles[t];
         let mut pixels = lock(&slot.pixels);
+        slot.last.store(thread_token(), Ordering::Relaxed);
         loop {
             let next = lock(&slot.queue).pop_front();
             if let Some(job) = next {
@@ -393,6 +417,19 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     // A triangle's attribute planes spread over the full layout.
     let mut attrs = AttrScratch::default();
     let mut coarse = CoarseDepth::default();
+    // The first entries' commands and planes, which the loop's look-ahead never reaches.
+    for k in 0..PREFETCH_COMMAND_AHEAD {
+        if let Some(c) = bin.get(k).and_then(|&c| scene.commands.get(c as usize)) {
+            prefetch::read(c, 1);
+            if let Command::Triangle(t) = c {
+                if k < PREFETCH_PLANES_AHEAD {
+                    if let Some(p) = scene.planes.get(t.planes as usize) {
+                        prefetch::read(p, 3);
+                    }
+                }
+            }
+        }
+    }
     for (k, &ci) in bin.iter().enumerate() {
         prefetch_ahead(scene, bin, k);
         let command = &scene.commands[ci as usize];
@@ -563,6 +600,29 @@ mod tests {
             assert!(lock(&slot.pixels).color.iter().all(|&p| p == colour(230)));
             assert!(!slot.scheduled.load(Ordering::Acquire));
         }
+    }
+
+    /// A thread takes the ready tiles it shaded last before the others, then the rest in the
+    /// order they became ready.
+    #[test]
+    fn a_thread_takes_its_own_tiles_first() {
+        let fb = Framebuffer::new(256, 64, FramebufferConfig::default());
+        let background = Background::new(fb.tiles.clone(), Arc::new(Recycle::default()));
+        let me = thread_token();
+        background.tiles[2].last.store(me, Ordering::Relaxed);
+        background.tiles[3].last.store(me + 1, Ordering::Relaxed);
+        background.enqueue(clear_scene(&fb, colour(7)));
+        // All four tiles have the same bin length: ready in tile order.
+        assert_eq!(
+            lock(&background.ready).iter().copied().collect::<Vec<_>>(),
+            [0, 1, 2, 3]
+        );
+        let order: Vec<usize> = std::iter::from_fn(|| background.take_ready(me)).collect();
+        assert_eq!(order, [2, 0, 1, 3]);
+        assert_ne!(
+            thread_token(),
+            std::thread::spawn(thread_token).join().unwrap()
+        );
     }
 
     /// Four threads shade while this one queues 300 scenes on the same tiles (the way the
