@@ -1065,6 +1065,17 @@ pub fn run_lighting_scaling(cfg: &BenchConfig) {
     );
 }
 
+/// " (phases differ: ...)" when two runs' cross-core round trips (`machine`) differ by more
+/// than twice, else nothing: their ratio then mixes the machine's fast and slow phases.
+fn phase_note(a: Option<f64>, b: Option<f64>) -> String {
+    match (a, b) {
+        (Some(a), Some(b)) if a.max(b) > 2.0 * a.min(b) => {
+            format!(" (phases differ: xcore {a:.0} vs {b:.0} ns)")
+        }
+        _ => String::new(),
+    }
+}
+
 /// Box-filters an image `f` times smaller in each direction.
 fn downsample(img: &Image, f: i32) -> Image {
     let (w, h) = (img.width / f, img.height / f);
@@ -1325,11 +1336,21 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
     );
     // The issues' targets are speeds relative to Mesa's drivers: each tilegl run's speed
     // against each Mesa run's (above 1: tilegl is faster).
+    // A ratio of two runs timed in different phases of the machine is marked.
+    let trip_of = |r: &BenchResult| {
+        results
+            .iter()
+            .position(|x| std::ptr::eq(x, r))
+            .and_then(|i| round_trip.get(i).copied().flatten())
+    };
     for t in results.iter().filter(|r| r.name.starts_with("tilegl")) {
         let speeds: Vec<String> = results
             .iter()
             .filter(|r| r.name.starts_with("mesa"))
-            .map(|m| format!("{:.2}x {}", m.median_ms() / t.median_ms(), m.name))
+            .map(|m| {
+                let note = phase_note(trip_of(t), trip_of(m));
+                format!("{:.2}x {}{note}", m.median_ms() / t.median_ms(), m.name)
+            })
             .collect();
         if !speeds.is_empty() {
             println!("speed of {}: {}", t.name, speeds.join(", "));
@@ -1352,5 +1373,24 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
             let d = diff(&results[i].image, &results[j].image, 8);
             println!("  {:<14} vs {:<14} {}", results[i].name, results[j].name, d);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::phase_note;
+
+    /// Only round trips more than twice apart mark a ratio; a missing measurement marks
+    /// nothing.
+    #[test]
+    fn ratios_across_phases_are_marked() {
+        assert_eq!(phase_note(Some(45.0), Some(44.0)), "");
+        assert_eq!(phase_note(Some(45.0), Some(90.0)), "");
+        assert_eq!(
+            phase_note(Some(389.0), Some(45.0)),
+            " (phases differ: xcore 389 vs 45 ns)"
+        );
+        assert!(phase_note(Some(44.0), Some(420.0)).contains("phases differ"));
+        assert_eq!(phase_note(None, Some(420.0)), "");
     }
 }
