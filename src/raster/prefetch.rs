@@ -1,8 +1,8 @@
 //! Cache-line prefetches for the scene's hand-over between cores. The thread that records a
 //! scene and the threads that shade it run on different cores; each line crosses between
 //! them, and on the development VM a cache line's round trip between its two virtual CPUs
-//! takes about 100 ns in some phases and about 400 ns in others (when the host places them far
-//! apart). Asking for the lines early lets that wait overlap with work.
+//! takes 45-120 ns in some phases and about 400 ns in others (when the host places them far
+//! apart; `tilegl-conformance`'s `machine` module measures it). Asking for the lines early lets that wait overlap with work.
 
 /// Asks for `lines` cache lines from `item`'s address to be read into the nearest cache.
 #[inline(always)]
@@ -30,7 +30,7 @@ pub const WRITE_AHEAD: usize = 512;
 /// that the stores there do not wait. A recycled scene's lines were last read by a shading
 /// thread on another core, and the first store to each waits until that core has given it
 /// up: with these prefetches ahead of the recording thread's stores, spheremap 2T went from
-/// 12.7 to 11.0 ms in the VM's slow phases (1 % slower in its fast ones).
+/// 12.7 to 11.0 ms in the VM's slow phases (within 1 % in its fast ones).
 #[inline(always)]
 pub fn write_past<T>(items: &[T], ahead: usize, bytes: usize) {
     #[cfg(target_arch = "x86_64")]

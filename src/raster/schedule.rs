@@ -153,7 +153,7 @@ impl Background {
     /// Shades queued tiles until none is ready.
     fn shade_ready(&self) {
         let me = thread_token();
-        // The lock is released before shading (a `while let` would hold it).
+        // `take_ready` releases the lock before the tile is shaded.
         while let Some(t) = self.take_ready(me) {
             self.shade_queue(t);
         }
