@@ -7,7 +7,7 @@
 //! implementation's time, so that each ratio is read together with the phase it was measured
 //! in.
 
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
 
 /// Round trips per measurement (a few milliseconds).
@@ -23,24 +23,27 @@ pub fn cross_core_round_trip_ns() -> Option<f64> {
     }
     let mut batches = Vec::new();
     for _ in 0..5 {
-        batches.push(measure()?);
+        batches.push(measure(0, 1)?);
     }
     batches.sort_by(f64::total_cmp);
     Some(batches[2])
 }
 
-fn measure() -> Option<f64> {
+/// One measurement between CPUs `here` (this thread) and `there` (a spawned one).
+fn measure(here: usize, there: usize) -> Option<f64> {
     let ball = AtomicU64::new(0);
+    // Set by a side that gives up (it could not be pinned); never cleared, so neither side
+    // can wait for a counter the other will not advance.
+    let abort = AtomicBool::new(false);
     std::thread::scope(|s| {
-        let ball = &ball;
+        let (ball, abort) = (&ball, &abort);
         let other = s.spawn(move || {
-            if !pin_to_cpu(1) {
-                // Let the measuring side stop waiting.
-                ball.store(u64::MAX, Ordering::Release);
+            if !pin_to_cpu(there) {
+                abort.store(true, Ordering::Release);
                 return false;
             }
             for k in 0..TRIPS {
-                if !wait_for(ball, 2 * k + 1) {
+                if !wait_for(ball, abort, 2 * k + 1) {
                     return false;
                 }
                 ball.store(2 * k + 2, Ordering::Release);
@@ -48,22 +51,22 @@ fn measure() -> Option<f64> {
             true
         });
         let saved = affinity();
-        let pinned = saved.is_some() && pin_to_cpu(0);
-        // The first trip waits for the other thread to start: not timed.
-        ball.store(1, Ordering::Release);
-        let mut ok = pinned && wait_for(ball, 2);
+        let mut ok = saved.is_some() && pin_to_cpu(here);
+        if ok {
+            // The first trip waits for the other thread to start: not timed.
+            ball.store(1, Ordering::Release);
+            ok = wait_for(ball, abort, 2);
+        }
         let start = Instant::now();
-        for k in 1..TRIPS {
-            if !ok {
-                break;
-            }
+        let mut k = 1;
+        while ok && k < TRIPS {
             ball.store(2 * k + 1, Ordering::Release);
-            ok = wait_for(ball, 2 * k + 2);
+            ok = wait_for(ball, abort, 2 * k + 2);
+            k += 1;
         }
         let elapsed = start.elapsed().as_secs_f64();
         if !ok {
-            // Release the other thread if it still waits.
-            ball.store(u64::MAX, Ordering::Release);
+            abort.store(true, Ordering::Release);
         }
         let other_ok = other.join().unwrap_or(false);
         if let Some(mask) = saved {
@@ -73,14 +76,16 @@ fn measure() -> Option<f64> {
     })
 }
 
-/// Spins until the counter is `value` (true) or the other side gave up (false).
-fn wait_for(ball: &AtomicU64, value: u64) -> bool {
+/// Spins until the counter is `value` (true) or a side gave up (false).
+fn wait_for(ball: &AtomicU64, abort: &AtomicBool, value: u64) -> bool {
     loop {
-        match ball.load(Ordering::Acquire) {
-            v if v == value => return true,
-            u64::MAX => return false,
-            _ => std::hint::spin_loop(),
+        if ball.load(Ordering::Acquire) == value {
+            return true;
         }
+        if abort.load(Ordering::Acquire) {
+            return false;
+        }
+        std::hint::spin_loop();
     }
 }
 
@@ -115,6 +120,9 @@ fn set_affinity(mask: &CpuSet) -> bool {
 
 /// Pins the calling thread to `cpu`; false when the system refuses.
 fn pin_to_cpu(cpu: usize) -> bool {
+    if cpu >= 8 * CPU_SET_BYTES {
+        return false;
+    }
     let mut mask: CpuSet = [0; CPU_SET_BYTES / 8];
     mask[cpu / 64] |= 1 << (cpu % 64);
     set_affinity(&mask)
@@ -138,6 +146,16 @@ mod tests {
             return;
         };
         assert!((10.0..100_000.0).contains(&ns), "{ns} ns");
+        assert_eq!(affinity(), Some(before));
+    }
+
+    /// A side that cannot be pinned (a CPU the machine does not have) gives up without
+    /// leaving the other waiting, on either side, and the affinity is restored.
+    #[test]
+    fn an_unpinnable_side_gives_up() {
+        let before = affinity().expect("sched_getaffinity");
+        assert_eq!(measure(0, 1023), None);
+        assert_eq!(measure(1023, 0), None);
         assert_eq!(affinity(), Some(before));
     }
 }
