@@ -7,17 +7,12 @@ mod common;
 
 use std::collections::BTreeSet;
 
-use common::{pixel, read_rgba, window_ortho};
+use common::{pixel, read_rgba, threaded_context, window_ortho};
 use tilegl::enums::*;
-use tilegl::{Context, ContextConfig, Gl};
+use tilegl::{Context, Gl};
 
 fn context(w: i32, h: i32) -> Context {
-    let mut gl = Context::with_config(ContextConfig {
-        width: w,
-        height: h,
-        threads: 2,
-        ..ContextConfig::default()
-    });
+    let mut gl = threaded_context(w, h, 2);
     window_ortho(&mut gl);
     gl
 }

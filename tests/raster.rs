@@ -4,9 +4,9 @@
 
 mod common;
 
-use common::{pixel, random_texture, read_depth, read_rgba, window_ortho, Rng};
+use common::{pixel, random_texture, read_depth, read_rgba, threaded_context, window_ortho, Rng};
 use tilegl::enums::*;
-use tilegl::{Context, ContextConfig, Gl};
+use tilegl::{Context, Gl};
 
 /// Twice the signed area of (a, b, p).
 fn orient(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
@@ -351,12 +351,7 @@ fn triangle_cloud(
 #[test]
 fn output_is_identical_for_1_2_and_8_threads() {
     let render = |threads| {
-        let mut gl = Context::with_config(ContextConfig {
-            width: 200,
-            height: 150,
-            threads,
-            ..ContextConfig::default()
-        });
+        let mut gl = threaded_context(200, 150, threads);
         busy_scene(&mut gl);
         let depth = read_depth(&mut gl);
         (read_rgba(&mut gl), depth)
@@ -971,12 +966,7 @@ fn sampled_units_match_the_general_path() {
 fn background_shading_changes_nothing() {
     let per_part = tilegl::raster::schedule::BACKGROUND_COMMANDS + 700;
     let render = |threads| {
-        let mut gl = Context::with_config(ContextConfig {
-            width: 160,
-            height: 120,
-            threads,
-            ..ContextConfig::default()
-        });
+        let mut gl = threaded_context(160, 120, threads);
         let mut rng = Rng(0xB6);
         let mut name = [0u32];
         gl.gen_textures(1, &mut name);
@@ -1063,12 +1053,7 @@ fn background_shading_changes_nothing() {
 fn queued_background_scenes_keep_each_tiles_order() {
     let per_scene = tilegl::raster::schedule::BACKGROUND_COMMANDS + 10;
     let render = |threads| {
-        let mut gl = Context::with_config(ContextConfig {
-            width: 130,
-            height: 70,
-            threads,
-            ..ContextConfig::default()
-        });
+        let mut gl = threaded_context(130, 70, threads);
         let mut rng = Rng(0x51);
         gl.enable(GL_DEPTH_TEST);
         gl.depth_func(GL_LEQUAL);

@@ -417,21 +417,16 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     // A triangle's attribute planes spread over the full layout.
     let mut attrs = AttrScratch::default();
     let mut coarse = CoarseDepth::default();
-    // The first entries' commands and planes, which the loop's look-ahead never reaches.
+    // The first entries, which the loop's look-ahead never reaches.
     for k in 0..PREFETCH_COMMAND_AHEAD {
-        if let Some(c) = bin.get(k).and_then(|&c| scene.commands.get(c as usize)) {
-            prefetch::read(c, 1);
-            if let Command::Triangle(t) = c {
-                if k < PREFETCH_PLANES_AHEAD {
-                    if let Some(p) = scene.planes.get(t.planes as usize) {
-                        prefetch::read(p, 3);
-                    }
-                }
-            }
-        }
+        prefetch_command(scene, bin, k);
+    }
+    for k in 0..PREFETCH_PLANES_AHEAD {
+        prefetch_planes(scene, bin, k);
     }
     for (k, &ci) in bin.iter().enumerate() {
-        prefetch_ahead(scene, bin, k);
+        prefetch_command(scene, bin, k + PREFETCH_COMMAND_AHEAD);
+        prefetch_planes(scene, bin, k + PREFETCH_PLANES_AHEAD);
         let command = &scene.commands[ci as usize];
         let state = match command {
             Command::Clear(_) => None,
@@ -496,20 +491,20 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
 const PREFETCH_COMMAND_AHEAD: usize = 8;
 const PREFETCH_PLANES_AHEAD: usize = 4;
 
+/// Prefetches the command of bin entry `k` (if there is one).
 #[inline(always)]
-fn prefetch_ahead(scene: &Scene, bin: &[u32], k: usize) {
-    if let Some(c) = bin
-        .get(k + PREFETCH_COMMAND_AHEAD)
-        .and_then(|&c| scene.commands.get(c as usize))
-    {
+fn prefetch_command(scene: &Scene, bin: &[u32], k: usize) {
+    if let Some(c) = bin.get(k).and_then(|&c| scene.commands.get(c as usize)) {
         prefetch::read(c, 1);
     }
-    if let Some(Command::Triangle(t)) = bin
-        .get(k + PREFETCH_PLANES_AHEAD)
-        .and_then(|&c| scene.commands.get(c as usize))
-    {
+}
+
+/// Prefetches the planes of bin entry `k` when it is a triangle: their first three cache
+/// lines, the z and 1/w planes and most attributes'.
+#[inline(always)]
+fn prefetch_planes(scene: &Scene, bin: &[u32], k: usize) {
+    if let Some(Command::Triangle(t)) = bin.get(k).and_then(|&c| scene.commands.get(c as usize)) {
         if let Some(p) = scene.planes.get(t.planes as usize) {
-            // The first three cache lines: the z and 1/w planes and most attributes'.
             prefetch::read(p, 3);
         }
     }

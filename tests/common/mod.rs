@@ -2,7 +2,17 @@
 #![allow(dead_code)]
 
 use tilegl::enums::*;
-use tilegl::{Context, Gl};
+use tilegl::{Context, ContextConfig, Gl};
+
+/// A `width` x `height` context shading with `threads` threads (0: the global pool).
+pub fn threaded_context(width: i32, height: i32, threads: usize) -> Context {
+    Context::with_config(ContextConfig {
+        width,
+        height,
+        threads,
+        ..ContextConfig::default()
+    })
+}
 
 /// Reads the whole colour buffer as RGBA8, bottom row first.
 pub fn read_rgba(gl: &mut Context) -> Vec<[u8; 4]> {
