@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use tilegl::enums::*;
 use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
 
+use crate::c_route::CAbiContext;
 use crate::mesa::{self, MesaContext, Oracle, OracleError, OracleInfo};
 use crate::tolerance::Tolerance;
 
@@ -147,6 +148,37 @@ pub fn render_tilegl(scene: &Scene) -> Rendered {
         ..ContextConfig::default()
     });
     run_scene(&mut ctx, scene)
+}
+
+/// Renders a scene on a fresh tilegl context reached through the C ABI (the exported OSMesa
+/// and `gl*` functions, [`crate::c_route`]), with the buffers [`render_tilegl`] uses.
+pub fn render_c_abi(scene: &Scene) -> Rendered {
+    let mut c = CAbiContext::create(scene.width, scene.height, 16).unwrap_or_else(|| {
+        panic!(
+            "{}: the C ABI refused a {}x{} context",
+            scene.name, scene.width, scene.height
+        )
+    });
+    run_scene(&mut *c, scene)
+}
+
+/// Asserts that the C ABI route gives exactly the Rust route's picture and error for `scene`
+/// (`rust` is the Rust route's result). Any difference is a defect of the C ABI: the two run
+/// the same renderer on the same calls.
+pub fn assert_c_abi_matches(scene: &Scene, rust: &Rendered) {
+    let c = render_c_abi(scene);
+    assert_eq!(
+        c.error, rust.error,
+        "{}: glGetError through the C ABI 0x{:04x}, through the Rust API 0x{:04x}",
+        scene.name, c.error, rust.error
+    );
+    if c.image != rust.image {
+        let d = diff(&c.image, &rust.image, 0);
+        panic!(
+            "{}: the C ABI's picture differs from the Rust API's: {d}",
+            scene.name
+        );
+    }
 }
 
 /// Renders a scene on a fresh Mesa context of this process (its driver is whatever
