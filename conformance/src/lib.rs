@@ -19,6 +19,7 @@ pub mod scenes_raster;
 pub mod scenes_state;
 pub mod scenes_texture;
 pub mod scenes_texture_matrix;
+pub mod state_cases;
 pub mod tolerance;
 
 pub use compare::{Diff, Image, Scene};
