@@ -381,6 +381,84 @@ fn c_len_expr(cmd: &Command, p: &Param) -> String {
     format!("count_len({} as i64)", ident(len.trim()))
 }
 
+/// The audit tables of the C ABI's pointer lengths (`tests/capi_lengths.rs`): every exported
+/// entry point with a pointer that GL sizes at call time, with the registry's length, and for
+/// those whose every pointer has a fixed length, a call with defaulted scalars.
+fn capi_audit_tables(ex: &mut String, core: &[&Command]) {
+    writeln!(ex, "/// Entry points with pointer parameters sized at call time: (name, parameter, registry length).").unwrap();
+    writeln!(
+        ex,
+        "#[doc(hidden)]\npub const SIZED_POINTER_PARAMS: &[(&str, &str, &str)] = &["
+    )
+    .unwrap();
+    for c in core {
+        for p in c
+            .params
+            .iter()
+            .filter(|p| p.depth > 0 && !is_retained(&c.name, p))
+        {
+            let len = p.len.clone().unwrap_or_default();
+            writeln!(ex, "    (\"{}\", \"{}\", \"{}\"),", c.name, p.name, len).unwrap();
+        }
+    }
+    writeln!(ex, "];").unwrap();
+    writeln!(ex, "/// Calls of the entry points whose every pointer has a fixed length: (name, bytes each pointer spans, call with every pointer at the argument).").unwrap();
+    writeln!(
+        ex,
+        "#[doc(hidden)]\npub type AuditCall = unsafe fn(*mut u8);\n#[doc(hidden)]\npub const FIXED_LENGTH_CALLS: &[(&str, usize, AuditCall)] = &["
+    )
+    .unwrap();
+    for c in core {
+        let ptrs: Vec<&Param> = c.params.iter().filter(|p| p.depth > 0).collect();
+        if ptrs.is_empty()
+            || ptrs
+                .iter()
+                .any(|p| is_retained(&c.name, p) || literal_len(p).is_none())
+        {
+            continue;
+        }
+        let bytes: Vec<String> = ptrs
+            .iter()
+            .map(|p| {
+                format!(
+                    "{} * std::mem::size_of::<{}>()",
+                    literal_len(p).unwrap(),
+                    scalar(&p.base)
+                )
+            })
+            .collect();
+        let args: Vec<String> = c
+            .params
+            .iter()
+            .map(|p| {
+                if p.depth > 0 {
+                    format!("p as {}", c_param_type(p))
+                } else if p.name == "target" && c.name.starts_with("glMultiTexCoord") {
+                    "crate::api::enums::GL_TEXTURE0".into()
+                } else if p.name == "plane" {
+                    "crate::api::enums::GL_CLIP_PLANE0".into()
+                } else {
+                    format!("0 as {}", scalar(&p.base))
+                }
+            })
+            .collect();
+        writeln!(
+            ex,
+            "    (\"{0}\", {1}, |p| unsafe {{ {3}{0}({2}); }}),",
+            c.name,
+            bytes[0],
+            args.join(", "),
+            if c.ret_base == "void" && c.ret_depth == 0 {
+                ""
+            } else {
+                "let _ = "
+            }
+        )
+        .unwrap();
+    }
+    writeln!(ex, "];").unwrap();
+}
+
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     let xml = std::str::from_utf8(khronos_api::GL_XML).expect("gl.xml is UTF-8");
@@ -903,6 +981,7 @@ fn main() {
         writeln!(fo, "    }}").unwrap();
     }
     writeln!(fo, "}}").unwrap();
+    capi_audit_tables(&mut ex, &core);
     writeln!(ex, "/// The exported GL function of this name (core or ARB/EXT alias), for `OSMesaGetProcAddress`.").unwrap();
     writeln!(
         ex,

@@ -76,7 +76,7 @@ mod client_bound {
         #[cfg(debug_assertions)]
         {
             let (start, end) = BOUND.get();
-            if p >= start && p <= end && end > start && bytes > end - p {
+            if start != 0 && p >= start && p <= end && bytes > end - p {
                 OVERRUNS.set(OVERRUNS.get() + 1);
                 return end - p;
             }
@@ -179,7 +179,7 @@ unsafe fn array_mut<'a, T, const N: usize>(p: *mut T) -> Option<&'a mut [T; N]> 
 
 /// The exported `gl*` functions.
 pub mod exports {
-    #![allow(non_snake_case)]
+    #![allow(non_snake_case, clippy::identity_op)]
     use super::*;
     include!(concat!(env!("OUT_DIR"), "/capi_exports.rs"));
 }
