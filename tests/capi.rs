@@ -73,7 +73,11 @@ fn toolchain_problem(scratch: &Path) -> Option<String> {
 /// Compiles `source` linked with `-l<lib>` from `lib_dir` (or the system's) into `exe`.
 fn compile(source: &Path, exe: &Path, lib_dir: Option<&Path>, lib: &str) -> Result<(), String> {
     let mut cmd = Command::new("cc");
-    cmd.arg("-std=c99").arg("-Wall").arg(source);
+    cmd.arg("-std=c99").arg("-Wall").arg("-Werror").arg(source);
+    if lib == "tilegl" {
+        // tilegl's own headers (generated from the registry), not the system's.
+        cmd.arg(format!("-I{}/include", env!("CARGO_MANIFEST_DIR")));
+    }
     if let Some(dir) = lib_dir {
         cmd.arg(format!("-L{}", dir.display()))
             .arg(format!("-Wl,-rpath,{}", dir.display()));
@@ -169,7 +173,9 @@ fn c_programs_expectations_hold_on_mesa() {
         let stem = source.file_stem().unwrap().to_string_lossy().into_owned();
         let exe = scratch.join(&stem);
         if let Err(e) = compile(&source, &exe, None, "OSMesa") {
-            skip_or_fail(&format!("cannot link -lOSMesa for the Mesa cross-check ({e})"));
+            skip_or_fail(&format!(
+                "cannot link -lOSMesa for the Mesa cross-check ({e})"
+            ));
             return;
         }
         let (ok, output) = run(&exe, None);
@@ -284,4 +290,27 @@ fn c_pixel_programs_match_mesa() {
         println!("{stem}: {} sections compared with Mesa", t.len());
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// `include/GL/gl.h` and `include/GL/glext.h` are what `build.rs` generates from the registry
+/// (the C programs above compile against them). After a change to the generator, refresh them
+/// with `TILEGL_BLESS_HEADERS=1 cargo test -p tilegl --test capi`.
+#[test]
+fn c_headers_are_the_generated_ones() {
+    let include = Path::new(env!("CARGO_MANIFEST_DIR")).join("include/GL");
+    for name in ["gl.h", "glext.h"] {
+        let generated = std::fs::read_to_string(Path::new(env!("OUT_DIR")).join(name))
+            .unwrap_or_else(|e| panic!("generated {name}: {e}"));
+        let path = include.join(name);
+        if std::env::var_os("TILEGL_BLESS_HEADERS").is_some() {
+            std::fs::write(&path, &generated).expect("write header");
+        }
+        let committed =
+            std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(
+            committed == generated,
+            "{} is not what build.rs generates: run TILEGL_BLESS_HEADERS=1 cargo test -p tilegl --test capi",
+            path.display()
+        );
+    }
 }
