@@ -10,6 +10,7 @@ pub mod known_failures;
 pub mod machine;
 pub mod mesa;
 pub mod prng;
+pub mod report;
 pub mod scenes;
 pub mod scenes_arrays;
 pub mod scenes_cascade;

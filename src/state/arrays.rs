@@ -827,7 +827,10 @@ impl Context {
         // small buffer costs nothing.
         let last = last.min(self.buffer_backed_elements().max(first as u64));
         let mut indices = Vec::new();
-        if indices.try_reserve_exact((last - first as u64) as usize).is_err() {
+        if indices
+            .try_reserve_exact((last - first as u64) as usize)
+            .is_err()
+        {
             return self.list_aware_error(GL_OUT_OF_MEMORY);
         }
         indices.extend(first as u32..last as u32);
