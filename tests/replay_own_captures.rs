@@ -7,7 +7,7 @@
 //! Captures that need features tilegl does not have yet are listed in [`KNOWN_FAILURES`] with
 //! the feature; their test checks that they still fail, so the list stays true.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 mod common;
 
@@ -15,7 +15,7 @@ mod common;
 const KNOWN_FAILURES: &[(&str, &str)] = &[];
 
 fn traces_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("conformance/traces")
+    common::own_traces()
 }
 
 fn check_capture(name: &str) {
