@@ -3,7 +3,7 @@
 //! 16384x16384 RGBA32F size gives the GL error Mesa gives (`GL_OUT_OF_MEMORY` once the size is
 //! allowed, `GL_INVALID_VALUE` while it is above `GL_MAX_TEXTURE_SIZE`) without an abort and
 //! without taking the memory; a capture whose blob claims gigabytes is refused with an error
-//! naming the size, before the blob is read.
+//! naming the size, before the blob is read; replays hold their memory flat.
 //!
 //! The tests of this file run one at a time (a lock), so that one test's allocations do not
 //! show in another's resident-memory figures.
@@ -400,4 +400,69 @@ fn a_capture_claiming_gigabytes_is_refused_before_reading() {
     assert_eq!(o.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("4294967296 bytes"), "{stderr}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Replays of the shared captures with the most frames (xss-flurry: 110) and the most calls
+/// (xss-atlantis: 72 000), every frame snapshotted: within a replay the resident memory stays
+/// flat once the capture's textures are loaded, and three rounds of the four replays end where
+/// the first did.
+#[test]
+fn a_long_replay_holds_memory_flat() {
+    let _one = lock();
+    use tilegl::replay::player::{FrameSelection, Player, Want};
+    use tilegl::replay::trace::TraceReader;
+    if resident().is_none() {
+        return;
+    }
+    let dir = common::shared_traces();
+    let mut after_round = Vec::new();
+    for round in 0..3 {
+        for name in ["xss-flurry", "xss-glblur", "xss-cage", "xss-atlantis"] {
+            let trace = common::require(&dir.join(format!("{name}.trace")));
+            let mut player = Player::new(2);
+            let want = Want {
+                frames: FrameSelection::All,
+                calls: Default::default(),
+                stop_early: false,
+            };
+            let mut samples = Vec::new();
+            player
+                .play(
+                    &mut TraceReader::open(&trace).unwrap(),
+                    &want,
+                    &mut |_| {
+                        samples.push(resident().unwrap());
+                        Ok(())
+                    },
+                    &mut |_| {},
+                )
+                .unwrap();
+            assert!(samples.len() >= 10, "{name}: {} frames", samples.len());
+            // From the end of the first third on (the capture's set-up is over).
+            let settled = &samples[samples.len() / 3..];
+            let low = *settled.iter().min().unwrap();
+            let high = *settled.iter().max().unwrap();
+            if round == 0 {
+                eprintln!(
+                    "{name}: {} frames, resident {:.1}-{:.1} MiB after the first third",
+                    samples.len(),
+                    low as f64 / 1048576.0,
+                    high as f64 / 1048576.0
+                );
+            }
+            assert!(
+                high - low < 4 << 20,
+                "{name}: resident memory grew from {low} to {high} bytes during the replay"
+            );
+        }
+        after_round.push(resident().unwrap());
+    }
+    eprintln!(
+        "replay rounds: resident after each {:?} MiB",
+        after_round.iter().map(|r| r >> 20).collect::<Vec<_>>()
+    );
+    assert!(
+        after_round[2] < after_round[0] + (4 << 20),
+        "three rounds of replays: resident {after_round:?} bytes"
+    );
 }
