@@ -158,15 +158,20 @@ fn timed<R>(f: impl FnOnce() -> R) -> (R, f64) {
 }
 
 /// Runs every scene whose name contains `filter` on tilegl and on Mesa (llvmpipe here,
-/// softpipe in a child of this executable, which must call
-/// [`compare::serve_child_request`] first thing in `main`), writing the pictures into `dir`.
-pub fn run_scenes(dir: &Path, filter: &str, progress: &mut Progress) -> Vec<Entry> {
+/// softpipe in a child: this executable run again with `child_args`, which must reach a call
+/// of [`compare::serve_child_request`]), writing the pictures into `dir`.
+pub fn run_scenes(
+    dir: &Path,
+    filter: &str,
+    progress: &mut Progress,
+    child_args: &[&str],
+) -> Vec<Entry> {
     let mesa_ok = mesa::mesa_available();
     let mut entries = Vec::new();
     for (area, scenes) in scene_areas() {
         for scene in scenes.iter().filter(|s| s.name.contains(filter)) {
             progress.step(scene.name);
-            entries.push(run_scene(dir, area, scene, mesa_ok.is_ok()));
+            entries.push(run_scene(dir, area, scene, mesa_ok.is_ok(), child_args));
         }
     }
     entries
@@ -180,7 +185,13 @@ pub fn scene_count(filter: &str) -> usize {
         .sum()
 }
 
-fn run_scene(dir: &Path, area: &'static str, scene: &Scene, with_mesa: bool) -> Entry {
+fn run_scene(
+    dir: &Path,
+    area: &'static str,
+    scene: &Scene,
+    with_mesa: bool,
+    child_args: &[&str],
+) -> Entry {
     let file = |tag: &str| format!("{}-{tag}.png", scene.name);
     let mut note = String::new();
     let (tilegl, t_ms) = timed(|| compare::render_tilegl(scene));
@@ -212,7 +223,7 @@ fn run_scene(dir: &Path, area: &'static str, scene: &Scene, with_mesa: bool) -> 
             }
             Err(e) => note.push_str(&format!("llvmpipe: {e}; ")),
         }
-        let (s, ms) = timed(|| compare::render_scene_with_driver("softpipe", scene, &[]));
+        let (s, ms) = timed(|| compare::render_scene_with_driver("softpipe", scene, child_args));
         match s {
             Ok((image, _)) => {
                 softpipe = Some(image);
@@ -494,18 +505,19 @@ pub fn write_html(dir: &Path, entries: &[Entry], mesa: &str) -> Result<PathBuf, 
     Ok(path)
 }
 
-/// The whole report: scenes and captures matching `filter` into `dir`. Returns the page and
-/// the entries.
+/// The whole report (for a program whose `main` serves the softpipe child first): scenes, and
+/// the captures of each folder of `traces`, matching `filter`,
+/// into `dir`. Returns the page and the entries.
 pub fn write_report(
     dir: &Path,
-    traces: Option<&Path>,
+    traces: &[PathBuf],
     filter: &str,
 ) -> Result<(PathBuf, Vec<Entry>), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let captures = traces.map_or_else(Vec::new, |t| capture_files(t, filter));
-    let mut progress = Progress::new(scene_count(filter) + captures.len());
-    let mut entries = run_scenes(dir, filter, &mut progress);
-    if let Some(t) = traces {
+    let captures: usize = traces.iter().map(|t| capture_files(t, filter).len()).sum();
+    let mut progress = Progress::new(scene_count(filter) + captures);
+    let mut entries = run_scenes(dir, filter, &mut progress, &[]);
+    for t in traces {
         entries.extend(run_captures(t, dir, filter, &mut progress));
     }
     let mesa = match MesaContext::create(4, 4) {

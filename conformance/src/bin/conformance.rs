@@ -17,14 +17,15 @@ fn main() -> ExitCode {
     }
     let mut filter = String::new();
     let mut dir: Option<PathBuf> = None;
-    let mut traces = Some(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("traces"));
+    let own = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("traces");
+    let mut traces = vec![own.join("shared"), own];
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--filter" => filter = args.next().unwrap_or_default(),
             "--report" => dir = args.next().map(PathBuf::from),
-            "--traces" => traces = args.next().map(PathBuf::from),
-            "--no-traces" => traces = None,
+            "--traces" => traces = args.next().map(PathBuf::from).into_iter().collect(),
+            "--no-traces" => traces.clear(),
             _ => {
                 eprintln!("usage: conformance [--filter PATTERN] [--report DIR] [--traces DIR | --no-traces]");
                 return ExitCode::from(2);
@@ -34,7 +35,7 @@ fn main() -> ExitCode {
     let out = dir.clone().unwrap_or_else(|| {
         std::env::temp_dir().join(format!("tilegl-conformance-{}", std::process::id()))
     });
-    let (page, entries) = match report::write_report(&out, traces.as_deref(), &filter) {
+    let (page, entries) = match report::write_report(&out, &traces, &filter) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("conformance: {e}");
