@@ -10,6 +10,7 @@ pub mod known_failures;
 pub mod machine;
 pub mod mesa;
 pub mod prng;
+pub mod quality;
 pub mod report;
 pub mod scenes;
 pub mod scenes_arrays;

@@ -423,6 +423,9 @@ pub fn write_html(dir: &Path, entries: &[Entry], mesa: &str) -> Result<PathBuf, 
         count(None, Verdict::KnownFailure),
         esc(mesa)
     );
+    if dir.join("quality.html").is_file() {
+        h.push_str("<p><a href=\"quality.html\">Error against run time for every quality knob</a> (charts and tables, tilegl and Mesa llvmpipe).</p>\n");
+    }
     h.push_str("<h2>Summary by feature area</h2>\n<table id=\"summary\"><thead><tr><th>area</th><th>entries</th><th>pass</th><th>fail</th><th>known failures</th></tr></thead><tbody>\n");
     for a in &areas {
         let n = entries.iter().filter(|e| e.area == *a).count();
@@ -506,12 +509,14 @@ pub fn write_html(dir: &Path, entries: &[Entry], mesa: &str) -> Result<PathBuf, 
 }
 
 /// The whole report (for a program whose `main` serves the softpipe child first): scenes, and
-/// the captures of each folder of `traces`, matching `filter`,
-/// into `dir`. Returns the page and the entries.
+/// the captures of each folder of `traces`, matching `filter`, into `dir`; with `quality`, the
+/// error-against-run-time charts of every quality knob too (`quality.html`, linked from the
+/// page). Returns the page and the entries.
 pub fn write_report(
     dir: &Path,
     traces: &[PathBuf],
     filter: &str,
+    quality: bool,
 ) -> Result<(PathBuf, Vec<Entry>), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let captures: usize = traces.iter().map(|t| capture_files(t, filter).len()).sum();
@@ -524,6 +529,14 @@ pub fn write_report(
         Ok(c) => c.info().to_string(),
         Err(e) => format!("Mesa unavailable ({e})"),
     };
+    if quality {
+        crate::quality::write_quality(
+            dir,
+            &[],
+            std::time::Duration::from_millis(200),
+            mesa::mesa_available().is_ok(),
+        )?;
+    }
     let page = write_html(dir, &entries, &mesa)?;
     Ok((page, entries))
 }

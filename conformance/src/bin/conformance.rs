@@ -1,7 +1,9 @@
 //! `conformance [--filter PATTERN] [--report DIR] [--traces DIR]`: runs the differential
 //! scenes (and, with a report, the captures of `conformance/traces/`) on tilegl and on Mesa
 //! (llvmpipe, and softpipe in a child process), prints one line per entry and a summary, and
-//! with `--report` writes the HTML report `DIR/index.html`. `tilegl conformance` runs this.
+//! with `--report` writes the HTML report `DIR/index.html` and, unless `--no-quality`, the
+//! error-against-run-time charts of every quality knob (`DIR/quality.html`). `tilegl
+//! conformance` runs this.
 //! Exit status 1 when an entry fails.
 
 use std::path::PathBuf;
@@ -19,6 +21,7 @@ fn main() -> ExitCode {
     let mut dir: Option<PathBuf> = None;
     let own = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("traces");
     let mut traces = vec![own.join("shared"), own];
+    let mut quality = true;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -26,8 +29,9 @@ fn main() -> ExitCode {
             "--report" => dir = args.next().map(PathBuf::from),
             "--traces" => traces = args.next().map(PathBuf::from).into_iter().collect(),
             "--no-traces" => traces.clear(),
+            "--no-quality" => quality = false,
             _ => {
-                eprintln!("usage: conformance [--filter PATTERN] [--report DIR] [--traces DIR | --no-traces]");
+                eprintln!("usage: conformance [--filter PATTERN] [--report DIR] [--traces DIR | --no-traces] [--no-quality]");
                 return ExitCode::from(2);
             }
         }
@@ -35,13 +39,14 @@ fn main() -> ExitCode {
     let out = dir.clone().unwrap_or_else(|| {
         std::env::temp_dir().join(format!("tilegl-conformance-{}", std::process::id()))
     });
-    let (page, entries) = match report::write_report(&out, &traces, &filter) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("conformance: {e}");
-            return ExitCode::from(2);
-        }
-    };
+    let (page, entries) =
+        match report::write_report(&out, &traces, &filter, quality && dir.is_some()) {
+            Ok(r) => r,
+            Err(e) => {
+                eprintln!("conformance: {e}");
+                return ExitCode::from(2);
+            }
+        };
     for e in &entries {
         let d = e.diff.map_or("no picture".to_string(), |d| d.to_string());
         println!(
