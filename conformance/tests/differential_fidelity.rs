@@ -1,0 +1,21 @@
+//! Differential tests of the fidelity classes found replaying real programs (scenes in
+//! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding.
+
+use tilegl_conformance::differential;
+use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
+
+differential!(
+    smooth_lines_width_1,
+    smooth_lines_width_2_5,
+    smooth_lines_width_4,
+    smooth_lines_width_7,
+    smooth_lines_receding_width_1,
+    smooth_lines_receding_width_2_5,
+    smooth_lines_receding_width_4,
+    smooth_lines_receding_width_7,
+);
+
+#[test]
+fn every_fidelity_scene_has_a_test() {
+    tilegl_conformance::assert_every_scene_has_a_test(FIDELITY_SCENES, CASES);
+}
