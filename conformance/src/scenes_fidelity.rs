@@ -30,7 +30,73 @@ pub const FIDELITY_SCENES: &[Scene] = &[
         "smooth_lines_receding_width_7",
         smooth_lines_receding_width_7,
     ),
+    big("points_and_lines_of_1000", points_and_lines_of_1000),
+    big("smooth_lines_of_1000", smooth_lines_of_1000),
 ];
+
+/// A 320 x 320 scene: room for the edges of primitives 255 pixels wide.
+const fn big(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
+    Scene {
+        width: 320,
+        height: 320,
+        ..scene(name, draw)
+    }
+}
+
+/// Pixel space of the 320 x 320 scenes, over black.
+fn big_pixel_space(gl: &mut dyn Gl) {
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 320.0, 0.0, 320.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+/// `glPointSize(1000)` and `glLineWidth(1000)`: both are clamped to the implementation's
+/// largest size (Mesa: 255, `GL_POINT_SIZE_RANGE` and `GL_LINE_WIDTH_RANGE`), so the edges of
+/// the squares and bands fall inside the window; overlapping primitives are added.
+fn points_and_lines_of_1000(gl: &mut dyn Gl) {
+    big_pixel_space(gl);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_ONE, GL_ONE);
+    gl.point_size(1000.0);
+    gl.begin(GL_POINTS);
+    gl.color_3f(0.5, 0.0, 0.0);
+    gl.vertex_2f(60.3, 70.6);
+    gl.color_3f(0.0, 0.5, 0.0);
+    gl.vertex_2f(250.7, 240.2);
+    gl.end();
+    gl.line_width(1000.0);
+    gl.begin(GL_LINES);
+    // x-major: a vertical band 255 rows tall; y-major: 255 columns wide.
+    gl.color_3f(0.0, 0.0, 0.5);
+    gl.vertex_2f(20.2, 150.4);
+    gl.vertex_2f(300.6, 190.1);
+    gl.color_3f(0.25, 0.25, 0.0);
+    gl.vertex_2f(140.3, 10.7);
+    gl.vertex_2f(170.9, 300.2);
+    gl.end();
+}
+
+/// Antialiased lines of width 1000 (clamped to 255): the quad's sides and ends show inside
+/// the window.
+fn smooth_lines_of_1000(gl: &mut dyn Gl) {
+    big_pixel_space(gl);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE);
+    gl.line_width(1000.0);
+    gl.begin(GL_LINES);
+    gl.color_4f(1.0, 0.0, 0.0, 0.5);
+    gl.vertex_2f(100.2, 150.4);
+    gl.vertex_2f(220.6, 170.1);
+    gl.color_4f(0.0, 1.0, 0.0, 0.5);
+    gl.vertex_2f(160.3, 120.7);
+    gl.vertex_2f(150.9, 200.2);
+    gl.end();
+}
 
 /// Pixel space over black (the smooth-line captures blend over black).
 fn black_pixel_space(gl: &mut dyn Gl) {
