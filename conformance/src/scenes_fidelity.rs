@@ -32,7 +32,105 @@ pub const FIDELITY_SCENES: &[Scene] = &[
     ),
     big("points_and_lines_of_1000", points_and_lines_of_1000),
     big("smooth_lines_of_1000", smooth_lines_of_1000),
+    scene("six_clip_planes", six_clip_planes),
+    Scene {
+        width: 256,
+        height: 256,
+        ..scene("clip_plane_subsets", clip_plane_subsets)
+    },
 ];
+
+/// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
+/// `[-0.6, 0.6]^3` tilted towards the viewer (each plane keeps one side of a box face).
+const SIX_PLANES: [[f64; 4]; 6] = [
+    [1.0, 0.0, 0.0, 0.6],
+    [-1.0, 0.0, 0.0, 0.55],
+    [0.0, 1.0, 0.0, 0.5],
+    [0.0, -1.0, 0.0, 0.6],
+    [0.3, 0.2, 1.0, 0.45],
+    [0.1, -0.3, -1.0, 0.5],
+];
+
+/// Sets the scene's projection, modelview and the planes of `mask` (bit i: `GL_CLIP_PLANEi`).
+fn clip_plane_setup(gl: &mut dyn Gl, mask: u32) {
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-0.5, 0.5, -0.5, 0.5, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.translatef(0.0, 0.0, -3.0);
+    gl.rotatef(25.0, 1.0, 1.0, 0.0);
+    for (i, p) in SIX_PLANES.iter().enumerate() {
+        gl.clip_plane(GL_CLIP_PLANE0 + i as GLenum, p);
+        if mask & (1 << i) != 0 {
+            gl.enable(GL_CLIP_PLANE0 + i as GLenum);
+        } else {
+            gl.disable(GL_CLIP_PLANE0 + i as GLenum);
+        }
+    }
+}
+
+/// All six user clip planes at once on a lit sphere, quads through the box, lines, points
+/// (wide ones too) and a bitmap at a clipped raster position.
+fn six_clip_planes(gl: &mut dyn Gl) {
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    clip_plane_setup(gl, 0x3F);
+    clipped_content(gl);
+}
+
+/// Every subset of the six planes, one per 32 x 32 viewport of an 8 x 8 grid (the subset's
+/// number is the cell's index, row by row from the bottom left).
+fn clip_plane_subsets(gl: &mut dyn Gl) {
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for mask in 0..64 {
+        gl.viewport(32 * (mask as i32 % 8), 32 * (mask as i32 / 8), 32, 32);
+        clip_plane_setup(gl, mask);
+        clipped_content(gl);
+    }
+}
+
+/// What the clip-plane scenes draw: a lit sphere, quads through the box, wide lines, wide
+/// points.
+fn clipped_content(gl: &mut dyn Gl) {
+    gl.enable(GL_DEPTH_TEST);
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.enable(GL_NORMALIZE);
+    crate::scenes::sphere(gl, 12, 16);
+    gl.disable(GL_LIGHTING);
+    gl.begin(GL_QUADS);
+    for k in 0..3 {
+        pal(gl, k);
+        let z = -0.7 + 0.7 * k as f32;
+        gl.vertex_3f(-1.0, -1.0, z);
+        gl.vertex_3f(1.0, -1.0, z);
+        gl.vertex_3f(1.0, 1.0, z);
+        gl.vertex_3f(-1.0, 1.0, z);
+    }
+    gl.end();
+    gl.line_width(3.0);
+    gl.begin(GL_LINES);
+    for k in 0..8 {
+        pal(gl, k + 3);
+        let a = k as f32 * 0.8;
+        gl.vertex_3f(-1.2 * a.cos(), -1.2 * a.sin(), 0.9);
+        gl.vertex_3f(1.2 * a.cos(), 1.2 * a.sin(), -0.9);
+    }
+    gl.end();
+    gl.point_size(5.0);
+    gl.begin(GL_POINTS);
+    for k in 0..25 {
+        pal(gl, k);
+        gl.vertex_3f(
+            -1.0 + 0.083 * k as f32,
+            0.9 - 0.075 * k as f32,
+            0.58 - 0.05 * k as f32,
+        );
+    }
+    gl.end();
+}
 
 /// A 320 x 320 scene: room for the edges of primitives 255 pixels wide.
 const fn big(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {

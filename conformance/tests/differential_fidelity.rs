@@ -1,5 +1,5 @@
 //! Differential tests of the fidelity classes found replaying real programs (scenes in
-//! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000.
+//! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -15,6 +15,8 @@ differential!(
     smooth_lines_receding_width_7,
     points_and_lines_of_1000,
     smooth_lines_of_1000,
+    six_clip_planes,
+    clip_plane_subsets,
 );
 
 #[test]
