@@ -38,6 +38,7 @@ pub const FIDELITY_SCENES: &[Scene] = &[
         height: 256,
         ..scene("clip_plane_subsets", clip_plane_subsets)
     },
+    scene("float_texture_16384_wide", float_texture_16384_wide),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -305,4 +306,66 @@ fn smooth_lines_receding_width_4(gl: &mut dyn Gl) {
 
 fn smooth_lines_receding_width_7(gl: &mut dyn Gl) {
     smooth_lines_receding(gl, 7.0);
+}
+
+/// A 16384 x 2 `GL_RGBA32F` texture (`GL_FLOAT` data in [0, 1], neighbours differing) drawn
+/// twice: the far end magnified with `GL_NEAREST` (the top half), the whole width minified
+/// with generated mipmaps and `GL_LINEAR_MIPMAP_LINEAR` (the bottom half, LOD about 8).
+fn float_texture_16384_wide(gl: &mut dyn Gl) {
+    const TW: usize = 16384;
+    let mut bytes = Vec::with_capacity(TW * 2 * 16);
+    for _row in 0..2 {
+        for i in 0..TW {
+            let t = [
+                (i % 251) as f32 / 250.0,
+                ((i / 7) % 239) as f32 / 238.0,
+                (i / 64) as f32 / 255.0,
+                1.0,
+            ];
+            for c in t {
+                bytes.extend_from_slice(&c.to_ne_bytes());
+            }
+        }
+    }
+    black_pixel_space(gl);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE as i32);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA32F_ARB as i32,
+        TW as i32,
+        2,
+        0,
+        GL_RGBA,
+        GL_FLOAT,
+        Some(&bytes),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    let quad = |gl: &mut dyn Gl, s0: f32, s1: f32, y0: f32, y1: f32| {
+        gl.begin(GL_QUADS);
+        gl.tex_coord_2f(s0, 0.5);
+        gl.vertex_2f(0.0, y0);
+        gl.tex_coord_2f(s1, 0.5);
+        gl.vertex_2f(64.0, y0);
+        gl.tex_coord_2f(s1, 0.5);
+        gl.vertex_2f(64.0, y1);
+        gl.tex_coord_2f(s0, 0.5);
+        gl.vertex_2f(0.0, y1);
+        gl.end();
+    };
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    // 64 pixels over 32 texels at the far end: each texel two pixels wide, its edges between
+    // pixel centres (no ties).
+    quad(gl, 16351.75 / 16384.0, 16383.75 / 16384.0, 32.0, 64.0);
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    quad(gl, 0.0, 1.0, 0.0, 32.0);
 }

@@ -1,5 +1,5 @@
 //! Differential tests of the fidelity classes found replaying real programs (scenes in
-//! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them.
+//! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them; a 16384-wide float texture.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -17,6 +17,7 @@ differential!(
     smooth_lines_of_1000,
     six_clip_planes,
     clip_plane_subsets,
+    float_texture_16384_wide,
 );
 
 #[test]

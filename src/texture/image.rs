@@ -19,7 +19,17 @@ pub enum Texels {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OutOfMemory;
 
+/// The largest image store, in bytes (1 GiB, llvmpipe's limit for one texture): larger images
+/// give `GL_OUT_OF_MEMORY` whatever the operating system would grant (a 2048^3 RGBA8 3D
+/// texture, 32 GiB, must not depend on memory overcommit to fail cleanly).
+pub const MAX_IMAGE_BYTES: usize = 1 << 30;
+
 fn alloc<T: Clone + Default>(n: usize) -> Result<Vec<T>, OutOfMemory> {
+    if n.checked_mul(std::mem::size_of::<T>())
+        .is_none_or(|b| b > MAX_IMAGE_BYTES)
+    {
+        return Err(OutOfMemory);
+    }
     let mut v = Vec::new();
     v.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
     v.resize(n, T::default());
