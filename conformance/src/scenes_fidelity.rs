@@ -39,6 +39,8 @@ pub const FIDELITY_SCENES: &[Scene] = &[
         ..scene("clip_plane_subsets", clip_plane_subsets)
     },
     scene("float_texture_16384_wide", float_texture_16384_wide),
+    scene("tunnel_exp_fog", tunnel_exp_fog),
+    scene("tube_sphere_map_linear_fog", tube_sphere_map_linear_fog),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -368,4 +370,85 @@ fn float_texture_16384_wide(gl: &mut dyn Gl) {
     );
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
     quad(gl, 0.0, 1.0, 0.0, 32.0);
+}
+
+/// A lit, textured tunnel receding into the distance under fog (`mode`, `GL_NICEST` hints):
+/// the walls are quads of a 16-sided tube from z = -1 to z = -40, a checker texture modulated
+/// by the lighting.
+fn fogged_tunnel(gl: &mut dyn Gl, mode: GLenum, sphere_map: bool) {
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.frustum(-0.6, 0.6, -0.6, 0.6, 1.0, 60.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.rotatef(7.0, 0.3, 1.0, 0.0);
+    gl.enable(GL_DEPTH_TEST);
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.0, 0.0, 0.0, 1.0]);
+    gl.enable(GL_FOG);
+    gl.fogi(GL_FOG_MODE, mode as i32);
+    gl.fogf(GL_FOG_DENSITY, 0.3);
+    gl.fogf(GL_FOG_START, 2.0);
+    gl.fogf(GL_FOG_END, 30.0);
+    gl.fogfv(GL_FOG_COLOR, &[0.2, 0.3, 0.4, 1.0]);
+    gl.hint(GL_FOG_HINT, GL_NICEST);
+    gl.hint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
+    let mut texels = Vec::with_capacity(16 * 16 * 4);
+    for y in 0..16 {
+        for x in 0..16 {
+            let on = (x / 4 + y / 4) % 2 == 0;
+            texels.extend_from_slice(if on {
+                &[255, 230, 200, 255]
+            } else {
+                &[90, 120, 60, 255]
+            });
+        }
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        16,
+        16,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    if sphere_map {
+        gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+        gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+        gl.enable(GL_TEXTURE_GEN_S);
+        gl.enable(GL_TEXTURE_GEN_T);
+    }
+    let n = 16;
+    for ring in 0..13 {
+        let (z0, z1) = (-1.0 - 3.0 * ring as f32, -4.0 - 3.0 * ring as f32);
+        gl.begin(GL_QUAD_STRIP);
+        for k in 0..=n {
+            let a = k as f32 * std::f32::consts::TAU / n as f32;
+            let (c, s) = (a.cos(), a.sin());
+            gl.normal_3f(-c, -s, 0.0);
+            gl.tex_coord_2f(k as f32 / 4.0, ring as f32);
+            gl.vertex_3f(2.0 * c, 2.0 * s, z0);
+            gl.tex_coord_2f(k as f32 / 4.0, ring as f32 + 1.0);
+            gl.vertex_3f(2.0 * c, 2.0 * s, z1);
+        }
+        gl.end();
+    }
+}
+
+fn tunnel_exp_fog(gl: &mut dyn Gl) {
+    fogged_tunnel(gl, GL_EXP, false);
+}
+
+fn tube_sphere_map_linear_fog(gl: &mut dyn Gl) {
+    fogged_tunnel(gl, GL_LINEAR, true);
 }
