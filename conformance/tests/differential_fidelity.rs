@@ -1,6 +1,6 @@
 //! Differential tests of the fidelity classes found replaying real programs (scenes in
 //! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them; a 16384-wide float texture;
-//! lit, textured, fogged tunnels receding into the distance.
+//! lit, textured, fogged tunnels receding into the distance; anisotropy 16 towards the horizon.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -21,6 +21,7 @@ differential!(
     float_texture_16384_wide,
     tunnel_exp_fog,
     tube_sphere_map_linear_fog,
+    aniso_horizon,
 );
 
 #[test]
