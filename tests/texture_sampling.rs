@@ -1098,4 +1098,15 @@ fn anisotropic_mipmap_linear_is_the_elliptical_weighted_average() {
         let got = tex.sample_grad([0.3, 0.6, 0.0], dx, dy, 0.0);
         assert!((got[0] - 0.6).abs() < EPS, "{got:?}");
     }
+    // λ clamped to level 0 under a footprint of 10^4 texels: the ellipse's box would hold
+    // millions of texels; the bounded footprint rule answers instead (still the constant).
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 0.0);
+    let tex = gl.bound_texture(0).expect("complete");
+    let got = tex.sample_grad(
+        [0.3, 0.6, 0.0],
+        [600.0, 20.0, 0.0],
+        [-30.0, 500.0, 0.0],
+        0.0,
+    );
+    assert!((got[0] - 0.6).abs() < EPS, "{got:?}");
 }

@@ -577,7 +577,9 @@ impl BoundTexture {
             return self.sample_face(face, c, lambda);
         }
         if self.uses_ewa() {
-            return self.sample_ewa(c, dx, dy, max_aniso, unit_lod_bias);
+            if let Some(v) = self.sample_ewa(c, dx, dy, max_aniso, unit_lod_bias) {
+                return v;
+            }
         }
         let (px, py) = (length(self.scaled(dx)), length(self.scaled(dy)));
         let (pmax, pmin, axis) = if px >= py { (px, py, dx) } else { (py, px, dy) };
@@ -633,7 +635,10 @@ impl BoundTexture {
     /// (`s w - 1/2`); every texel (u, v) of its bounding box with `q = (A U^2 + B U V +
     /// C V^2) (1023 / F) < 1024` (U, V from the centre) weighs `exp(-2 trunc(q) / 1023)`, and
     /// the result is the weighted mean of those texels (each fetched with wrapping at texture
-    /// coordinate `(u / w, v / h)`).
+    /// coordinate `(u / w, v / h)`). `None` when the ellipse's bounding box holds more than
+    /// [`EWA_MAX_TEXELS`] texels (a footprint far larger than its level, as `GL_TEXTURE_MAX_LOD`
+    /// can force): the caller then takes the footprint rule, which bounds the work per
+    /// fragment.
     fn sample_ewa(
         &self,
         c: [f32; 3],
@@ -641,9 +646,9 @@ impl BoundTexture {
         dy: [f32; 3],
         max_aniso: f32,
         unit_lod_bias: f32,
-    ) -> [f32; 4] {
+    ) -> Option<[f32; 4]> {
         let Some(levels) = self.inner.levels.first().filter(|l| !l.is_empty()) else {
-            return [0.0, 0.0, 0.0, 1.0];
+            return Some([0.0, 0.0, 0.0, 1.0]);
         };
         let [w0, h0, _] = self.inner.base_size;
         let (ux, vx) = (dx[0] * w0, dx[1] * h0);
@@ -664,7 +669,7 @@ impl BoundTexture {
             lambda.max(-1.0).min(1e9) as i64
         };
         if level >= last as i64 {
-            return self.finish(self.filter(&levels[last], false, c));
+            return Some(self.finish(self.filter(&levels[last], false, c)));
         }
         let level = level.max(0) as usize;
         let img = &levels[level];
@@ -682,18 +687,18 @@ impl BoundTexture {
         let box_u = 2.0 / d * (d * cc * f).sqrt();
         let box_v = 2.0 / d * (a * d * f).sqrt();
         if !(box_u.is_finite() && box_v.is_finite() && f > 0.0) {
-            return self.finish(self.filter(img, false, c));
+            return Some(self.finish(self.filter(img, false, c)));
         }
         let form = (EWA_LUT_SIZE - 1) as f64 / f as f64;
         let (a, b, cc) = (a as f64 * form, b as f64 * form, cc as f64 * form);
         let tex_u = -0.5 + c[0] * w0 * scaling;
         let tex_v = -0.5 + c[1] * h0 * scaling;
-        // Bounded: the ellipse is at most MAX_ANISOTROPY texels longer than it is wide, and
-        // at least one texel wide at a level where the width covers at most a few texels.
+        // At the level λ selects the ellipse's minor axis spans one or two texels and its
+        // major axis at most MAX_ANISOTROPY times that, unless λ was clamped.
         let (u0, u1) = ((tex_u - box_u).floor(), (tex_u + box_u).ceil());
         let (v0, v1) = ((tex_v - box_v).floor(), (tex_v + box_v).ceil());
-        if !(u1 - u0 <= 4096.0 && v1 - v0 <= 4096.0) {
-            return self.finish(self.filter(img, false, c));
+        if !((u1 - u0 + 1.0) * (v1 - v0 + 1.0) <= EWA_MAX_TEXELS) {
+            return None;
         }
         let (u0, u1, v0, v1) = (u0 as i64, u1 as i64, v0 as i64, v1 as i64);
         let mut num = [0.0f64; 4];
@@ -714,9 +719,9 @@ impl BoundTexture {
             }
         }
         if !(den > 0.0) {
-            return self.finish(self.filter(img, false, c));
+            return Some(self.finish(self.filter(img, false, c)));
         }
-        self.finish(num.map(|n| (n / den) as f32))
+        Some(self.finish(num.map(|n| (n / den) as f32)))
     }
 
     /// Level selection and filtering on one face (coords: s, t, r; for cube faces r is only
@@ -1039,6 +1044,10 @@ impl BoundTexture {
         lerp4(row0, row1, w[1])
     }
 }
+
+/// The most texels the elliptical weighted average visits for one fragment (a 64 x 64 box;
+/// unclamped footprints stay below 40 x 40).
+const EWA_MAX_TEXELS: f32 = 4096.0;
 
 /// Entries of the elliptical weighted average's weight table (Mesa's `WEIGHT_LUT_SIZE`).
 const EWA_LUT_SIZE: usize = 1024;
