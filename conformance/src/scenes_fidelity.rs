@@ -44,6 +44,7 @@ pub const FIDELITY_SCENES: &[Scene] = &[
     // llvmpipe vs softpipe: 0.977 % of the pixels off by more than 8 (tilegl vs llvmpipe
     // 0.073 %, vs softpipe 1.050 %; `--bin calibrate`).
     scene_with("aniso_horizon", aniso_horizon, spread(0.00977)),
+    scene("lit_after_arrays", lit_after_arrays),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -516,4 +517,69 @@ fn aniso_horizon(gl: &mut dyn Gl) {
         gl.vertex_3f(x, -1.0, z);
     }
     gl.end();
+}
+
+/// A lit mesh drawn from normal and colour arrays (`GL_COLOR_MATERIAL` on), then lit
+/// triangles and lines drawn with the current normal and colour, in immediate mode, again
+/// from a display list holding a `glDrawArrays`, and after `glArrayElement`: the current
+/// values after each (left as they were by array draws, set by `glArrayElement`) decide the
+/// later primitives' lighting.
+fn lit_after_arrays(gl: &mut dyn Gl) {
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.3, 0.2, 1.0, 0.0]);
+    gl.enable(GL_COLOR_MATERIAL);
+    gl.normal_3f(0.0, 0.0, 1.0);
+    gl.color_3f(0.9, 0.8, 0.2);
+    // Six vertices: xyz, normal, rgba; normals facing away from the light at the end.
+    static VERTS: [f32; 18] = [
+        -0.9, 0.5, 0.0, -0.5, 0.5, 0.0, -0.9, 0.9, 0.0, -0.5, 0.9, 0.0, -0.1, 0.5, 0.0, -0.1, 0.9,
+        0.0,
+    ];
+    static NORMALS: [f32; 18] = [
+        0.0, 0.0, 1.0, 0.3, 0.0, 1.0, 0.0, 0.3, 1.0, 0.0, 0.0, -1.0, 0.0, 0.0, -1.0, 0.0, 0.0, -1.0,
+    ];
+    static COLORS: [f32; 24] = [
+        1.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.2, 0.2, 0.2, 1.0, 0.1, 0.1,
+        0.1, 1.0, 0.3, 0.0, 0.3, 1.0,
+    ];
+    let ptr = |v: &'static [f32]| tilegl::ClientPtr(v.as_ptr() as usize);
+    gl.enable_client_state(GL_VERTEX_ARRAY);
+    gl.enable_client_state(GL_NORMAL_ARRAY);
+    gl.enable_client_state(GL_COLOR_ARRAY);
+    gl.vertex_pointer(3, GL_FLOAT, 0, ptr(&VERTS));
+    gl.normal_pointer(GL_FLOAT, 0, ptr(&NORMALS));
+    gl.color_pointer(4, GL_FLOAT, 0, ptr(&COLORS));
+    gl.draw_arrays(GL_TRIANGLE_STRIP, 0, 6);
+    let lit_shapes = |gl: &mut dyn Gl, y: f32| {
+        gl.begin(GL_TRIANGLES);
+        gl.vertex_2f(-0.9, y);
+        gl.vertex_2f(-0.3, y);
+        gl.vertex_2f(-0.6, y + 0.3);
+        gl.end();
+        gl.line_width(3.0);
+        gl.begin(GL_LINES);
+        gl.vertex_2f(0.0, y);
+        gl.vertex_2f(0.9, y + 0.3);
+        gl.end();
+    };
+    lit_shapes(gl, 0.0);
+    gl.new_list(1, GL_COMPILE);
+    gl.draw_arrays(GL_TRIANGLE_STRIP, 0, 6);
+    gl.end_list();
+    gl.translatef(1.0, 0.0, 0.0);
+    gl.call_list(1);
+    gl.load_identity();
+    lit_shapes(gl, -0.45);
+    gl.begin(GL_POINTS);
+    gl.array_element(4);
+    gl.end();
+    lit_shapes(gl, -0.9);
 }

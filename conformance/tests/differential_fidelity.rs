@@ -1,6 +1,7 @@
 //! Differential tests of the fidelity classes found replaying real programs (scenes in
 //! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them; a 16384-wide float texture;
-//! lit, textured, fogged tunnels receding into the distance; anisotropy 16 towards the horizon.
+//! lit, textured, fogged tunnels receding into the distance; anisotropy 16 towards the horizon;
+//! lit primitives drawn with the current values an array draw left.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -22,6 +23,7 @@ differential!(
     tunnel_exp_fog,
     tube_sphere_map_linear_fog,
     aniso_horizon,
+    lit_after_arrays,
 );
 
 #[test]
