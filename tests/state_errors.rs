@@ -165,7 +165,7 @@ fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
         (
             "clipPlane bad",
             none,
-            |g| g.clip_plane(GL_CLIP_PLANE0 + 6, &[1.0; 4]),
+            |g| g.clip_plane(GL_CLIP_PLANE0 + 8, &[1.0; 4]),
             GL_INVALID_ENUM,
         ),
         (

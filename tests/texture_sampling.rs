@@ -972,3 +972,141 @@ fn horizon_texture_coordinates_follow_the_exact_perspective_interpolation() {
     }
     assert!(checked > 200, "{checked}");
 }
+
+/// Anisotropic filtering of 2D textures with a `*_MIPMAP_LINEAR` minification filter is the
+/// elliptical weighted average Mesa's llvmpipe and softpipe compute (Heckbert's EWA with a
+/// Gaussian of the ellipse's quadratic form), recomputed here from its equations for
+/// footprints that select level 0: λ = log2(Pmin) with Pmin raised to Pmax / MAX_ANISOTROPY,
+/// the ellipse `A u^2 + B u v + C v^2 = F` from the derivatives in texels plus one texel, and
+/// the weighted mean of the texels inside with weight `exp(-2 trunc(q) / 1023)`, q the form
+/// scaled so that F = 1023.
+#[test]
+fn anisotropic_mipmap_linear_is_the_elliptical_weighted_average() {
+    let mut data = vec![0u8; 16 * 16];
+    let mut r = 0x9e37_79b9u32;
+    for t in data.iter_mut() {
+        r ^= r << 13;
+        r ^= r >> 17;
+        r ^= r << 5;
+        *t = (r >> 24) as u8;
+    }
+    let mut gl = ctx();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE as i32);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE as i32,
+        16,
+        16,
+        0,
+        GL_LUMINANCE,
+        GL_UNSIGNED_BYTE,
+        Some(&data),
+    );
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0);
+    gl.enable(GL_TEXTURE_2D);
+    let tex = gl.bound_texture(0).expect("complete");
+    let texel = |u: i64, v: i64| data[(v.rem_euclid(16) * 16 + u.rem_euclid(16)) as usize] as f64;
+    // (centre, d/dx, d/dy) in texture coordinates; each footprint's Pmin is below 2 texels.
+    let cases = [
+        ([0.4f32, 0.55], [6.0f32 / 16.0, 0.0], [0.0f32, 1.5 / 16.0]),
+        (
+            [0.71, 0.23],
+            [3.0 / 16.0, 3.0 / 16.0],
+            [-0.7 / 16.0, 0.7 / 16.0],
+        ),
+        (
+            [0.02, 0.97],
+            [0.2 / 16.0, 0.1 / 16.0],
+            [0.05 / 16.0, 0.3 / 16.0],
+        ),
+        // Eccentricity 100 > 8^2: Pmin raised to 12 / 8 = 1.5 texels.
+        ([0.5, 0.5], [12.0 / 16.0, 0.0], [0.0, 0.12 / 16.0]),
+    ];
+    for (c, dx, dy) in cases {
+        let (ux, vx, uy, vy) = (
+            dx[0] as f64 * 16.0,
+            dx[1] as f64 * 16.0,
+            dy[0] as f64 * 16.0,
+            dy[1] as f64 * 16.0,
+        );
+        let (px2, py2) = (ux * ux + vx * vx, uy * uy + vy * vy);
+        let (pmax2, pmin2) = (px2.max(py2), px2.min(py2).max(px2.max(py2) / 64.0));
+        assert!(pmin2.sqrt().log2() < 1.0, "level 0 only: {pmax2} {pmin2}");
+        let a = vx * vx + vy * vy + 1.0;
+        let b = -2.0 * (ux * vx + uy * vy);
+        let cc = ux * ux + uy * uy + 1.0;
+        let f = a * cc - b * b / 4.0;
+        let (cu, cv) = (c[0] as f64 * 16.0 - 0.5, c[1] as f64 * 16.0 - 0.5);
+        let (mut num, mut den) = (0.0, 0.0);
+        for v in -40i64..40 {
+            for u in -40i64..40 {
+                let (du, dv) = (u as f64 - cu, v as f64 - cv);
+                let q = (a * du * du + b * du * dv + cc * dv * dv) * 1023.0 / f;
+                if q < 1024.0 {
+                    let w = (-2.0 * q.max(0.0).floor() / 1023.0).exp();
+                    num += w * texel(u, v);
+                    den += w;
+                }
+            }
+        }
+        let want = num / den / 255.0;
+        let got = tex.sample_grad(
+            [c[0], c[1], 0.0],
+            [dx[0], dx[1], 0.0],
+            [dy[0], dy[1], 0.0],
+            0.0,
+        );
+        assert!(
+            (got[0] as f64 - want).abs() < 2e-3,
+            "centre {c:?}: {} vs {want}",
+            got[0]
+        );
+    }
+    // A constant texture stays constant, whatever the footprint.
+    let mut gl = ctx();
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE as i32);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE as i32,
+        16,
+        16,
+        0,
+        GL_LUMINANCE,
+        GL_UNSIGNED_BYTE,
+        Some(&[153u8; 256]),
+    );
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_NEAREST_MIPMAP_LINEAR as i32,
+    );
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 16.0);
+    gl.enable(GL_TEXTURE_2D);
+    let tex = gl.bound_texture(0).expect("complete");
+    for (dx, dy) in [
+        ([3.0f32, 0.1, 0.0], [0.0f32, 0.02, 0.0]),
+        ([0.01, 0.0, 0.0], [0.0, 0.3, 0.0]),
+    ] {
+        let got = tex.sample_grad([0.3, 0.6, 0.0], dx, dy, 0.0);
+        assert!((got[0] - 0.6).abs() < EPS, "{got:?}");
+    }
+    // λ clamped to level 0 under a footprint of 10^4 texels: the ellipse's box would hold
+    // millions of texels; the bounded footprint rule answers instead (still the constant).
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LOD, 0.0);
+    let tex = gl.bound_texture(0).expect("complete");
+    let got = tex.sample_grad(
+        [0.3, 0.6, 0.0],
+        [600.0, 20.0, 0.0],
+        [-30.0, 500.0, 0.0],
+        0.0,
+    );
+    assert!((got[0] - 0.6).abs() < EPS, "{got:?}");
+}

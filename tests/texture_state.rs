@@ -783,7 +783,7 @@ fn proxies_report_without_storing() {
         GL_PROXY_TEXTURE_2D,
         0,
         GL_RGBA8 as i32,
-        8192,
+        32768,
         32,
         0,
         GL_RGBA,
@@ -799,7 +799,7 @@ fn proxies_report_without_storing() {
         GL_PROXY_TEXTURE_3D,
         0,
         GL_RGBA8 as i32,
-        512,
+        4096,
         2,
         2,
         0,
@@ -949,7 +949,7 @@ fn every_error_is_recorded_and_changes_nothing() {
         ("teximage level too large", GL_INVALID_VALUE, |gl| {
             gl.tex_image_2d(
                 GL_TEXTURE_2D,
-                13,
+                15,
                 GL_RGBA as i32,
                 1,
                 1,
@@ -990,7 +990,7 @@ fn every_error_is_recorded_and_changes_nothing() {
                 GL_TEXTURE_2D,
                 0,
                 GL_RGBA as i32,
-                4097,
+                16385,
                 1,
                 0,
                 GL_RGBA,
@@ -1005,7 +1005,7 @@ fn every_error_is_recorded_and_changes_nothing() {
                 GL_RGBA as i32,
                 1,
                 1,
-                257,
+                2049,
                 0,
                 GL_RGBA,
                 GL_UNSIGNED_BYTE,
@@ -1410,22 +1410,26 @@ fn parameters_round_trip() {
 #[test]
 fn out_of_memory_and_huge_sizes_do_not_abort() {
     let mut gl = ctx();
-    // The largest allowed 3D texture allocates (256^3 RGBA8 = 64 MiB) or reports
-    // GL_OUT_OF_MEMORY; either way no abort.
-    gl.tex_image_3d(
-        GL_TEXTURE_3D,
-        0,
-        GL_RGBA as i32,
-        256,
-        256,
-        256,
-        0,
-        GL_RGBA,
-        GL_UNSIGNED_BYTE,
-        None,
-    );
-    let e = gl.get_error();
-    assert!(e == GL_NO_ERROR || e == GL_OUT_OF_MEMORY);
+    // The largest allowed 3D texture (2048^3 RGBA8 = 32 GiB, over the 1 GiB an image may
+    // take) reports GL_OUT_OF_MEMORY, without an abort; a 256^3 one (64 MiB) allocates.
+    let mut max = [0i32];
+    gl.get_integerv(GL_MAX_3D_TEXTURE_SIZE, &mut max);
+    assert_eq!(max[0], 2048);
+    for (side, want) in [(2048, GL_OUT_OF_MEMORY), (256, GL_NO_ERROR)] {
+        gl.tex_image_3d(
+            GL_TEXTURE_3D,
+            0,
+            GL_RGBA as i32,
+            side,
+            side,
+            side,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        assert_eq!(gl.get_error(), want, "{side}^3");
+    }
     gl.tex_image_2d(
         GL_TEXTURE_2D,
         0,

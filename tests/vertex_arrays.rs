@@ -1257,8 +1257,12 @@ fn push_and_pop_client_attrib_restore_their_groups() {
     no_error(&mut gl);
 }
 
+/// The specification leaves a current value indeterminate after `glDrawArrays` when its array
+/// is enabled (section 2.8); tilegl, like Mesa (llvmpipe and softpipe, queried through the
+/// oracle: `GL_CURRENT_COLOR` stays (1, 1, 1, 1) here), leaves it as it was, while
+/// `glArrayElement` sets it.
 #[test]
-fn disabled_vertex_array_draws_nothing_but_sets_current_values() {
+fn disabled_vertex_array_draws_nothing_and_leaves_current_values() {
     let mut gl = Context::new(16, 16);
     window_ortho(&mut gl);
     gl.clear(GL_COLOR_BUFFER_BIT);
@@ -1270,6 +1274,9 @@ fn disabled_vertex_array_draws_nothing_but_sets_current_values() {
     no_error(&mut gl);
     assert!(read_rgba(&mut gl).iter().all(|&p| p == [0, 0, 0, 0]));
     let mut c = [0f32; 4];
+    gl.get_floatv(GL_CURRENT_COLOR, &mut c);
+    assert_eq!(c, [1.0; 4]);
+    gl.array_element(0);
     gl.get_floatv(GL_CURRENT_COLOR, &mut c);
     assert_eq!(c, col);
 }

@@ -1001,6 +1001,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
         crate::scenes_eval::EVAL_SCENES,
         crate::scenes_cascade::CASCADE_SCENES,
+        crate::scenes_fidelity::FIDELITY_SCENES,
     ]
     .concat()
 });

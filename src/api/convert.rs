@@ -309,7 +309,8 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_AUTO_NORMAL => Capability::AutoNormal,
         e if map1_target(e).is_some() => Capability::Map1(map1_target(e)?),
         e if map2_target(e).is_some() => Capability::Map2(map2_target(e)?),
-        e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 6).contains(&e) => {
+        // `limits::MAX_CLIP_PLANES` planes (8, as Mesa reports).
+        e if (GL_CLIP_PLANE0..GL_CLIP_PLANE0 + 8).contains(&e) => {
             Capability::ClipPlane((e - GL_CLIP_PLANE0) as usize)
         }
         _ => return None,

@@ -8,8 +8,8 @@
 //! in the minor direction (section 3.4.2).
 //!
 //! Antialiased lines cover the rectangle of the given width centred on the segment, each
-//! pixel taking a box-filtered estimate of the rectangle's share of its area as coverage; a
-//! fragment's data are those at its centre's position along the segment.
+//! pixel taking a box-filtered estimate of the rectangle's share of its area as coverage,
+//! computed the way Mesa's draw module does it (see `bin_smooth_line`).
 //!
 //! Stippling (section 3.4.2) counts fragments along the line (a wide line's column counts
 //! once) with the counter the caller keeps across the segments of a strip or loop.
@@ -150,7 +150,21 @@ pub fn bin_line(
     *stipple_counter = start_counter.wrapping_add(advance.min(u32::MAX as f64) as u32);
 }
 
-/// An antialiased line: the rectangle of width `GL_LINE_WIDTH` centred on the segment.
+/// An antialiased line, drawn the way Mesa's llvmpipe and softpipe draw it (their draw
+/// module's antialiased-line stage): the rectangle of half width `h = max(1, width / 2 + 1/2)`
+/// around the segment, lengthened by half a pixel past each end point, is rasterized as two
+/// triangles, and each fragment whose centre lies inside takes as coverage
+/// `sat(h - |x|) * sat(L / 2 + 1/2 - |z|)`, where `x` (across, `+-h` on the long sides) and `z`
+/// (along, `+-(L / 2 + 1/2)` at the lengthened ends) are interpolated perspective-correctly
+/// over each triangle like any other varying. For `w` equal at both ends this is the
+/// box-filtered distance of the pixel centre to the rectangle of the line's width (an estimate
+/// of section 3.4.4's covered area). With perspective the across coordinate bends with the
+/// triangle split, which Mesa makes along the diagonal from the start's left corner to the
+/// end's right corner (left and right as seen from the start towards the end, y up; Mesa
+/// splits in its y-down window space, where that is the diagonal through the other corners):
+/// matching the split is what puts a line's coverage where Mesa puts it (with the other
+/// diagonal, or with the across coordinate interpolated in window space, a receding line of
+/// width 4 sits a pixel away from Mesa's).
 fn bin_smooth_line(
     ds: &DrawState,
     state: u32,
@@ -168,24 +182,45 @@ fn bin_smooth_line(
     if !(len > 0.0) {
         return;
     }
-    let [wlo, whi] = limits::LINE_WIDTH_RANGE;
-    let w = (ds.raster.line_width as f64)
-        .max(wlo as f64)
-        .min(whi as f64);
-    let dir = [dx / len, dy / len];
+    let quad = SmoothLineQuad::new(
+        p0,
+        p1,
+        len,
+        ds.raster.line_width as f64,
+        v[0].inv_w,
+        v[1].inv_w,
+    );
     let x_major = dx.abs() >= dy.abs();
     let (a0, a1, b0, db_da) = if x_major {
         (p0[0], p1[0], p0[1], dy / dx)
     } else {
         (p0[1], p1[1], p0[0], dx / dy)
     };
-    // Minor-direction half extent of the rectangle at one major coordinate, plus a margin for
-    // the slope across a pixel.
+    // Minor-direction half extent of the quad at one major coordinate, plus a margin for the
+    // slope across a pixel.
     let slope = db_da.abs();
-    let reach = w / 2.0 * (1.0 + slope * slope).sqrt() + slope + 1.0;
+    let reach = quad.half_width * (1.0 + slope * slope).sqrt() + slope + 1.0;
     let (lo, hi) = (a0.min(a1), a0.max(a1));
-    let first = (lo - w / 2.0).floor() as i64;
-    let last = (hi + w / 2.0).floor() as i64;
+    // Only pixels inside the draw rectangle can be recorded: bound both loops by it (a line
+    // of width 1000 would otherwise visit a million pixels outside).
+    let r = &ds.draw_rect;
+    let (major_rect, minor_rect) = if x_major {
+        (
+            (r.x0 as i64, r.x1 as i64 - 1),
+            (r.y0 as i64, r.y1 as i64 - 1),
+        )
+    } else {
+        (
+            (r.y0 as i64, r.y1 as i64 - 1),
+            (r.x0 as i64, r.x1 as i64 - 1),
+        )
+    };
+    let first = ((lo - 1.0).floor() as i64).max(major_rect.0.saturating_sub(1));
+    let last = ((hi + 1.0).floor() as i64).min(major_rect.1.saturating_add(1));
+    // The quad reaches half its width past the ends in the major direction too.
+    let ext = quad.half_width.ceil() as i64;
+    let first = first.min(((lo.floor() as i64) - ext).max(major_rect.0));
+    let last = last.max(((hi.floor() as i64) + ext).min(major_rect.1));
     let n = ds.attr_count.min(MAX_ATTRS);
     let mut a = [0f32; MAX_ATTRS];
     let stipple = ds.raster.line_stipple;
@@ -203,35 +238,85 @@ fn bin_smooth_line(
             continue;
         }
         let m = b0 + (centre.clamp(lo, hi) - a0) * db_da;
-        for r in (m - reach).floor() as i64..=(m + reach).floor() as i64 {
-            let (px, py) = if x_major { (c, r) } else { (r, c) };
-            let (cov, u) = rect_coverage(p0, dir, len, w, px, py);
-            if cov > 0.0 {
-                // Data vary over the rectangle extended by half a pixel past each end point
-                // (the box filter's reach), as Mesa parameterises them: then the depth of a
-                // smooth outline drawn before a polygon over the same edge decides the same
-                // pixels as Mesa's (xss-stonerview).
-                let t = ((u + 0.5) / (len + 1.0)).clamp(0.0, 1.0);
-                attrs_at(v, attrs, t, n, &mut a);
-                let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
-                let o = add_constant_planes(&a[..n], scene);
-                bin_rect(ds, state, [px, py, px + 1, py + 1], z, o, cov, scene);
-            }
+        let r0 = ((m - reach).floor() as i64).max(minor_rect.0);
+        let r1 = ((m + reach).floor() as i64).min(minor_rect.1);
+        for row in r0..=r1 {
+            let (px, py) = if x_major { (c, row) } else { (row, c) };
+            let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5) else {
+                continue;
+            };
+            // Data are those of the lengthened quad's vertices (the end points' own), so they
+            // vary over the lengthened rectangle: then the depth of a smooth outline drawn
+            // before a polygon over the same edge decides the same pixels as Mesa's
+            // (xss-stonerview).
+            attrs_at(v, attrs, t, n, &mut a);
+            let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
+            let o = add_constant_planes(&a[..n], scene);
+            bin_rect(ds, state, [px, py, px + 1, py + 1], z, o, cov as f32, scene);
         }
     }
 }
 
-/// Coverage of pixel `(px, py)` by the rectangle along `dir` from `p0` (length `len`, width
-/// `w`): the box-filtered distance of the pixel centre to the rectangle's sides, across and
-/// along the segment (an analytic approximation of the covered area).
-fn rect_coverage(p0: [f64; 2], dir: [f64; 2], len: f64, w: f64, px: i64, py: i64) -> (f32, f64) {
-    let sx = px as f64 + 0.5 - p0[0];
-    let sy = py as f64 + 0.5 - p0[1];
-    let u = sx * dir[0] + sy * dir[1];
-    let d = (sx * dir[1] - sy * dir[0]).abs();
-    let across = (w / 2.0 + 0.5 - d).clamp(0.0, 1.0);
-    let along = (u + 0.5).clamp(0.0, 1.0) * (len + 0.5 - u).clamp(0.0, 1.0);
-    ((across * along) as f32, u)
+/// The quad an antialiased line is drawn as (see [`bin_smooth_line`]).
+struct SmoothLineQuad {
+    p0: [f64; 2],
+    /// Unit direction from the start to the end.
+    dir: [f64; 2],
+    len: f64,
+    /// Half the quad's width: 1 for widths up to 1, else `width / 2 + 1/2`.
+    half_width: f64,
+    /// Half the lengthened length, `len / 2 + 1/2`.
+    half_length: f64,
+    /// 1 / w at the start and at the end.
+    q: [f64; 2],
+}
+
+impl SmoothLineQuad {
+    fn new(p0: [f64; 2], p1: [f64; 2], len: f64, width: f64, q0: f64, q1: f64) -> Self {
+        let [wlo, whi] = limits::LINE_WIDTH_RANGE;
+        let w = width.max(wlo as f64).min(whi as f64);
+        let w = if w.is_nan() { 1.0 } else { w };
+        SmoothLineQuad {
+            p0,
+            dir: [(p1[0] - p0[0]) / len, (p1[1] - p0[1]) / len],
+            len,
+            half_width: if w <= 1.0 { 1.0 } else { w / 2.0 + 0.5 },
+            half_length: len / 2.0 + 0.5,
+            q: [q0, q1],
+        }
+    }
+
+    /// The fragment at window position `(x, y)` (a pixel centre): `None` outside the quad,
+    /// else its coverage and its parameter along the lengthened quad (0 at the start's edge,
+    /// 1 at the end's), which the data are interpolated at.
+    fn fragment(&self, x: f64, y: f64) -> Option<(f64, f64)> {
+        let (sx, sy) = (x - self.p0[0], y - self.p0[1]);
+        // Distance along the segment from the start, and to its left.
+        let u = sx * self.dir[0] + sy * self.dir[1];
+        let left = -sx * self.dir[1] + sy * self.dir[0];
+        let (h, hl) = (self.half_width, self.half_length);
+        // Quad coordinates: s along (0 at the start's edge), r across (0 on the right side).
+        let s = (u + 0.5) / (self.len + 1.0);
+        let r = (h + left) / (2.0 * h);
+        if !(0.0..1.0).contains(&s) || !(0.0..1.0).contains(&r) {
+            return None;
+        }
+        // Perspective-correct interpolation over the triangle holding the point: the corners
+        // at one end share their 1/w, so the weights only depend on s, and the triangle's
+        // barycentrics are affine in (s, r).
+        let [q0, q1] = self.q;
+        let den = (1.0 - s) * q0 + s * q1;
+        let across = if s + r <= 1.0 {
+            // Start-right, start-left, end-right: barycentrics 1 - s - r, r, s.
+            h * (q0 * (2.0 * r - 1.0 + s) - s * q1)
+        } else {
+            // End-left, start-left, end-right: barycentrics s + r - 1, 1 - s, 1 - r.
+            h * (q1 * (s + 2.0 * r - 2.0) + (1.0 - s) * q0)
+        } / den;
+        let along = hl * (s * q1 - (1.0 - s) * q0) / den;
+        let cov = (h - across.abs()).clamp(0.0, 1.0) * (hl - along.abs()).clamp(0.0, 1.0);
+        Some((if cov.is_nan() { 0.0 } else { cov }, s))
+    }
 }
 
 /// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the segment from `p0` to
@@ -258,4 +343,88 @@ fn exits_diamond(p0: [f64; 2], p1: [f64; 2], c: [f64; 2]) -> bool {
         }
     }
     best < 0.5
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SmoothLineQuad;
+
+    /// A quad from (10.25, 20.5) to (40.75, 31.5), width 4, with 1/w `q0` and `q1`.
+    fn quad(q0: f64, q1: f64) -> SmoothLineQuad {
+        let (p0, p1): ([f64; 2], [f64; 2]) = ([10.25, 20.5], [40.75, 31.5]);
+        let len = ((p1[0] - p0[0]) * (p1[0] - p0[0]) + (p1[1] - p0[1]) * (p1[1] - p0[1])).sqrt();
+        SmoothLineQuad::new(p0, p1, len, 4.0, q0, q1)
+    }
+
+    /// The point at distance `u` along the segment and `left` to its left.
+    fn at(q: &SmoothLineQuad, u: f64, left: f64) -> (f64, f64) {
+        (
+            q.p0[0] + u * q.dir[0] - left * q.dir[1],
+            q.p0[1] + u * q.dir[1] + left * q.dir[0],
+        )
+    }
+
+    #[test]
+    fn without_perspective_coverage_is_the_box_filtered_distance_to_the_rectangle() {
+        let q = quad(1.0, 1.0);
+        // Half width 4 / 2 + 1/2 = 2.5; the coverage across is 2.5 - |d| (clamped), along it
+        // is u + 1/2 near the start and len + 1/2 - u near the end.
+        for (u, left) in [
+            (0.0, 0.0),
+            (-0.3, 1.7),
+            (5.0, -2.2),
+            (16.0, 2.4),
+            (30.0, 0.9),
+        ] {
+            let (x, y) = at(&q, u, left);
+            let across = (2.5f64 - left.abs()).clamp(0.0, 1.0);
+            let along = (u + 0.5)
+                .clamp(0.0, 1.0)
+                .min((q.len + 0.5 - u).clamp(0.0, 1.0));
+            let (cov, t) = q.fragment(x, y).expect("inside the quad");
+            assert!((cov - across * along).abs() < 1e-9, "u {u} d {left}: {cov}");
+            assert!((t - (u + 0.5) / (q.len + 1.0)).abs() < 1e-12);
+        }
+        // Outside: past the lengthened ends and the widened sides.
+        for (u, left) in [(-0.6, 0.0), (q.len + 0.6, 0.0), (3.0, 2.6), (3.0, -2.6)] {
+            let (x, y) = at(&q, u, left);
+            assert!(q.fragment(x, y).is_none(), "u {u} d {left}");
+        }
+    }
+
+    #[test]
+    fn with_perspective_the_two_triangles_agree_on_their_edges() {
+        // 1/w five times smaller at the end: the across coordinate bends, but it is continuous
+        // across the split diagonal and exactly +-h on the long sides (both corners of a side
+        // carry the same value, so every interpolation gives it there).
+        let q = quad(1.0, 0.2);
+        let (h, l1) = (q.half_width, q.len + 1.0);
+        for k in 1..20 {
+            let s = k as f64 / 20.0;
+            let u = s * l1 - 0.5;
+            // On a long side the pixel is just inside: coverage across is the tiny remainder.
+            for left in [h - 1e-9, -(h - 1e-9)] {
+                let (x, y) = at(&q, u, left);
+                let (cov, _) = q.fragment(x, y).expect("inside");
+                assert!(cov < 1e-6, "s {s} left {left}: {cov}");
+            }
+            // Either side of the diagonal s + r = 1 (r = (h + left) / 2h).
+            let left_diag = (1.0 - s) * 2.0 * h - h;
+            let (xa, ya) = at(&q, u, left_diag - 1e-9);
+            let (xb, yb) = at(&q, u, left_diag + 1e-9);
+            let (ca, _) = q.fragment(xa, ya).expect("inside");
+            let (cb, _) = q.fragment(xb, yb).expect("inside");
+            assert!((ca - cb).abs() < 1e-6, "s {s}: {ca} vs {cb}");
+        }
+        // The bend: on the centre line the across coordinate is not 0 away from the ends, so
+        // the coverage there differs from the flat case somewhere along the line.
+        let flat = quad(1.0, 1.0);
+        let bent = (1..20).any(|k| {
+            let (x, y) = at(&q, k as f64 * q.len / 20.0, 1.5);
+            let a = q.fragment(x, y).map(|f| f.0);
+            let b = flat.fragment(x, y).map(|f| f.0);
+            matches!((a, b), (Some(a), Some(b)) if (a - b).abs() > 0.05)
+        });
+        assert!(bent);
+    }
 }

@@ -36,6 +36,12 @@ use crate::state::get::StateValue;
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::vertex::immediate::{norm_i16, norm_i32, norm_i8, norm_u16, norm_u32, norm_u8};
 
+/// Current values saved across an array draw (see `Context::keep_current_values`).
+struct SavedCurrent {
+    current: super::tables::CurrentValues,
+    materials: Option<[super::lighting::Material; 2]>,
+}
+
 /// `GL_MAX_CLIENT_ATTRIB_STACK_DEPTH`.
 pub const MAX_CLIENT_ATTRIB_STACK_DEPTH: usize = 16;
 /// `GL_MAX_ELEMENTS_VERTICES` / `GL_MAX_ELEMENTS_INDICES` (recommendations only).
@@ -717,16 +723,45 @@ impl Context {
         }
     }
 
-    /// `glBegin(mode)`, the fetched elements, `glEnd` (mode already validated).
+    /// `glBegin(mode)`, the fetched elements, `glEnd` (mode already validated), leaving the
+    /// current values as they were ([`Context::keep_current_values`]).
     fn draw_fetched(&mut self, mode: GLenum, f: &Fetched) {
         if self.reject_inside_begin_end() {
             return;
         }
+        let saved = self.save_current_values(&f.present);
         self.begin(mode);
         for v in &f.vertices {
             self.apply_element(&f.present, v);
         }
         self.end();
+        self.keep_current_values(saved);
+    }
+
+    /// What [`Context::keep_current_values`] restores: the current values and, when a colour
+    /// array drives `GL_COLOR_MATERIAL`, the materials.
+    fn save_current_values(&self, p: &Present) -> SavedCurrent {
+        SavedCurrent {
+            current: self.current,
+            materials: (p.color && self.lighting.color_material).then_some(self.lighting.materials),
+        }
+    }
+
+    /// After `glDrawArrays`, `glDrawElements` and the like the specification leaves each
+    /// current value whose array is enabled indeterminate (section 2.8); Mesa leaves them, and
+    /// the materials `GL_COLOR_MATERIAL` tracks, as they were before the draw (also when the
+    /// draw is replayed from a display list), while `glArrayElement` sets them as the
+    /// immediate-mode calls do. tilegl does the same, so a program that draws lit lines with
+    /// the current normal after drawing a mesh from arrays lights them as Mesa does
+    /// (xss-vigilance).
+    fn keep_current_values(&mut self, saved: SavedCurrent) {
+        self.current = saved.current;
+        if let Some(m) = saved.materials {
+            if self.lighting.materials != m {
+                self.lighting.materials = m;
+                self.invalidate();
+            }
+        }
     }
 
     /// Draws (or, while compiling a list, records) the elements `indices`.
@@ -754,10 +789,14 @@ impl Context {
             return;
         }
         const CHUNK: usize = 4096;
+        let mut saved = None;
         self.begin(mode);
         for chunk in indices.chunks(CHUNK) {
             match self.fetch_elements(chunk) {
                 Ok(f) => {
+                    if saved.is_none() {
+                        saved = Some(self.save_current_values(&f.present));
+                    }
                     for v in &f.vertices {
                         self.apply_element(&f.present, v);
                     }
@@ -769,6 +808,9 @@ impl Context {
             }
         }
         self.end();
+        if let Some(saved) = saved {
+            self.keep_current_values(saved);
+        }
     }
 
     pub(crate) fn array_element(&mut self, i: GLint) {

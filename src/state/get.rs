@@ -218,7 +218,9 @@ impl Context {
             Query::RgbaMode => bool1(true),
             Query::PointSize => Floats(vec![self.raster.point_size as f64]),
             Query::PointSizeRange => Floats(limits::POINT_SIZE_RANGE.map(|v| v as f64).to_vec()),
-            Query::PointSizeGranularity | Query::LineWidthGranularity => Floats(vec![0.125]),
+            Query::PointSizeGranularity | Query::LineWidthGranularity => {
+                Floats(vec![limits::SIZE_GRANULARITY])
+            }
             Query::LineWidth => Floats(vec![self.raster.line_width as f64]),
             Query::LineWidthRange => Floats(limits::LINE_WIDTH_RANGE.map(|v| v as f64).to_vec()),
             Query::ActiveTexture => Enum(convert::texture_unit_enum(unit)),

@@ -10,14 +10,19 @@ use crate::api::convert::{
     CompareFunc, DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
 };
 
-/// Largest 1D/2D texture side (`GL_MAX_TEXTURE_SIZE`).
-pub const MAX_TEXTURE_SIZE: i32 = 4096;
-/// Largest 3D texture side (`GL_MAX_3D_TEXTURE_SIZE`).
-pub const MAX_3D_TEXTURE_SIZE: i32 = 256;
-/// Largest cube map face side (`GL_MAX_CUBE_MAP_TEXTURE_SIZE`).
-pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 4096;
-/// Mipmap levels of a 4096 texture (levels 0..=12).
-pub const MAX_LEVELS: usize = 13;
+/// Largest 1D/2D texture side (`GL_MAX_TEXTURE_SIZE`): Mesa's (llvmpipe and softpipe), so
+/// programs that size their textures by the query get the same pictures. A texture too large
+/// for memory gives `GL_OUT_OF_MEMORY` (allocations are fallible). Texel addresses stay far
+/// inside `i32`/`i64` (the fast path takes sides up to 2^15) and the LOD is computed in
+/// floating point from texel-space derivatives, so nothing depends on the size beyond the
+/// level count.
+pub const MAX_TEXTURE_SIZE: i32 = 16384;
+/// Largest 3D texture side (`GL_MAX_3D_TEXTURE_SIZE`), Mesa's.
+pub const MAX_3D_TEXTURE_SIZE: i32 = 2048;
+/// Largest cube map face side (`GL_MAX_CUBE_MAP_TEXTURE_SIZE`), Mesa's.
+pub const MAX_CUBE_MAP_TEXTURE_SIZE: i32 = 16384;
+/// Mipmap levels of a 16384 texture (levels 0..=14).
+pub const MAX_LEVELS: usize = 15;
 /// `GL_MAX_TEXTURE_LOD_BIAS`.
 pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 /// `GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT`.

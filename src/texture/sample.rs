@@ -504,7 +504,10 @@ impl BoundTexture {
     /// divided by q, or the cube map direction) given the screen-space derivatives of the same
     /// coordinates and the unit's LOD bias (`GL_TEXTURE_FILTER_CONTROL`).
     ///
-    /// Footprint rule (anisotropic filtering, EXT_texture_filter_anisotropic): with the
+    /// Anisotropic filtering (EXT_texture_filter_anisotropic, which leaves the filter to the
+    /// implementation): 2D textures with a `*_MIPMAP_LINEAR` minification filter take Mesa's
+    /// elliptical weighted average ([`BoundTexture::sample_ewa`]), so that pictures match
+    /// llvmpipe's and softpipe's. Other targets and filters take this footprint rule: with the
     /// derivatives scaled to texels, `Px = |d/dx|`, `Py = |d/dy|`, `Pmax = max(Px, Py)`,
     /// `Pmin = min(Px, Py)`. The number of samples is
     /// `N = min(ceil(Pmax / Pmin), MAX_ANISOTROPY)` (`MAX_ANISOTROPY` when `Pmin` is 0), and
@@ -573,6 +576,11 @@ impl BoundTexture {
             let lambda = self.isotropic_lambda(dx, dy, unit_lod_bias);
             return self.sample_face(face, c, lambda);
         }
+        if self.uses_ewa() {
+            if let Some(v) = self.sample_ewa(c, dx, dy, max_aniso, unit_lod_bias) {
+                return v;
+            }
+        }
         let (px, py) = (length(self.scaled(dx)), length(self.scaled(dy)));
         let (pmax, pmin, axis) = if px >= py { (px, py, dx) } else { (py, px, dy) };
         let n = if !pmax.is_finite() || pmax <= 0.0 {
@@ -597,6 +605,123 @@ impl BoundTexture {
             }
         }
         sum.map(|v| v / n as f32)
+    }
+
+    /// Whether anisotropic filtering takes the elliptical weighted average of
+    /// [`BoundTexture::sample_ewa`]: 2D textures (and rectangles) whose minification filter
+    /// interpolates between two levels (`*_MIPMAP_LINEAR`), as Mesa's llvmpipe and softpipe
+    /// filter them. Other targets and filters take the footprint rule of
+    /// [`BoundTexture::sample_grad`].
+    fn uses_ewa(&self) -> bool {
+        matches!(
+            self.inner.target,
+            TextureTarget::T2D | TextureTarget::Rectangle
+        ) && matches!(
+            self.inner.params.min_filter,
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear
+        )
+    }
+
+    /// Anisotropic filtering as Mesa's llvmpipe and softpipe do it (Heckbert's elliptical
+    /// weighted average), so that pictures match theirs. With the derivatives in base-level
+    /// texels (`u_x, v_x` along x, `u_y, v_y` along y), `P_x^2 = u_x^2 + v_x^2`,
+    /// `P_y^2 = u_y^2 + v_y^2`, the larger `Pmax^2` and the smaller `Pmin^2`, raised to
+    /// `Pmax^2 / MAX_ANISOTROPY^2` when the ratio exceeds `MAX_ANISOTROPY^2`: λ =
+    /// `log2(Pmin)` plus biases, clamped as usual; one level, `trunc(λ)` (at least 0). From the
+    /// last level on, that level's nearest texel. Below it, the derivatives scaled to the
+    /// level define the ellipse `A u^2 + B u v + C v^2 = F` with `A = v_x^2 + v_y^2 + 1`,
+    /// `B = -2 (u_x v_x + u_y v_y)`, `C = u_x^2 + u_y^2 + 1`, `F = A C - B^2 / 4` (the `+ 1`s
+    /// keep it at least a texel across), centred at the sample point in texel coordinates
+    /// (`s w - 1/2`); every texel (u, v) of its bounding box with `q = (A U^2 + B U V +
+    /// C V^2) (1023 / F) < 1024` (U, V from the centre) weighs `exp(-2 trunc(q) / 1023)`, and
+    /// the result is the weighted mean of those texels (each fetched with wrapping at texture
+    /// coordinate `(u / w, v / h)`). `None` when the ellipse's bounding box holds more than
+    /// [`EWA_MAX_TEXELS`] texels (a footprint far larger than its level, as `GL_TEXTURE_MAX_LOD`
+    /// can force): the caller then takes the footprint rule, which bounds the work per
+    /// fragment.
+    fn sample_ewa(
+        &self,
+        c: [f32; 3],
+        dx: [f32; 3],
+        dy: [f32; 3],
+        max_aniso: f32,
+        unit_lod_bias: f32,
+    ) -> Option<[f32; 4]> {
+        let Some(levels) = self.inner.levels.first().filter(|l| !l.is_empty()) else {
+            return Some([0.0, 0.0, 0.0, 1.0]);
+        };
+        let [w0, h0, _] = self.inner.base_size;
+        let (ux, vx) = (dx[0] * w0, dx[1] * h0);
+        let (uy, vy) = (dy[0] * w0, dy[1] * h0);
+        let px2 = ux * ux + vx * vx;
+        let py2 = uy * uy + vy * vy;
+        let (pmax2, mut pmin2) = if px2 < py2 { (py2, px2) } else { (px2, py2) };
+        let max_e = max_aniso * max_aniso;
+        if !(pmax2 / pmin2 <= max_e) {
+            pmin2 = pmax2 / max_e;
+        }
+        let lambda = self.lambda_from_rho(pmin2.sqrt(), unit_lod_bias);
+        let last = levels.len() - 1;
+        // Truncated towards zero (a NaN λ counts as 0).
+        let level = if lambda.is_nan() {
+            0
+        } else {
+            lambda.max(-1.0).min(1e9) as i64
+        };
+        if level >= last as i64 {
+            return Some(self.finish(self.filter(&levels[last], false, c)));
+        }
+        let level = level.max(0) as usize;
+        let img = &levels[level];
+        let scaling = 1.0 / (1u64 << level) as f32;
+        let (width, height) = (
+            (w0 * scaling).floor().max(1.0),
+            (h0 * scaling).floor().max(1.0),
+        );
+        let (ux, vx, uy, vy) = (ux * scaling, vx * scaling, uy * scaling, vy * scaling);
+        let a = vx * vx + vy * vy + 1.0;
+        let b = -2.0 * (ux * vx + uy * vy);
+        let cc = ux * ux + uy * uy + 1.0;
+        let f = a * cc - b * b / 4.0;
+        let d = -b * b + 4.0 * cc * a;
+        let box_u = 2.0 / d * (d * cc * f).sqrt();
+        let box_v = 2.0 / d * (a * d * f).sqrt();
+        if !(box_u.is_finite() && box_v.is_finite() && f > 0.0) {
+            return Some(self.finish(self.filter(img, false, c)));
+        }
+        let form = (EWA_LUT_SIZE - 1) as f64 / f as f64;
+        let (a, b, cc) = (a as f64 * form, b as f64 * form, cc as f64 * form);
+        let tex_u = -0.5 + c[0] * w0 * scaling;
+        let tex_v = -0.5 + c[1] * h0 * scaling;
+        // At the level λ selects the ellipse's minor axis spans one or two texels and its
+        // major axis at most MAX_ANISOTROPY times that, unless λ was clamped.
+        let (u0, u1) = ((tex_u - box_u).floor(), (tex_u + box_u).ceil());
+        let (v0, v1) = ((tex_v - box_v).floor(), (tex_v + box_v).ceil());
+        if !((u1 - u0 + 1.0) * (v1 - v0 + 1.0) <= EWA_MAX_TEXELS) {
+            return None;
+        }
+        let (u0, u1, v0, v1) = (u0 as i64, u1 as i64, v0 as i64, v1 as i64);
+        let mut num = [0.0f64; 4];
+        let mut den = 0.0f64;
+        for v in v0..=v1 {
+            let vv = (v as f32 - tex_v) as f64;
+            for u in u0..=u1 {
+                let uu = (u as f32 - tex_u) as f64;
+                let q = (cc * vv + b * uu) * vv + a * uu * uu;
+                if q < EWA_LUT_SIZE as f64 {
+                    let weight = ewa_weight(q.max(0.0) as usize) as f64;
+                    let t = self.filter(img, false, [u as f32 / width, v as f32 / height, c[2]]);
+                    for k in 0..4 {
+                        num[k] += weight * t[k] as f64;
+                    }
+                    den += weight;
+                }
+            }
+        }
+        if !(den > 0.0) {
+            return Some(self.finish(self.filter(img, false, c)));
+        }
+        Some(self.finish(num.map(|n| (n / den) as f32)))
     }
 
     /// Level selection and filtering on one face (coords: s, t, r; for cube faces r is only
@@ -918,6 +1043,20 @@ impl BoundTexture {
         let row1 = lerp4(t(i0[0], i1[1]), t(i1[0], i1[1]), w[0]);
         lerp4(row0, row1, w[1])
     }
+}
+
+/// The most texels the elliptical weighted average visits for one fragment (a 64 x 64 box;
+/// unclamped footprints stay below 40 x 40).
+const EWA_MAX_TEXELS: f32 = 4096.0;
+
+/// Entries of the elliptical weighted average's weight table (Mesa's `WEIGHT_LUT_SIZE`).
+const EWA_LUT_SIZE: usize = 1024;
+
+/// The Gaussian weight of table entry `i`: `exp(-2 i / 1023)` (as f32, like Mesa's table).
+#[inline]
+fn ewa_weight(i: usize) -> f32 {
+    let r2 = i.min(EWA_LUT_SIZE - 1) as f32 / (EWA_LUT_SIZE - 1) as f32;
+    (-2.0 * r2).exp()
 }
 
 #[cfg(test)]

@@ -670,7 +670,8 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         // Beyond GL 1.5, for captures of programs run on newer drivers: ARB_texture_rg and its
         // generic compressed forms (stored uncompressed), the float formats of
         // ARB_texture_float (stored as 16- or 32-bit normalised values: what they receive from
-        // an 8-bit framebuffer or [0, 1] data is kept exactly), and the depth-stencil formats'
+        // an 8-bit framebuffer or [0, 1] data is kept exactly; values outside [0, 1] are
+        // clamped, so GL_ARB_texture_float is not advertised), and the depth-stencil formats'
         // depth (the stencil part is not kept).
         GL_RED | GL_COMPRESSED_RED | GL_R8 => (Red, 8),
         GL_R16 => (Red, 16),
@@ -684,6 +685,14 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_RGB32F_ARB => (Rgb, 32),
         GL_RGBA16F_ARB => (Rgba, 16),
         GL_RGBA32F_ARB => (Rgba, 32),
+        GL_ALPHA16F_ARB => (Alpha, 16),
+        GL_ALPHA32F_ARB => (Alpha, 32),
+        GL_LUMINANCE16F_ARB => (Luminance, 16),
+        GL_LUMINANCE32F_ARB => (Luminance, 32),
+        GL_LUMINANCE_ALPHA16F_ARB => (LuminanceAlpha, 16),
+        GL_LUMINANCE_ALPHA32F_ARB => (LuminanceAlpha, 32),
+        GL_INTENSITY16F_ARB => (Intensity, 16),
+        GL_INTENSITY32F_ARB => (Intensity, 32),
         GL_DEPTH24_STENCIL8_EXT => (DepthComponent, 24),
         GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (DepthComponent, 32),
         GL_COMPRESSED_RGB => {
