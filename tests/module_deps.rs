@@ -1,0 +1,129 @@
+//! The dependency direction of `src/`, checked from the source: each top-level module may use
+//! only modules below it in the pipeline order of `docs/design.md`
+//!
+//! `capi`, `replay` -> `api` -> `state` -> `vertex` -> `primitive` -> `raster` -> `fragment`
+//! -> `texture` -> `framebuffer`, with `compare` a leaf anyone may use.
+//!
+//! Every `crate::MODULE` path in non-test code counts. The edges that still go upwards are
+//! listed in `UPWARD_EDGES` (issue 26 removes them): a new upward edge fails this test, and so
+//! does a listed one that is gone (remove it from the list), so the list only shrinks.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+/// Pipeline rank of each top-level module; an edge must go from a lower rank to a higher one.
+const RANKS: &[(&str, u32)] = &[
+    ("capi", 0),
+    ("replay", 0),
+    ("api", 1),
+    ("state", 2),
+    ("vertex", 3),
+    ("primitive", 4),
+    ("raster", 5),
+    ("fragment", 6),
+    ("texture", 7),
+    ("framebuffer", 8),
+    ("compare", 9),
+];
+
+/// Upward edges that exist today (from, to). Remove an entry when its edge is gone.
+const UPWARD_EDGES: &[(&str, &str)] = &[
+    ("fragment", "api"),
+    ("fragment", "raster"),
+    ("fragment", "state"),
+    ("framebuffer", "api"),
+    ("framebuffer", "fragment"),
+    ("framebuffer", "raster"),
+    ("framebuffer", "state"),
+    ("framebuffer", "texture"),
+    ("primitive", "api"),
+    ("primitive", "state"),
+    ("raster", "api"),
+    ("raster", "primitive"),
+    ("raster", "state"),
+    ("state", "api"),
+    ("state", "capi"),
+    ("texture", "api"),
+    ("texture", "fragment"),
+    ("texture", "state"),
+    ("vertex", "api"),
+    ("vertex", "state"),
+];
+
+/// The top-level modules each top-level module names (`crate::X`), from its files' non-test
+/// code (a file's text before `#[cfg(test)]`).
+fn edges() -> BTreeMap<String, BTreeSet<String>> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut out: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    let mut stack = vec![src.clone()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                if path.file_name().is_some_and(|n| n != "bin") {
+                    stack.push(path);
+                }
+                continue;
+            }
+            if path.extension().is_none_or(|e| e != "rs") {
+                continue;
+            }
+            let rel = path.strip_prefix(&src).unwrap();
+            let first = rel
+                .components()
+                .next()
+                .unwrap()
+                .as_os_str()
+                .to_string_lossy();
+            let module = first.trim_end_matches(".rs").to_string();
+            if module == "lib" {
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap();
+            let code = text.split("#[cfg(test)]").next().unwrap_or("");
+            for (i, _) in code.match_indices("crate::") {
+                let name: String = code[i + 7..]
+                    .chars()
+                    .take_while(|c| c.is_ascii_lowercase() || *c == '_')
+                    .collect();
+                if !name.is_empty() && name != module {
+                    out.entry(module.clone()).or_default().insert(name);
+                }
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn modules_only_use_modules_below_them() {
+    let rank: BTreeMap<&str, u32> = RANKS.iter().copied().collect();
+    let mut upward = BTreeSet::new();
+    for (from, tos) in edges() {
+        let Some(&rf) = rank.get(from.as_str()) else {
+            panic!("top-level module `{from}` has no rank in RANKS");
+        };
+        for to in tos {
+            let Some(&rt) = rank.get(to.as_str()) else {
+                continue; // not a module (a macro path, a crate-level item)
+            };
+            if rt <= rf && !(rf == 0 && rt == 0) {
+                upward.insert((from.clone(), to));
+            }
+        }
+    }
+    let listed: BTreeSet<(String, String)> = UPWARD_EDGES
+        .iter()
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect();
+    let new: Vec<_> = upward.difference(&listed).collect();
+    let gone: Vec<_> = listed.difference(&upward).collect();
+    assert!(
+        new.is_empty(),
+        "new upward dependencies (a lower stage using a higher one): {new:?}"
+    );
+    assert!(
+        gone.is_empty(),
+        "these upward dependencies are gone: remove them from UPWARD_EDGES: {gone:?}"
+    );
+}
