@@ -1,17 +1,14 @@
 //! `tilegl replay` end to end: the compare path on a capture that matches and on one that does
 //! not (exit status and one line per picture), writing frames, and bad input.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 
-fn traces_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("shared captures not found at {}; skipping", dir.display());
-        None
-    }
+mod common;
+
+/// The repository's copy of the shared captures (the test fails when it is missing).
+fn traces_dir() -> PathBuf {
+    common::shared_traces()
 }
 
 fn tilegl() -> Command {
@@ -27,13 +24,13 @@ fn temp_dir(tag: &str) -> PathBuf {
 
 #[test]
 fn compare_reports_each_picture_and_passes_within_tolerance() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let out = temp_dir("compare");
     let o = tilegl()
         .arg("replay")
-        .arg(dir.join("xss-timetunnel.trace"))
+        .arg(common::require(&dir.join("xss-timetunnel.trace")))
         .arg("--compare")
-        .arg(dir.join("xss-timetunnel.frames"))
+        .arg(common::require(&dir.join("xss-timetunnel.frames")))
         .arg("-o")
         .arg(&out)
         .output()
@@ -67,11 +64,11 @@ fn compare_reports_each_picture_and_passes_within_tolerance() {
 
 #[test]
 fn compare_fails_when_a_picture_is_out_of_tolerance() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     // glxgears against references that are solid magenta: every picture fails.
     let name = "glxgears";
     let refs = temp_dir("bad-refs");
-    let src = dir.join(format!("{name}.frames"));
+    let src = common::require(&dir.join(format!("{name}.frames")));
     let tsv = std::fs::read_to_string(src.join("frames.tsv")).unwrap();
     std::fs::write(refs.join("frames.tsv"), &tsv).unwrap();
     for line in tsv.lines().skip(1) {
@@ -83,7 +80,7 @@ fn compare_fails_when_a_picture_is_out_of_tolerance() {
     }
     let o = tilegl()
         .arg("replay")
-        .arg(dir.join(format!("{name}.trace")))
+        .arg(common::require(&dir.join(format!("{name}.trace"))))
         .arg("--compare")
         .arg(&refs)
         .output()
@@ -100,15 +97,15 @@ fn compare_fails_when_a_picture_is_out_of_tolerance() {
 
 #[test]
 fn each_gl_error_source_is_reported_once_with_its_first_call() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     // piglit queries GL 3 state that GL 1.5 does not have: glGetIntegerv raises
     // GL_INVALID_ENUM hundreds of times, reported on one line.
     let name = "piglit-nv_texture_env_combine4-combine";
     let o = tilegl()
         .arg("replay")
-        .arg(dir.join(format!("{name}.trace")))
+        .arg(common::require(&dir.join(format!("{name}.trace"))))
         .arg("--compare")
-        .arg(dir.join(format!("{name}.frames")))
+        .arg(common::require(&dir.join(format!("{name}.frames"))))
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&o.stdout);
@@ -132,11 +129,11 @@ fn each_gl_error_source_is_reported_once_with_its_first_call() {
 
 #[test]
 fn replay_writes_the_requested_frames_and_calls() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let out = temp_dir("frames");
     let o = tilegl()
         .arg("replay")
-        .arg(dir.join("xss-cage.trace"))
+        .arg(common::require(&dir.join("xss-cage.trace")))
         .args(["--frames", "28..30", "--calls", "100", "-o"])
         .arg(&out)
         .output()
@@ -153,7 +150,7 @@ fn replay_writes_the_requested_frames_and_calls() {
     );
     // The frame is the reference picture (within tolerance, checked in replay_compare.rs).
     let ours = image::open(out.join("frame-0029.png")).unwrap().to_rgb8();
-    let reference = image::open(dir.join("xss-cage.frames/frame-0029.png"))
+    let reference = image::open(common::require(&dir.join("xss-cage.frames/frame-0029.png")))
         .unwrap()
         .to_rgb8();
     let d = tilegl::replay::reference::diff_rgb(&ours, &reference, 8);
@@ -163,10 +160,10 @@ fn replay_writes_the_requested_frames_and_calls() {
 
 #[test]
 fn bad_input_fails_with_a_message_naming_the_call() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let tmp = temp_dir("bad");
     // Several snappy chunks: the cut falls after many good calls.
-    let bytes = std::fs::read(dir.join("xss-atlantis.trace")).unwrap();
+    let bytes = std::fs::read(common::require(&dir.join("xss-atlantis.trace"))).unwrap();
     let cut = tmp.join("cut.trace");
     std::fs::write(&cut, &bytes[..bytes.len() * 9 / 10]).unwrap();
     let o = tilegl()
@@ -192,13 +189,13 @@ fn bad_input_fails_with_a_message_naming_the_call() {
 /// strips colour each flat-shaded quad once).
 #[test]
 fn spec_meshes_switches_evaluator_meshes_to_quad_strips() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("conformance/traces");
+    let dir = common::own_traces();
     let run = |spec: bool| {
         let mut c = tilegl();
         c.arg("replay")
-            .arg(dir.join("xss-polyhedra.trace"))
+            .arg(common::require(&dir.join("xss-polyhedra.trace")))
             .arg("--compare")
-            .arg(dir.join("xss-polyhedra.frames"));
+            .arg(common::require(&dir.join("xss-polyhedra.frames")));
         if spec {
             c.arg("--spec-meshes");
         }

@@ -8,14 +8,11 @@ use tilegl::replay::player::{FrameSelection, Player, Want};
 use tilegl::replay::script::ScriptReader;
 use tilegl::replay::trace::TraceReader;
 
-fn traces_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("shared captures not found at {}; skipping", dir.display());
-        None
-    }
+mod common;
+
+/// The repository's copy of the shared captures (the test fails when it is missing).
+fn traces_dir() -> PathBuf {
+    common::shared_traces()
 }
 
 fn all_frames() -> Want {
@@ -56,11 +53,12 @@ fn gzip(bytes: &[u8]) -> Vec<u8> {
 
 #[test]
 fn corrupted_captures_replay_or_fail_with_a_call_number() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     for name in ["glxgears", "piglit-tex-border-1"] {
         // Damage the decompressed call stream (re-wrapped as gzip, which the reader also
         // takes), so that the player sees readable but wrong calls and values.
-        let stream = unsnap(&std::fs::read(dir.join(format!("{name}.trace"))).unwrap());
+        let stream =
+            unsnap(&std::fs::read(common::require(&dir.join(format!("{name}.trace")))).unwrap());
         let mut state = 0x9e37_79b9_u32;
         let mut errors = 0;
         for _ in 0..40 {
@@ -159,7 +157,7 @@ fn unknown_calls_and_gl_errors_are_counted_once_each() {
 
 #[test]
 fn a_frame_range_stops_the_replay_early() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let mut player = Player::new(2);
     let want = Want {
         frames: FrameSelection::Range {
@@ -172,7 +170,7 @@ fn a_frame_range_stops_the_replay_early() {
     let mut files = Vec::new();
     let stats = player
         .play(
-            &mut TraceReader::open(&dir.join("xss-cage.trace")).unwrap(),
+            &mut TraceReader::open(&common::require(&dir.join("xss-cage.trace"))).unwrap(),
             &want,
             &mut |p| {
                 files.push(p.file);

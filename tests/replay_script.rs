@@ -8,14 +8,11 @@ use tilegl::replay::player::{CallSource, FrameSelection, Picture, Player, Want};
 use tilegl::replay::script::{dump, ScriptReader};
 use tilegl::replay::trace::TraceReader;
 
-fn traces_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("shared captures not found at {}; skipping", dir.display());
-        None
-    }
+mod common;
+
+/// The repository's copy of the shared captures (the test fails when it is missing).
+fn traces_dir() -> PathBuf {
+    common::shared_traces()
 }
 
 fn temp_dir(tag: &str) -> PathBuf {
@@ -45,7 +42,7 @@ fn pictures(source: &mut dyn CallSource, want: &Want, auto_window: bool) -> Vec<
 
 #[test]
 fn dumped_captures_replay_to_the_same_pixels() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let tmp = temp_dir("dump");
     // Display lists, client-array blobs in fake calls, texture images (large blobs in files),
     // EGL and GLX.
@@ -55,7 +52,7 @@ fn dumped_captures_replay_to_the_same_pixels() {
         ("piglit-s3tc-teximage", vec![768]),
         ("piglit-texwrap-2D-GL_RGBA8", vec![567, 973]),
     ] {
-        let trace = dir.join(format!("{name}.trace"));
+        let trace = common::require(&dir.join(format!("{name}.trace")));
         let header = "test dump";
         let (script, n) =
             dump(&mut TraceReader::open(&trace).unwrap(), &tmp, name, header).unwrap();

@@ -1,4 +1,4 @@
-//! The apitrace reader against the shared captures: every call is read, call numbers match
+//! The apitrace reader against the shared captures (the repository's copy): every call is read, call numbers match
 //! what apitrace itself recorded in each `frames.tsv` (call number and function name), and
 //! damaged input gives an error naming an offset instead of a panic.
 
@@ -8,15 +8,11 @@ use std::path::{Path, PathBuf};
 
 use tilegl::replay::trace::TraceReader;
 
-fn traces_dir() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/traces");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        // The captures live beside the checkout (../shared), not in the repository.
-        eprintln!("shared captures not found at {}; skipping", dir.display());
-        None
-    }
+mod common;
+
+/// The repository's copy of the shared captures (the test fails when it is missing).
+fn traces_dir() -> PathBuf {
+    common::shared_traces()
 }
 
 fn traces(dir: &Path) -> Vec<PathBuf> {
@@ -31,7 +27,7 @@ fn traces(dir: &Path) -> Vec<PathBuf> {
 
 #[test]
 fn every_shared_capture_reads_to_the_end_with_apitrace_call_numbers() {
-    let Some(dir) = traces_dir() else { return };
+    let dir = traces_dir();
     let list = traces(&dir);
     assert!(
         list.len() >= 20,
@@ -65,7 +61,7 @@ fn every_shared_capture_reads_to_the_end_with_apitrace_call_numbers() {
         );
         // frames.tsv was written by apitrace: its call numbers name the snapshot calls.
         let tsv = path.with_extension("frames").join("frames.tsv");
-        let text = std::fs::read_to_string(&tsv).unwrap();
+        let text = std::fs::read_to_string(common::require(&tsv)).unwrap();
         for line in text.lines().skip(1) {
             let cols: Vec<&str> = line.split('\t').collect();
             let no: u64 = cols[2].parse().unwrap();
@@ -77,8 +73,7 @@ fn every_shared_capture_reads_to_the_end_with_apitrace_call_numbers() {
 
 #[test]
 fn truncated_and_corrupted_captures_give_errors_not_panics() {
-    let Some(dir) = traces_dir() else { return };
-    let bytes = std::fs::read(dir.join("glxgears.trace")).unwrap();
+    let bytes = std::fs::read(common::require(&traces_dir().join("glxgears.trace"))).unwrap();
     let read_all = |data: Vec<u8>| -> Result<u64, String> {
         let mut reader =
             TraceReader::new(Box::new(Cursor::new(data))).map_err(|e| e.to_string())?;

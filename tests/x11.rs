@@ -381,3 +381,74 @@ fn piglit_gl1_subset_gives_mesas_verdicts() {
     }
     assert!(wrong.is_empty(), "verdicts differ:\n{}", wrong.join("\n"));
 }
+
+/// Share of pixels that are not near-black, and how many distinct colours there are.
+fn coverage(px: &[u8]) -> (f64, usize) {
+    let lit = px
+        .chunks_exact(3)
+        .filter(|p| p.iter().any(|&c| c > 24))
+        .count();
+    let mut colours: Vec<[u8; 3]> = px.chunks_exact(3).map(|p| [p[0], p[1], p[2]]).collect();
+    colours.sort_unstable();
+    colours.dedup();
+    (lit as f64 / (px.len() / 3).max(1) as f64, colours.len())
+}
+
+/// An xscreensaver 6 hack (EGL on X11, OpenGL 1.x with GLU and texture fonts) draws on
+/// tilegl's libEGL.so.1. Its pictures are not deterministic (random gear sets), so the check is
+/// that it runs, swaps 20 frames without an error and shows a picture of the same kind as on
+/// Mesa: shaded gears (over 1 % of the pixels lit, in more than 10 colours) on black.
+#[test]
+fn xscreensaver_gears_draws_through_egl() {
+    if !needs(&["Xvfb", "xdpyinfo"]) {
+        return;
+    }
+    let hack = Path::new("/usr/libexec/xscreensaver/gears");
+    if !hack.exists() {
+        missing(&format!(
+            "{} is not installed (xscreensaver-gl)",
+            hack.display()
+        ));
+        return;
+    }
+    let Some(shot) = swapshot_library() else {
+        return;
+    };
+    let lib = tilegl_lib_dir("xscreensaver");
+    let x = Xvfb::start();
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let mut seen = Vec::new();
+    for (name, l) in [("mesa", None), ("tilegl", Some(lib.as_path()))] {
+        let out = dir.join(format!("xscreensaver-gears-{name}.ppm"));
+        let _ = std::fs::remove_file(&out);
+        let o = on(&x, "timeout", l)
+            .arg("60")
+            .arg(hack)
+            .args(["-geometry", "400x300+0+0"])
+            .env("LD_PRELOAD", &shot)
+            .env("SWAPSHOT_FRAME", "20")
+            .env("SWAPSHOT_OUT", &out)
+            .output()
+            .expect("run gears");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(o.status.success(), "gears on {name} failed: {err}");
+        assert!(err.trim().is_empty(), "gears on {name} complained: {err}");
+        let (w, h, px) = read_ppm(&out);
+        assert_eq!((w, h), (400, 300));
+        let (lit, colours) = coverage(&px);
+        println!(
+            "gears on {name}: {:.1}% lit, {colours} colours",
+            lit * 100.0
+        );
+        seen.push((lit, colours));
+    }
+    let (mesa, tile) = (seen[0], seen[1]);
+    assert!(
+        mesa.0 > 0.01 && mesa.1 > 10,
+        "Mesa's picture is empty: {mesa:?}"
+    );
+    assert!(
+        tile.0 > 0.01 && tile.1 > 10,
+        "tilegl's picture shows no gears: {tile:?} (Mesa: {mesa:?})"
+    );
+}

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use tilegl::enums::*;
 use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
 
+use crate::c_route::CAbiContext;
 use crate::mesa::{self, MesaContext, Oracle, OracleError, OracleInfo};
 use crate::tolerance::Tolerance;
 
@@ -136,6 +137,11 @@ pub fn run_scene(gl: &mut dyn Gl, scene: &Scene) -> Rendered {
 
 /// Renders a scene on a fresh tilegl context.
 pub fn render_tilegl(scene: &Scene) -> Rendered {
+    render_tilegl_with_threads(scene, 0)
+}
+
+/// Renders a scene on a fresh tilegl context shading with `threads` threads (0: one per core).
+pub fn render_tilegl_with_threads(scene: &Scene, threads: usize) -> Rendered {
     // The same buffers as the Mesa side: 24 depth, 8 stencil, 16 accumulation bits.
     let mut ctx = Context::with_config(ContextConfig {
         width: scene.width,
@@ -144,17 +150,84 @@ pub fn render_tilegl(scene: &Scene) -> Rendered {
             accum_bits: 16,
             ..FramebufferConfig::default()
         },
-        ..ContextConfig::default()
+        threads,
     });
     run_scene(&mut ctx, scene)
+}
+
+/// Renders a scene on a fresh tilegl context reached through the C ABI (the exported OSMesa
+/// and `gl*` functions, [`crate::c_route`]), with the buffers [`render_tilegl`] uses.
+pub fn render_c_abi(scene: &Scene) -> Rendered {
+    let mut c = CAbiContext::create(scene.width, scene.height, 16).unwrap_or_else(|| {
+        panic!(
+            "{}: the C ABI refused a {}x{} context",
+            scene.name, scene.width, scene.height
+        )
+    });
+    run_scene(&mut *c, scene)
+}
+
+/// Asserts that the C ABI route gives exactly the Rust route's picture and error for `scene`
+/// (`rust` is the Rust route's result). Any difference is a defect of the C ABI: the two run
+/// the same renderer on the same calls.
+pub fn assert_c_abi_matches(scene: &Scene, rust: &Rendered) {
+    let c = render_c_abi(scene);
+    assert_eq!(
+        c.error, rust.error,
+        "{}: glGetError through the C ABI 0x{:04x}, through the Rust API 0x{:04x}",
+        scene.name, c.error, rust.error
+    );
+    if c.image != rust.image {
+        let d = diff(&c.image, &rust.image, 0);
+        panic!(
+            "{}: the C ABI's picture differs from the Rust API's: {d}",
+            scene.name
+        );
+    }
 }
 
 /// Renders a scene on a fresh Mesa context of this process (its driver is whatever
 /// `GALLIUM_DRIVER` selected at the first context creation).
 pub fn render_mesa(scene: &Scene) -> Result<(Rendered, OracleInfo), OracleError> {
+    render_mesa_with_clear(scene).map(|(r, info, _)| (r, info))
+}
+
+/// [`render_mesa`], plus Mesa's clear colour after the scene (`GL_COLOR_CLEAR_VALUE`, 8-bit).
+fn render_mesa_with_clear(scene: &Scene) -> Result<(Rendered, OracleInfo, [u8; 4]), OracleError> {
     let mut mesa = MesaContext::create(scene.width, scene.height)?;
     let r = run_scene(&mut *mesa, scene);
-    Ok((r, mesa.info().clone()))
+    let mut clear = [0f32; 4];
+    mesa.get_floatv(GL_COLOR_CLEAR_VALUE, &mut clear);
+    let _ = mesa.get_error();
+    let clear = clear.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+    Ok((r, mesa.info().clone(), clear))
+}
+
+/// Scenes whose right picture is one colour: the clear colour (or black) because nothing may
+/// be drawn. Every other scene must show Mesa drawing something ([`mesa_drew_nothing`]), so
+/// that an oracle that silently draws nothing (a broken driver, a lost context) cannot make
+/// a scene pass on a tilegl that draws nothing too. Each entry says why nothing is drawn.
+pub const DRAWS_NOTHING: &[(&str, &str)] = &[];
+
+/// Why Mesa's picture of `scene` cannot be trusted, if it cannot: the picture is one colour,
+/// black or Mesa's clear colour `clear`, and the scene is not one of [`DRAWS_NOTHING`]; or it
+/// is listed there and Mesa drew something after all (the list must stay true).
+pub fn mesa_drew_nothing(scene: &str, mesa: &Image, clear: [u8; 4]) -> Option<String> {
+    let empty = tilegl::compare::uniform_colour(&mesa.pixels, 4)
+        .filter(|c| c[..3] == [0, 0, 0] || tilegl::compare::same_colour(c, &clear))
+        .map(|c| c.to_vec());
+    let listed = DRAWS_NOTHING.iter().any(|(n, _)| *n == scene);
+    match (empty, listed) {
+        (Some(c), false) => Some(format!(
+            "Mesa drew nothing: every pixel of its picture is {c:?} (black or its clear \
+             colour); list the scene in compare::DRAWS_NOTHING if that is the right picture"
+        )),
+        (None, true) => Some(
+            "listed in compare::DRAWS_NOTHING but Mesa drew something: remove it from the list"
+                .to_string(),
+        ),
+        _ => None,
+    }
 }
 
 const CHILD_SCENE_ENV: &str = "TILEGL_CHILD_SCENE";
@@ -244,24 +317,32 @@ pub struct Comparison {
     pub mesa_info: OracleInfo,
     pub diff: Diff,
     pub tolerance: Tolerance,
+    /// Set when Mesa's picture shows nothing drawn ([`mesa_drew_nothing`]): the case fails.
+    pub mesa_empty: Option<String>,
 }
 
 impl Comparison {
-    /// Within tolerance and the same `glGetError` result on both sides.
+    /// Within tolerance, the same `glGetError` result on both sides, and a Mesa picture that
+    /// shows something drawn.
     pub fn passed(&self) -> bool {
-        self.tolerance.accepts(&self.diff) && self.tilegl.error == self.mesa.error
+        self.tolerance.accepts(&self.diff)
+            && self.tilegl.error == self.mesa.error
+            && self.mesa_empty.is_none()
     }
 
     /// One line for logs.
     pub fn summary(&self) -> String {
         format!(
-            "{}: {} [{}]; glGetError tilegl 0x{:04x} mesa 0x{:04x}; tolerance {}",
+            "{}: {} [{}]; glGetError tilegl 0x{:04x} mesa 0x{:04x}; tolerance {}{}",
             self.scene,
             self.diff,
             self.mesa_info,
             self.tilegl.error,
             self.mesa.error,
-            self.tolerance
+            self.tolerance,
+            self.mesa_empty
+                .as_ref()
+                .map_or(String::new(), |why| format!("; {why}"))
         )
     }
 
@@ -279,9 +360,10 @@ impl Comparison {
 
 /// Runs `scene` on tilegl and on Mesa and compares the pictures under `tolerance`.
 pub fn compare_scene(scene: &Scene, tolerance: Tolerance) -> Result<Comparison, OracleError> {
-    let (mesa, mesa_info) = render_mesa(scene)?;
+    let (mesa, mesa_info, clear) = render_mesa_with_clear(scene)?;
     let tilegl = render_tilegl(scene);
     let diff = diff(&tilegl.image, &mesa.image, tolerance.channel);
+    let mesa_empty = mesa_drew_nothing(scene.name, &mesa.image, clear);
     Ok(Comparison {
         scene: scene.name,
         tilegl,
@@ -289,5 +371,6 @@ pub fn compare_scene(scene: &Scene, tolerance: Tolerance) -> Result<Comparison, 
         mesa_info,
         diff,
         tolerance,
+        mesa_empty,
     })
 }

@@ -3,12 +3,14 @@
 //! known-failures list ([`known_failures`]) and the triangle benchmark ([`bench`]).
 
 pub mod bench;
+pub mod c_route;
 pub mod compare;
 pub mod example_support;
 pub mod known_failures;
 pub mod machine;
 pub mod mesa;
 pub mod prng;
+pub mod report;
 pub mod scenes;
 pub mod scenes_arrays;
 pub mod scenes_cascade;
@@ -18,13 +20,15 @@ pub mod scenes_raster;
 pub mod scenes_state;
 pub mod scenes_texture;
 pub mod scenes_texture_matrix;
+pub mod state_cases;
 pub mod tolerance;
 
 pub use compare::{Diff, Image, Scene};
 pub use mesa::{MesaContext, Oracle, OracleError, OracleInfo};
 
 /// Runs one differential scene: the same calls on tilegl and on Mesa, compared under the
-/// scene's tolerance, with the known-failure rule applied. Serves the child-process request
+/// scene's tolerance, with the known-failure rule applied; and on tilegl through its C ABI,
+/// which must give the Rust route's picture and error exactly. Serves the child-process request
 /// when this process was started as the other Gallium driver's helper.
 pub fn run_differential_case(name: &str) {
     if compare::serve_child_request(&scenes::SCENES) {
@@ -36,6 +40,8 @@ pub fn run_differential_case(name: &str) {
     let scene = scenes::find(name).unwrap_or_else(|| panic!("no scene {name}"));
     let c = compare::compare_scene(scene, scene.tolerance)
         .unwrap_or_else(|e| panic!("{name}: oracle error: {e}"));
+    // The same calls through the C ABI: identical picture and error, whatever Mesa drew.
+    compare::assert_c_abi_matches(scene, &c.tilegl);
     if !c.passed() {
         if let Some(dir) = std::env::var_os("TILEGL_CONFORMANCE_DUMP") {
             let _ = c.dump(std::path::Path::new(&dir));

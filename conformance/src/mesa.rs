@@ -326,18 +326,119 @@ pub fn run_self_with_driver(
     Ok(out)
 }
 
+/// Whether this run is CI (`CI=true` or `CI=1`), where a missing oracle or an unexpected one
+/// fails instead of being reported.
+pub fn in_ci() -> bool {
+    std::env::var("CI")
+        .map(|v| v == "true" || v == "1")
+        .unwrap_or(false)
+}
+
+/// The Mesa major version the oracle's figures were measured with (Debian 12's Mesa 22.3.6:
+/// conformance/TOLERANCE.md and the shared captures' TOLERANCE.md). Another major version may
+/// rasterize differently; [`MESA_MAJOR_ENV`] names another expected major version.
+pub const EXPECTED_MESA_MAJOR: u32 = 22;
+
+/// The environment variable overriding [`EXPECTED_MESA_MAJOR`].
+pub const MESA_MAJOR_ENV: &str = "TILEGL_MESA_MAJOR";
+
+/// The Mesa version in a `GL_VERSION` string (`2.1 Mesa 22.3.6` -> 22), if it names one.
+pub fn mesa_major(version: &str) -> Option<u32> {
+    let rest = &version[version.find("Mesa ")? + 5..];
+    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+    digits.parse().ok()
+}
+
+/// Checks that the oracle is the expected Mesa ([`EXPECTED_MESA_MAJOR`]): `Err` with the
+/// reason when `version` is not.
+pub fn check_oracle_version(version: &str) -> Result<u32, String> {
+    let expected = std::env::var(MESA_MAJOR_ENV)
+        .ok()
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or(EXPECTED_MESA_MAJOR);
+    match mesa_major(version) {
+        Some(m) if m == expected => Ok(m),
+        Some(m) => Err(format!(
+            "the oracle is Mesa {m} (GL_VERSION {version:?}), the tolerances were measured on \
+             Mesa {expected} (set {MESA_MAJOR_ENV}={m} after recalibrating)"
+        )),
+        None => Err(format!(
+            "the oracle's GL_VERSION {version:?} names no Mesa version (expected Mesa {expected})"
+        )),
+    }
+}
+
+/// The oracle's identity and the outcome of [`check_oracle_version`] (its Mesa major version,
+/// or why it is not the expected one), or why no context could be made.
+pub type OracleIdentity = Result<(OracleInfo, Result<u32, String>), OracleError>;
+
+/// The oracle's `GL_VERSION` and `GL_RENDERER`, read once per process from a 1x1 context and
+/// printed once (to the process's standard error, past the test harness's capture), with the
+/// outcome of [`check_oracle_version`].
+pub fn oracle_identity() -> &'static OracleIdentity {
+    static INFO: OnceLock<OracleIdentity> = OnceLock::new();
+    INFO.get_or_init(|| {
+        let info = MesaContext::create(1, 1)?.info().clone();
+        let check = check_oracle_version(&info.version);
+        use std::io::Write;
+        let _ = writeln!(
+            std::io::stderr(),
+            "Mesa oracle: GL_VERSION {:?}, GL_RENDERER {:?}{}",
+            info.version,
+            info.renderer,
+            match &check {
+                Ok(_) => String::new(),
+                Err(e) => format!(" -- UNEXPECTED: {e}"),
+            }
+        );
+        Ok((info, check))
+    })
+}
+
 /// What a test should do when the oracle is unavailable: in CI (`CI=true`) it fails, otherwise
 /// it prints "skipped: Mesa not found" and passes. Returns `true` if the test should go on.
+/// The first call of a process also prints the oracle's version and renderer
+/// ([`oracle_identity`]); in CI a Mesa of another major version than [`EXPECTED_MESA_MAJOR`]
+/// fails the test (elsewhere it is printed as a warning).
 pub fn require_mesa(test: &str) -> bool {
+    let ci = in_ci();
     match mesa_available() {
-        Ok(()) => true,
+        Ok(()) => {}
         Err(e) => {
-            let ci = std::env::var("CI")
-                .map(|v| v == "true" || v == "1")
-                .unwrap_or(false);
             assert!(!ci, "{test}: Mesa is required in CI but unavailable: {e}");
             println!("{test}: skipped: Mesa not found ({e})");
-            false
+            return false;
         }
+    }
+    match oracle_identity() {
+        Ok((_, Ok(_))) => {}
+        Ok((_, Err(e))) => {
+            assert!(!ci, "{test}: unexpected oracle in CI: {e}");
+            println!("{test}: warning: {e}");
+        }
+        Err(e) => panic!("{test}: the Mesa oracle cannot create a context: {e}"),
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mesa_versions_are_read_from_gl_version() {
+        assert_eq!(mesa_major("2.1 Mesa 22.3.6"), Some(22));
+        assert_eq!(
+            mesa_major("4.5 (Compatibility Profile) Mesa 24.2.8-1"),
+            Some(24)
+        );
+        assert_eq!(mesa_major("4.6.0 NVIDIA 535.1"), None);
+        assert_eq!(mesa_major(""), None);
+        assert!(
+            check_oracle_version("2.1 Mesa 22.3.6").is_ok()
+                || std::env::var_os(MESA_MAJOR_ENV).is_some()
+        );
+        assert!(check_oracle_version("2.1 Mesa 9.2.1").is_err());
+        assert!(check_oracle_version("1.5 tilegl").is_err());
     }
 }

@@ -11,8 +11,7 @@
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 use tilegl_conformance::compare::{self, diff};
-use tilegl_conformance::known_failures::check_outcome;
-use tilegl_conformance::mesa::{self, MesaContext, Oracle};
+use tilegl_conformance::mesa::{self};
 use tilegl_conformance::scenes::{self, SCENES};
 use tilegl_conformance::tolerance::DIFFERENTIAL;
 
@@ -208,29 +207,7 @@ fn agree(a: &Answer, b: &Answer) -> bool {
 /// Runs `script` on both, which records its own answers (queries and glGetError results) in
 /// order; compares them one by one.
 fn state_case(name: &str, script: fn(&mut dyn Gl, &mut Vec<(String, Answer)>)) {
-    if !mesa::require_mesa(name) {
-        return;
-    }
-    let mut mesa = MesaContext::create(64, 64).expect("mesa context");
-    let mut m = Vec::new();
-    script(&mut *mesa, &mut m);
-    let mut t = Vec::new();
-    let mut ctx = Context::new(64, 64);
-    script(&mut ctx, &mut t);
-    assert_eq!(m.len(), t.len());
-    let mut report = format!("{name} [{}]:", mesa.info());
-    let mut ok = true;
-    for ((label, a), (_, b)) in t.iter().zip(&m) {
-        let same = agree(a, b);
-        ok &= same;
-        if !same {
-            report.push_str(&format!("\n  {label}: tilegl {a:?} mesa {b:?}"));
-        }
-    }
-    if ok {
-        report.push_str(&format!(" {} answers agree", t.len()));
-    }
-    check_outcome(name, ok, &report);
+    tilegl_conformance::state_cases::run(name, script, |(_, a), (_, b)| agree(a, b));
 }
 
 fn err(gl: &mut dyn Gl, out: &mut Vec<(String, Answer)>, label: &str) {

@@ -4,10 +4,8 @@
 
 use tilegl::api::GLenum;
 use tilegl::enums::*;
-use tilegl::{ClientPtr, Context, Gl};
+use tilegl::{ClientPtr, Gl};
 use tilegl_conformance::differential;
-use tilegl_conformance::known_failures::check_outcome;
-use tilegl_conformance::mesa::{self, MesaContext, Oracle};
 use tilegl_conformance::scenes_arrays::ARRAY_SCENES;
 
 differential!(
@@ -47,30 +45,9 @@ fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
     out.push((format!("glGetError after {label}"), vec![e as i64]));
 }
 
-/// Runs `script` on Mesa and on tilegl and compares every answer exactly.
+/// Runs `script` on Mesa and on tilegl (both routes) and compares every answer exactly.
 fn state_case(name: &str, script: fn(&mut dyn Gl, &mut Answers)) {
-    if !mesa::require_mesa(name) {
-        return;
-    }
-    let mut mesa = MesaContext::create(64, 64).expect("mesa context");
-    let mut m = Vec::new();
-    script(&mut *mesa, &mut m);
-    let mut t = Vec::new();
-    let mut ctx = Context::new(64, 64);
-    script(&mut ctx, &mut t);
-    assert_eq!(m.len(), t.len());
-    let mut report = format!("{name} [{}]:", mesa.info());
-    let mut ok = true;
-    for ((label, a), (_, b)) in t.iter().zip(&m) {
-        if a != b {
-            ok = false;
-            report.push_str(&format!("\n  {label}: tilegl {a:?} mesa {b:?}"));
-        }
-    }
-    if ok {
-        report.push_str(&format!(" {} answers agree", t.len()));
-    }
-    check_outcome(name, ok, &report);
+    tilegl_conformance::state_cases::run(name, script, |a, b| a == b);
 }
 
 mod scripts {

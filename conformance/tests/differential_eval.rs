@@ -22,9 +22,7 @@ fn every_eval_scene_has_a_test() {
 // Evaluator state and errors, answer by answer against Mesa.
 
 use tilegl::enums::*;
-use tilegl::{Context, Gl};
-use tilegl_conformance::known_failures::check_outcome;
-use tilegl_conformance::mesa::{self, MesaContext, Oracle};
+use tilegl::Gl;
 
 /// One recorded answer: a label and its values as doubles (errors as their enum value).
 type Answers = Vec<(String, Vec<f64>)>;
@@ -265,28 +263,7 @@ fn agree(a: &[f64], b: &[f64]) -> bool {
 }
 
 fn state_case(name: &str, script: fn(&mut dyn Gl, &mut Answers)) {
-    if !mesa::require_mesa(name) {
-        return;
-    }
-    let mut mesa = MesaContext::create(64, 64).expect("mesa context");
-    let mut m = Vec::new();
-    script(&mut *mesa, &mut m);
-    let mut t = Vec::new();
-    let mut ctx = Context::new(64, 64);
-    script(&mut ctx, &mut t);
-    assert_eq!(m.len(), t.len());
-    let mut report = format!("{name} [{}]:", mesa.info());
-    let mut ok = true;
-    for ((label, a), (_, b)) in t.iter().zip(&m) {
-        if !agree(a, b) {
-            ok = false;
-            report.push_str(&format!("\n  {label}: tilegl {a:?} mesa {b:?}"));
-        }
-    }
-    if ok {
-        report.push_str(&format!(" {} answers agree", t.len()));
-    }
-    check_outcome(name, ok, &report);
+    tilegl_conformance::state_cases::run(name, script, |(_, a), (_, b)| agree(a, b));
 }
 
 #[test]

@@ -8,10 +8,8 @@
 
 use tilegl::api::GLenum;
 use tilegl::enums::*;
-use tilegl::{ClientPtr, Context, Gl};
+use tilegl::{ClientPtr, Gl};
 use tilegl_conformance::differential;
-use tilegl_conformance::known_failures::check_outcome;
-use tilegl_conformance::mesa::{self, MesaContext, Oracle};
 use tilegl_conformance::scenes_state::STATE_SCENES;
 
 differential!(
@@ -27,7 +25,9 @@ fn every_state_scene_has_a_test() {
 }
 
 /// One answer: a label, the values, and how far they may differ.
+#[derive(Debug)]
 struct Answer {
+    #[allow(dead_code)] // shown in the reports (Debug)
     label: String,
     values: Vec<f64>,
     tolerance: f64,
@@ -81,47 +81,13 @@ fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
 
 /// Runs `script` on Mesa and on tilegl and compares every answer.
 fn state_case(name: &str, script: fn(&mut dyn Gl, &mut Answers)) {
-    if !mesa::require_mesa(name) {
-        return;
-    }
-    let mut mesa = MesaContext::create(64, 64).expect("mesa context");
-    let mut m = Vec::new();
-    script(&mut *mesa, &mut m);
-    let mut t = Vec::new();
-    let mut ctx = Context::new(64, 64);
-    script(&mut ctx, &mut t);
-    let mut report = format!("{name} [{}]:", mesa.info());
-    let mut ok = m.len() == t.len();
-    if !ok {
-        let show = |a: &Answers| {
-            a.iter()
-                .map(|x| format!("\n    {}: {:?}", x.label, x.values))
-                .collect::<String>()
-        };
-        report.push_str(&format!(
-            "\n  answer counts differ: tilegl{} \n  mesa{}",
-            show(&t),
-            show(&m)
-        ));
-    }
-    for (a, b) in t.iter().zip(&m) {
-        let same = a.values.len() == b.values.len()
+    tilegl_conformance::state_cases::run(name, script, |a: &Answer, b: &Answer| {
+        a.values.len() == b.values.len()
             && a.values
                 .iter()
                 .zip(&b.values)
-                .all(|(x, y)| (x - y).abs() <= a.tolerance);
-        if !same {
-            ok = false;
-            report.push_str(&format!(
-                "\n  {}: tilegl {:?} mesa {:?}",
-                a.label, a.values, b.values
-            ));
-        }
-    }
-    if ok {
-        report.push_str(&format!(" {} answers agree", t.len()));
-    }
-    check_outcome(name, ok, &report);
+                .all(|(x, y)| (x - y).abs() <= a.tolerance)
+    });
 }
 
 const STATE: &[GLenum] = &[

@@ -1,7 +1,9 @@
 //! Element counts of C pointer parameters whose length the registry gives as
 //! `COMPSIZE(...)`: the number of elements GL reads or writes, computed from the other
-//! arguments and the context's state. Entry points tilegl does not implement yet get 0 (they
-//! record an error without touching memory).
+//! arguments and the context's state. Pixel commands take their sizes from
+//! `state/client_sizes.rs`, whose layouts the commands themselves check against. Every
+//! `COMPSIZE` parameter of an exported entry point has a case here; the audit in
+//! `tests/capi_lengths.rs` fails for any that would get 0 on a valid call.
 
 use crate::api::enums::*;
 use crate::state::Context;
@@ -14,7 +16,35 @@ pub fn size(ctx: &Context, command: &str, param: &str, args: &[i64]) -> usize {
         "glGetBooleanv" | "glGetIntegerv" | "glGetFloatv" | "glGetDoublev" => {
             ctx.query_count(arg(0) as u32)
         }
-        "glReadPixels" => ctx.pack_size(arg(0) as u32, arg(1) as u32, arg(2) as i32, arg(3) as i32),
+        "glReadPixels" => {
+            ctx.read_pixels_len(arg(0) as u32, arg(1) as u32, arg(2) as i32, arg(3) as i32)
+        }
+        "glTexImage1D" | "glTexSubImage1D" => {
+            ctx.tex_image_len(1, arg(0) as u32, arg(1) as u32, [arg(2) as i32, 1, 1])
+        }
+        "glTexImage2D" | "glTexSubImage2D" => ctx.tex_image_len(
+            2,
+            arg(0) as u32,
+            arg(1) as u32,
+            [arg(2) as i32, arg(3) as i32, 1],
+        ),
+        "glTexImage3D" | "glTexSubImage3D" => ctx.tex_image_len(
+            3,
+            arg(0) as u32,
+            arg(1) as u32,
+            [arg(2) as i32, arg(3) as i32, arg(4) as i32],
+        ),
+        "glDrawPixels" => {
+            ctx.draw_pixels_len(arg(0) as u32, arg(1) as u32, arg(2) as i32, arg(3) as i32)
+        }
+        "glBitmap" => ctx.bitmap_len(arg(0) as i32, arg(1) as i32),
+        "glGetTexImage" => {
+            ctx.get_tex_image_len(arg(0) as u32, arg(1) as i32, arg(2) as u32, arg(3) as u32)
+        }
+        "glGetCompressedTexImage" => ctx.get_compressed_tex_image_len(arg(0) as u32, arg(1) as i32),
+        "glGetPixelMapfv" | "glGetPixelMapuiv" | "glGetPixelMapusv" => {
+            ctx.pixel_map_len(arg(0) as u32)
+        }
         "glPolygonStipple" | "glGetPolygonStipple" => 128,
         "glMap1f" | "glMap1d" => crate::state::evaluators::map1_len(arg(0) as u32, arg(1), arg(2)),
         "glMap2f" | "glMap2d" => {

@@ -46,32 +46,6 @@ impl Context {
         );
     }
 
-    /// Bytes `glReadPixels` writes for a `width` x `height` rectangle under the pack state, or 0
-    /// when the arguments are invalid (the call then records the error and writes nothing).
-    pub(crate) fn pack_size(
-        &self,
-        format: GLenum,
-        type_: GLenum,
-        width: i32,
-        height: i32,
-    ) -> usize {
-        let (Some(f), Some(t)) = (convert::pixel_format(format), convert::pixel_type(type_)) else {
-            return 0;
-        };
-        if width <= 0 || height <= 0 {
-            return 0;
-        }
-        self.pack
-            .image_bytes(
-                width as usize,
-                height as usize,
-                1,
-                f.components() * t.size(),
-                t.size(),
-            )
-            .unwrap_or(0)
-    }
-
     pub(crate) fn read_pixels(
         &mut self,
         x: GLint,
@@ -106,9 +80,8 @@ impl Context {
             return;
         }
         let bpp = f.components() * t.size();
-        let Some(needed) = self
-            .pack
-            .image_bytes(width as usize, height as usize, 1, bpp, t.size())
+        let Some(needed) =
+            self.pack_bytes(f.components(), t.size(), width as usize, height as usize)
         else {
             self.record_error(GL_INVALID_VALUE);
             return;

@@ -111,6 +111,11 @@ pub struct Picture {
     pub call_no: u64,
     /// The colour buffer, RGB, top row first (as PNG files are).
     pub image: image::RgbImage,
+    /// The colour buffer's alpha, in the same order (compared where a reference has alpha).
+    pub alpha: image::GrayImage,
+    /// The clear colour (`GL_COLOR_CLEAR_VALUE`) current at the snapshot, as 8-bit RGBA: a
+    /// reference of only this colour shows nothing drawn.
+    pub clear_color: [u8; 4],
 }
 
 /// File name of the snapshot before swap `n`.
@@ -344,19 +349,29 @@ impl Player {
         } else {
             ctx.draw_color_buffer()
         };
+        // Read from the state, not with glGetFloatv: that query is refused between glBegin
+        // and glEnd, and the error it records would be seen by the program's glGetError.
+        let clear_color = ctx
+            .clear_values
+            .color
+            .map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
         let rgba = ctx.color_image(buffer);
         let (w, h) = rgba.dimensions();
-        let rgb: Vec<u8> = rgba
-            .into_raw()
+        let raw = rgba.into_raw();
+        let rgb: Vec<u8> = raw
             .chunks_exact(4)
             .flat_map(|p| [p[0], p[1], p[2]])
             .collect();
+        let alpha: Vec<u8> = raw.chunks_exact(4).map(|p| p[3]).collect();
         let image = image::RgbImage::from_raw(w, h, rgb)?;
+        let alpha = image::GrayImage::from_raw(w, h, alpha)?;
         Some(Picture {
             file,
             frame,
             call_no,
             image,
+            alpha,
+            clear_color,
         })
     }
 

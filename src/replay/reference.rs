@@ -3,15 +3,22 @@
 //! snapshot_of; optionally `softpipe/` with the same pictures from a second Mesa driver).
 //!
 //! Each listed picture is rendered (frames by swap number, call snapshots by call number) and
-//! compared over RGB (the references have no alpha). It matches when the share of pixels whose
-//! largest channel difference exceeds 8 is at most 0.1 % ([`crate::compare::PROJECT`]), or at
-//! most the share measured between Mesa's llvmpipe and softpipe on the same picture, when
-//! `softpipe/FILE` exists (the shared TOLERANCE.md rule).
+//! compared over RGB, and over alpha too where the reference has an alpha channel (the shared
+//! captures' references have none: apitrace writes RGB). It matches when the share of pixels
+//! whose largest channel difference exceeds 8 is at most 0.1 % ([`crate::compare::PROJECT`]),
+//! or at most the share measured between Mesa's llvmpipe and softpipe on the same picture, when
+//! `softpipe/FILE` exists (the shared TOLERANCE.md rule), but never more than
+//! [`crate::compare::SPREAD_CAP`] (5 %).
+//!
+//! A reference that shows nothing drawn fails whatever the replay shows: every pixel black, or
+//! every pixel the clear colour current at the snapshot. Such a picture cannot tell a working
+//! replay from one that draws nothing. (A reference of one other colour is a real check: piglit
+//! probes often fill the window with the one colour under test.)
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
-use crate::compare::{diff_pixels, Diff, Tolerance, PROJECT};
+use crate::compare::{diff_pixels, same_colour, uniform_colour, Diff, Tolerance, PROJECT};
 
 use super::player::{CallSource, FrameSelection, Picture, Player, ReplayError, ReplayStats, Want};
 
@@ -90,6 +97,8 @@ pub struct PictureResult {
     pub softpipe: Option<Diff>,
     /// The tolerance applied.
     pub tolerance: Tolerance,
+    /// Whether alpha was compared too (the reference has an alpha channel).
+    pub alpha: bool,
     pub ok: bool,
     /// Why a picture failed without figures, or a size mismatch.
     pub note: String,
@@ -101,7 +110,7 @@ impl PictureResult {
         let verdict = if self.ok { "ok" } else { "FAIL" };
         match &self.diff {
             Some(d) => format!(
-                "{:<22} PSNR {:>7} dB  max {:>3}  bad(>{}) {:>7.3}%  allowed {:.3}%  {verdict}{}",
+                "{:<22} PSNR {:>7} dB  max {:>3}  bad(>{}) {:>7.3}%  allowed {:.3}%{}  {verdict}{}",
                 self.file,
                 if d.psnr.is_infinite() {
                     "inf".to_string()
@@ -112,6 +121,7 @@ impl PictureResult {
                 d.threshold,
                 d.bad_share * 100.0,
                 self.tolerance.max_bad_share * 100.0,
+                if self.alpha { " (RGBA)" } else { "" },
                 if self.note.is_empty() {
                     String::new()
                 } else {
@@ -166,10 +176,33 @@ impl CompareReport {
     }
 }
 
-fn load_rgb(path: &Path) -> Result<image::RgbImage, String> {
-    image::open(path)
-        .map(|i| i.to_rgb8())
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))
+fn load(path: &Path) -> Result<image::DynamicImage, String> {
+    image::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
+}
+
+/// A picture's pixels with alpha (`alpha`: RGBA) or without (RGB), top row first.
+fn raw_pixels(image: &image::DynamicImage, alpha: bool) -> Vec<u8> {
+    if alpha {
+        image.to_rgba8().into_raw()
+    } else {
+        image.to_rgb8().into_raw()
+    }
+}
+
+/// Why a reference (`channels` bytes per pixel) cannot check anything, if it cannot: every
+/// pixel black, or every pixel `clear` (the clear colour at the snapshot, when known).
+pub fn empty_reference(pixels: &[u8], channels: usize, clear: Option<[u8; 4]>) -> Option<String> {
+    let c = uniform_colour(pixels, channels)?;
+    let what = if c[..3] == [0, 0, 0] {
+        "black"
+    } else if clear.is_some_and(|k| same_colour(c, &k)) {
+        "the clear colour"
+    } else {
+        return None;
+    };
+    Some(format!(
+        "the reference shows nothing drawn: every pixel is {c:?}, {what}"
+    ))
 }
 
 /// Compares a rendered picture with a reference (RGB, top row first).
@@ -189,8 +222,12 @@ pub fn diff_rgb(ours: &image::RgbImage, reference: &image::RgbImage, threshold: 
 
 /// `image` (rows top-down) placed at the lower left of a black `width` x `height` picture,
 /// as GL's window origin is the lower-left corner.
-pub fn embed_lower_left(image: &image::RgbImage, width: u32, height: u32) -> image::RgbImage {
-    let mut out = image::RgbImage::new(width, height);
+pub fn embed_lower_left<P: image::Pixel>(
+    image: &image::ImageBuffer<P, Vec<P::Subpixel>>,
+    width: u32,
+    height: u32,
+) -> image::ImageBuffer<P, Vec<P::Subpixel>> {
+    let mut out = image::ImageBuffer::new(width, height);
     let dy = height.saturating_sub(image.height());
     for (x, y, px) in image.enumerate_pixels() {
         if x < width && y + dy < height {
@@ -201,28 +238,43 @@ pub fn embed_lower_left(image: &image::RgbImage, width: u32, height: u32) -> ima
 }
 
 /// The tolerance for a picture of `dir`: the project rule, widened to the llvmpipe-vs-softpipe
-/// spread when `dir/softpipe/FILE` exists. Returns the softpipe figures too.
+/// spread when `dir/softpipe/FILE` exists, up to [`crate::compare::SPREAD_CAP`]. Returns the
+/// softpipe figures too (uncapped). Alpha is compared when the reference has it.
 pub fn tolerance_for(
     dir: &Path,
     file: &str,
-    reference: &image::RgbImage,
+    reference: &image::DynamicImage,
 ) -> (Tolerance, Option<Diff>) {
+    let alpha = reference.color().has_alpha();
     let sp_path = dir.join("softpipe").join(file);
     let softpipe = sp_path
         .is_file()
-        .then(|| load_rgb(&sp_path).ok())
+        .then(|| load(&sp_path).ok())
         .flatten()
-        .map(|sp| diff_rgb(&sp, reference, PROJECT.channel));
-    let share = softpipe.map_or(PROJECT.max_bad_share, |d| {
-        d.bad_share.max(PROJECT.max_bad_share)
-    });
-    (
-        Tolerance {
-            channel: PROJECT.channel,
-            max_bad_share: share,
-        },
-        softpipe,
-    )
+        .map(|sp| {
+            if sp.width() != reference.width() || sp.height() != reference.height() {
+                return Diff::total(reference.width(), reference.height(), PROJECT.channel);
+            }
+            diff_pixels(
+                &raw_pixels(&sp, alpha),
+                &raw_pixels(reference, alpha),
+                if alpha { 4 } else { 3 },
+                reference.width(),
+                PROJECT.channel,
+            )
+        });
+    let tolerance = softpipe.map_or(PROJECT, |d| PROJECT.widened_to(d.bad_share));
+    (tolerance, softpipe)
+}
+
+/// A rendered picture as RGBA (its RGB and alpha planes joined), top row first.
+fn picture_rgba(p: &Picture) -> image::RgbaImage {
+    let (w, h) = p.image.dimensions();
+    image::RgbaImage::from_fn(w, h, |x, y| {
+        let [r, g, b] = p.image.get_pixel(x, y).0;
+        let a = p.alpha.get_pixel_checked(x, y).map_or(255, |a| a.0[0]);
+        image::Rgba([r, g, b, a])
+    })
 }
 
 /// Replays `source` on `player` with the pictures listed in `dir/frames.tsv` and compares
@@ -265,7 +317,7 @@ pub fn compare_replay(
             None => p.frame.is_none() && p.call_no == e.call_no,
         });
         let ref_path: PathBuf = dir.join(&e.file);
-        let reference = match load_rgb(&ref_path) {
+        let reference = match load(&ref_path) {
             Ok(r) => r,
             Err(msg) => {
                 pictures.push(PictureResult {
@@ -273,12 +325,16 @@ pub fn compare_replay(
                     diff: None,
                     softpipe: None,
                     tolerance: PROJECT,
+                    alpha: false,
                     ok: false,
                     note: msg,
                 });
                 continue;
             }
         };
+        let alpha = reference.color().has_alpha();
+        let channels = if alpha { 4 } else { 3 };
+        let ref_pixels = raw_pixels(&reference, alpha);
         let (tolerance, softpipe) = tolerance_for(dir, &e.file, &reference);
         let Some(p) = found else {
             pictures.push(PictureResult {
@@ -286,6 +342,7 @@ pub fn compare_replay(
                 diff: None,
                 softpipe,
                 tolerance,
+                alpha,
                 ok: false,
                 note: match &error {
                     Some(err) => format!("not rendered: the replay stopped at {err}"),
@@ -305,28 +362,45 @@ pub fn compare_replay(
             );
         }
         let (w, h) = p.image.dimensions();
-        let (rw, rh) = reference.dimensions();
-        let mut ours = std::borrow::Cow::Borrowed(&p.image);
+        let (rw, rh) = (reference.width(), reference.height());
+        let mut ours = picture_rgba(p);
+        let mut comparable = true;
         if (w, h) != (rw, rh) {
             if w <= rw && h <= rh {
                 // The reference was read from a bigger window than the traced one (glretrace's
                 // replay window; see the shared MANIFEST.md): the traced window is its
                 // lower-left part and the rest shows nothing drawn.
-                ours = std::borrow::Cow::Owned(embed_lower_left(&p.image, rw, rh));
+                ours = embed_lower_left(&ours, rw, rh);
                 note = format!(
                     "window {w}x{h} in a {rw}x{rh} reference: lower-left aligned, outside black"
                 );
             } else {
                 note = format!("size {w}x{h}, reference {rw}x{rh}");
+                comparable = false;
             }
         }
-        let diff = diff_rgb(&ours, &reference, tolerance.channel);
+        let diff = if comparable {
+            let ours = raw_pixels(&image::DynamicImage::ImageRgba8(ours), alpha);
+            diff_pixels(&ours, &ref_pixels, channels, rw, tolerance.channel)
+        } else {
+            Diff::total(rw, rh, tolerance.channel)
+        };
+        let mut ok = tolerance.accepts(&diff);
+        if let Some(why) = empty_reference(&ref_pixels, channels, Some(p.clear_color)) {
+            ok = false;
+            note = if note.is_empty() {
+                why
+            } else {
+                format!("{note}; {why}")
+            };
+        }
         pictures.push(PictureResult {
             file: e.file.clone(),
             diff: Some(diff),
             softpipe,
             tolerance,
-            ok: tolerance.accepts(&diff),
+            alpha,
+            ok,
             note,
         });
     }

@@ -230,6 +230,17 @@ impl Call {
 /// Largest compressed chunk accepted (apitrace writes at most ~1 MiB of data per chunk).
 const MAX_CHUNK: u64 = 1 << 28;
 
+/// Largest blob or string one value may hold: 1 GiB, the largest texture image tilegl (and
+/// Mesa llvmpipe) accepts ([`crate::texture::image::MAX_IMAGE_BYTES`]). A capture claiming
+/// more is refused with an error naming the size and the offset, before anything is
+/// allocated or read for it (a highly compressible blob would otherwise be decompressed into
+/// gigabytes of memory).
+pub const MAX_BLOB: u64 = crate::texture::image::MAX_IMAGE_BYTES as u64;
+
+/// Largest number of elements of one array value (each element takes at least one byte of
+/// the stream and a few dozen bytes of memory once read).
+pub const MAX_ARRAY: u64 = 1 << 24;
+
 enum Container {
     /// apitrace snappy chunks.
     Snappy {
@@ -514,6 +525,15 @@ impl ByteStream {
     /// `n` bytes; the buffer grows only as bytes really arrive.
     fn bytes(&mut self, n: u64) -> Result<Vec<u8>, TraceError> {
         let start = self.offset();
+        if n > MAX_BLOB {
+            return Err(self.error_at(
+                start,
+                format!(
+                    "a blob or string of {n} bytes is larger than a capture may hold in one \
+                     value ({MAX_BLOB} bytes): refused"
+                ),
+            ));
+        }
         let mut out = Vec::with_capacity((n as usize).min(1 << 16));
         let mut left = n;
         while left > 0 {
@@ -886,7 +906,17 @@ impl TraceReader {
                 Value::Bitmask(sig, self.stream.uint()?)
             }
             0x0b => {
+                let at = self.stream.offset();
                 let n = self.stream.uint()?;
+                if n > MAX_ARRAY {
+                    return Err(self.stream.error_at(
+                        at,
+                        format!(
+                            "an array of {n} elements is larger than a capture may hold in one \
+                             value ({MAX_ARRAY}): refused"
+                        ),
+                    ));
+                }
                 let mut items = Vec::with_capacity((n as usize).min(1024));
                 for _ in 0..n {
                     items.push(self.value(depth + 1)?);

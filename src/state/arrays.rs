@@ -822,12 +822,53 @@ impl Context {
             self.list_aware_error(GL_INVALID_VALUE);
             return;
         };
+        // Elements past the end of an enabled array's buffer object have no data (section
+        // 2.9 leaves reading them undefined): the draw stops there, so a huge count over a
+        // small buffer costs nothing.
+        let last = last.min(self.buffer_backed_elements().max(first as u64));
         let mut indices = Vec::new();
-        if indices.try_reserve_exact(count as usize).is_err() {
+        if indices
+            .try_reserve_exact((last - first as u64) as usize)
+            .is_err()
+        {
             return self.list_aware_error(GL_OUT_OF_MEMORY);
         }
         indices.extend(first as u32..last as u32);
         self.draw_indices(mode, &indices);
+    }
+
+    /// How many elements every enabled array sourced from a buffer object holds completely
+    /// (`u64::MAX` when none is).
+    fn buffer_backed_elements(&self) -> u64 {
+        let a = &self.client.arrays;
+        [
+            &a.vertex,
+            &a.normal,
+            &a.color,
+            &a.secondary_color,
+            &a.fog_coord,
+            &a.edge_flag,
+            &a.index,
+        ]
+        .into_iter()
+        .chain(a.tex_coord.iter())
+        .filter(|p| p.enabled && p.buffer != 0)
+        .map(|p| {
+            let len = self
+                .client
+                .buffers
+                .objects
+                .get(&p.buffer)
+                .and_then(|b| b.as_ref())
+                .map_or(0, |b| b.data.len());
+            let (start, elem) = (p.pointer.0, p.element_bytes());
+            match len.checked_sub(start).and_then(|r| r.checked_sub(elem)) {
+                Some(rest) => (rest / p.effective_stride().max(1)) as u64 + 1,
+                None => 0,
+            }
+        })
+        .min()
+        .unwrap_or(u64::MAX)
     }
 
     /// The indices of a `glDrawElements`-style call: from the element array buffer (then

@@ -3,6 +3,7 @@
 
 #[macro_use]
 mod textures;
+mod client_sizes;
 #[macro_use]
 pub mod evaluators;
 pub mod arrays;

@@ -709,26 +709,13 @@ impl Context {
                     PixelIndexType::Bitmap => (1, 1),
                     PixelIndexType::Plain(t) => (8 * t.size(), t.size()),
                 };
-                let row_len = if u.row_length > 0 {
-                    u.row_length as usize
-                } else {
-                    w
-                };
-                let row_bytes = (row_len * elem_bits).div_ceil(8);
-                let align = u.alignment.max(1) as usize;
-                let stride = if elem_size >= align {
-                    row_bytes
-                } else {
-                    row_bytes.div_ceil(align) * align
-                };
-                let skip = u.skip_pixels.max(0) as usize;
-                let need = (u.skip_rows.max(0) as usize + h - 1) * stride
-                    + ((skip + w) * elem_bits).div_ceil(8);
-                if data.len() < need {
+                let rows = texpix::index_rows(u, w, h, elem_bits, elem_size)?;
+                if data.len() < rows.end {
                     return None;
                 }
+                let skip = u.skip_pixels.max(0) as usize;
                 for j in 0..h {
-                    let row = (u.skip_rows.max(0) as usize + j) * stride;
+                    let row = rows.first_row + j * rows.stride;
                     for i in 0..w {
                         let (start, n) = match ity {
                             PixelIndexType::Bitmap => (row, skip + i),
@@ -863,19 +850,12 @@ impl Context {
         let (w, h) = (width as usize, height as usize);
         if !elsewhere && w > 0 && h > 0 {
             let u = self.unpack;
-            let row_len = if u.row_length > 0 {
-                u.row_length as usize
-            } else {
-                w
-            };
-            let align = u.alignment.max(1) as usize;
-            let stride = row_len.div_ceil(8).div_ceil(align) * align;
             let skip = u.skip_pixels.max(0) as usize;
-            let need = (u.skip_rows.max(0) as usize + h - 1) * stride + (skip + w).div_ceil(8);
-            if bitmap.len() < need {
+            let Some(rows) = texpix::index_rows(&u, w, h, 1, 1).filter(|r| bitmap.len() >= r.end)
+            else {
                 self.record_error(GL_INVALID_VALUE);
                 return;
-            }
+            };
             self.flush_scene();
             let ds = self.snapshot();
             let bounds = self.scissored_window();
@@ -889,7 +869,7 @@ impl Context {
                 if y < bounds.y0 as i64 || y >= bounds.y1 as i64 {
                     continue;
                 }
-                let row = (u.skip_rows.max(0) as usize + j) * stride;
+                let row = rows.first_row + j * rows.stride;
                 for i in 0..w {
                     let x = x0 + i as i64;
                     if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {

@@ -879,6 +879,41 @@ impl Context {
 
     // ----- reading images back
 
+    /// The image `glGetTexImage(target, level, ..)` reads: its dimensions and stored size.
+    fn image_for_get(
+        &self,
+        target: GLenum,
+        level: GLint,
+    ) -> Check<Option<(TexImageTarget, usize)>> {
+        let target = convert::tex_image_target(target)
+            .filter(|t| !t.is_proxy())
+            .ok_or(GL_INVALID_ENUM)?;
+        let level = check_level(target.texture_target(), level)?;
+        Ok(self
+            .image_object(target)
+            .image(target.face(), level)
+            .map(|_| (target, level)))
+    }
+
+    /// Dimensions and size of the image at `target`/`level`, if there is one.
+    pub(crate) fn texture_image_size(
+        &self,
+        target: GLenum,
+        level: GLint,
+    ) -> Option<(usize, [usize; 3])> {
+        let (target, level) = self.image_for_get(target, level).ok()??;
+        let img = self.image_object(target).image(target.face(), level)?;
+        let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
+        Some((target.dims(), size))
+    }
+
+    /// Bytes of the compressed blocks of the image at `target`/`level`, if it is compressed.
+    pub(crate) fn texture_image_blocks_len(&self, target: GLenum, level: GLint) -> Option<usize> {
+        let (target, level) = self.image_for_get(target, level).ok()??;
+        let img = self.image_object(target).image(target.face(), level)?;
+        img.blocks.as_ref().map(|b| b.len())
+    }
+
     pub(crate) fn get_tex_image(
         &mut self,
         target: GLenum,

@@ -19,7 +19,21 @@ pub enum Texels {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OutOfMemory;
 
+/// The largest texture image tilegl allocates: 1 GiB (a 16384x16384 RGBA8 image). Larger
+/// requests are `GL_OUT_OF_MEMORY` before any memory is taken, instead of zero-filling
+/// gigabytes (which the operating system may grant lazily and then kill the process for).
+/// The figure is Mesa's: llvmpipe (Mesa 22.3.6) accepts a 16384x16384 `GL_RGBA8` image
+/// (1 GiB) and refuses `GL_RGBA16` (2 GiB) and `GL_RGBA32F` (4 GiB) of that size with
+/// `GL_OUT_OF_MEMORY`, and accepts an 8192x8192 `GL_RGBA32F` one (1 GiB), measured with
+/// `glTexImage2D(..., NULL)` and `glGetError`.
+pub const MAX_IMAGE_BYTES: usize = 1 << 30;
+
 fn alloc<T: Clone + Default>(n: usize) -> Result<Vec<T>, OutOfMemory> {
+    if n.checked_mul(std::mem::size_of::<T>())
+        .is_none_or(|bytes| bytes > MAX_IMAGE_BYTES)
+    {
+        return Err(OutOfMemory);
+    }
     let mut v = Vec::new();
     v.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
     v.resize(n, T::default());
@@ -329,5 +343,32 @@ fn gather<T: Copy>(
         Rgba => v
             .get(i..i + 4)
             .map_or(none, |s| [conv(s[0]), conv(s[1]), conv(s[2]), conv(s[3])]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn images_over_the_byte_limit_are_out_of_memory_without_allocating() {
+        // The limit counts bytes, whatever the size of one stored component.
+        assert_eq!(
+            Texels::zeroed(Storage::U8, MAX_IMAGE_BYTES + 1),
+            Err(OutOfMemory)
+        );
+        assert_eq!(
+            Texels::zeroed(Storage::U16, MAX_IMAGE_BYTES / 2 + 1),
+            Err(OutOfMemory)
+        );
+        assert_eq!(
+            Texels::zeroed(Storage::U32, MAX_IMAGE_BYTES / 4 + 1),
+            Err(OutOfMemory)
+        );
+        assert_eq!(Texels::zeroed(Storage::U32, usize::MAX), Err(OutOfMemory));
+        // A 16384x16384 RGBA32F-sized image (four 32-bit components per texel).
+        let n = 16384usize * 16384 * 4;
+        assert_eq!(Texels::zeroed(Storage::U32, n), Err(OutOfMemory));
+        assert_eq!(Texels::zeroed(Storage::U8, 16).map(|t| t.len()), Ok(16));
     }
 }

@@ -65,6 +65,57 @@ pub fn layout(
     })
 }
 
+/// Where rows of index data lie in client memory: colour or stencil indices of
+/// `glDrawPixels`, and the bits of `glBitmap` (`elem_bits` 1, packed eight to a byte).
+#[derive(Clone, Copy, Debug)]
+pub struct IndexRows {
+    /// Distance in bytes between the starts of two rows.
+    pub stride: usize,
+    /// Offset of the first row (SKIP_ROWS rows in).
+    pub first_row: usize,
+    /// Bytes the whole rectangle spans from offset 0.
+    pub end: usize,
+}
+
+/// The layout of a `width` x `height` rectangle of indices of `elem_bits` bits each
+/// (`elem_size` bytes, 1 for bitmaps) under the storage modes `store` (section 3.6.4: rows of
+/// ROW_LENGTH elements, SKIP_PIXELS elements and SKIP_ROWS rows skipped, each row padded to
+/// ALIGNMENT unless the element is at least that large). `None` on arithmetic overflow.
+pub fn index_rows(
+    store: &PixelStore,
+    width: usize,
+    height: usize,
+    elem_bits: usize,
+    elem_size: usize,
+) -> Option<IndexRows> {
+    let row_len = if store.row_length > 0 {
+        store.row_length as usize
+    } else {
+        width
+    };
+    let row_bytes = row_len.checked_mul(elem_bits)?.div_ceil(8);
+    let align = store.alignment.max(1) as usize;
+    let stride = if elem_size >= align {
+        row_bytes
+    } else {
+        row_bytes.div_ceil(align).checked_mul(align)?
+    };
+    let first_row = stride.checked_mul(store.skip_rows.max(0) as usize)?;
+    let end = if width == 0 || height == 0 {
+        0
+    } else {
+        let skip = store.skip_pixels.max(0) as usize;
+        first_row
+            .checked_add(stride.checked_mul(height - 1)?)?
+            .checked_add(skip.checked_add(width)?.checked_mul(elem_bits)?.div_ceil(8))?
+    };
+    Some(IndexRows {
+        stride,
+        first_row,
+        end,
+    })
+}
+
 /// Reads an element of `n` bytes at `at` in machine order, optionally byte-swapped.
 #[inline]
 fn read_uint(data: &[u8], at: usize, n: usize, swap: bool) -> u32 {

@@ -89,6 +89,43 @@ pub fn state_fingerprint(gl: &mut Context) -> Vec<(GLenum, Vec<f64>)> {
 
 use tilegl::api::GLenum;
 
+/// The environment variable naming another folder of captures than the repository's
+/// `conformance/traces` (used to check that the tests fail when their input is missing).
+pub const TRACES_ENV: &str = "TILEGL_TRACES";
+
+/// The repository's captures: `conformance/traces` holds the project's own (its MANIFEST.md),
+/// `conformance/traces/shared` a copy of the shared corpus (`../shared/traces`, with its
+/// MANIFEST.md and TOLERANCE.md), so the tests need nothing outside the checkout.
+/// [`TRACES_ENV`] names another root.
+pub fn traces_root() -> std::path::PathBuf {
+    match std::env::var_os(TRACES_ENV) {
+        Some(d) if !d.is_empty() => std::path::PathBuf::from(d),
+        _ => std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("conformance/traces"),
+    }
+}
+
+/// The project's own captures (panics, naming the folder, when it is missing).
+pub fn own_traces() -> std::path::PathBuf {
+    require(&traces_root())
+}
+
+/// The copy of the shared captures (panics, naming the folder, when it is missing).
+pub fn shared_traces() -> std::path::PathBuf {
+    require(&traces_root().join("shared"))
+}
+
+/// `path` when it exists; otherwise the test fails with a message naming it. A test whose
+/// input is missing fails: it never passes without checking anything.
+pub fn require(path: &std::path::Path) -> std::path::PathBuf {
+    assert!(
+        path.exists(),
+        "test input missing: {} (the captures are part of the repository, under \
+         conformance/traces; `git checkout -- conformance/traces` restores them)",
+        path.display()
+    );
+    path.to_path_buf()
+}
+
 /// Replays capture `dir/NAME.trace` and compares it with Mesa's pictures in `dir/NAME.frames`
 /// (the shared tolerance rule), printing one line per picture. Panics when it does not match,
 /// unless `known_failures` lists it (with the reason), and when a listed capture now matches,
@@ -98,8 +135,9 @@ pub fn check_capture(dir: &std::path::Path, name: &str, known_failures: &[(&str,
     use tilegl::replay::reference::compare_replay;
     use tilegl::replay::trace::TraceReader;
 
-    let trace = dir.join(format!("{name}.trace"));
-    let frames = dir.join(format!("{name}.frames"));
+    let trace = require(&dir.join(format!("{name}.trace")));
+    let frames = require(&dir.join(format!("{name}.frames")));
+    require(&frames.join("frames.tsv"));
     let mut reader = TraceReader::open(&trace).expect("open capture");
     // Two workers: the pictures do not depend on the count, and the machine is shared.
     let mut player = Player::new(2);

@@ -1,9 +1,10 @@
 //! `cargo run --release -p tilegl-conformance --bin replay_bench [-- TRACE...]`: replay
-//! throughput. For each capture (default: every one in `../shared/traces`): the trace
-//! reader's parse speed (MB/s of the decompressed stream), tilegl's replay (frames and calls
-//! per second, 2 worker threads, no pictures written) and, where `xvfb-run` and apitrace's
-//! `glretrace`/`eglretrace` exist, glretrace on Mesa llvmpipe in the same run
-//! (`--benchmark`), with the ratio. Piglit captures never swap; their rate is in calls/s.
+//! throughput. For each capture (default: every one in `conformance/traces/shared`, the
+//! repository's copy of the shared corpus): the trace reader's parse speed (MB/s of the
+//! decompressed stream), tilegl's replay (frames and calls per second, 2 worker threads, no
+//! pictures written) and, where `xvfb-run` and apitrace's `glretrace`/`eglretrace` exist,
+//! glretrace on Mesa llvmpipe in the same run (`--benchmark`), with the ratio. Piglit
+//! captures never swap; their rate is in calls/s.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -59,7 +60,7 @@ fn glretrace(path: &Path) -> Option<(u64, f64)> {
 fn main() {
     let args: Vec<PathBuf> = std::env::args().skip(1).map(PathBuf::from).collect();
     let traces: Vec<PathBuf> = if args.is_empty() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/traces");
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("traces/shared");
         let mut v: Vec<PathBuf> = std::fs::read_dir(&dir)
             .map(|d| {
                 d.filter_map(|e| e.ok().map(|e| e.path()))
