@@ -452,3 +452,62 @@ fn xscreensaver_gears_draws_through_egl() {
         "tilegl's picture shows no gears: {tile:?} (Mesa: {mesa:?})"
     );
 }
+
+/// GLX behaviour (tests/x11/glx_api.c): configurations, make-current and the current-state
+/// queries, swaps shown in the window, a resize, two contexts on two windows, a
+/// single-buffered window, a context wanted by two threads, proc addresses, destroying a
+/// current context. The program runs on tilegl and on Mesa, which checks its expectations;
+/// Mesa 22 lets a context be made current on a second thread while current on the first
+/// (GLX 1.4 section 3.3.7 says `BadAccess`), the one check allowed to fail there.
+#[test]
+fn glx_behaves_as_glx_says() {
+    if !needs(&["Xvfb", "xdpyinfo"]) {
+        return;
+    }
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/x11/glx_api.c");
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join("glx_api");
+    let o = Command::new("cc")
+        .args(["-std=gnu99", "-Wall", "-o"])
+        .arg(&exe)
+        .arg(&src)
+        .args(["-lGL", "-lX11", "-lpthread"])
+        .output();
+    match o {
+        Ok(o) if o.status.success() => {}
+        Ok(o) => {
+            missing(&format!(
+                "cannot build glx_api.c: {}",
+                String::from_utf8_lossy(&o.stderr)
+            ));
+            return;
+        }
+        Err(e) => {
+            missing(&format!("no C compiler `cc` ({e})"));
+            return;
+        }
+    }
+    let lib = tilegl_lib_dir("glx-api");
+    let x = Xvfb::start();
+    let run = |l: Option<&Path>| {
+        let o = on(&x, exe.to_str().unwrap(), l)
+            .output()
+            .expect("run glx_api");
+        (
+            o.status.success(),
+            String::from_utf8_lossy(&o.stdout).into_owned(),
+        )
+    };
+    let (mesa_ok, mesa) = run(None);
+    println!("Mesa:\n{mesa}");
+    let unexpected: Vec<&str> = mesa
+        .lines()
+        .filter(|l| l.starts_with("FAIL") && !l.contains("context current on two threads"))
+        .collect();
+    assert!(
+        unexpected.is_empty() && mesa.contains("failures") != mesa_ok,
+        "glx_api.c's expectations do not hold on Mesa:\n{mesa}"
+    );
+    let (ok, tile) = run(Some(&lib));
+    println!("tilegl:\n{tile}");
+    assert!(ok && tile.contains("all GLX checks passed"), "{tile}");
+}
