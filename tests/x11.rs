@@ -354,6 +354,19 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["clear-accum", "-auto"],
     &["user-clip", "-auto", "-fbo"],
     &["texunits", "-auto", "-fbo"],
+    &["gl-1.0-scissor-many", "-auto", "-fbo"],
+    &["line-aa-width", "-auto", "-fbo"],
+    &["gl-1.0-spot-light", "-auto", "-fbo"],
+    &["gl-1.1-xor", "-auto", "-fbo"],
+    &["gl-1.2-rescale-normal", "-auto", "-fbo"],
+    &["draw-elements", "-auto", "-fbo"],
+    &["gl-1.5-get-array-attribs", "-auto", "-fbo"],
+    &["copytexsubimage", "-auto", "-fbo"],
+    &["depthfunc", "-auto", "-fbo"],
+    &["gl-1.0-edgeflag-quads", "-auto", "-fbo"],
+    &["dlist-color-material", "-auto", "-fbo"],
+    &["gl-1.4-dlist-multidrawarrays", "-auto", "-fbo"],
+    &["masked-clear", "-auto"],
 ];
 
 #[test]
