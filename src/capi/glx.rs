@@ -448,7 +448,8 @@ pub unsafe extern "C" fn glXChooseVisual(
     let Ok(found) = choose(dpy, screen, &request) else {
         return std::ptr::null_mut();
     };
-    // GLX 1.2 prefers the largest depth and accumulation buffers that satisfy the request.
+    // The sort puts configurations without an accumulation buffer first; one is taken only
+    // when asked for.
     let want_accum = request.get(&GLX_ACCUM_RED_SIZE).is_some_and(|&v| v > 0);
     let Some(best) = found
         .iter()
@@ -458,10 +459,31 @@ pub unsafe extern "C" fn glXChooseVisual(
     else {
         return std::ptr::null_mut();
     };
-    chosen()
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .insert((dpy as usize, best.visualid), best);
+    // A visual stands for one configuration (glXCreateContext only gets the visual): among the
+    // visuals offering the same configuration, take one no other choice has claimed, so that a
+    // program choosing, say, a single- and a double-buffered visual gets two visuals.
+    let mut picked = chosen().lock().unwrap_or_else(|e| e.into_inner());
+    let same = |c: &FbConfig| {
+        (c.double, c.depth_bits, c.stencil_bits, c.accum, c.depth)
+            == (
+                best.double,
+                best.depth_bits,
+                best.stencil_bits,
+                best.accum,
+                best.depth,
+            )
+    };
+    let best = found
+        .iter()
+        .copied()
+        .filter(|c| same(c))
+        .find(|c| match picked.get(&(dpy as usize, c.visualid)) {
+            None => true,
+            Some(p) => same(p),
+        })
+        .unwrap_or(best);
+    picked.insert((dpy as usize, best.visualid), best);
+    drop(picked);
     window::visual_info(dpy, best)
 }
 

@@ -193,6 +193,37 @@ int main(void)
         XFree(sc);
     }
 
+    /* GLX 1.2 visuals: a double- and a single-buffered choice each keep their configuration. */
+    int vdouble[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_DEPTH_SIZE, 1, None};
+    int vsingle[] = {GLX_RGBA, GLX_DEPTH_SIZE, 1, None};
+    XVisualInfo *dv = glXChooseVisual(dpy, screen, vdouble);
+    XVisualInfo *sv = glXChooseVisual(dpy, screen, vsingle);
+    CHECK(dv && sv, "glXChooseVisual");
+    if (dv && sv) {
+        int d1 = -1, d2 = -1, z = -1, rgba = -1;
+        glXGetConfig(dpy, dv, GLX_DOUBLEBUFFER, &d1);
+        glXGetConfig(dpy, sv, GLX_DOUBLEBUFFER, &d2);
+        glXGetConfig(dpy, dv, GLX_DEPTH_SIZE, &z);
+        glXGetConfig(dpy, dv, GLX_RGBA, &rgba);
+        CHECK(d1 == 1 && d2 == 0, "GLX_DOUBLEBUFFER of the chosen visuals: %d %d", d1, d2);
+        CHECK(z >= 1 && rgba == 1, "depth %d rgba %d", z, rgba);
+        /* A GLX pixmap of the single-buffered visual: drawing lands in the X pixmap. */
+        Pixmap pm = XCreatePixmap(dpy, RootWindow(dpy, screen), 16, 16, sv->depth);
+        GLXPixmap gp = glXCreateGLXPixmap(dpy, sv, pm);
+        GLXContext pctx = glXCreateContext(dpy, sv, NULL, True);
+        CHECK(gp && pctx && glXMakeCurrent(dpy, gp, pctx), "GLX pixmap current");
+        clear_to(0, 0, 1);
+        glFinish();
+        glXWaitGL();
+        CHECK(pixel(pm, 3, 3) == 0x0000ff, "GLX pixmap: %06lx", pixel(pm, 3, 3));
+        glXMakeCurrent(dpy, None, NULL);
+        glXDestroyContext(dpy, pctx);
+        glXDestroyGLXPixmap(dpy, gp);
+        XFreePixmap(dpy, pm);
+        XFree(dv);
+        XFree(sv);
+    }
+
     /* Proc addresses: core names, ARB aliases, GLX names; unknown names are not ours. */
     CHECK(glXGetProcAddressARB((const GLubyte *)"glActiveTextureARB") != NULL, "glActiveTextureARB");
     CHECK(glXGetProcAddress((const GLubyte *)"glBindBuffer") != NULL, "glBindBuffer");
