@@ -477,28 +477,9 @@ fn glx_behaves_as_glx_says() {
     if !needs(&["Xvfb", "xdpyinfo"]) {
         return;
     }
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/x11/glx_api.c");
-    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join("glx_api");
-    let o = Command::new("cc")
-        .args(["-std=gnu99", "-Wall", "-o"])
-        .arg(&exe)
-        .arg(&src)
-        .args(["-lGL", "-lX11", "-lpthread"])
-        .output();
-    match o {
-        Ok(o) if o.status.success() => {}
-        Ok(o) => {
-            missing(&format!(
-                "cannot build glx_api.c: {}",
-                String::from_utf8_lossy(&o.stderr)
-            ));
-            return;
-        }
-        Err(e) => {
-            missing(&format!("no C compiler `cc` ({e})"));
-            return;
-        }
-    }
+    let Some(exe) = build_c("glx_api", &["-lGL", "-lX11", "-lpthread"]) else {
+        return;
+    };
     let lib = tilegl_lib_dir("glx-api");
     let x = Xvfb::start();
     let run = |l: Option<&Path>| {
@@ -523,4 +504,57 @@ fn glx_behaves_as_glx_says() {
     let (ok, tile) = run(Some(&lib));
     println!("tilegl:\n{tile}");
     assert!(ok && tile.contains("all GLX checks passed"), "{tile}");
+}
+
+/// Builds `tests/x11/NAME.c` with `libs`; `None` (after `missing`) without a C toolchain.
+fn build_c(name: &str, libs: &[&str]) -> Option<PathBuf> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/x11/{name}.c"));
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let o = Command::new("cc")
+        .args(["-std=gnu99", "-Wall", "-o"])
+        .arg(&exe)
+        .arg(&src)
+        .args(libs)
+        .output();
+    match o {
+        Ok(o) if o.status.success() => Some(exe),
+        Ok(o) => {
+            missing(&format!(
+                "cannot build {name}.c: {}",
+                String::from_utf8_lossy(&o.stderr)
+            ));
+            None
+        }
+        Err(e) => {
+            missing(&format!("no C compiler `cc` ({e})"));
+            None
+        }
+    }
+}
+
+/// EGL behaviour (tests/x11/egl_api.c): displays, initialisation, client extensions,
+/// configurations, an OpenGL 1.3 context on a window surface, a swap seen in the window,
+/// surface queries, current state and the errors of bad calls; every check holds on Mesa too.
+#[test]
+fn egl_behaves_as_egl_says() {
+    if !needs(&["Xvfb", "xdpyinfo"]) {
+        return;
+    }
+    let Some(exe) = build_c("egl_api", &["-lEGL", "-lGL", "-lX11"]) else {
+        return;
+    };
+    let lib = tilegl_lib_dir("egl-api");
+    let x = Xvfb::start();
+    for (name, l) in [("Mesa", None), ("tilegl", Some(lib.as_path()))] {
+        let o = on(&x, exe.to_str().unwrap(), l)
+            .output()
+            .expect("run egl_api");
+        let out = String::from_utf8_lossy(&o.stdout);
+        println!("{name}:\n{out}");
+        assert!(
+            o.status.success() && out.contains("all EGL checks passed"),
+            "egl_api on {name}:\n{out}{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
 }
