@@ -583,6 +583,7 @@ fn c_headers(
 
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
+    link_window_system_libraries();
     let xml = std::str::from_utf8(khronos_api::GL_XML).expect("gl.xml is UTF-8");
     let doc = roxmltree::Document::parse(xml).expect("gl.xml parses");
     let root = doc.root_element();
@@ -1287,4 +1288,30 @@ pub(crate) fn dispatch_generated(gl: &mut dyn Gl, name: &str, a: &mut Args<'_>) 
     }
     writeln!(s, "        _ => return None,\n    }})\n}}").unwrap();
     s
+}
+
+/// `libGL.so.1` and `libEGL.so.1` beside the cdylib (`target/<profile>/`): links to
+/// `libtilegl.so`, which exports the GL functions, GLX and EGL, so
+/// `LD_LIBRARY_PATH=target/release PROGRAM` runs an X11 GL program on tilegl. The links are
+/// made before the library is linked (they dangle until then). Failing to make them is not a
+/// build error (the library itself is still usable); `tilegl run` reports a missing link.
+fn link_window_system_libraries() {
+    let Some(out) = std::env::var_os("OUT_DIR") else {
+        return;
+    };
+    // OUT_DIR is target/<profile>/build/tilegl-<hash>/out.
+    let Some(profile_dir) = std::path::Path::new(&out).ancestors().nth(3) else {
+        return;
+    };
+    for name in ["libGL.so.1", "libEGL.so.1"] {
+        let link = profile_dir.join(name);
+        if std::fs::read_link(&link).is_ok_and(|t| t == std::path::Path::new("libtilegl.so")) {
+            continue;
+        }
+        let _ = std::fs::remove_file(&link);
+        #[cfg(unix)]
+        if let Err(e) = std::os::unix::fs::symlink("libtilegl.so", &link) {
+            println!("cargo:warning=could not link {}: {e}", link.display());
+        }
+    }
 }

@@ -4,8 +4,11 @@
 
 pub(crate) mod client_memory;
 pub mod compsize;
+pub mod egl;
 pub mod foreign;
+pub mod glx;
 pub mod osmesa;
+pub mod window;
 
 use std::ffi::c_void;
 

@@ -38,6 +38,9 @@ pub struct OsMesaContext {
     y_up: bool,
     /// Depth values handed out by `OSMesaGetDepthBuffer` (a copy, refreshed on each call).
     depth_copy: Vec<u32>,
+    /// A window-system context (GLX, EGL): what a flush point does instead of copying into a
+    /// caller buffer.
+    window_present: Option<fn(&mut Context)>,
 }
 
 thread_local! {
@@ -50,6 +53,12 @@ pub(crate) fn with_current_context<R>(f: impl FnOnce(&mut OsMesaContext) -> R) -
     // SAFETY: CURRENT holds either null or a pointer from OSMesaCreateContextExt that has not
     // been destroyed (OSMesaDestroyContext clears it), used only on this thread.
     unsafe { p.as_mut() }.map(f)
+}
+
+/// Makes `p` (null, or a live context that stays alive while current) this thread's current
+/// context: the window-system layers (GLX, EGL) run their contexts through this plumbing.
+pub(crate) fn set_current_context(p: *mut OsMesaContext) {
+    CURRENT.with(|c| c.set(p));
 }
 
 fn bytes_per_pixel(format: GLenum) -> Option<usize> {
@@ -84,6 +93,22 @@ fn from_format(format: GLenum, p: &[u8]) -> [u8; 4] {
 }
 
 impl OsMesaContext {
+    /// A context of a window-system layer: no caller buffer; `present` runs at each flush
+    /// point (`glFlush`, `glFinish`).
+    pub(crate) fn for_window(config: ContextConfig, present: fn(&mut Context)) -> OsMesaContext {
+        OsMesaContext {
+            gl: Context::with_config(config),
+            format: OSMESA_RGBA,
+            buffer: std::ptr::null_mut(),
+            width: 0,
+            height: 0,
+            row_length: 0,
+            y_up: true,
+            depth_copy: Vec::new(),
+            window_present: Some(present),
+        }
+    }
+
     fn row_offset(&self, y: i32) -> usize {
         let row = if self.y_up { y } else { self.height - 1 - y };
         let bpp = bytes_per_pixel(self.format).unwrap_or(4);
@@ -97,6 +122,10 @@ impl OsMesaContext {
 
     /// Copies the finished colour buffer into the caller's buffer.
     pub(crate) fn present(&mut self) {
+        if let Some(f) = self.window_present {
+            f(&mut self.gl);
+            return;
+        }
         if self.buffer.is_null() {
             return;
         }
@@ -185,6 +214,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         row_length: 0,
         y_up: true,
         depth_copy: Vec::new(),
+        window_present: None,
     }))
 }
 

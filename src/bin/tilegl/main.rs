@@ -2,10 +2,11 @@
 //!
 //! With no subcommand (`cargo run --release`) it renders the built-in scenes into `out/` and
 //! prints, for each, the PNG's path and how long it took. `tilegl gallery DIR` does the same
-//! into `DIR`. `replay`, `dump`, `conformance` and `bench` are the interfaces promised in
-//! DESIGN.md; `conformance` and `bench` point to the tilegl-conformance crate and exit with
-//! status 3.
+//! into `DIR`. `run -- PROGRAM ARGS` runs an X11 GL program on tilegl's libGL.so.1.
+//! `replay`, `dump`, `conformance` and `bench` are the interfaces promised in DESIGN.md;
+//! `conformance` and `bench` point to the tilegl-conformance crate and exit with status 3.
 
+mod run;
 mod scenes;
 
 use std::path::{Path, PathBuf};
@@ -87,6 +88,19 @@ enum Command {
         /// Arguments for the benchmark runner.
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
+    },
+    /// Run an unmodified X11 OpenGL program (GLX or EGL) on tilegl: puts the directory of
+    /// tilegl's libGL.so.1 and libEGL.so.1 (beside this executable) first on LD_LIBRARY_PATH
+    /// and runs PROGRAM in place of this process.
+    Run {
+        /// The program and its arguments (after `--`).
+        #[arg(
+            trailing_var_arg = true,
+            allow_hyphen_values = true,
+            required = true,
+            value_name = "PROGRAM ARGS"
+        )]
+        program: Vec<std::ffi::OsString>,
     },
     /// Render the built-in scenes as PNGs into DIR (default `out`).
     Gallery {
@@ -186,6 +200,7 @@ fn main() -> ExitCode {
             )
         }
         Some(Command::Dump { file, out }) => dump(&file, &out),
+        Some(Command::Run { program }) => run::run(&program),
         Some(Command::Conformance {
             filter,
             report,

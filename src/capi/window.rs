@@ -1,0 +1,457 @@
+//! What GLX and EGL share: Xlib (loaded at run time from the `libX11.so.6` the program already
+//! uses, through `x11-dl`), the framebuffer configurations offered for an X screen's visuals,
+//! window-system contexts, and presenting a colour buffer in a drawable with `XPutImage`.
+//!
+//! Like Mesa's xlib "fake GLX", nothing here needs the server's GLX extension: the
+//! configurations are made from the server's TrueColor visuals (`XGetVisualInfo`), tilegl
+//! renders into its own tiles, and a buffer swap (or a flush of a front buffer) copies the
+//! finished picture into the window.
+
+use std::collections::HashMap;
+use std::ffi::{c_char, c_int, c_uint, c_ulong};
+use std::sync::{Mutex, OnceLock};
+
+use x11_dl::xlib::{self, Display, Xlib};
+
+use super::osmesa::OsMesaContext;
+use crate::framebuffer::{ColorBuffer, DrawTarget, FramebufferConfig};
+use crate::state::{Context, ContextConfig};
+
+/// Xlib's functions, or `None` when `libX11.so.6` cannot be loaded.
+pub(crate) fn xlib() -> Option<&'static Xlib> {
+    static X: OnceLock<Option<Xlib>> = OnceLock::new();
+    X.get_or_init(|| Xlib::open().ok()).as_ref()
+}
+
+/// A framebuffer configuration: one of an X visual's combinations of back buffer, depth and
+/// stencil buffer and accumulation buffer. Configurations live for the whole process (GLX and
+/// EGL hand out pointers to them).
+#[derive(Debug)]
+pub struct FbConfig {
+    /// `GLX_FBCONFIG_ID` / `EGL_CONFIG_ID`, from 1 per display.
+    pub id: i32,
+    pub screen: i32,
+    pub visualid: c_ulong,
+    /// The X visual (a pointer into Xlib's display structure, kept as an address).
+    pub visual: usize,
+    pub depth: i32,
+    pub red: i32,
+    pub green: i32,
+    pub blue: i32,
+    /// tilegl's colour buffers always hold 8 alpha bits (destination alpha works on every
+    /// configuration), whatever the X visual shows.
+    pub alpha: i32,
+    pub double: bool,
+    pub depth_bits: i32,
+    pub stencil_bits: i32,
+    /// Bits per accumulation channel.
+    pub accum: i32,
+}
+
+impl FbConfig {
+    /// Colour bits without alpha, as `GLX_BUFFER_SIZE` counts them for the visual's depth.
+    pub fn buffer_size(&self) -> i32 {
+        self.red + self.green + self.blue + self.alpha
+    }
+
+    pub fn context_config(&self) -> ContextConfig {
+        ContextConfig {
+            width: 0,
+            height: 0,
+            framebuffer: FramebufferConfig {
+                depth_bits: self.depth_bits as u32,
+                stencil_bits: self.stencil_bits as u32,
+                accum_bits: self.accum as u32,
+                double_buffer: self.double,
+            },
+            threads: 0,
+        }
+    }
+}
+
+/// The configurations of each (display address, screen), made once.
+type ConfigTable = HashMap<(usize, i32), Vec<&'static FbConfig>>;
+
+fn config_table() -> &'static Mutex<ConfigTable> {
+    static T: OnceLock<Mutex<ConfigTable>> = OnceLock::new();
+    T.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+/// The bits of a channel mask.
+fn mask_bits(m: c_ulong) -> i32 {
+    m.count_ones() as i32
+}
+
+/// The configurations of `screen` (TrueColor visuals of depth 15 or more), or none without
+/// Xlib or for a bad screen.
+pub(crate) fn configs(dpy: *mut Display, screen: i32) -> Vec<&'static FbConfig> {
+    let Some(x) = xlib() else { return Vec::new() };
+    if dpy.is_null() {
+        return Vec::new();
+    }
+    let key = (dpy as usize, screen);
+    let mut table = config_table().lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(v) = table.get(&key) {
+        return v.clone();
+    }
+    // SAFETY: `dpy` is the program's open display (the GLX/EGL contract); XScreenCount only
+    // reads it.
+    let screens = unsafe { (x.XScreenCount)(dpy) };
+    if screen < 0 || screen >= screens {
+        return Vec::new();
+    }
+    // SAFETY: a zeroed XVisualInfo is a valid template (plain integers and a null pointer).
+    let mut template: xlib::XVisualInfo = unsafe { std::mem::zeroed() };
+    template.screen = screen;
+    template.class = xlib::TrueColor;
+    let mut n: c_int = 0;
+    // SAFETY: valid display, template and count pointers; the result is freed with XFree below.
+    let list = unsafe {
+        (x.XGetVisualInfo)(
+            dpy,
+            xlib::VisualScreenMask | xlib::VisualClassMask,
+            &mut template,
+            &mut n,
+        )
+    };
+    let mut out = Vec::new();
+    if !list.is_null() {
+        // SAFETY: Xlib returned `n` visual infos at `list`.
+        let infos = unsafe { std::slice::from_raw_parts(list, n.max(0) as usize) };
+        let base_id = table.values().map(|v| v.len()).sum::<usize>() as i32;
+        let mut id = 0;
+        for vi in infos.iter().filter(|vi| vi.depth >= 15) {
+            for double in [true, false] {
+                for (depth_bits, stencil_bits) in [(24, 8), (0, 0)] {
+                    for accum in [0, 16] {
+                        id += 1;
+                        out.push(&*Box::leak(Box::new(FbConfig {
+                            id: base_id + id,
+                            screen,
+                            visualid: vi.visualid,
+                            visual: vi.visual as usize,
+                            depth: vi.depth,
+                            red: mask_bits(vi.red_mask),
+                            green: mask_bits(vi.green_mask),
+                            blue: mask_bits(vi.blue_mask),
+                            alpha: 8,
+                            double,
+                            depth_bits,
+                            stencil_bits,
+                            accum,
+                        })));
+                    }
+                }
+            }
+        }
+        // SAFETY: `list` came from XGetVisualInfo.
+        unsafe { (x.XFree)(list as *mut _) };
+    }
+    table.insert(key, out.clone());
+    out
+}
+
+/// Whether `p` is one of the configurations handed out (a GLXFBConfig/EGLConfig check).
+pub(crate) fn valid_config(p: *const FbConfig) -> Option<&'static FbConfig> {
+    let table = config_table().lock().unwrap_or_else(|e| e.into_inner());
+    table
+        .values()
+        .flat_map(|v| v.iter())
+        .find(|c| std::ptr::eq(**c, p))
+        .copied()
+}
+
+/// An `XVisualInfo` (allocated by Xlib, freed by the caller with `XFree`) for the visual of
+/// `config`.
+pub(crate) fn visual_info(dpy: *mut Display, config: &FbConfig) -> *mut xlib::XVisualInfo {
+    let Some(x) = xlib() else {
+        return std::ptr::null_mut();
+    };
+    // SAFETY: a zeroed XVisualInfo is a valid template.
+    let mut template: xlib::XVisualInfo = unsafe { std::mem::zeroed() };
+    template.visualid = config.visualid;
+    template.screen = config.screen;
+    let mut n = 0;
+    // SAFETY: valid display (the caller's contract), template and count pointers.
+    unsafe {
+        (x.XGetVisualInfo)(
+            dpy,
+            xlib::VisualIDMask | xlib::VisualScreenMask,
+            &mut template,
+            &mut n,
+        )
+    }
+}
+
+/// The size of a window or pixmap, or `None` when Xlib fails.
+pub(crate) fn drawable_size(dpy: *mut Display, drawable: c_ulong) -> Option<(i32, i32)> {
+    let x = xlib()?;
+    if dpy.is_null() || drawable == 0 {
+        return None;
+    }
+    let (mut root, mut px, mut py, mut w, mut h, mut border, mut depth) = (
+        0 as c_ulong,
+        0,
+        0,
+        0 as c_uint,
+        0 as c_uint,
+        0 as c_uint,
+        0 as c_uint,
+    );
+    // SAFETY: valid display and output pointers; a bad drawable is reported through the
+    // program's X error handler, as with any Xlib call.
+    let ok = unsafe {
+        (x.XGetGeometry)(
+            dpy,
+            drawable,
+            &mut root,
+            &mut px,
+            &mut py,
+            &mut w,
+            &mut h,
+            &mut border,
+            &mut depth,
+        )
+    };
+    (ok != 0).then_some((w as i32, h as i32))
+}
+
+/// A context of the window-system layers: tilegl's context plus where its pictures go. The
+/// OSMesa plumbing (current context per thread, the GL exports) runs it; its presentation hook
+/// reads the thread's current drawable from here.
+pub struct WindowContext {
+    /// Boxed so its address stays put while it is current.
+    pub inner: Box<OsMesaContext>,
+    pub config: &'static FbConfig,
+    /// The thread it is current on (GLX: one thread at a time).
+    pub current_on: Option<std::thread::ThreadId>,
+    /// Destroyed while current: freed when released.
+    pub destroy_pending: bool,
+    /// Made current at least once (the viewport is set then).
+    pub was_current: bool,
+    /// Swap interval asked for (recorded; swaps never wait).
+    pub swap_interval: i32,
+}
+
+impl WindowContext {
+    pub fn new(config: &'static FbConfig) -> WindowContext {
+        WindowContext {
+            inner: Box::new(OsMesaContext::for_window(
+                config.context_config(),
+                present_front_hook,
+            )),
+            config,
+            current_on: None,
+            destroy_pending: false,
+            was_current: false,
+            swap_interval: 0,
+        }
+    }
+}
+
+/// Where the current thread's pictures go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Target {
+    pub dpy: usize,
+    pub drawable: c_ulong,
+    pub read: c_ulong,
+    pub visual: usize,
+    pub depth: i32,
+}
+
+thread_local! {
+    static TARGET: std::cell::Cell<Option<Target>> = const { std::cell::Cell::new(None) };
+}
+
+pub(crate) fn current_target() -> Option<Target> {
+    TARGET.with(|t| t.get())
+}
+
+pub(crate) fn set_current_target(t: Option<Target>) {
+    TARGET.with(|c| c.set(t));
+}
+
+/// Makes `wc` current on this thread drawing into `target` (resizing its buffers to the
+/// drawable), or releases the current context for `None`.
+pub(crate) fn bind(wc: Option<(&mut WindowContext, Target)>) {
+    match wc {
+        None => {
+            super::osmesa::set_current_context(std::ptr::null_mut());
+            set_current_target(None);
+        }
+        Some((wc, target)) => {
+            let size = drawable_size(target.dpy as *mut Display, target.drawable);
+            let (w, h) = size.unwrap_or((0, 0));
+            wc.inner.gl.resize(w, h);
+            if !wc.was_current {
+                wc.was_current = true;
+                wc.inner.gl.viewport(0, 0, w, h);
+                wc.inner.gl.scissor(0, 0, w, h);
+            }
+            set_current_target(Some(target));
+            super::osmesa::set_current_context(&mut *wc.inner);
+        }
+    }
+}
+
+/// After `glFlush`/`glFinish`: shows the front buffer when the program draws into it
+/// (single-buffered configurations, `glDrawBuffer(GL_FRONT)`); a back buffer waits for the swap.
+fn present_front_hook(gl: &mut Context) {
+    let Some(t) = current_target() else { return };
+    let draws_front = {
+        let fb = gl.framebuffer();
+        !fb.is_double_buffered()
+            || matches!(
+                fb.draw,
+                DrawTarget::One(ColorBuffer::Front) | DrawTarget::Both
+            )
+    };
+    if draws_front {
+        present(gl, &t, true);
+    }
+}
+
+/// The buffer swap of the current context: back to front, then the picture to the drawable;
+/// a changed drawable size reallocates the buffers for the next frame.
+pub(crate) fn swap_current(gl: &mut Context) {
+    let Some(t) = current_target() else { return };
+    gl.swap_buffers();
+    present(gl, &t, true);
+    if let Some((w, h)) = drawable_size(t.dpy as *mut Display, t.drawable) {
+        gl.resize(w, h);
+    }
+}
+
+/// The front colour buffer, bottom row first, RGBA8.
+fn front_rows(gl: &mut Context) -> (i32, i32, Vec<u8>) {
+    let fb = gl.framebuffer_mut();
+    let (w, h) = (fb.width, fb.height);
+    if fb.is_double_buffered() && fb.resident == ColorBuffer::Back {
+        fb.make_resident(ColorBuffer::Front);
+        let rows = fb.color_rows_bottom_up();
+        fb.make_resident(ColorBuffer::Back);
+        (w, h, rows)
+    } else {
+        (w, h, fb.color_rows_bottom_up())
+    }
+}
+
+fn shift_and_bits(mask: c_ulong) -> (u32, u32) {
+    if mask == 0 {
+        return (0, 0);
+    }
+    (mask.trailing_zeros(), mask.count_ones())
+}
+
+/// An 8-bit channel value scaled to `bits` bits at `shift`.
+fn channel(v: u8, shift: u32, bits: u32) -> c_ulong {
+    let scaled = if bits >= 8 {
+        (v as c_ulong) << (bits - 8)
+    } else {
+        (v as c_ulong) >> (8 - bits)
+    };
+    scaled << shift
+}
+
+/// Copies the front buffer into the drawable with `XPutImage` (rows flipped: X's first row is
+/// the top). `sync` waits for the server (so a screenshot right after a swap shows the frame).
+fn present(gl: &mut Context, t: &Target, sync: bool) {
+    let Some(x) = xlib() else { return };
+    let (w, h, rows) = front_rows(gl);
+    if w <= 0 || h <= 0 || t.visual == 0 {
+        return;
+    }
+    let dpy = t.dpy as *mut Display;
+    // SAFETY: `t.visual` is a Visual of this display (from XGetVisualInfo); XCreateImage with a
+    // null data pointer only computes the layout (bytes_per_line, bits_per_pixel).
+    let img = unsafe {
+        (x.XCreateImage)(
+            dpy,
+            t.visual as *mut xlib::Visual,
+            t.depth as c_uint,
+            xlib::ZPixmap,
+            0,
+            std::ptr::null_mut(),
+            w as c_uint,
+            h as c_uint,
+            32,
+            0,
+        )
+    };
+    if img.is_null() {
+        return;
+    }
+    // SAFETY: img is a live XImage from XCreateImage.
+    let (bpl, bpp, order, rm, gm, bm) = unsafe {
+        let i = &*img;
+        (
+            i.bytes_per_line as usize,
+            i.bits_per_pixel,
+            i.byte_order,
+            i.red_mask,
+            i.green_mask,
+            i.blue_mask,
+        )
+    };
+    let mut data = vec![0u8; bpl * h as usize];
+    let (rs, rb) = shift_and_bits(rm);
+    let (gs, gb) = shift_and_bits(gm);
+    let (bs, bb) = shift_and_bits(bm);
+    let px = |c: &[u8]| channel(c[0], rs, rb) | channel(c[1], gs, gb) | channel(c[2], bs, bb);
+    // SAFETY: `data` outlives every use of the image below and is detached before the image
+    // is destroyed (XDestroyImage would free it otherwise).
+    unsafe { (*img).data = data.as_mut_ptr() as *mut c_char };
+    let w = w as usize;
+    if bpp == 32 {
+        for y in 0..h as usize {
+            let src = &rows[(h as usize - 1 - y) * w * 4..][..w * 4];
+            let dst = &mut data[y * bpl..][..w * 4];
+            for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(4)) {
+                let v = px(s) as u32;
+                d.copy_from_slice(&if order == xlib::LSBFirst {
+                    v.to_le_bytes()
+                } else {
+                    v.to_be_bytes()
+                });
+            }
+        }
+    } else {
+        // SAFETY: put_pixel is Xlib's own pixel writer for this image layout.
+        let put = unsafe { (*img).funcs.put_pixel };
+        if let Some(put) = put {
+            for y in 0..h as usize {
+                let src = &rows[(h as usize - 1 - y) * w * 4..][..w * 4];
+                for (xx, s) in src.chunks_exact(4).enumerate() {
+                    // SAFETY: (xx, y) is inside the w x h image whose data is `data`.
+                    unsafe { put(img, xx as c_int, y as c_int, px(s)) };
+                }
+            }
+        }
+    }
+    // SAFETY: a default GC for the drawable, the image described above, then the image is
+    // detached from `data` and destroyed, and the GC freed.
+    unsafe {
+        let gc = (x.XCreateGC)(dpy, t.drawable, 0, std::ptr::null_mut());
+        (x.XPutImage)(
+            dpy,
+            t.drawable,
+            gc,
+            img,
+            0,
+            0,
+            0,
+            0,
+            w as c_uint,
+            h as c_uint,
+        );
+        (x.XFreeGC)(dpy, gc);
+        (*img).data = std::ptr::null_mut();
+        (x.XDestroyImage)(img);
+        if sync {
+            (x.XSync)(dpy, 0);
+        } else {
+            (x.XFlush)(dpy);
+        }
+    }
+    drop(data);
+}
