@@ -365,3 +365,94 @@ fn begin_and_end_across_display_lists() {
     assert_eq!(c.red(4, 4), 0);
     assert_eq!(error(), GL_NO_ERROR);
 }
+
+/// A context pointer handed to another thread, as a C program would.
+#[derive(Clone, Copy)]
+struct SendPtr(*mut OsMesaContext);
+// SAFETY: only the pointer value crosses threads; every use goes through the OSMesa functions,
+// whose rules (one thread at a time, deferred destruction) are what these tests check.
+unsafe impl Send for SendPtr {}
+
+/// A context is current on one thread at a time: another thread's `OSMesaMakeCurrent` of it
+/// fails (it would race), and succeeds once the first thread lets it go.
+#[test]
+fn a_context_is_current_on_one_thread_at_a_time() {
+    let mut c = Current::new();
+    let ptr = SendPtr(c.ctx);
+    let try_bind = move || {
+        let p = ptr;
+        let mut buf = vec![0u8; 32 * 32 * 4];
+        // SAFETY: a live context; the buffer outlives the binding (released right after).
+        unsafe {
+            let ok = OSMesaMakeCurrent(
+                p.0,
+                buf.as_mut_ptr() as *mut c_void,
+                GL_UNSIGNED_BYTE,
+                32,
+                32,
+            );
+            OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+            ok
+        }
+    };
+    assert_eq!(
+        std::thread::spawn(try_bind).join().unwrap(),
+        GL_FALSE as GLboolean
+    );
+    // SAFETY: releases this thread's binding.
+    unsafe { OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0) };
+    assert_eq!(
+        std::thread::spawn(try_bind).join().unwrap(),
+        GL_TRUE as GLboolean
+    );
+    c.bind();
+    assert_eq!(error(), GL_NO_ERROR);
+}
+
+/// A context destroyed by one thread while current on another keeps working there and is
+/// freed when that thread lets it go (no use after free, no double free).
+#[test]
+fn destroying_a_context_current_on_another_thread_defers_the_free() {
+    let ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, std::ptr::null_mut());
+    let ptr = SendPtr(ctx);
+    let (bound_tx, bound_rx) = std::sync::mpsc::channel();
+    let (destroyed_tx, destroyed_rx) = std::sync::mpsc::channel::<()>();
+    let worker = std::thread::spawn(move || {
+        let p = ptr;
+        let mut buf = vec![0u8; 16 * 16 * 4];
+        // SAFETY: a live context and a buffer that outlives the binding.
+        unsafe {
+            assert_eq!(
+                OSMesaMakeCurrent(
+                    p.0,
+                    buf.as_mut_ptr() as *mut c_void,
+                    GL_UNSIGNED_BYTE,
+                    16,
+                    16
+                ),
+                GL_TRUE as GLboolean
+            );
+        }
+        bound_tx.send(()).unwrap();
+        destroyed_rx.recv().unwrap();
+        // Destroyed by the other thread meanwhile: still usable here.
+        // SAFETY: plain calls on this thread's current context.
+        unsafe {
+            glClearColor(0.0, 1.0, 0.0, 1.0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glFinish();
+            assert_eq!(glGetError(), GL_NO_ERROR);
+            OSMesaMakeCurrent(std::ptr::null_mut(), std::ptr::null_mut(), 0, 0, 0);
+        }
+        buf[1]
+    });
+    bound_rx.recv().unwrap();
+    // SAFETY: the context is live (current on the worker); the call is the hostile part.
+    unsafe { OSMesaDestroyContext(ctx) };
+    destroyed_tx.send(()).unwrap();
+    assert_eq!(
+        worker.join().unwrap(),
+        255,
+        "the worker drew green after the destroy"
+    );
+}

@@ -6,6 +6,7 @@
 
 use std::cell::Cell;
 use std::ffi::{c_char, c_void, CStr};
+use std::sync::atomic::{AtomicU8, Ordering};
 
 use crate::api::enums::*;
 use crate::framebuffer::FramebufferConfig;
@@ -41,6 +42,42 @@ pub struct OsMesaContext {
     /// A window-system context (GLX, EGL): what a flush point does instead of copying into a
     /// caller buffer.
     window_present: Option<fn(&mut Context)>,
+    /// Which threads an OSMesa context is current on ([`UNBOUND`], [`BOUND`],
+    /// [`BOUND_DESTROY`], [`DEAD`]): a context is current on one thread at a time, and one
+    /// destroyed while current on another thread is freed when that thread lets it go.
+    binding: AtomicU8,
+}
+
+/// Current on no thread.
+const UNBOUND: u8 = 0;
+/// Current on one thread.
+const BOUND: u8 = 1;
+/// Current on one thread and destroyed from another: freed when released.
+const BOUND_DESTROY: u8 = 2;
+/// Being freed.
+const DEAD: u8 = 3;
+
+/// Lets this thread's current context go: the thread has none afterwards, and a context that
+/// another thread destroyed meanwhile is freed now.
+fn release_current() {
+    let old = CURRENT.with(|c| c.replace(std::ptr::null_mut()));
+    if old.is_null() {
+        return;
+    }
+    // SAFETY: a current context is alive: it is freed only by its own thread (here, or in
+    // OSMesaDestroyContext on this thread) or, when unbound, by any thread.
+    let binding = unsafe { &(*old).binding };
+    if binding
+        .compare_exchange(BOUND, UNBOUND, Ordering::AcqRel, Ordering::Acquire)
+        .is_err()
+        && binding
+            .compare_exchange(BOUND_DESTROY, DEAD, Ordering::AcqRel, Ordering::Acquire)
+            .is_ok()
+    {
+        // SAFETY: destroyed by another thread while current here; this thread was the last
+        // user and is no longer, so the context is freed exactly once, here.
+        drop(unsafe { Box::from_raw(old) });
+    }
 }
 
 thread_local! {
@@ -106,6 +143,7 @@ impl OsMesaContext {
             y_up: true,
             depth_copy: Vec::new(),
             window_present: Some(present),
+            binding: AtomicU8::new(UNBOUND),
         }
     }
 
@@ -215,6 +253,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         y_up: true,
         depth_copy: Vec::new(),
         window_present: None,
+        binding: AtomicU8::new(UNBOUND),
     }))
 }
 
@@ -233,7 +272,7 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     height: GLsizei,
 ) -> GLboolean {
     if ctx.is_null() {
-        CURRENT.with(|c| c.set(std::ptr::null_mut()));
+        release_current();
         return GL_TRUE as GLboolean;
     }
     if buffer.is_null()
@@ -245,7 +284,21 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
     {
         return GL_FALSE as GLboolean;
     }
-    // SAFETY: the caller passes a live context from OSMesaCreateContext*.
+    if CURRENT.with(|c| c.get()) != ctx {
+        // SAFETY: the caller passes a live context from OSMesaCreateContext*.
+        let binding = unsafe { &(*ctx).binding };
+        if binding
+            .compare_exchange(UNBOUND, BOUND, Ordering::AcqRel, Ordering::Acquire)
+            .is_err()
+        {
+            // Current on another thread (or destroyed): a context is current on one thread
+            // at a time (GLX's rule; OSMesa has none, and sharing would race).
+            return GL_FALSE as GLboolean;
+        }
+        release_current();
+    }
+    // SAFETY: live, and claimed by this thread above (or already current on it), so no other
+    // thread uses it.
     let c = unsafe { &mut *ctx };
     let first = c.width == 0;
     c.buffer = buffer as *mut u8;
@@ -279,12 +332,27 @@ pub unsafe extern "C" fn OSMesaDestroyContext(ctx: *mut OsMesaContext) {
     if ctx.is_null() {
         return;
     }
-    CURRENT.with(|c| {
-        if c.get() == ctx {
-            c.set(std::ptr::null_mut());
+    if CURRENT.with(|c| c.get()) == ctx {
+        CURRENT.with(|c| c.set(std::ptr::null_mut()));
+    } else {
+        // SAFETY: the caller passes a live context from OSMesaCreateContext*.
+        let binding = unsafe { &(*ctx).binding };
+        if binding
+            .compare_exchange(BOUND, BOUND_DESTROY, Ordering::AcqRel, Ordering::Acquire)
+            .is_ok()
+        {
+            // Current on another thread: that thread frees it when it lets it go.
+            return;
         }
-    });
-    // SAFETY: ctx came from Box::into_raw in OSMesaCreateContextExt and is destroyed once.
+        if binding
+            .compare_exchange(UNBOUND, DEAD, Ordering::AcqRel, Ordering::Acquire)
+            .is_err()
+        {
+            return; // destroyed already
+        }
+    }
+    // SAFETY: ctx came from Box::into_raw in OSMesaCreateContextExt, is current on no other
+    // thread, and is freed once (the state above admits one freeing path).
     drop(unsafe { Box::from_raw(ctx) });
 }
 
