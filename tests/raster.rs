@@ -439,6 +439,9 @@ struct TexCase {
     depth_mask: u8,
     color_mask: [u8; 4],
     lod_bias: f32,
+    /// Fog of this mode (density 0.35, from 0.5 to 7 units, a colour the textures do not
+    /// have), or none.
+    fog: Option<GLenum>,
 }
 
 /// Textured primitives of every kind the fast path must reproduce: window-aligned quads (1/w
@@ -470,6 +473,14 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
     gl.depth_mask(c.depth_mask);
     let m = c.color_mask;
     gl.color_mask(m[0], m[1], m[2], m[3]);
+    if let Some(mode) = c.fog {
+        gl.enable(GL_FOG);
+        gl.fogi(GL_FOG_MODE, mode as i32);
+        gl.fogf(GL_FOG_DENSITY, 0.35);
+        gl.fogf(GL_FOG_START, 0.5);
+        gl.fogf(GL_FOG_END, 7.0);
+        gl.fogfv(GL_FOG_COLOR, &[0.9, 0.35, 0.6, 1.0]);
+    }
     window_ortho(gl);
     let color = |gl: &mut Context, rng: &mut Rng| {
         gl.color_4f(
@@ -547,6 +558,7 @@ fn textured_fast_paths_match_the_general_path() {
         depth_mask: 0,
         color_mask: [1; 4],
         lod_bias: 0.0,
+        fog: None,
     };
     let cases = [
         TexCase { ..base },
@@ -625,6 +637,51 @@ fn textured_fast_paths_match_the_general_path() {
             blend: Some((GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_DST_ALPHA)),
             ..base
         },
+        // Fog of each mode on the eight-lane paths (affine quads, perspective rows and 4x2
+        // blocks): with "over" blending and the alpha test, without blending and with depth
+        // writes, on RGB texels, REPLACE, and a general blend with a colour mask.
+        TexCase {
+            fog: Some(GL_LINEAR),
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP),
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP2),
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP2),
+            format: GL_RGB,
+            blend: None,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_LINEAR),
+            size: (32, 16),
+            format: GL_RGB,
+            env: GL_REPLACE,
+            min: GL_NEAREST_MIPMAP_NEAREST,
+            mag: GL_NEAREST,
+            blend: None,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP),
+            color_mask: [1, 0, 1, 1],
+            blend: Some((GL_ONE_MINUS_DST_COLOR, GL_SRC_COLOR)),
+            ..base
+        },
         // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
         TexCase {
             wrap: GL_CLAMP,
@@ -646,6 +703,18 @@ fn textured_fast_paths_match_the_general_path() {
         let (general, fast) = (render(true), render(false));
         let differ = general.iter().zip(&fast).filter(|(a, b)| a != b).count();
         assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
+        if c.fog.is_some() {
+            // The fog must show: the same scene without it differs.
+            let mut gl = Context::new(96, 96);
+            textured_scene(&mut gl, &TexCase { fog: None, ..*c }, 0x7E57 + i as u64);
+            let unfogged = read_rgba(&mut gl);
+            let changed = general
+                .iter()
+                .zip(&unfogged)
+                .filter(|(a, b)| a != b)
+                .count();
+            assert!(changed > 1000, "case {i}: fog changed {changed} pixels");
+        }
     }
 }
 
@@ -1202,7 +1271,7 @@ fn triangles_past_the_viewport_draw_only_inside_it() {
 #[test]
 fn untextured_blended_spans_match_the_general_path() {
     type Setup = (&'static str, fn(&mut Context));
-    let states: [Setup; 7] = [
+    let states: [Setup; 9] = [
         ("over", |gl| {
             gl.enable(GL_BLEND);
             gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -1236,6 +1305,24 @@ fn untextured_blended_spans_match_the_general_path() {
         }),
         ("not equal depth, no blending", |gl| {
             gl.depth_func(GL_NOTEQUAL);
+        }),
+        // Fog on the eight-fragment tail.
+        ("over, EXP2 fog", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.3);
+            gl.fogfv(GL_FOG_COLOR, &[0.2, 0.5, 0.9, 1.0]);
+        }),
+        ("alpha test, LINEAR fog", |gl| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.3);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 1.0);
+            gl.fogf(GL_FOG_END, 8.0);
+            gl.fogfv(GL_FOG_COLOR, &[0.9, 0.5, 0.1, 1.0]);
         }),
     ];
     for (name, state) in states {

@@ -185,17 +185,18 @@ pub fn block_shaded8(
     tail: &Tail8,
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
+    fog: &[f32; 8],
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe {
-                x86::block_shaded8(planes, x, level, linear, lod, live, tail, primary, dst)
+                x86::block_shaded8(planes, x, level, linear, lod, live, tail, primary, dst, fog)
             };
         }
     }
-    let _ = (planes, x, level, linear, lod, live, tail, primary, dst);
+    let _ = (planes, x, level, linear, lod, live, tail, primary, dst, fog);
     None
 }
 
@@ -257,6 +258,10 @@ pub struct Tail8 {
     pub blend: TailBlend,
     /// Bytes of the colour words that may be written (the colour mask).
     pub color_mask: u32,
+    /// Fog's colour, when the fragments are fogged: each lane's colour is blended towards it
+    /// by the lane's fog factor (section 3.10) after the environment, as
+    /// `fragment::span::fog_fragment` does.
+    pub fog: Option<[f32; 3]>,
 }
 
 /// Eight fragments of a textured span after the texture lookup, as the general fragment path
@@ -265,7 +270,8 @@ pub struct Tail8 {
 /// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
 /// bit j set for fragments that exist and pass the depth test. Answers the new colour words
 /// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
-/// `None` without AVX2.
+/// `None` without AVX2. With `tail.fog`, `fog` holds each lane's fog factor (read for the
+/// lanes in `pass`).
 #[inline]
 pub fn shade8(
     tail: &Tail8,
@@ -273,15 +279,16 @@ pub fn shade8(
     tex: &Texels8,
     dst: &[u32; 8],
     pass: u8,
+    fog: &[f32; 8],
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass) });
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass, fog) });
         }
     }
-    let _ = (tail, primary, tex, dst, pass);
+    let _ = (tail, primary, tex, dst, pass, fog);
     None
 }
 
@@ -302,6 +309,7 @@ pub struct Sampling8<'a> {
 
 /// [`coords8`], [`filter8`] on one or two levels and [`shade8`] in one go, for the `count`
 /// pixels from centre `x`; `None` when [`coords8`] or [`filter8`] would answer `None`.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn textured8(
     sampling: &Sampling8,
@@ -311,15 +319,16 @@ pub fn textured8(
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
     pass: u8,
+    fog: &[f32; 8],
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass) };
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass, fog) };
         }
     }
-    let _ = (sampling, x, count, tail, primary, dst, pass);
+    let _ = (sampling, x, count, tail, primary, dst, pass, fog);
     None
 }
 
@@ -546,6 +555,7 @@ mod x86 {
         tex: &Texels8,
         dst: &[u32; 8],
         pass: u8,
+        fog: &[f32; 8],
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -553,7 +563,7 @@ mod x86 {
         for c in 0..4 {
             tex_v[c] = load(&tex[c]);
         }
-        shade8_regs(tail, primary, &tex_v, dst, pass)
+        shade8_regs(tail, primary, &tex_v, dst, pass, fog)
     }
 
     /// [`shade8`] with the texels in registers.
@@ -565,6 +575,7 @@ mod x86 {
         tex: &[__m256; 4],
         dst: &[u32; 8],
         pass: u8,
+        fog: &[f32; 8],
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -585,6 +596,21 @@ mod x86 {
             } else {
                 ct
             };
+        }
+        if let Some(fog_color) = tail.fog {
+            // `k * c.clamp(0.0, 1.0) + (1.0 - k) * fog` per colour channel, as the general
+            // path computes it (max(0, min(1, c)) is `clamp`, NaN and the sign of zero
+            // included: min_ps and max_ps answer their second operand for NaN and for
+            // equal operands).
+            let k = load(fog);
+            let rest = _mm256_sub_ps(one, k);
+            for (c, &f) in color.iter_mut().zip(&fog_color) {
+                let clamped = _mm256_max_ps(zero, _mm256_min_ps(one, *c));
+                *c = _mm256_add_ps(
+                    _mm256_mul_ps(k, clamped),
+                    _mm256_mul_ps(rest, _mm256_set1_ps(f)),
+                );
+            }
         }
         let mut keep = lane_mask(pass);
         if let Some((func, reference)) = tail.alpha_test {
@@ -682,6 +708,7 @@ mod x86 {
         (res, _mm256_movemask_ps(keep) as u8)
     }
 
+    #[allow(clippy::too_many_arguments)]
     #[target_feature(enable = "avx2")]
     pub fn textured8(
         sm: &Sampling8,
@@ -691,6 +718,7 @@ mod x86 {
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
         pass: u8,
+        fog: &[f32; 8],
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
         let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
@@ -698,7 +726,7 @@ mod x86 {
             let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
             ct = super::lerp8(&ct, &t2, w);
         }
-        Some(shade8(tail, primary, &ct, dst, pass))
+        Some(shade8(tail, primary, &ct, dst, pass, fog))
     }
 
     /// s/q and t/q at the four pixel centres `xv` of the row of `p` (its s, t and q planes
@@ -758,6 +786,7 @@ mod x86 {
         tail: &Tail8,
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
+        fog: &[f32; 8],
     ) -> Option<([u32; 8], u8)> {
         let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
         if let Some((magnified_below, _)) = lod {
@@ -772,7 +801,7 @@ mod x86 {
             }
         }
         let tex = filter8_regs(level, linear, s, t)?;
-        Some(shade8_regs(tail, primary, &tex, dst, live))
+        Some(shade8_regs(tail, primary, &tex, dst, live, fog))
     }
 
     /// The block's coordinates (lanes outside `live` at 0) and, per quad (lanes 0 and 2),
