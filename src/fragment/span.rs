@@ -1520,6 +1520,12 @@ impl GroupInputs {
     #[inline(always)]
     fn fog_factors(&mut self, fog: Option<&FogDraw>) {
         if let Some(f) = fog {
+            if let Some(k) =
+                simd::fog_factors8(f.mode, f.density, f.end, f.linear_scale(), &self.fog)
+            {
+                self.fog = k;
+                return;
+            }
             let mut m = self.pass;
             while m != 0 {
                 let j = m.trailing_zeros() as usize;
@@ -1873,50 +1879,42 @@ pub fn pair_textured<'a, const TEX: u8>(
         return pair_by_rows(ds, tile, pairs, it);
     };
     let mut sampler_y = first_y;
-    // (Inlined into both forms of `for_each_block`, as it was into the one form before fog.)
-    for_each_block(
-        ds,
-        tile,
-        pairs,
-        it,
-        #[inline(always)]
-        |y, gx, group| {
-            if y != sampler_y {
-                // The same unit and levels as the first pair's: only the rows' planes move.
-                if let Some(s) = Perspective8::block(unit, 0, it, y) {
-                    sampler = s;
-                }
-                sampler_y = y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != sampler_y {
+            // The same unit and levels as the first pair's: only the rows' planes move.
+            if let Some(s) = Perspective8::block(unit, 0, it, y) {
+                sampler = s;
             }
-            if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
-                return Some(shaded);
-            }
-            let mut tex = [[0f32; 8]; 4];
-            if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
-                // Not affine: the fast unit samples one by one as the rows' fallback does.
-                let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
-                for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
-                    let (x, yc) = block_lane_centre(gx, y, lane);
-                    let t = if TEX == tex_mode::FAST_RGB {
-                        f.texel::<3>(it, x, yc)
-                    } else {
-                        f.texel::<4>(it, x, yc)
-                    };
-                    for c in 0..4 {
-                        tex[c][lane] = t[c];
-                    }
+            sampler_y = y;
+        }
+        if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
+            return Some(shaded);
+        }
+        let mut tex = [[0f32; 8]; 4];
+        if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+            // Not affine: the fast unit samples one by one as the rows' fallback does.
+            let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = if TEX == tex_mode::FAST_RGB {
+                    f.texel::<3>(it, x, yc)
+                } else {
+                    f.texel::<4>(it, x, yc)
+                };
+                for c in 0..4 {
+                    tex[c][lane] = t[c];
                 }
             }
-            simd::shade8(
-                &tail,
-                &group.primary,
-                &tex,
-                &group.dst,
-                group.pass,
-                &group.fog,
-            )
-        },
-    );
+        }
+        simd::shade8(
+            &tail,
+            &group.primary,
+            &tex,
+            &group.dst,
+            group.pass,
+            &group.fog,
+        )
+    });
 }
 
 /// [`span_sampled8`] on two rows at once, in 4x2 blocks (`for_each_block`): every unit
@@ -1941,39 +1939,31 @@ pub fn pair_sampled8<'a>(
         mut by_unit,
     } = Sampled8::new(ds, it, first_y, true);
     let mut samplers_y = first_y;
-    // (Inlined into both forms of `for_each_block`, as it was into the one form before fog.)
-    for_each_block(
-        ds,
-        tile,
-        pairs,
-        it,
-        #[inline(always)]
-        |y, gx, group| {
-            if y != samplers_y {
-                Sampled8::place_samplers(&mut samplers, ds, it, y, true);
-                samplers_y = y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != samplers_y {
+            Sampled8::place_samplers(&mut samplers, ds, it, y, true);
+            samplers_y = y;
+        }
+        for (k, unit) in ds.units.iter().enumerate() {
+            let Some(out) = by_unit[unit.unit].as_mut() else {
+                continue;
+            };
+            if samplers[k]
+                .as_ref()
+                .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
+            {
+                continue;
             }
-            for (k, unit) in ds.units.iter().enumerate() {
-                let Some(out) = by_unit[unit.unit].as_mut() else {
-                    continue;
-                };
-                if samplers[k]
-                    .as_ref()
-                    .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
-                {
-                    continue;
-                }
-                for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
-                    let (x, yc) = block_lane_centre(gx, y, lane);
-                    let t = unit_texel(unit, it, x, yc);
-                    for c in 0..4 {
-                        out[c][lane] = t[c];
-                    }
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = unit_texel(unit, it, x, yc);
+                for c in 0..4 {
+                    out[c][lane] = t[c];
                 }
             }
-            sampled8_shade(ds, single, &tail, group, &by_unit)
-        },
-    );
+        }
+        sampled8_shade(ds, single, &tail, group, &by_unit)
+    });
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
