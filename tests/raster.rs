@@ -442,6 +442,8 @@ struct TexCase {
     /// Fog of this mode (density 0.35, from 0.5 to 7 units, a colour the textures do not
     /// have), or none.
     fog: Option<GLenum>,
+    /// The colour sum (`GL_COLOR_SUM`) with a random secondary colour per vertex.
+    color_sum: bool,
 }
 
 /// Textured primitives of every kind the fast path must reproduce: window-aligned quads (1/w
@@ -481,7 +483,11 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
         gl.fogf(GL_FOG_END, 7.0);
         gl.fogfv(GL_FOG_COLOR, &[0.9, 0.35, 0.6, 1.0]);
     }
+    if c.color_sum {
+        gl.enable(GL_COLOR_SUM);
+    }
     window_ortho(gl);
+    let sum = c.color_sum;
     let color = |gl: &mut Context, rng: &mut Rng| {
         gl.color_4f(
             rng.range(0.0, 1.2),
@@ -489,6 +495,9 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
             rng.range(-0.1, 1.0),
             rng.range(0.2, 1.0),
         );
+        if sum {
+            gl.secondary_color_3f(rng.range(0.0, 0.6), rng.range(0.0, 0.3), 0.25);
+        }
     };
     // Window-aligned quads with random coordinate scales and offsets.
     gl.begin(GL_QUADS);
@@ -559,6 +568,7 @@ fn textured_fast_paths_match_the_general_path() {
         color_mask: [1; 4],
         lod_bias: 0.0,
         fog: None,
+        color_sum: false,
     };
     let cases = [
         TexCase { ..base },
@@ -682,6 +692,27 @@ fn textured_fast_paths_match_the_general_path() {
             blend: Some((GL_ONE_MINUS_DST_COLOR, GL_SRC_COLOR)),
             ..base
         },
+        // The colour sum on the eight-lane paths, alone and before fog.
+        TexCase {
+            color_sum: true,
+            ..base
+        },
+        TexCase {
+            color_sum: true,
+            format: GL_RGB,
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            fog: Some(GL_EXP2),
+            ..base
+        },
+        TexCase {
+            color_sum: true,
+            env: GL_REPLACE,
+            fog: Some(GL_LINEAR),
+            blend: Some((GL_ONE, GL_ONE_MINUS_SRC_COLOR)),
+            ..base
+        },
         // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
         TexCase {
             wrap: GL_CLAMP,
@@ -703,10 +734,15 @@ fn textured_fast_paths_match_the_general_path() {
         let (general, fast) = (render(true), render(false));
         let differ = general.iter().zip(&fast).filter(|(a, b)| a != b).count();
         assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
-        if c.fog.is_some() {
-            // The fog must show: the same scene without it differs.
+        if c.fog.is_some() || c.color_sum {
+            // The fog and the colour sum must show: the same scene without them differs.
             let mut gl = Context::new(96, 96);
-            textured_scene(&mut gl, &TexCase { fog: None, ..*c }, 0x7E57 + i as u64);
+            let plain = TexCase {
+                fog: None,
+                color_sum: false,
+                ..*c
+            };
+            textured_scene(&mut gl, &plain, 0x7E57 + i as u64);
             let unfogged = read_rgba(&mut gl);
             let changed = general
                 .iter()

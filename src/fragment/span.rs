@@ -31,7 +31,7 @@ use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
+use crate::texture::simd::{self, lerp8, After8, Level8, Sampling8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
 #[derive(Clone, Debug)]
@@ -437,12 +437,9 @@ fn shade_textured<
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
     let xc0 = x0 as f64 + 0.5;
-    // Primary colour, then the secondary colour when the colour sum needs it.
-    let colors = if !SIMPLE && (key.color_sum || key.texturing) {
-        8
-    } else {
-        4
-    };
+    // Primary colour, then the secondary colour when the colour sum needs it (the eight-lane
+    // route steps it only then: `SpanRun::next`).
+    let colors = if !SIMPLE && key.color_sum { 8 } else { 4 };
     let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
@@ -467,7 +464,7 @@ fn shade_textured<
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
                 let steady = run.is_steady();
-                let mut steady_values = [([0f32; 4], 0u32, 0f32); 2];
+                let mut steady_values = [([0f32; 4], 0u32, 0f32, [0f32; 3]); 2];
                 if steady {
                     for v in &mut steady_values {
                         *v = run.next::<true>(Some(ds.depth_max));
@@ -507,19 +504,19 @@ fn shade_textured<
                         depth,
                         pass,
                         dst,
-                        fog: fog_k,
+                        after,
                     } = group;
                     let x = gx as f64 + 0.5;
                     let live = pass;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => {
-                            simd::textured8(sm, x, hi, &tail, &primary, &dst, pass, &fog_k)
+                            simd::textured8(sm, x, hi, &tail, &primary, &dst, pass, &after)
                         }
                         (None, Some(p)) => {
                             let mut tex = [[0f32; 8]; 4];
                             if p.texels_into(x, live, &mut tex) {
-                                simd::shade8(&tail, &primary, &tex, &dst, pass, &fog_k)
+                                simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
                             } else {
                                 None
                             }
@@ -532,7 +529,7 @@ fn shade_textured<
                         } else {
                             f.texels_scalar::<4>(it, x, yc, hi)
                         };
-                        simd::shade8(&tail, &primary, &tex, &dst, pass, &fog_k)
+                        simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
                     });
                     if let Some((words, passed)) = shaded {
                         store_group(ds, tile, base, lo..hi, &words, passed, &depth);
@@ -1224,7 +1221,7 @@ impl<'a> Perspective8<'a> {
             tail,
             &group.primary,
             &group.dst,
-            &group.fog,
+            &group.after,
         )
     }
 
@@ -1413,7 +1410,7 @@ impl SpanRun {
     fn is_steady(&self) -> bool {
         self.dz == 0.0
             && self.dinv_w == 0.0
-            && self.dcolor[..4].iter().all(|&d| d == 0.0)
+            && self.dcolor[..self.count].iter().all(|&d| d == 0.0)
             && self.fog.is_none_or(|(_, dc)| dc == 0.0)
     }
 
@@ -1458,12 +1455,13 @@ impl SpanRun {
         }
     }
 
-    /// For the eight-lane paths, which read only the primary colour: the current pixel's
-    /// colour, stored depth (0 without `depth_max`) and fog coordinate (0 unless fogged), then
-    /// a step of z, 1/w, the primary colour (a fixed four, which keeps the loop unrolled; a
-    /// secondary colour is left behind, so `step` and `secondary` must not follow on the same
-    /// run) and, with `FOG`, the fog coordinate (without it the coordinate is neither read
-    /// nor stepped: the lanes' fog is then unused).
+    /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
+    /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (0 unless the run
+    /// has it: a count of 8), then a step of z, 1/w, the primary colour (a fixed four, which
+    /// keeps the loop unrolled), the secondary colour when there is one, and with `FOG` the
+    /// fog coordinate (without it the coordinate is neither read nor stepped: the lanes' fog
+    /// is then unused). The values and steps are those of `step`, `primary`, `secondary`
+    /// and `fog_coord`, which must not follow on the same run.
     #[inline(always)]
     fn next<const FOG: bool>(&mut self, depth_max: Option<u32>) -> Lane {
         let w = self.w();
@@ -1480,13 +1478,32 @@ impl SpanRun {
                 *c += *dc;
             }
         }
-        (color, depth, fog)
+        // The secondary colour, when the run has it (the colour sum).
+        let mut secondary = [0f32; 3];
+        if self.count == 8 {
+            secondary = self.secondary(w);
+            for c in 4..8 {
+                self.color[c] += self.dcolor[c];
+            }
+        }
+        (color, depth, fog, secondary)
     }
 }
 
 /// One fragment's inputs to the eight-lane paths: primary colour, stored depth, fog
-/// coordinate ([`SpanRun::next`]).
-type Lane = ([f32; 4], u32, f32);
+/// coordinate, secondary colour ([`SpanRun::next`]).
+type Lane = ([f32; 4], u32, f32, [f32; 3]);
+
+/// The colours the eight-lane paths step ([`SpanRun::new`]'s count): the primary, and the
+/// secondary with the colour sum.
+#[inline(always)]
+fn lane_colors(ds: &DrawState) -> usize {
+    if ds.key.color_sum {
+        8
+    } else {
+        4
+    }
+}
 
 /// The fog the eight-lane paths apply: the draw's parameters when its key is fogged.
 #[inline(always)]
@@ -1503,7 +1520,9 @@ struct GroupInputs {
     dst: [u32; 8],
     /// Fog coordinates, then (after [`GroupInputs::fog_factors`]) the fog factors of the
     /// passing lanes.
-    fog: [f32; 8],
+    /// The lanes' secondary colours and fog coordinates, then (after
+    /// [`GroupInputs::fog_factors`]) the fog factors of the passing lanes.
+    after: After8,
 }
 
 impl GroupInputs {
@@ -1512,7 +1531,10 @@ impl GroupInputs {
         depth: [0u32; 8],
         pass: 0,
         dst: [0u32; 8],
-        fog: [0f32; 8],
+        after: After8 {
+            secondary: [[0f32; 8]; 3],
+            fog: [0f32; 8],
+        },
     };
 
     /// Turns the passing lanes' fog coordinates into fog factors (`FogDraw::factor`, as the
@@ -1521,15 +1543,15 @@ impl GroupInputs {
     fn fog_factors(&mut self, fog: Option<&FogDraw>) {
         if let Some(f) = fog {
             if let Some(k) =
-                simd::fog_factors8(f.mode, f.density, f.end, f.linear_scale(), &self.fog)
+                simd::fog_factors8(f.mode, f.density, f.end, f.linear_scale(), &self.after.fog)
             {
-                self.fog = k;
+                self.after.fog = k;
                 return;
             }
             let mut m = self.pass;
             while m != 0 {
                 let j = m.trailing_zeros() as usize;
-                self.fog[j] = f.factor(self.fog[j]);
+                self.after.fog[j] = f.factor(self.after.fog[j]);
                 m &= m - 1;
             }
         }
@@ -1555,12 +1577,15 @@ impl GroupInputs {
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
     #[inline(always)]
     fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: Lane) {
-        let (color, d, fog) = value;
+        let (color, d, fog, secondary) = value;
         for c in 0..4 {
             self.primary[c][j] = color[c];
         }
         self.depth[j] = d;
-        self.fog[j] = fog;
+        self.after.fog[j] = fog;
+        for c in 0..3 {
+            self.after.secondary[c][j] = secondary[c];
+        }
         self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
         self.dst[j] = u32::from_le_bytes(tile.color[index]);
     }
@@ -1627,6 +1652,7 @@ fn tail8(
         alpha_test: key.alpha_func.map(|func| (func, ds.uniforms.alpha_ref)),
         blend: tail_blend(ds),
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
+        color_sum: key.color_sum,
         fog: lane_fog(ds).map(|f| f.color),
     }
 }
@@ -1637,15 +1663,12 @@ fn group_depth_max(ds: &DrawState) -> Option<u32> {
     (ds.key.depth_func.is_some() || ds.key.depth_write).then_some(ds.depth_max)
 }
 
-/// Whether the eight-fragment tail covers everything after the colour for `key` (with fog:
-/// the lanes' fog factors are computed as the general path computes them, then blended in the
-/// tail): no stencil test, logic op, colour sum or occlusion counting, and AVX2 present.
+/// Whether the eight-fragment tail covers everything after the colour for `key` (the colour
+/// sum and fog included: the lanes' secondary colours and fog factors are computed as the
+/// general path computes them, then added and blended in the tail): no stencil test, logic op
+/// or occlusion counting, and AVX2 present.
 pub fn tail8_applies(key: &FragmentKey) -> bool {
-    key.stencil.is_none()
-        && key.logic_op.is_none()
-        && !key.color_sum
-        && !key.count_samples
-        && simd::available()
+    key.stencil.is_none() && key.logic_op.is_none() && !key.count_samples && simd::available()
 }
 
 /// The eight-fragment tail's blending for the draw's key.
@@ -1750,11 +1773,13 @@ fn blocks<const FOG: bool>(
 ) {
     let depth_max = group_depth_max(ds);
     let fog = if FOG { lane_fog(ds) } else { None };
+    // With the colour sum the secondary colour is stepped too (no constant shortcut).
+    let colors = lane_colors(ds);
     // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
     // every pixel has the first one's) leaves only z to step per pixel (unless fogged: then
     // the fog coordinate and 1/w are stepped too, by `SpanRun::next`); the lanes' depths are
     // then rounded and tested eight at a time, and the colour written to the lanes whole.
-    let constant = (it.constant_primary && fog.is_none()).then(|| {
+    let constant = (it.constant_primary && fog.is_none() && colors == 4).then(|| {
         let (y, rows) = pairs.first().copied().unwrap_or_default();
         let run = SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4);
         [0, 1, 2, 3].map(|c| [run.color[c]; 8])
@@ -1769,8 +1794,8 @@ fn blocks<const FOG: bool>(
     let mut stored = [0u32; 8];
     for &(y, rows) in pairs {
         let mut runs = [
-            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
-            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
+            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, colors),
+            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, colors),
         ];
         if FOG {
             for (r, run) in runs.iter_mut().enumerate() {
@@ -1912,7 +1937,7 @@ pub fn pair_textured<'a, const TEX: u8>(
             &tex,
             &group.dst,
             group.pass,
-            &group.fog,
+            &group.after,
         )
     });
 }
@@ -2016,7 +2041,7 @@ pub fn span_untextured8<'a>(
     }
     let row = tile.index(x0, y);
     let (xc0, yc) = (x0 as f64 + 0.5, y as f64 + 0.5);
-    let mut run = SpanRun::new(it, xc0, yc, 4).with_fog(ds, it, xc0, yc);
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
     let tail = tail8(ds, false, false, false);
     let depth_max = group_depth_max(ds);
     let fog = lane_fog(ds);
@@ -2038,9 +2063,9 @@ pub fn span_untextured8<'a>(
             depth,
             pass,
             dst,
-            fog: fog_k,
+            after,
         } = group;
-        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass, &fog_k) {
+        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass, &after) {
             store_group(ds, tile, base, 0..n, &words, passed, &depth);
         }
         gx += 8;
@@ -2075,7 +2100,7 @@ pub fn span_sampled8<'a>(
     if it.coverage != 1.0 {
         return span_sampled(ds, tile, y, x0, x1, it);
     }
-    let mut run = SpanRun::new(it, xc0, yc, 4).with_fog(ds, it, xc0, yc);
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
     let fog = lane_fog(ds);
     let Sampled8 {
         mut samplers,
@@ -2213,5 +2238,5 @@ fn sampled8_shade(
         Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
         None => &color,
     };
-    simd::shade8(tail, &color, tex, &group.dst, group.pass, &group.fog)
+    simd::shade8(tail, &color, tex, &group.dst, group.pass, &group.after)
 }

@@ -185,18 +185,22 @@ pub fn block_shaded8(
     tail: &Tail8,
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
-    fog: &[f32; 8],
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe {
-                x86::block_shaded8(planes, x, level, linear, lod, live, tail, primary, dst, fog)
+                x86::block_shaded8(
+                    planes, x, level, linear, lod, live, tail, primary, dst, after,
+                )
             };
         }
     }
-    let _ = (planes, x, level, linear, lod, live, tail, primary, dst, fog);
+    let _ = (
+        planes, x, level, linear, lod, live, tail, primary, dst, after,
+    );
     None
 }
 
@@ -258,10 +262,21 @@ pub struct Tail8 {
     pub blend: TailBlend,
     /// Bytes of the colour words that may be written (the colour mask).
     pub color_mask: u32,
+    /// Add the secondary colour ([`After8::secondary`]) after the environment (the colour
+    /// sum, section 3.9).
+    pub color_sum: bool,
     /// Fog's colour, when the fragments are fogged: each lane's colour is blended towards it
     /// by the lane's fog factor (section 3.10) after the environment, as
     /// `fragment::span::fog_fragment` does.
     pub fog: Option<[f32; 3]>,
+}
+
+/// What the tail adds to eight fragments after the environment: their secondary colours
+/// (with [`Tail8::color_sum`]) and fog factors (with [`Tail8::fog`]), read for passing lanes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct After8 {
+    pub secondary: [[f32; 8]; 3],
+    pub fog: [f32; 8],
 }
 
 /// Eight fragments of a textured span after the texture lookup, as the general fragment path
@@ -270,8 +285,7 @@ pub struct Tail8 {
 /// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
 /// bit j set for fragments that exist and pass the depth test. Answers the new colour words
 /// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
-/// `None` without AVX2. With `tail.fog`, `fog` holds each lane's fog factor (read for the
-/// lanes in `pass`).
+/// `None` without AVX2. `after` holds what the colour sum and fog add ([`After8`]).
 #[inline]
 pub fn shade8(
     tail: &Tail8,
@@ -279,16 +293,16 @@ pub fn shade8(
     tex: &Texels8,
     dst: &[u32; 8],
     pass: u8,
-    fog: &[f32; 8],
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass, fog) });
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass, after) });
         }
     }
-    let _ = (tail, primary, tex, dst, pass, fog);
+    let _ = (tail, primary, tex, dst, pass, after);
     None
 }
 
@@ -319,16 +333,16 @@ pub fn textured8(
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
     pass: u8,
-    fog: &[f32; 8],
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass, fog) };
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass, after) };
         }
     }
-    let _ = (sampling, x, count, tail, primary, dst, pass, fog);
+    let _ = (sampling, x, count, tail, primary, dst, pass, after);
     None
 }
 
@@ -393,7 +407,7 @@ pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Level8, LevelPlan, LodSelect, Sampling8, Tail8, Texels8};
+    use super::{After8, Level8, LevelPlan, LodSelect, Sampling8, Tail8, Texels8};
     use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode};
     use crate::state::snapshot::EXP2_TAYLOR;
     use crate::texture::format::BaseFormat;
@@ -636,7 +650,7 @@ mod x86 {
         tex: &Texels8,
         dst: &[u32; 8],
         pass: u8,
-        fog: &[f32; 8],
+        after: &After8,
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -644,7 +658,7 @@ mod x86 {
         for c in 0..4 {
             tex_v[c] = load(&tex[c]);
         }
-        shade8_regs(tail, primary, &tex_v, dst, pass, fog)
+        shade8_regs(tail, primary, &tex_v, dst, pass, after)
     }
 
     /// [`shade8`] with the texels in registers.
@@ -656,7 +670,7 @@ mod x86 {
         tex: &[__m256; 4],
         dst: &[u32; 8],
         pass: u8,
-        fog: &[f32; 8],
+        after: &After8,
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -678,12 +692,19 @@ mod x86 {
                 ct
             };
         }
+        if tail.color_sum {
+            // `c.clamp(0.0, 1.0) + secondary` per colour channel, as the general path adds
+            // the secondary colour (the clamp as below).
+            for (c, s) in color.iter_mut().zip(&after.secondary) {
+                *c = _mm256_add_ps(_mm256_max_ps(zero, _mm256_min_ps(one, *c)), load(s));
+            }
+        }
         if let Some(fog_color) = tail.fog {
             // `k * c.clamp(0.0, 1.0) + (1.0 - k) * fog` per colour channel, as the general
             // path computes it (max(0, min(1, c)) is `clamp`, NaN and the sign of zero
             // included: min_ps and max_ps answer their second operand for NaN and for
             // equal operands).
-            let k = load(fog);
+            let k = load(&after.fog);
             let rest = _mm256_sub_ps(one, k);
             for (c, &f) in color.iter_mut().zip(&fog_color) {
                 let clamped = _mm256_max_ps(zero, _mm256_min_ps(one, *c));
@@ -799,7 +820,7 @@ mod x86 {
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
         pass: u8,
-        fog: &[f32; 8],
+        after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
         let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
@@ -807,7 +828,7 @@ mod x86 {
             let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
             ct = super::lerp8(&ct, &t2, w);
         }
-        Some(shade8(tail, primary, &ct, dst, pass, fog))
+        Some(shade8(tail, primary, &ct, dst, pass, after))
     }
 
     /// s/q and t/q at the four pixel centres `xv` of the row of `p` (its s, t and q planes
@@ -867,7 +888,7 @@ mod x86 {
         tail: &Tail8,
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
-        fog: &[f32; 8],
+        after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
         if let Some((magnified_below, _)) = lod {
@@ -882,7 +903,7 @@ mod x86 {
             }
         }
         let tex = filter8_regs(level, linear, s, t)?;
-        Some(shade8_regs(tail, primary, &tex, dst, live, fog))
+        Some(shade8_regs(tail, primary, &tex, dst, live, after))
     }
 
     /// The block's coordinates (lanes outside `live` at 0) and, per quad (lanes 0 and 2),
