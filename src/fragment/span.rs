@@ -464,7 +464,7 @@ fn shade_textured<
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
                 let steady = run.is_steady();
-                let mut steady_values = [([0f32; 4], 0u32, 0f32, [0f32; 3]); 2];
+                let mut steady_values = [([0f32; 4], 0u32, 0f32, None); 2];
                 if steady {
                     for v in &mut steady_values {
                         *v = run.next::<true>(Some(ds.depth_max));
@@ -1456,7 +1456,7 @@ impl SpanRun {
     }
 
     /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
-    /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (0 unless the run
+    /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (`None` unless the run
     /// has it: a count of 8), then a step of z, 1/w, the primary colour (a fixed four, which
     /// keeps the loop unrolled), the secondary colour when there is one, and with `FOG` the
     /// fog coordinate (without it the coordinate is neither read nor stepped: the lanes' fog
@@ -1479,9 +1479,9 @@ impl SpanRun {
             }
         }
         // The secondary colour, when the run has it (the colour sum).
-        let mut secondary = [0f32; 3];
+        let mut secondary = None;
         if self.count == 8 {
-            secondary = self.secondary(w);
+            secondary = Some(self.secondary(w));
             for c in 4..8 {
                 self.color[c] += self.dcolor[c];
             }
@@ -1492,7 +1492,7 @@ impl SpanRun {
 
 /// One fragment's inputs to the eight-lane paths: primary colour, stored depth, fog
 /// coordinate, secondary colour ([`SpanRun::next`]).
-type Lane = ([f32; 4], u32, f32, [f32; 3]);
+type Lane = ([f32; 4], u32, f32, Option<[f32; 3]>);
 
 /// The colours the eight-lane paths step ([`SpanRun::new`]'s count): the primary, and the
 /// secondary with the colour sum.
@@ -1578,14 +1578,16 @@ impl GroupInputs {
     #[inline(always)]
     fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: Lane) {
         let (color, d, fog, secondary) = value;
+        if let Some(secondary) = secondary {
+            for c in 0..3 {
+                self.after.secondary[c][j] = secondary[c];
+            }
+        }
         for c in 0..4 {
             self.primary[c][j] = color[c];
         }
         self.depth[j] = d;
         self.after.fog[j] = fog;
-        for c in 0..3 {
-            self.after.secondary[c][j] = secondary[c];
-        }
         self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
         self.dst[j] = u32::from_le_bytes(tile.color[index]);
     }
@@ -1842,7 +1844,12 @@ fn blocks<const FOG: bool>(
                         }),
                 };
             } else {
-                group = GroupInputs::EMPTY;
+                // (Not `after`: a whole copy of `EMPTY` is a call to memset, and a lane's
+                // secondary colour and fog are read only when it is live.)
+                group.primary = GroupInputs::EMPTY.primary;
+                group.depth = [0; 8];
+                group.pass = 0;
+                group.dst = [0; 8];
                 for (r, &(x0, x1)) in rows.iter().enumerate() {
                     let row = tile.index(gx, y + r as i32);
                     for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
