@@ -439,6 +439,11 @@ struct TexCase {
     depth_mask: u8,
     color_mask: [u8; 4],
     lod_bias: f32,
+    /// Fog of this mode (density 0.35, from 0.5 to 7 units, a colour the textures do not
+    /// have), or none.
+    fog: Option<GLenum>,
+    /// The colour sum (`GL_COLOR_SUM`) with a random secondary colour per vertex.
+    color_sum: bool,
 }
 
 /// Textured primitives of every kind the fast path must reproduce: window-aligned quads (1/w
@@ -470,7 +475,19 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
     gl.depth_mask(c.depth_mask);
     let m = c.color_mask;
     gl.color_mask(m[0], m[1], m[2], m[3]);
+    if let Some(mode) = c.fog {
+        gl.enable(GL_FOG);
+        gl.fogi(GL_FOG_MODE, mode as i32);
+        gl.fogf(GL_FOG_DENSITY, 0.35);
+        gl.fogf(GL_FOG_START, 0.5);
+        gl.fogf(GL_FOG_END, 7.0);
+        gl.fogfv(GL_FOG_COLOR, &[0.9, 0.35, 0.6, 1.0]);
+    }
+    if c.color_sum {
+        gl.enable(GL_COLOR_SUM);
+    }
     window_ortho(gl);
+    let sum = c.color_sum;
     let color = |gl: &mut Context, rng: &mut Rng| {
         gl.color_4f(
             rng.range(0.0, 1.2),
@@ -478,6 +495,9 @@ fn textured_scene(gl: &mut Context, c: &TexCase, seed: u64) {
             rng.range(-0.1, 1.0),
             rng.range(0.2, 1.0),
         );
+        if sum {
+            gl.secondary_color_3f(rng.range(0.0, 0.6), rng.range(0.0, 0.3), 0.25);
+        }
     };
     // Window-aligned quads with random coordinate scales and offsets.
     gl.begin(GL_QUADS);
@@ -547,6 +567,8 @@ fn textured_fast_paths_match_the_general_path() {
         depth_mask: 0,
         color_mask: [1; 4],
         lod_bias: 0.0,
+        fog: None,
+        color_sum: false,
     };
     let cases = [
         TexCase { ..base },
@@ -625,6 +647,72 @@ fn textured_fast_paths_match_the_general_path() {
             blend: Some((GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_DST_ALPHA)),
             ..base
         },
+        // Fog of each mode on the eight-lane paths (affine quads, perspective rows and 4x2
+        // blocks): with "over" blending and the alpha test, without blending and with depth
+        // writes, on RGB texels, REPLACE, and a general blend with a colour mask.
+        TexCase {
+            fog: Some(GL_LINEAR),
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP),
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP2),
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP2),
+            format: GL_RGB,
+            blend: None,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_LINEAR),
+            size: (32, 16),
+            format: GL_RGB,
+            env: GL_REPLACE,
+            min: GL_NEAREST_MIPMAP_NEAREST,
+            mag: GL_NEAREST,
+            blend: None,
+            depth_mask: 1,
+            ..base
+        },
+        TexCase {
+            fog: Some(GL_EXP),
+            color_mask: [1, 0, 1, 1],
+            blend: Some((GL_ONE_MINUS_DST_COLOR, GL_SRC_COLOR)),
+            ..base
+        },
+        // The colour sum on the eight-lane paths, alone and before fog.
+        TexCase {
+            color_sum: true,
+            ..base
+        },
+        TexCase {
+            color_sum: true,
+            format: GL_RGB,
+            blend: None,
+            alpha_test: false,
+            depth_mask: 1,
+            fog: Some(GL_EXP2),
+            ..base
+        },
+        TexCase {
+            color_sum: true,
+            env: GL_REPLACE,
+            fog: Some(GL_LINEAR),
+            blend: Some((GL_ONE, GL_ONE_MINUS_SRC_COLOR)),
+            ..base
+        },
         // Not fast-path keys (a clamping wrap mode, DECAL): the general path either way.
         TexCase {
             wrap: GL_CLAMP,
@@ -646,6 +734,23 @@ fn textured_fast_paths_match_the_general_path() {
         let (general, fast) = (render(true), render(false));
         let differ = general.iter().zip(&fast).filter(|(a, b)| a != b).count();
         assert_eq!(differ, 0, "case {i}: {differ} pixels differ");
+        if c.fog.is_some() || c.color_sum {
+            // The fog and the colour sum must show: the same scene without them differs.
+            let mut gl = Context::new(96, 96);
+            let plain = TexCase {
+                fog: None,
+                color_sum: false,
+                ..*c
+            };
+            textured_scene(&mut gl, &plain, 0x7E57 + i as u64);
+            let unfogged = read_rgba(&mut gl);
+            let changed = general
+                .iter()
+                .zip(&unfogged)
+                .filter(|(a, b)| a != b)
+                .count();
+            assert!(changed > 1000, "case {i}: fog changed {changed} pixels");
+        }
     }
 }
 
@@ -1202,7 +1307,7 @@ fn triangles_past_the_viewport_draw_only_inside_it() {
 #[test]
 fn untextured_blended_spans_match_the_general_path() {
     type Setup = (&'static str, fn(&mut Context));
-    let states: [Setup; 7] = [
+    let states: [Setup; 9] = [
         ("over", |gl| {
             gl.enable(GL_BLEND);
             gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -1236,6 +1341,24 @@ fn untextured_blended_spans_match_the_general_path() {
         }),
         ("not equal depth, no blending", |gl| {
             gl.depth_func(GL_NOTEQUAL);
+        }),
+        // Fog on the eight-fragment tail.
+        ("over, EXP2 fog", |gl| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.3);
+            gl.fogfv(GL_FOG_COLOR, &[0.2, 0.5, 0.9, 1.0]);
+        }),
+        ("alpha test, LINEAR fog", |gl| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.3);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 1.0);
+            gl.fogf(GL_FOG_END, 8.0);
+            gl.fogfv(GL_FOG_COLOR, &[0.9, 0.5, 0.1, 1.0]);
         }),
     ];
     for (name, state) in states {

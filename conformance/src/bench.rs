@@ -14,6 +14,13 @@
 //!   unit 1 through `GL_COMBINE` (`MODULATE` of `PREVIOUS` and `TEXTURE`, `RGB_SCALE` 2);
 //! - `spheremap`: a tessellated, lit torus, then the same torus again with a sphere-mapped
 //!   environment (`GL_SPHERE_MAP` texgen) added (`glBlendFunc(GL_ONE, GL_ONE)`, depth `LEQUAL`);
+//! - `tunnel` / `tunnel-nofog`: a perspective tunnel whose walls are trilinear-mipmapped,
+//!   `MODULATE`d by a smooth vertex colour, depth-tested, under `EXP2` fog (or without fog);
+//! - `objects` / `objects-nofog`: a grid of lit, trilinear-textured (`MODULATE`) tori drawn
+//!   from one display list under `LINEAR` fog (or without fog);
+//! - `toggles` (not in `all`): the state-toggle matrix: the `tunnel-nofog` scene, then the same
+//!   scene with one fixed-function feature turned on, on tilegl and llvmpipe: each toggle's
+//!   added cost on both;
 //! - `lighting` (not in `all`): the cost of lighting against the triangle count: a sphere of
 //!   constant size on screen tessellated into 2k ... 128k triangles, drawn lit (two lights,
 //!   specular, one positional and attenuated) and unlit; the difference is the lighting cost,
@@ -57,6 +64,10 @@ pub struct BenchConfig {
     pub seed: u64,
     /// tilegl's thread counts to time (`--threads N` keeps one, e.g. for profiling).
     pub tilegl_threads: Vec<usize>,
+    /// The `tunnel` workloads with one feature of [`TOGGLES`] turned on (`--toggle N`).
+    pub toggle: Option<usize>,
+    /// Run the state-toggle matrix (`--workload toggles`).
+    pub toggles_only: bool,
 }
 
 impl Default for BenchConfig {
@@ -73,6 +84,8 @@ impl Default for BenchConfig {
             budget: Duration::from_secs(15),
             seed: 0x5EED_1234_ABCD_0001,
             tilegl_threads: vec![1, 2],
+            toggle: None,
+            toggles_only: false,
         }
     }
 }
@@ -87,12 +100,16 @@ pub enum Workload {
     Horizon,
     Lightmap,
     Spheremap,
+    Tunnel,
+    TunnelNoFog,
+    Objects,
+    ObjectsNoFog,
     /// The lit sphere of the `lighting` measurement (not in [`Workload::ALL`]).
     Lighting,
 }
 
 impl Workload {
-    pub const ALL: [Workload; 7] = [
+    pub const ALL: [Workload; 11] = [
         Workload::Triangles,
         Workload::Sprites,
         Workload::Fog,
@@ -100,6 +117,10 @@ impl Workload {
         Workload::Horizon,
         Workload::Lightmap,
         Workload::Spheremap,
+        Workload::Tunnel,
+        Workload::TunnelNoFog,
+        Workload::Objects,
+        Workload::ObjectsNoFog,
     ];
 
     pub fn name(self) -> &'static str {
@@ -111,6 +132,10 @@ impl Workload {
             Workload::Horizon => "horizon",
             Workload::Lightmap => "lightmap",
             Workload::Spheremap => "spheremap",
+            Workload::Tunnel => "tunnel",
+            Workload::TunnelNoFog => "tunnel-nofog",
+            Workload::Objects => "objects",
+            Workload::ObjectsNoFog => "objects-nofog",
             Workload::Lighting => "lighting",
         }
     }
@@ -151,7 +176,18 @@ pub enum WorkData {
     Spheremap(usize, usize),
     /// The lighting measurement's sphere: stacks, slices, lit.
     Sphere(usize, usize, bool),
+    /// The tunnel: sides around, segments along.
+    Tunnel(usize, usize),
+    /// The display-list objects: columns and rows of the grid.
+    Objects(usize, usize),
 }
+
+/// Sides around and segments along the `tunnel` workload's tube.
+pub const TUNNEL: (usize, usize) = (32, 48);
+/// Columns and rows of the `objects` workload's grid of tori.
+pub const OBJECTS: (usize, usize) = (5, 4);
+/// The display list holding one textured torus (`objects`; the first name of a fresh context).
+const OBJECT_LIST: GLuint = 1;
 
 /// Wall segments along the `lightmap` corridor.
 pub const CORRIDOR_SEGMENTS: usize = 24;
@@ -203,6 +239,147 @@ pub fn work_data(cfg: &BenchConfig) -> WorkData {
         Workload::Lightmap => WorkData::Lightmap(CORRIDOR_SEGMENTS),
         Workload::Spheremap => WorkData::Spheremap(TORUS.0, TORUS.1),
         Workload::Lighting => WorkData::Sphere(32, 32, true),
+        Workload::Tunnel | Workload::TunnelNoFog => WorkData::Tunnel(TUNNEL.0, TUNNEL.1),
+        Workload::Objects | Workload::ObjectsNoFog => WorkData::Objects(OBJECTS.0, OBJECTS.1),
+    }
+}
+
+/// A toggle of the state-toggle matrix: its name and what it turns on.
+pub type Toggle = (&'static str, fn(&mut dyn Gl));
+
+/// The state-toggle matrix's toggles: a name and the state it turns on over the
+/// `tunnel-nofog` scene (textured, perspective, depth-tested; the first entry changes
+/// nothing).
+pub const TOGGLES: [Toggle; 16] = [
+    ("base (tunnel-nofog)", |_| {}),
+    ("fog LINEAR", |gl| fog_toggle(gl, GL_LINEAR)),
+    ("fog EXP", |gl| fog_toggle(gl, GL_EXP)),
+    ("fog EXP2", |gl| fog_toggle(gl, GL_EXP2)),
+    ("fog EXP2, hint NICEST", |gl| {
+        fog_toggle(gl, GL_EXP2);
+        gl.hint(GL_FOG_HINT, GL_NICEST);
+    }),
+    ("alpha test GREATER 0.5", |gl| {
+        gl.enable(GL_ALPHA_TEST);
+        gl.alpha_func(GL_GREATER, 0.5);
+    }),
+    ("blend SRC_ALPHA, 1-SRC_ALPHA", |gl| {
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }),
+    ("blend ONE, ONE", |gl| {
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_ONE, GL_ONE);
+    }),
+    ("blend DST_COLOR, ZERO", |gl| {
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_DST_COLOR, GL_ZERO);
+    }),
+    ("lighting, 1 light", light_toggle),
+    ("lighting, separate specular", |gl| {
+        light_toggle(gl);
+        gl.light_modeli(
+            GL_LIGHT_MODEL_COLOR_CONTROL,
+            GL_SEPARATE_SPECULAR_COLOR as i32,
+        );
+    }),
+    ("second unit (MODULATE)", |gl| {
+        gl.active_texture(GL_TEXTURE1);
+        bench_texture_setup(gl, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1.0);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+        // Unit 1 has no coordinates of its own: its current coordinate is constant.
+        gl.active_texture(GL_TEXTURE0);
+    }),
+    ("flat shading", |gl| gl.shade_model(GL_FLAT)),
+    ("polygon stipple", |gl| {
+        let pattern: Vec<u8> = (0..128)
+            .map(|i| if (i / 4) % 2 == 0 { 0xAA } else { 0x55 })
+            .collect();
+        gl.polygon_stipple(&pattern);
+        gl.enable(GL_POLYGON_STIPPLE);
+    }),
+    ("fog EXP2 + alpha test", |gl| {
+        fog_toggle(gl, GL_EXP2);
+        gl.enable(GL_ALPHA_TEST);
+        gl.alpha_func(GL_GREATER, 0.5);
+    }),
+    ("fog EXP2 + blend SRC_ALPHA", |gl| {
+        fog_toggle(gl, GL_EXP2);
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }),
+];
+
+/// Fog of `mode` with the `tunnel` workload's parameters.
+fn fog_toggle(gl: &mut dyn Gl, mode: GLenum) {
+    gl.enable(GL_FOG);
+    gl.fogi(GL_FOG_MODE, mode as i32);
+    gl.fogf(GL_FOG_DENSITY, 0.07);
+    gl.fogf(GL_FOG_START, 1.0);
+    gl.fogf(GL_FOG_END, 30.0);
+    gl.fogfv(GL_FOG_COLOR, &[0.25, 0.22, 0.2, 1.0]);
+}
+
+/// Lighting with one directional light and a specular material (the tunnel's normals point
+/// inwards).
+fn light_toggle(gl: &mut dyn Gl) {
+    gl.enable(GL_LIGHTING);
+    gl.enable(GL_LIGHT0);
+    gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.3, 0.8, 1.0, 0.0]);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.8, 0.8, 0.8, 1.0]);
+    gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
+    gl.materialf(GL_FRONT_AND_BACK, GL_SHININESS, 16.0);
+}
+
+/// A torus about the y axis as triangle strips with normals and texture coordinates (s four
+/// times around the ring, t twice around the tube).
+fn textured_torus(gl: &mut dyn Gl, rings: usize, sides: usize, big: f32, small: f32) {
+    use std::f32::consts::TAU;
+    for i in 0..rings {
+        gl.begin(GL_TRIANGLE_STRIP);
+        for j in 0..=sides {
+            let b = TAU * j as f32 / sides as f32;
+            for ii in [i + 1, i] {
+                let a = TAU * ii as f32 / rings as f32;
+                let n = [a.cos() * b.cos(), b.sin(), a.sin() * b.cos()];
+                gl.normal_3fv(&n);
+                gl.tex_coord_2f(
+                    4.0 * ii as f32 / rings as f32,
+                    2.0 * j as f32 / sides as f32,
+                );
+                gl.vertex_3f(
+                    a.cos() * (big + small * b.cos()),
+                    small * b.sin(),
+                    a.sin() * (big + small * b.cos()),
+                );
+            }
+        }
+        gl.end();
+    }
+}
+
+/// The tunnel's tube (radius 1.5 about the z axis, from z = 0.5 to 47.5 units deep), as quad
+/// strips with inward normals, texture coordinates (s twice around, t one repeat per two
+/// units) and a smooth colour that darkens with the angle (its alpha varies too).
+fn tunnel(gl: &mut dyn Gl, sides: usize, segments: usize) {
+    use std::f32::consts::TAU;
+    let r = 1.5f32;
+    for i in 0..segments {
+        let (z0, z1) = (0.5 - i as f32, 0.5 - (i + 1) as f32);
+        gl.begin(GL_QUAD_STRIP);
+        for j in 0..=sides {
+            let a = TAU * j as f32 / sides as f32;
+            let (c, s) = (a.cos(), a.sin());
+            let shade = 0.75 + 0.25 * s;
+            // Alpha from 0.1 to 1 around the tube, for the alpha test and blending toggles.
+            gl.color_4f(shade, shade * 0.95, shade * 0.9, 0.55 + 0.45 * c);
+            gl.normal_3f(-c, -s, 0.0);
+            for z in [z0, z1] {
+                gl.tex_coord_2f(2.0 * j as f32 / sides as f32, -z * 0.5);
+                gl.vertex_3f(r * c, r * s, z);
+            }
+        }
+        gl.end();
     }
 }
 
@@ -410,6 +587,10 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
         | Workload::Horizon
         | Workload::Lightmap
         | Workload::Spheremap
+        | Workload::Tunnel
+        | Workload::TunnelNoFog
+        | Workload::Objects
+        | Workload::ObjectsNoFog
         | Workload::Lighting => {
             gl.matrix_mode(GL_PROJECTION);
             let aspect = cfg.width as f64 / cfg.height as f64;
@@ -546,6 +727,46 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
         gl.lightfv(GL_LIGHT1, GL_SPECULAR, &[0.3, 0.4, 0.9, 1.0]);
         gl.lightf(GL_LIGHT1, GL_LINEAR_ATTENUATION, 0.2);
         gl.clear_color(0.1, 0.1, 0.12, 1.0);
+    }
+    if matches!(cfg.workload, Workload::Tunnel | Workload::TunnelNoFog) {
+        let (_, min, mag, aniso) = LADDER[cfg.quality.min(LADDER.len() - 1)];
+        bench_texture_setup(gl, min, mag, aniso);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+        gl.clear_color(0.25, 0.22, 0.2, 1.0);
+        if cfg.workload == Workload::Tunnel {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.07);
+            gl.fogfv(GL_FOG_COLOR, &[0.25, 0.22, 0.2, 1.0]);
+        }
+        if let Some(t) = cfg.toggle {
+            (TOGGLES[t.min(TOGGLES.len() - 1)].1)(gl);
+        }
+    }
+    if matches!(cfg.workload, Workload::Objects | Workload::ObjectsNoFog) {
+        let (_, min, mag, aniso) = LADDER[cfg.quality.min(LADDER.len() - 1)];
+        bench_texture_setup(gl, min, mag, aniso);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+        gl.enable(GL_LIGHTING);
+        gl.enable(GL_LIGHT0);
+        gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.3, 1.0, 0.6, 0.0]);
+        gl.materialfv(GL_FRONT, GL_AMBIENT, &[0.3, 0.3, 0.3, 1.0]);
+        gl.materialfv(GL_FRONT, GL_DIFFUSE, &[0.9, 0.85, 0.8, 1.0]);
+        gl.materialfv(GL_FRONT, GL_SPECULAR, &[0.4, 0.4, 0.4, 1.0]);
+        gl.materialf(GL_FRONT, GL_SHININESS, 20.0);
+        gl.enable(GL_CULL_FACE);
+        gl.clear_color(0.5, 0.55, 0.6, 1.0);
+        if cfg.workload == Workload::Objects {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 3.0);
+            gl.fogf(GL_FOG_END, 16.0);
+            gl.fogfv(GL_FOG_COLOR, &[0.5, 0.55, 0.6, 1.0]);
+        }
+        let list = gl.gen_lists(1);
+        gl.new_list(list, GL_COMPILE);
+        textured_torus(gl, 48, 24, 0.8, 0.35);
+        gl.end_list();
     }
     if cfg.workload == Workload::Fog {
         gl.enable(GL_LIGHTING);
@@ -729,6 +950,28 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
             }
             bench_sphere(gl, *stacks, *slices);
         }
+        WorkData::Tunnel(sides, segments) => {
+            gl.load_identity();
+            // Looking a little off the axis, so the far end is not centred.
+            gl.rotatef(4.0, 0.0, 1.0, 0.0);
+            gl.rotatef(3.0, 1.0, 0.0, 0.0);
+            tunnel(gl, *sides, *segments);
+        }
+        WorkData::Objects(cols, rows) => {
+            // Rows recede: the nearest at 4 units, the farthest at 13 (fog 3..16).
+            for r in 0..*rows {
+                for c in 0..*cols {
+                    gl.load_identity();
+                    let z = -4.0 - 3.0 * r as f32;
+                    let x = (c as f32 - (*cols as f32 - 1.0) / 2.0) * (0.55 * -z);
+                    let y = (r as f32 - (*rows as f32 - 1.0) / 2.0) * 0.5 * -z * 0.45;
+                    gl.translatef(x, y, z);
+                    gl.rotatef(25.0 + 17.0 * c as f32, 1.0, 0.0, 0.0);
+                    gl.rotatef(11.0 * r as f32, 0.0, 0.0, 1.0);
+                    gl.call_list(OBJECT_LIST);
+                }
+            }
+        }
     }
     gl.finish();
 }
@@ -853,6 +1096,10 @@ pub fn run_mesa_subprocess(
     let min_time = cfg.min_time.as_secs_f64().to_string();
     let mut args: Vec<&str> = extra_args.to_vec();
     let quality = cfg.quality.to_string();
+    let toggle = cfg.toggle.map(|t| t.to_string());
+    if let Some(t) = &toggle {
+        args.extend_from_slice(&["--toggle", t]);
+    }
     args.extend_from_slice(&[
         "--quality",
         &quality,
@@ -891,6 +1138,15 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
             ("--workload", Some(v)) if v == "lighting" => {
                 cfg.workload = Workload::Lighting;
                 all = false;
+                i += 1;
+            }
+            ("--workload", Some(v)) if v == "toggles" => {
+                cfg.toggles_only = true;
+                all = false;
+                i += 1;
+            }
+            ("--toggle", Some(v)) => {
+                cfg.toggle = v.parse().ok();
                 i += 1;
             }
             ("--workload", Some(v)) if v == "ladder" => {
@@ -968,6 +1224,10 @@ pub fn run_cli() -> i32 {
                 2
             }
         };
+    }
+    if cfg.toggles_only {
+        run_toggles(&cfg);
+        return 0;
     }
     let workloads: Vec<Workload> = if all {
         Workload::ALL.to_vec()
@@ -1062,6 +1322,71 @@ pub fn run_lighting_scaling(cfg: &BenchConfig) {
     println!(
         "tilegl lighting cost = {a:.3} ms + {:.1} ns x triangles (R^2 = {r2:.4})",
         b * 1e6
+    );
+}
+
+/// The state-toggle matrix: the `tunnel-nofog` scene with each of [`TOGGLES`] on tilegl
+/// (1 and 2 threads, or `--threads`) and Mesa in this process, alternating per toggle; each
+/// toggle's added cost on each, and tilegl's against Mesa's, with tilegl's picture error
+/// against Mesa's.
+pub fn run_toggles(cfg: &BenchConfig) {
+    let mut c = cfg.clone();
+    c.workload = Workload::TunnelNoFog;
+    let data = work_data(&c);
+    println!();
+    println!(
+        "== toggles: {} at {}x{}, each feature turned on alone (medians over at least {} \
+         frames and {:.1} s)",
+        describe(&c),
+        c.width,
+        c.height,
+        c.frames,
+        c.min_time.as_secs_f64()
+    );
+    let threads = c.tilegl_threads.clone();
+    let mut header = format!("{:<32}", "toggle");
+    for t in &threads {
+        header += &format!(" {:>9} {:>8}", format!("{t}T ms"), "added");
+    }
+    header += &format!(
+        " {:>9} {:>8} {:>10}  picture vs Mesa (last tilegl)",
+        "mesa ms", "added", "ratio"
+    );
+    println!("{header}");
+    let mut base: Option<(Vec<f64>, f64)> = None;
+    for (k, (name, _)) in TOGGLES.iter().enumerate() {
+        c.toggle = Some(k);
+        let runs: Vec<BenchResult> = threads.iter().map(|&t| run_tilegl(&c, &data, t)).collect();
+        let mesa = run_mesa(&c, &data).ok().map(|(r, _)| r);
+        let times: Vec<f64> = runs.iter().map(|r| r.median_ms()).collect();
+        let mesa_ms = mesa.as_ref().map_or(f64::NAN, |m| m.median_ms());
+        if base.is_none() {
+            base = Some((times.clone(), mesa_ms));
+        }
+        let (bt, bm) = base.clone().unwrap_or_default();
+        let mut line = format!("{name:<32}");
+        for (t, b) in times.iter().zip(&bt) {
+            line += &format!(" {t:>9.1} {:>+8.1}", t - b);
+        }
+        let mesa_added = mesa_ms - bm;
+        let tilegl_added =
+            times.last().copied().unwrap_or(f64::NAN) - bt.last().copied().unwrap_or(f64::NAN);
+        let ratio = if k == 0 {
+            "-".to_string()
+        } else if mesa_added.abs() < 0.3 {
+            format!("{tilegl_added:+.1} ms")
+        } else {
+            format!("{:.2}x", tilegl_added / mesa_added)
+        };
+        line += &format!(" {mesa_ms:>9.1} {mesa_added:>+8.1} {ratio:>10}");
+        if let (Some(m), Some(t)) = (&mesa, runs.last()) {
+            line += &format!("  {}", diff(&t.image, &m.image, 8));
+        }
+        println!("{line}");
+    }
+    println!(
+        "added: the toggle's time minus the base scene's; ratio: tilegl's added time over \
+         Mesa's (its added ms when Mesa's is below 0.3 ms)"
     );
 }
 
@@ -1243,6 +1568,28 @@ fn describe(cfg: &BenchConfig) -> String {
             2 * TORUS.0 * TORUS.1
         ),
         Workload::Lighting => "a lit sphere".to_string(),
+        Workload::Tunnel | Workload::TunnelNoFog => format!(
+            "a perspective tunnel of {} quads, {} walls MODULATEd by a smooth colour, depth \
+             test{}",
+            TUNNEL.0 * TUNNEL.1,
+            LADDER[cfg.quality.min(LADDER.len() - 1)].0,
+            match cfg.toggle {
+                Some(t) => format!(", {}", TOGGLES[t.min(TOGGLES.len() - 1)].0),
+                None if cfg.workload == Workload::Tunnel => ", EXP2 fog".to_string(),
+                None => ", no fog".to_string(),
+            }
+        ),
+        Workload::Objects | Workload::ObjectsNoFog => format!(
+            "{} lit, {} textured (MODULATE) tori of {} triangles from one display list, {}",
+            OBJECTS.0 * OBJECTS.1,
+            LADDER[cfg.quality.min(LADDER.len() - 1)].0,
+            2 * 48 * 24,
+            if cfg.workload == Workload::Objects {
+                "LINEAR fog"
+            } else {
+                "no fog"
+            }
+        ),
     }
 }
 
@@ -1260,7 +1607,10 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
         cfg.min_time.as_secs_f64(),
         cfg.budget.as_secs_f64()
     );
-    // The cross-core round trip just before each implementation's run (`machine`).
+    // The cross-core round trip just before each implementation's run (`machine`); not with
+    // `--no-xcore` (under valgrind its two spinning threads take minutes).
+    let measure = !args.iter().any(|a| a == "--no-xcore");
+    let cross_core_round_trip_ns = || measure.then(cross_core_round_trip_ns).flatten();
     let mut round_trip = Vec::new();
     let mut results: Vec<BenchResult> = Vec::new();
     for &t in &cfg.tilegl_threads {

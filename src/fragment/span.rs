@@ -31,7 +31,7 @@ use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::texture::simd::{self, lerp8, Level8, Sampling8, Tail8, Texels8};
+use crate::texture::simd::{self, lerp8, After8, Level8, Sampling8, Tail8, Texels8};
 
 /// The interpolants of one primitive for the fragment stage.
 #[derive(Clone, Debug)]
@@ -437,12 +437,9 @@ fn shade_textured<
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
     let xc0 = x0 as f64 + 0.5;
-    // Primary colour, then the secondary colour when the colour sum needs it.
-    let colors = if !SIMPLE && (key.color_sum || key.texturing) {
-        8
-    } else {
-        4
-    };
+    // Primary colour, then the secondary colour when the colour sum needs it (the eight-lane
+    // route steps it only then: `SpanRun::next`).
+    let colors = if !SIMPLE && key.color_sum { 8 } else { 4 };
     let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
@@ -467,13 +464,15 @@ fn shade_textured<
                 // values from the second pixel on are those of the second pixel (adding a zero
                 // changes at most the sign of a zero, and only once): two pixels are stepped.
                 let steady = run.is_steady();
-                let mut steady_values = [([0f32; 4], 0u32); 2];
+                let mut steady_values = [([0f32; 4], 0u32, 0f32, None); 2];
                 if steady {
                     for v in &mut steady_values {
-                        *v = run.next(Some(ds.depth_max));
+                        *v = run.next::<true>(Some(ds.depth_max));
                     }
                 }
                 let depth_max = group_depth_max(ds);
+                let fog = lane_fog(ds);
+                let fogged = fog.is_some();
                 // Groups of eight lanes from `gx`; the perspective sampler needs groups that
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
@@ -483,35 +482,41 @@ fn shade_textured<
                     let hi = ((x1 - gx) as usize).min(8);
                     let first = (gx - x0) as isize;
                     let base = (row as isize + first) as usize;
-                    let group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
+                    let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
                         if steady {
                             steady_values[((first + j as isize) as usize).min(1)]
+                        } else if fogged {
+                            run.next::<true>(depth_max)
                         } else {
-                            run.next(depth_max)
+                            run.next::<false>(depth_max)
                         }
                     });
+                    // Lanes failing the depth test change nothing (no stencil here): a group
+                    // without a passing lane is not sampled, and only passing quads choose
+                    // levels.
+                    if group.pass == 0 {
+                        gx += 8;
+                        continue;
+                    }
+                    group.fog_factors(fog);
                     let GroupInputs {
                         primary,
                         depth,
                         pass,
                         dst,
+                        after,
                     } = group;
-                    // Lanes failing the depth test change nothing (no stencil here): a group
-                    // without a passing lane is not sampled, and only passing quads choose
-                    // levels.
-                    if pass == 0 {
-                        gx += 8;
-                        continue;
-                    }
                     let x = gx as f64 + 0.5;
                     let live = pass;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
-                        (Some(sm), _) => simd::textured8(sm, x, hi, &tail, &primary, &dst, pass),
+                        (Some(sm), _) => {
+                            simd::textured8(sm, x, hi, &tail, &primary, &dst, pass, &after)
+                        }
                         (None, Some(p)) => {
                             let mut tex = [[0f32; 8]; 4];
                             if p.texels_into(x, live, &mut tex) {
-                                simd::shade8(&tail, &primary, &tex, &dst, pass)
+                                simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
                             } else {
                                 None
                             }
@@ -524,7 +529,7 @@ fn shade_textured<
                         } else {
                             f.texels_scalar::<4>(it, x, yc, hi)
                         };
-                        simd::shade8(&tail, &primary, &tex, &dst, pass)
+                        simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
                     });
                     if let Some((words, passed)) = shaded {
                         store_group(ds, tile, base, lo..hi, &words, passed, &depth);
@@ -1216,6 +1221,7 @@ impl<'a> Perspective8<'a> {
             tail,
             &group.primary,
             &group.dst,
+            &group.after,
         )
     }
 
@@ -1377,10 +1383,16 @@ impl SpanRun {
     #[inline(always)]
     fn with_fog(mut self, ds: &DrawState, it: &Interpolants, xc0: f64, yc: f64) -> SpanRun {
         if ds.key.fog.is_some() && ds.fog.is_some() {
-            let p = &it.attrs[attr::FOG];
-            self.fog = Some((p.at(xc0, yc) as f32, p.a as f32));
+            self.fog = Some(Self::fog_at(it, xc0, yc));
         }
         self
+    }
+
+    /// The fog coordinate's plane value at (`xc0`, `yc`) and its step along the row.
+    #[inline(always)]
+    fn fog_at(it: &Interpolants, xc0: f64, yc: f64) -> (f32, f32) {
+        let p = &it.attrs[attr::FOG];
+        (p.at(xc0, yc) as f32, p.a as f32)
     }
 
     /// The fog coordinate at the current pixel (0 unless fogged); `w` as from [`Self::w`].
@@ -1396,7 +1408,10 @@ impl SpanRun {
     /// Whether z, 1/w and the primary colour do not change along the span (a flat, facing
     /// primitive).
     fn is_steady(&self) -> bool {
-        self.dz == 0.0 && self.dinv_w == 0.0 && self.dcolor[..4].iter().all(|&d| d == 0.0)
+        self.dz == 0.0
+            && self.dinv_w == 0.0
+            && self.dcolor[..self.count].iter().all(|&d| d == 0.0)
+            && self.fog.is_none_or(|(_, dc)| dc == 0.0)
     }
 
     /// w at the current pixel (1 without perspective).
@@ -1440,21 +1455,60 @@ impl SpanRun {
         }
     }
 
-    /// For the eight-lane paths, which read only the primary colour: the current pixel's
-    /// colour and stored depth (0 without `depth_max`), then a step of z, 1/w and the primary
-    /// colour (a fixed four, which keeps the loop unrolled; a secondary colour is left behind,
-    /// so `step` and `secondary` must not follow on the same run).
+    /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
+    /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (`None` unless the run
+    /// has it: a count of 8), then a step of z, 1/w, the primary colour (a fixed four, which
+    /// keeps the loop unrolled), the secondary colour when there is one, and with `FOG` the
+    /// fog coordinate (without it the coordinate is neither read nor stepped: the lanes' fog
+    /// is then unused). The values and steps are those of `step`, `primary`, `secondary`
+    /// and `fog_coord`, which must not follow on the same run.
     #[inline(always)]
-    fn next(&mut self, depth_max: Option<u32>) -> ([f32; 4], u32) {
-        let color = self.primary(self.w());
+    fn next<const FOG: bool>(&mut self, depth_max: Option<u32>) -> Lane {
+        let w = self.w();
+        let color = self.primary(w);
+        let fog = if FOG { self.fog_coord(w) } else { 0.0 };
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         self.z += self.dz;
         self.inv_w += self.dinv_w;
         for c in 0..4 {
             self.color[c] += self.dcolor[c];
         }
-        (color, depth)
+        if FOG {
+            if let Some((c, dc)) = &mut self.fog {
+                *c += *dc;
+            }
+        }
+        // The secondary colour, when the run has it (the colour sum).
+        let mut secondary = None;
+        if self.count == 8 {
+            secondary = Some(self.secondary(w));
+            for c in 4..8 {
+                self.color[c] += self.dcolor[c];
+            }
+        }
+        (color, depth, fog, secondary)
     }
+}
+
+/// One fragment's inputs to the eight-lane paths: primary colour, stored depth, fog
+/// coordinate, secondary colour ([`SpanRun::next`]).
+type Lane = ([f32; 4], u32, f32, Option<[f32; 3]>);
+
+/// The colours the eight-lane paths step ([`SpanRun::new`]'s count): the primary, and the
+/// secondary with the colour sum.
+#[inline(always)]
+fn lane_colors(ds: &DrawState) -> usize {
+    if ds.key.color_sum {
+        8
+    } else {
+        4
+    }
+}
+
+/// The fog the eight-lane paths apply: the draw's parameters when its key is fogged.
+#[inline(always)]
+fn lane_fog(ds: &DrawState) -> Option<&FogDraw> {
+    ds.key.fog.and(ds.fog.as_ref())
 }
 
 /// What the eight-fragment tail needs of a group besides the texels: the primary colours and
@@ -1464,6 +1518,11 @@ struct GroupInputs {
     depth: [u32; 8],
     pass: u8,
     dst: [u32; 8],
+    /// Fog coordinates, then (after [`GroupInputs::fog_factors`]) the fog factors of the
+    /// passing lanes.
+    /// The lanes' secondary colours and fog coordinates, then (after
+    /// [`GroupInputs::fog_factors`]) the fog factors of the passing lanes.
+    after: After8,
 }
 
 impl GroupInputs {
@@ -1472,7 +1531,31 @@ impl GroupInputs {
         depth: [0u32; 8],
         pass: 0,
         dst: [0u32; 8],
+        after: After8 {
+            secondary: [[0f32; 8]; 3],
+            fog: [0f32; 8],
+        },
     };
+
+    /// Turns the passing lanes' fog coordinates into fog factors (`FogDraw::factor`, as the
+    /// general path computes them) for a fogged draw (`fog`, from [`lane_fog`]).
+    #[inline(always)]
+    fn fog_factors(&mut self, fog: Option<&FogDraw>) {
+        if let Some(f) = fog {
+            if let Some(k) =
+                simd::fog_factors8(f.mode, f.density, f.end, f.linear_scale(), &self.after.fog)
+            {
+                self.after.fog = k;
+                return;
+            }
+            let mut m = self.pass;
+            while m != 0 {
+                let j = m.trailing_zeros() as usize;
+                self.after.fog[j] = f.factor(self.after.fog[j]);
+                m &= m - 1;
+            }
+        }
+    }
 
     /// Lane `j` (in `lanes`) is pixel `base + j` of `tile`; `value(j)` gives its colour and
     /// depth, called in lane order.
@@ -1482,7 +1565,7 @@ impl GroupInputs {
         tile: &Tile,
         base: usize,
         lanes: std::ops::Range<usize>,
-        mut value: impl FnMut(usize) -> ([f32; 4], u32),
+        mut value: impl FnMut(usize) -> Lane,
     ) -> GroupInputs {
         let mut g = GroupInputs::EMPTY;
         for j in lanes {
@@ -1493,12 +1576,18 @@ impl GroupInputs {
 
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
     #[inline(always)]
-    fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: ([f32; 4], u32)) {
-        let (color, d) = value;
+    fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: Lane) {
+        let (color, d, fog, secondary) = value;
+        if let Some(secondary) = secondary {
+            for c in 0..3 {
+                self.after.secondary[c][j] = secondary[c];
+            }
+        }
         for c in 0..4 {
             self.primary[c][j] = color[c];
         }
         self.depth[j] = d;
+        self.after.fog[j] = fog;
         self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
         self.dst[j] = u32::from_le_bytes(tile.color[index]);
     }
@@ -1565,6 +1654,8 @@ fn tail8(
         alpha_test: key.alpha_func.map(|func| (func, ds.uniforms.alpha_ref)),
         blend: tail_blend(ds),
         color_mask: u32::from_le_bytes(key.color_mask.map(|m| if m { 0xFF } else { 0 })),
+        color_sum: key.color_sum,
+        fog: lane_fog(ds).map(|f| f.color),
     }
 }
 
@@ -1574,15 +1665,12 @@ fn group_depth_max(ds: &DrawState) -> Option<u32> {
     (ds.key.depth_func.is_some() || ds.key.depth_write).then_some(ds.depth_max)
 }
 
-/// Whether the eight-fragment tail covers everything after the colour for `key`: no stencil
-/// test, logic op, colour sum, fog or occlusion counting, and AVX2 present.
+/// Whether the eight-fragment tail covers everything after the colour for `key` (the colour
+/// sum and fog included: the lanes' secondary colours and fog factors are computed as the
+/// general path computes them, then added and blended in the tail): no stencil test, logic op
+/// or occlusion counting, and AVX2 present.
 pub fn tail8_applies(key: &FragmentKey) -> bool {
-    key.stencil.is_none()
-        && key.logic_op.is_none()
-        && !key.color_sum
-        && key.fog.is_none()
-        && !key.count_samples
-        && simd::available()
+    key.stencil.is_none() && key.logic_op.is_none() && !key.count_samples && simd::available()
 }
 
 /// The eight-fragment tail's blending for the draw's key.
@@ -1668,11 +1756,32 @@ fn for_each_block(
     it: &Interpolants,
     mut shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
 ) {
+    // Unfogged draws step no fog coordinate.
+    if lane_fog(ds).is_some() {
+        blocks::<true>(ds, tile, pairs, it, &mut shade)
+    } else {
+        blocks::<false>(ds, tile, pairs, it, &mut shade)
+    }
+}
+
+/// [`for_each_block`] for a fogged draw (`FOG`) or not.
+#[inline(always)]
+fn blocks<const FOG: bool>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+) {
     let depth_max = group_depth_max(ds);
+    let fog = if FOG { lane_fog(ds) } else { None };
+    // With the colour sum the secondary colour is stepped too (no constant shortcut).
+    let colors = lane_colors(ds);
     // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
-    // every pixel has the first one's) leaves only z to step per pixel; the lanes' depths are
+    // every pixel has the first one's) leaves only z to step per pixel (unless fogged: then
+    // the fog coordinate and 1/w are stepped too, by `SpanRun::next`); the lanes' depths are
     // then rounded and tested eight at a time, and the colour written to the lanes whole.
-    let constant = it.constant_primary.then(|| {
+    let constant = (it.constant_primary && fog.is_none() && colors == 4).then(|| {
         let (y, rows) = pairs.first().copied().unwrap_or_default();
         let run = SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4);
         [0, 1, 2, 3].map(|c| [run.color[c]; 8])
@@ -1687,9 +1796,15 @@ fn for_each_block(
     let mut stored = [0u32; 8];
     for &(y, rows) in pairs {
         let mut runs = [
-            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4),
-            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, 4),
+            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, colors),
+            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, colors),
         ];
+        if FOG {
+            for (r, run) in runs.iter_mut().enumerate() {
+                let (xc0, yc) = (rows[r].0 as f64 + 0.5, y as f64 + 0.5 + r as f64);
+                run.fog = Some(SpanRun::fog_at(it, xc0, yc));
+            }
+        }
         let covered = |r: usize| rows[r].0 < rows[r].1;
         let (first, end) = match (covered(0), covered(1)) {
             (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
@@ -1729,17 +1844,23 @@ fn for_each_block(
                         }),
                 };
             } else {
-                group = GroupInputs::EMPTY;
+                // (Not `after`: a whole copy of `EMPTY` is a call to memset, and a lane's
+                // secondary colour and fog are read only when it is live.)
+                group.primary = GroupInputs::EMPTY.primary;
+                group.depth = [0; 8];
+                group.pass = 0;
+                group.dst = [0; 8];
                 for (r, &(x0, x1)) in rows.iter().enumerate() {
                     let row = tile.index(gx, y + r as i32);
                     for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
                         let (lane, j) = (4 * r + j as usize, j as usize);
-                        group.add(ds, tile, lane, row + j, runs[r].next(depth_max));
+                        group.add(ds, tile, lane, row + j, runs[r].next::<FOG>(depth_max));
                         live |= 1 << lane;
                     }
                 }
             }
             if group.pass != 0 {
+                group.fog_factors(fog);
                 if let Some((words, passed)) = shade(y, gx, &group) {
                     for lane in 0..8 {
                         if live & (1 << lane) != 0 {
@@ -1817,7 +1938,14 @@ pub fn pair_textured<'a, const TEX: u8>(
                 }
             }
         }
-        simd::shade8(&tail, &group.primary, &tex, &group.dst, group.pass)
+        simd::shade8(
+            &tail,
+            &group.primary,
+            &tex,
+            &group.dst,
+            group.pass,
+            &group.after,
+        )
     });
 }
 
@@ -1919,20 +2047,32 @@ pub fn span_untextured8<'a>(
         return span_general(ds, tile, y, x0, x1, it);
     }
     let row = tile.index(x0, y);
-    let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 4);
+    let (xc0, yc) = (x0 as f64 + 0.5, y as f64 + 0.5);
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
     let tail = tail8(ds, false, false, false);
     let depth_max = group_depth_max(ds);
+    let fog = lane_fog(ds);
+    let fogged = fog.is_some();
     let mut gx = x0;
     while gx < x1 {
         let n = ((x1 - gx) as usize).min(8);
         let base = row + (gx - x0) as usize;
+        let mut group = GroupInputs::gather(ds, tile, base, 0..n, |_| {
+            if fogged {
+                run.next::<true>(depth_max)
+            } else {
+                run.next::<false>(depth_max)
+            }
+        });
+        group.fog_factors(fog);
         let GroupInputs {
             primary,
             depth,
             pass,
             dst,
-        } = GroupInputs::gather(ds, tile, base, 0..n, |_| run.next(depth_max));
-        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass) {
+            after,
+        } = group;
+        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass, &after) {
             store_group(ds, tile, base, 0..n, &words, passed, &depth);
         }
         gx += 8;
@@ -1967,7 +2107,8 @@ pub fn span_sampled8<'a>(
     if it.coverage != 1.0 {
         return span_sampled(ds, tile, y, x0, x1, it);
     }
-    let mut run = SpanRun::new(it, xc0, yc, 4);
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
+    let fog = lane_fog(ds);
     let Sampled8 {
         mut samplers,
         single,
@@ -1981,13 +2122,20 @@ pub fn span_sampled8<'a>(
         let hi = ((x1 - gx) as usize).min(8);
         let first = (gx - x0) as isize;
         let base = (row as isize + first) as usize;
-        let group = GroupInputs::gather(ds, tile, base, lo..hi, |_| run.next(depth_max));
+        let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |_| {
+            if fog.is_some() {
+                run.next::<true>(depth_max)
+            } else {
+                run.next::<false>(depth_max)
+            }
+        });
         // Lanes failing the depth test change nothing (no stencil here): only passing lanes
         // are sampled.
         if group.pass == 0 {
             gx += 8;
             continue;
         }
+        group.fog_factors(fog);
         for (k, unit) in ds.units.iter().enumerate() {
             if let Some(out) = by_unit[unit.unit].as_mut() {
                 sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, group.pass, out);
@@ -2097,5 +2245,5 @@ fn sampled8_shade(
         Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
         None => &color,
     };
-    simd::shade8(tail, &color, tex, &group.dst, group.pass)
+    simd::shade8(tail, &color, tex, &group.dst, group.pass, &group.after)
 }

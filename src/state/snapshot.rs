@@ -106,19 +106,53 @@ impl FogDraw {
     #[inline]
     pub fn factor(&self, c: f32) -> f32 {
         let f = match self.mode {
-            FogMode::Linear => {
-                let range = self.end - self.start;
-                let scale = if range != 0.0 { 1.0 / range } else { 1.0 };
-                (self.end - c) * scale
-            }
-            FogMode::Exp => (-self.density * c).exp(),
+            FogMode::Linear => (self.end - c) * self.linear_scale(),
+            FogMode::Exp => fog_exp(-self.density * c),
             FogMode::Exp2 => {
                 let d = self.density * c;
-                (-d * d).exp()
+                fog_exp(-d * d)
             }
         };
         f.max(0.0).min(1.0)
     }
+
+    /// The linear factor's scale: 1 / (end - start), or 1 when start == end.
+    #[inline]
+    pub fn linear_scale(&self) -> f32 {
+        let range = self.end - self.start;
+        if range != 0.0 {
+            1.0 / range
+        } else {
+            1.0
+        }
+    }
+}
+
+/// `ln(2)^k / k!` for k = 1..6: the Taylor coefficients of 2^f.
+pub const EXP2_TAYLOR: [f32; 6] = [
+    std::f32::consts::LN_2,
+    0.240_226_5,
+    0.055_504_11,
+    0.009_618_129,
+    0.001_333_355_8,
+    0.000_154_035_3,
+];
+
+/// e^x for the fog factor, from operations that eight lanes repeat exactly
+/// (`texture::simd::fog_factors8`), so the eight-lane paths give the general path's factors:
+/// t = x log2(e) clamped to [-126, 126], n = floor(t + 1/2), 2^(t - n) by its degree-6
+/// Taylor polynomial (|t - n| <= 1/2: relative error below 2e-7, a thousandth of an 8-bit
+/// step), times 2^n built from its exponent bits. NaN gives 2^-126 (a factor of 0, as NaN
+/// clamps to 0), and below x = -87 the result stays at about 1e-38 instead of 0: both
+/// mean "all fog" after 8-bit rounding.
+#[inline]
+pub fn fog_exp(x: f32) -> f32 {
+    let t = (x * std::f32::consts::LOG2_E).max(-126.0).min(126.0);
+    let n = (t + 0.5).floor();
+    let f = t - n;
+    let k = EXP2_TAYLOR;
+    let p = (((((k[5] * f + k[4]) * f + k[3]) * f + k[2]) * f + k[1]) * f + k[0]) * f + 1.0;
+    p * f32::from_bits(((n as i32 + 127) as u32) << 23)
 }
 
 /// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).

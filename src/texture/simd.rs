@@ -7,7 +7,7 @@
 
 use super::format::BaseFormat;
 use super::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::api::convert::{CompareFunc, WrapMode};
+use crate::api::convert::{CompareFunc, FogMode, WrapMode};
 use crate::fragment::key::BlendKey;
 
 /// Eight pixels' texels as four channel arrays (R, G, B, A).
@@ -213,17 +213,22 @@ pub fn block_shaded8(
     tail: &Tail8,
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe {
-                x86::block_shaded8(planes, x, level, linear, lod, live, tail, primary, dst)
+                x86::block_shaded8(
+                    planes, x, level, linear, lod, live, tail, primary, dst, after,
+                )
             };
         }
     }
-    let _ = (planes, x, level, linear, lod, live, tail, primary, dst);
+    let _ = (
+        planes, x, level, linear, lod, live, tail, primary, dst, after,
+    );
     None
 }
 
@@ -285,6 +290,21 @@ pub struct Tail8 {
     pub blend: TailBlend,
     /// Bytes of the colour words that may be written (the colour mask).
     pub color_mask: u32,
+    /// Add the secondary colour ([`After8::secondary`]) after the environment (the colour
+    /// sum, section 3.9).
+    pub color_sum: bool,
+    /// Fog's colour, when the fragments are fogged: each lane's colour is blended towards it
+    /// by the lane's fog factor (section 3.10) after the environment, as
+    /// `fragment::span::fog_fragment` does.
+    pub fog: Option<[f32; 3]>,
+}
+
+/// What the tail adds to eight fragments after the environment: their secondary colours
+/// (with [`Tail8::color_sum`]) and fog factors (with [`Tail8::fog`]), read for passing lanes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct After8 {
+    pub secondary: [[f32; 8]; 3],
+    pub fog: [f32; 8],
 }
 
 /// Eight fragments of a textured span after the texture lookup, as the general fragment path
@@ -293,7 +313,7 @@ pub struct Tail8 {
 /// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
 /// bit j set for fragments that exist and pass the depth test. Answers the new colour words
 /// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
-/// `None` without AVX2.
+/// `None` without AVX2. `after` holds what the colour sum and fog add ([`After8`]).
 #[inline]
 pub fn shade8(
     tail: &Tail8,
@@ -301,15 +321,16 @@ pub fn shade8(
     tex: &Texels8,
     dst: &[u32; 8],
     pass: u8,
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass) });
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass, after) });
         }
     }
-    let _ = (tail, primary, tex, dst, pass);
+    let _ = (tail, primary, tex, dst, pass, after);
     None
 }
 
@@ -330,6 +351,7 @@ pub struct Sampling8<'a> {
 
 /// [`coords8`], [`filter8`] on one or two levels and [`shade8`] in one go, for the `count`
 /// pixels from centre `x`; `None` when [`coords8`] or [`filter8`] would answer `None`.
+#[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn textured8(
     sampling: &Sampling8,
@@ -339,15 +361,16 @@ pub fn textured8(
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
     pass: u8,
+    after: &After8,
 ) -> Option<([u32; 8], u8)> {
     #[cfg(target_arch = "x86_64")]
     {
         if available() {
             // SAFETY: AVX2 is present (checked just above).
-            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass) };
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass, after) };
         }
     }
-    let _ = (sampling, x, count, tail, primary, dst, pass);
+    let _ = (sampling, x, count, tail, primary, dst, pass, after);
     None
 }
 
@@ -374,6 +397,28 @@ pub fn depth8(
     None
 }
 
+/// The fog factors of eight fog coordinates `c`, as `FogDraw::factor` computes them one by one
+/// (the same operations in the same order, `fog_exp` for EXP and EXP2): `mode` with `density`,
+/// `end` and the linear scale `scale` (`FogDraw::linear_scale`). `None` without AVX2.
+#[inline]
+pub fn fog_factors8(
+    mode: FogMode,
+    density: f32,
+    end: f32,
+    scale: f32,
+    c: &[f32; 8],
+) -> Option<[f32; 8]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::fog_factors8(mode, density, end, scale, c) });
+        }
+    }
+    let _ = (mode, density, end, scale, c);
+    None
+}
+
 /// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
 #[inline(always)]
 pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
@@ -390,8 +435,9 @@ pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Level8, LevelPlan, LodSelect, Sampling8, Tail8, Texels8};
-    use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc};
+    use super::{After8, Level8, LevelPlan, LodSelect, Sampling8, Tail8, Texels8};
+    use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode};
+    use crate::state::snapshot::EXP2_TAYLOR;
     use crate::texture::format::BaseFormat;
 
     /// Largest |floor(u)| handled: indices and index + 1 stay far from `i32` overflow.
@@ -514,6 +560,64 @@ mod x86 {
         }
     }
 
+    /// [`super::fog_factors8`].
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn fog_factors8(
+        mode: FogMode,
+        density: f32,
+        end: f32,
+        scale: f32,
+        c: &[f32; 8],
+    ) -> [f32; 8] {
+        // SAFETY: `c` holds eight f32; unaligned load.
+        let c = unsafe { _mm256_loadu_ps(c.as_ptr()) };
+        let f = match mode {
+            FogMode::Linear => {
+                _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(end), c), _mm256_set1_ps(scale))
+            }
+            FogMode::Exp => exp8(_mm256_mul_ps(_mm256_set1_ps(-density), c)),
+            FogMode::Exp2 => {
+                let d = _mm256_mul_ps(_mm256_set1_ps(density), c);
+                // -d by its sign bit, exactly as the scalar negation.
+                let neg = _mm256_xor_ps(d, _mm256_set1_ps(-0.0));
+                exp8(_mm256_mul_ps(neg, d))
+            }
+        };
+        // f.max(0.0).min(1.0): max_ps answers its second operand (0) for NaN, as f32::max
+        // ignores a NaN.
+        let f = _mm256_min_ps(_mm256_max_ps(f, _mm256_setzero_ps()), _mm256_set1_ps(1.0));
+        let mut out = [0f32; 8];
+        // SAFETY: `out` holds eight f32; unaligned store.
+        unsafe { _mm256_storeu_ps(out.as_mut_ptr(), f) };
+        out
+    }
+
+    /// `fog_exp` per lane (`state::snapshot::fog_exp`: the same operations in the same order).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn exp8(x: __m256) -> __m256 {
+        let t = _mm256_mul_ps(x, _mm256_set1_ps(std::f32::consts::LOG2_E));
+        // max(t, -126) answers -126 for NaN, as f32::max does.
+        let t = _mm256_min_ps(
+            _mm256_max_ps(t, _mm256_set1_ps(-126.0)),
+            _mm256_set1_ps(126.0),
+        );
+        let n = _mm256_floor_ps(_mm256_add_ps(t, _mm256_set1_ps(0.5)));
+        let f = _mm256_sub_ps(t, n);
+        let k = EXP2_TAYLOR;
+        let mut p = _mm256_set1_ps(k[5]);
+        for &kk in k[..5].iter().rev() {
+            p = _mm256_add_ps(_mm256_mul_ps(p, f), _mm256_set1_ps(kk));
+        }
+        p = _mm256_add_ps(_mm256_mul_ps(p, f), _mm256_set1_ps(1.0));
+        let bits = _mm256_slli_epi32::<23>(_mm256_add_epi32(
+            _mm256_cvttps_epi32(n),
+            _mm256_set1_epi32(127),
+        ));
+        _mm256_mul_ps(p, _mm256_castsi256_ps(bits))
+    }
+
     #[inline]
     #[target_feature(enable = "avx2")]
     fn lerp(a: __m256, b: __m256, w: __m256) -> __m256 {
@@ -574,6 +678,7 @@ mod x86 {
         tex: &Texels8,
         dst: &[u32; 8],
         pass: u8,
+        after: &After8,
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -581,7 +686,7 @@ mod x86 {
         for c in 0..4 {
             tex_v[c] = load(&tex[c]);
         }
-        shade8_regs(tail, primary, &tex_v, dst, pass)
+        shade8_regs(tail, primary, &tex_v, dst, pass, after)
     }
 
     /// [`shade8`] with the texels in registers.
@@ -593,6 +698,7 @@ mod x86 {
         tex: &[__m256; 4],
         dst: &[u32; 8],
         pass: u8,
+        after: &After8,
     ) -> ([u32; 8], u8) {
         // SAFETY: each array holds eight f32; unaligned loads.
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
@@ -613,6 +719,28 @@ mod x86 {
             } else {
                 ct
             };
+        }
+        if tail.color_sum {
+            // `c.clamp(0.0, 1.0) + secondary` per colour channel, as the general path adds
+            // the secondary colour (the clamp as below).
+            for (c, s) in color.iter_mut().zip(&after.secondary) {
+                *c = _mm256_add_ps(_mm256_max_ps(zero, _mm256_min_ps(one, *c)), load(s));
+            }
+        }
+        if let Some(fog_color) = tail.fog {
+            // `k * c.clamp(0.0, 1.0) + (1.0 - k) * fog` per colour channel, as the general
+            // path computes it (max(0, min(1, c)) is `clamp`, NaN and the sign of zero
+            // included: min_ps and max_ps answer their second operand for NaN and for
+            // equal operands).
+            let k = load(&after.fog);
+            let rest = _mm256_sub_ps(one, k);
+            for (c, &f) in color.iter_mut().zip(&fog_color) {
+                let clamped = _mm256_max_ps(zero, _mm256_min_ps(one, *c));
+                *c = _mm256_add_ps(
+                    _mm256_mul_ps(k, clamped),
+                    _mm256_mul_ps(rest, _mm256_set1_ps(f)),
+                );
+            }
         }
         let mut keep = lane_mask(pass);
         if let Some((func, reference)) = tail.alpha_test {
@@ -710,6 +838,7 @@ mod x86 {
         (res, _mm256_movemask_ps(keep) as u8)
     }
 
+    #[allow(clippy::too_many_arguments)]
     #[target_feature(enable = "avx2")]
     pub fn textured8(
         sm: &Sampling8,
@@ -719,6 +848,7 @@ mod x86 {
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
         pass: u8,
+        after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
         let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
@@ -726,7 +856,7 @@ mod x86 {
             let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
             ct = super::lerp8(&ct, &t2, w);
         }
-        Some(shade8(tail, primary, &ct, dst, pass))
+        Some(shade8(tail, primary, &ct, dst, pass, after))
     }
 
     /// s/q and t/q at the four pixel centres `xv` of the row of `p` (its s, t and q planes
@@ -786,6 +916,7 @@ mod x86 {
         tail: &Tail8,
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
+        after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
         if let Some((magnified_below, _)) = lod {
@@ -800,7 +931,7 @@ mod x86 {
             }
         }
         let tex = filter8_regs(level, linear, s, t)?;
-        Some(shade8_regs(tail, primary, &tex, dst, live))
+        Some(shade8_regs(tail, primary, &tex, dst, live, after))
     }
 
     /// The block's coordinates (lanes outside `live` at 0) and, per quad (lanes 0 and 2),
@@ -1114,6 +1245,78 @@ mod x86 {
 mod tests {
     use super::*;
     use crate::fragment::span::depth_to_fixed;
+    use crate::state::snapshot::{fog_exp, FogDraw};
+
+    /// `fog_factors8` gives `FogDraw::factor`'s values bit for bit, for every mode, several
+    /// parameter sets (start == end included) and coordinates from negative through huge to
+    /// infinite and NaN.
+    #[test]
+    fn fog_factors8_match_the_scalar_factor() {
+        if !available() {
+            return;
+        }
+        let mut coords = vec![0.0, -0.0, 1e-30, -3.0, f32::INFINITY, f32::NEG_INFINITY];
+        coords.extend([f32::NAN, 1e30, 87.0, 700.0, 0.5, 12.25]);
+        let mut x = 0.001f32;
+        while x < 2000.0 {
+            coords.push(x);
+            x *= 1.013;
+        }
+        let params = [
+            (0.07, 1.0, 30.0),
+            (0.3, 0.5, 7.0),
+            (2.5, 4.0, 4.0),
+            (0.0, -2.0, 9.0),
+        ];
+        for mode in [FogMode::Linear, FogMode::Exp, FogMode::Exp2] {
+            for (density, start, end) in params {
+                let f = FogDraw {
+                    mode,
+                    density,
+                    start,
+                    end,
+                    color: [0.0; 3],
+                    coord_from_vertex: false,
+                };
+                for chunk in coords.chunks(8) {
+                    let mut c = [0f32; 8];
+                    c[..chunk.len()].copy_from_slice(chunk);
+                    let k = fog_factors8(mode, density, end, f.linear_scale(), &c).unwrap();
+                    for j in 0..8 {
+                        assert_eq!(
+                            k[j].to_bits(),
+                            f.factor(c[j]).to_bits(),
+                            "{mode:?} {density} {start} {end}: c = {}",
+                            c[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// `fog_exp` is e^x within 1.5e-7 absolute for fog's arguments (x <= 0: a factor in [0, 1],
+    /// where an 8-bit step is 4e-3) and within 5e-6 relative (the rounding of x log2(e) to
+    /// f32) where the result is a normal number, and answers a factor of 0 after clamping for
+    /// NaN.
+    #[test]
+    fn fog_exp_is_close_to_exp() {
+        let mut x = -87.0f32;
+        while x < 87.0 {
+            let (got, want) = (fog_exp(x) as f64, (x as f64).exp());
+            assert!(
+                ((got - want) / want).abs() < 5e-6,
+                "x = {x}: {got} vs {want}"
+            );
+            if x <= 0.0 {
+                assert!((got - want).abs() < 1.5e-7, "x = {x}: {got} vs {want}");
+            }
+            x += 0.0137;
+        }
+        assert!(fog_exp(f32::NAN) < 1e-37);
+        assert!(fog_exp(f32::NEG_INFINITY) < 1e-37);
+        assert_eq!(fog_exp(0.0), 1.0);
+    }
 
     /// `depth8` rounds and tests as `depth_to_fixed` and `CompareFunc::test` do one by one, for
     /// every function, several depth ranges, stored values around the fragments' and z from far
