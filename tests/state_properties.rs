@@ -35,7 +35,7 @@ enum Op {
     PolygonMode(GLenum, GLenum),
     Scissor(i32, i32, i32, i32),
     StencilFunc(GLenum, i32, u32),
-    StencilOp(GLenum, GLenum, GLenum),
+    StencilOps(GLenum, GLenum, GLenum),
     AlphaFunc(GLenum, f32),
     TexEnvMode(GLenum),
     Hint(GLenum, GLenum),
@@ -119,7 +119,7 @@ fn op() -> impl Strategy<Value = Op> {
         (0i32..16, 0i32..16, 1i32..32, 1i32..32).prop_map(|(x, y, w, h)| Op::Scissor(x, y, w, h)),
         (pick(&FUNCS), 0i32..255, any::<u32>()).prop_map(|(f, r, m)| Op::StencilFunc(f, r, m)),
         (pick(&STENCIL_OPS), pick(&STENCIL_OPS), pick(&STENCIL_OPS))
-            .prop_map(|(a, b, c)| Op::StencilOp(a, b, c)),
+            .prop_map(|(a, b, c)| Op::StencilOps(a, b, c)),
         (pick(&FUNCS), unit()).prop_map(|(f, r)| Op::AlphaFunc(f, r)),
         pick(&[GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD]).prop_map(Op::TexEnvMode),
         (
@@ -167,7 +167,7 @@ fn apply(gl: &mut dyn Gl, op: &Op) {
         Op::PolygonMode(f, m) => gl.polygon_mode(f, m),
         Op::Scissor(x, y, w, h) => gl.scissor(x, y, w, h),
         Op::StencilFunc(f, r, m) => gl.stencil_func(f, r, m),
-        Op::StencilOp(a, b, c) => gl.stencil_op(a, b, c),
+        Op::StencilOps(a, b, c) => gl.stencil_op(a, b, c),
         Op::AlphaFunc(f, r) => gl.alpha_func(f, r),
         Op::TexEnvMode(m) => gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, m as i32),
         Op::Hint(t, m) => gl.hint(t, m),
