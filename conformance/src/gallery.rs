@@ -445,11 +445,13 @@ pub fn write(dir: &Path, outcomes: &[Outcome]) -> Result<PathBuf, String> {
                 renderer = info.to_string();
             }
         }
+        let short: String = e.title.chars().take(48).collect();
         let _ = write!(
             toc,
-            "<li><a href=\"#{}\">{}</a> <span class=\"{class}\">&#9679;</span></li>",
+            "<li><a href=\"#{0}\"><code>{0}</code></a> {1}{2} <span class=\"{class}\">&#9679;</span></li>",
             esc(n),
-            esc(&e.title)
+            esc(&short),
+            if short.len() < e.title.len() { "..." } else { "" }
         );
         let _ = write!(
             body,
@@ -487,6 +489,9 @@ pub fn write(dir: &Path, outcomes: &[Outcome]) -> Result<PathBuf, String> {
             Err(err) => {
                 let _ = write!(body, "<p class=\"none\">{}</p>", esc(err));
             }
+        }
+        if matches!(e.draw, Draw::Builtin(_)) && o.mesa.is_ok() {
+            verdict.push_str(" (a built-in scene, not one of the differential tests)");
         }
         let _ = write!(body, "</div><p class=\"{class}\">{}</p>", esc(&verdict));
         if !o.tilegl.cascade.is_empty() {
@@ -537,7 +542,7 @@ pub fn write(dir: &Path, outcomes: &[Outcome]) -> Result<PathBuf, String> {
          figure{{margin:0}} figure img{{image-rendering:pixelated;border:1px solid #ccc;max-width:400px}}\
          figcaption{{font-size:0.8em;color:#555}} .meta{{color:#666;font-size:0.85em}}\
          .state{{font-size:0.9em;background:#f3f3f8;padding:0.4em}} .ok{{color:#17802f}} .off{{color:#c0261b}}\
-         .none{{color:#888}} ul.toc{{columns:3;font-size:0.9em}}</style></head><body>\
+         .none{{color:#888}} ul.toc{{columns:2;font-size:0.85em}}</style></head><body>\
          <h1>tilegl teaching gallery</h1><p>{} scenes of fixed-function texturing and rendering \
          techniques, each drawn by the same GL calls on tilegl and on Mesa ({}); {} of {} compared \
          are within their differential tolerance. The difference picture is black where equal, \
