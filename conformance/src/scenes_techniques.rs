@@ -99,6 +99,7 @@ pub const TECHNIQUE_SCENES: &[Scene] = &[
         DIFFERENTIAL,
     ),
     sc("ex_particles", ex_particles, 128, 128, DIFFERENTIAL),
+    sc("ex_env_bump", ex_env_bump, 256, 128, DIFFERENTIAL),
 ];
 
 /// For each technique scene: a title, what it teaches, and the GL state that does it.
@@ -277,6 +278,20 @@ pub const TECHNIQUE_TEXTS: &[(&str, &str, &str, &str)] = &[
          so no sorting is needed, and depth writes are off so they do not hide each other.",
         "glBlendFunc(GL_SRC_ALPHA, GL_ONE), glDepthMask(GL_FALSE), GL_MODULATE with glColor4f \
          per particle, quads in eye space (identity modelview) so they face the camera.",
+    ),
+    (
+        "ex_env_bump",
+        "Environment-mapped bump mapping",
+        "A metal plate reflecting a sphere map of the environment: flat (left) it is a mirror; \
+         with its normals tilted by the gradient of a bump map of ripples (right) the reflected \
+         picture is displaced, which is what environment-mapped bump mapping does: the bump map \
+         offsets the environment lookup. GL 1.5 has no dependent texture read (the per-pixel \
+         offset of DirectX 6 style EMBM), so here the offset is applied per vertex: the \
+         perturbed normal of each vertex of a 64x64 mesh, about two pixels apart, goes to GL, \
+         which computes the sphere-map coordinates from it.",
+        "glNormal3f per vertex from the bump map's gradient (N - k dh/du T - k dh/dv B), \
+         glTexGeni(GL_S/T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP), GL_REPLACE, a sphere-map \
+         texture built from the environment's directions.",
     ),
 ];
 
@@ -1492,4 +1507,64 @@ fn ex_particles(gl: &mut dyn Gl) {
     gl.end();
     gl.depth_mask(1);
     gl.disable(GL_BLEND);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Environment-mapped bump mapping.
+
+/// Ripples around two centres: the height and its gradient over the unit square.
+fn ripples(u: f32, v: f32) -> (f32, f32, f32) {
+    let mut h = (0.0, 0.0, 0.0);
+    for (cu, cv, f) in [(0.3, 0.35, 26.0), (0.72, 0.7, 34.0)] {
+        let (du, dv) = (u - cu, v - cv);
+        let r = (du * du + dv * dv).sqrt().max(1e-4);
+        let fall = (-r * 3.0).exp();
+        h.0 += (f * r).sin() * fall;
+        let d = (f * (f * r).cos() - 3.0 * (f * r).sin()) * fall;
+        h.1 += d * du / r;
+        h.2 += d * dv / r;
+    }
+    h
+}
+
+fn ex_env_bump(gl: &mut dyn Gl) {
+    clear_to(gl, [0.1, 0.1, 0.14]);
+    gl.enable(GL_DEPTH_TEST);
+    // The sphere map: texel (s, t) holds the environment in the direction it stands for.
+    let map = paint(128, 128, 3, |s, t| {
+        let (x, y) = (2.0 * s - 1.0, 2.0 * t - 1.0);
+        let r2 = x * x + y * y;
+        if r2 > 1.0 {
+            return [0.0, 0.0, 0.0, 1.0];
+        }
+        let z = (1.0 - r2).sqrt();
+        let c = environment([2.0 * z * x, 2.0 * z * y, 2.0 * z * z - 1.0]);
+        [c[0], c[1], c[2], 1.0]
+    });
+    tex2d(gl, 128, 128, GL_RGB, &map);
+    sampling(gl, GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
+    snap_texture(gl, "sphere_map", GL_TEXTURE_2D, 0, [128, 128, 1]);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_geni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+    gl.tex_geni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP as i32);
+    gl.enable(GL_TEXTURE_GEN_S);
+    gl.enable(GL_TEXTURE_GEN_T);
+    for k in 0..2 {
+        panel(gl, k * 128, 0, 128, 128);
+        camera(gl, 40.0, 1.0, [0.0, 0.0, 2.9], [0.0, 0.0, 0.0]);
+        gl.rotatef(-12.0, 1.0, 0.0, 0.0);
+        gl.rotatef(18.0, 0.0, 1.0, 0.0);
+        let bump = if k == 1 { 0.008 } else { 0.0 };
+        // The plate: z = 0 over x, y in [-1, 1]; T = +x, B = +y, N = +z.
+        grid(gl, 64, &|gl, u, v| {
+            let (_, du, dv) = ripples(u, v);
+            let n = norm([-bump * du, -bump * dv, 1.0]);
+            gl.normal_3f(n[0], n[1], n[2]);
+            gl.vertex_3f(2.0 * u - 1.0, 2.0 * v - 1.0, 0.0);
+        });
+    }
+    gl.disable(GL_TEXTURE_GEN_S);
+    gl.disable(GL_TEXTURE_GEN_T);
+    gl.disable(GL_SCISSOR_TEST);
 }

@@ -19,6 +19,7 @@ differential!(
     ex_phong_highlight_texture,
     ex_reflection_clip_plane,
     ex_particles,
+    ex_env_bump,
 );
 
 #[test]
