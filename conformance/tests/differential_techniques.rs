@@ -37,3 +37,16 @@ fn every_technique_scene_has_a_test_and_a_text() {
         );
     }
 }
+
+/// Recording the stages, as the gallery does, must not change the pictures (the `snap_*`
+/// calls only read back).
+#[test]
+fn recording_stages_changes_nothing() {
+    use tilegl_conformance::{compare, example_support};
+    for scene in TECHNIQUE_SCENES {
+        let plain = compare::render_tilegl(scene);
+        let (recorded, _) = example_support::record(|| compare::render_tilegl(scene));
+        assert_eq!(plain.image, recorded.image, "{}", scene.name);
+        assert_eq!(plain.error, recorded.error, "{}", scene.name);
+    }
+}

@@ -157,3 +157,21 @@ fn size_and_unknown_scene() {
     let err = gallery::run(&bad).err().unwrap();
     assert!(err.contains("no_such_scene") && err.contains("ex_texenv_modes"));
 }
+
+/// Each cascade view of a multitexture scene is a different picture from the final one (the
+/// scene really leaves the later units off), and the full unit count gives the final picture.
+#[test]
+fn cascade_views_leave_units_off() {
+    use tilegl_conformance::{compare, example_support, scenes};
+    for (name, range) in gallery::CASCADES {
+        let scene = scenes::find(name).unwrap();
+        let full = compare::render_tilegl(scene).image;
+        for k in range.clone() {
+            let part = example_support::with_units(k, || compare::render_tilegl(scene)).image;
+            let d = compare::diff(&part, &full, 8);
+            assert!(d.bad_pixels > 100, "{name} with {k} units: {d}");
+        }
+        let all = example_support::with_units(8, || compare::render_tilegl(scene)).image;
+        assert_eq!(all, full, "{name}");
+    }
+}
