@@ -58,6 +58,27 @@ pub fn record<R>(f: impl FnOnce() -> R) -> (R, Vec<Stage>) {
     (out, stages)
 }
 
+thread_local! {
+    static UNIT_LIMIT: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+}
+
+/// Whether a multitexture scene should enable texture unit `unit` (0-based). Always true,
+/// except inside [`with_units`], which limits the cascade to its first units: the stage view
+/// of a multitexture scene renders it with units `0..k` enabled for each `k`, so each picture
+/// shows the output of unit `k - 1` of the cascade.
+pub fn unit_on(unit: usize) -> bool {
+    UNIT_LIMIT.with(|l| l.get().is_none_or(|n| unit < n))
+}
+
+/// Runs `f` with only the first `units` texture units of the scenes' cascades enabled (see
+/// [`unit_on`]).
+pub fn with_units<R>(units: usize, f: impl FnOnce() -> R) -> R {
+    let old = UNIT_LIMIT.with(|l| l.replace(Some(units)));
+    let out = f();
+    UNIT_LIMIT.with(|l| l.set(old));
+    out
+}
+
 /// Snaps the colour buffer (`w` x `h` from the origin).
 pub fn snap_color(gl: &mut dyn Gl, name: &str, w: i32, h: i32) {
     if recording() {

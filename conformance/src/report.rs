@@ -61,6 +61,10 @@ pub fn scene_areas() -> Vec<(&'static str, &'static [Scene])> {
         ("arrays and lists", crate::scenes_arrays::ARRAY_SCENES),
         ("rasterization", crate::scenes_raster::RASTER_SCENES),
         ("teaching examples", crate::scenes_examples::EXAMPLE_SCENES),
+        (
+            "teaching techniques",
+            crate::scenes_techniques::TECHNIQUE_SCENES,
+        ),
         ("state", crate::scenes_state::STATE_SCENES),
         (
             "texture matrix",
@@ -112,7 +116,7 @@ impl Progress {
 }
 
 /// Writes an RGBA picture (rows bottom-up, as `glReadPixels` gives them) as a PNG.
-fn save_png(image: &Image, path: &Path) -> Result<(), String> {
+pub(crate) fn save_png(image: &Image, path: &Path) -> Result<(), String> {
     let (w, h) = (image.width.max(0) as u32, image.height.max(0) as u32);
     let mut top_down = Vec::with_capacity(image.pixels.len());
     for y in (0..image.height).rev() {
@@ -127,7 +131,7 @@ fn save_png(image: &Image, path: &Path) -> Result<(), String> {
 
 /// The difference picture: each pixel's largest channel difference, black where equal, dim red
 /// up to the threshold of 8, bright red to yellow beyond.
-fn difference_image(a: &Image, b: &Image) -> Option<Image> {
+pub(crate) fn difference_image(a: &Image, b: &Image) -> Option<Image> {
     if a.width != b.width || a.height != b.height || a.pixels.len() != b.pixels.len() {
         return None;
     }
@@ -377,7 +381,7 @@ pub fn capture_files(traces: &Path, filter: &str) -> Vec<PathBuf> {
     v
 }
 
-fn esc(s: &str) -> String {
+pub(crate) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")

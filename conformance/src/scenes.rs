@@ -997,6 +997,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         crate::scenes_arrays::ARRAY_SCENES,
         crate::scenes_raster::RASTER_SCENES,
         crate::scenes_examples::EXAMPLE_SCENES,
+        crate::scenes_techniques::TECHNIQUE_SCENES,
         crate::scenes_state::STATE_SCENES,
         crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
         crate::scenes_eval::EVAL_SCENES,

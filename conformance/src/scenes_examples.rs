@@ -11,7 +11,7 @@
 //! open by GL) does not matter.
 
 use crate::compare::Scene;
-use crate::example_support::{snap_color, snap_depth, snap_stencil, snap_texture};
+use crate::example_support::{snap_color, snap_depth, snap_stencil, snap_texture, unit_on};
 use crate::prng::XorShift;
 use crate::tolerance::{Tolerance, DIFFERENTIAL};
 use tilegl::enums::*;
@@ -141,13 +141,13 @@ pub const EXAMPLE_SCENES: &[Scene] = &[
 // ---------------------------------------------------------------------------------------------
 // Helpers: matrices, textures, geometry.
 
-type V3 = [f32; 3];
+pub(crate) type V3 = [f32; 3];
 
-fn sub(a: V3, b: V3) -> V3 {
+pub(crate) fn sub(a: V3, b: V3) -> V3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
-fn cross(a: V3, b: V3) -> V3 {
+pub(crate) fn cross(a: V3, b: V3) -> V3 {
     [
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],
@@ -155,17 +155,17 @@ fn cross(a: V3, b: V3) -> V3 {
     ]
 }
 
-fn dot(a: V3, b: V3) -> f32 {
+pub(crate) fn dot(a: V3, b: V3) -> f32 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn norm(a: V3) -> V3 {
+pub(crate) fn norm(a: V3) -> V3 {
     let l = dot(a, a).sqrt().max(1e-12);
     [a[0] / l, a[1] / l, a[2] / l]
 }
 
 /// `gluLookAt`: multiplies the current matrix by the viewing transform.
-fn look_at(gl: &mut dyn Gl, eye: V3, center: V3, up: V3) {
+pub(crate) fn look_at(gl: &mut dyn Gl, eye: V3, center: V3, up: V3) {
     let f = norm(sub(center, eye));
     let s = norm(cross(f, up));
     let u = cross(s, f);
@@ -176,13 +176,13 @@ fn look_at(gl: &mut dyn Gl, eye: V3, center: V3, up: V3) {
 }
 
 /// `gluPerspective`: multiplies the current matrix by a perspective projection.
-fn perspective(gl: &mut dyn Gl, fovy: f64, aspect: f64, near: f64, far: f64) {
+pub(crate) fn perspective(gl: &mut dyn Gl, fovy: f64, aspect: f64, near: f64, far: f64) {
     let top = near * (fovy.to_radians() / 2.0).tan();
     gl.frustum(-top * aspect, top * aspect, -top, top, near, far);
 }
 
 /// Projection and modelview for a camera at `eye` looking at `center` (y up).
-fn camera(gl: &mut dyn Gl, fovy: f64, aspect: f64, eye: V3, center: V3) {
+pub(crate) fn camera(gl: &mut dyn Gl, fovy: f64, aspect: f64, eye: V3, center: V3) {
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
     perspective(gl, fovy, aspect, 0.5, 30.0);
@@ -191,7 +191,7 @@ fn camera(gl: &mut dyn Gl, fovy: f64, aspect: f64, eye: V3, center: V3) {
     look_at(gl, eye, center, [0.0, 1.0, 0.0]);
 }
 
-fn clear_to(gl: &mut dyn Gl, c: [f32; 3]) {
+pub(crate) fn clear_to(gl: &mut dyn Gl, c: [f32; 3]) {
     gl.clear_color(c[0], c[1], c[2], 1.0);
     gl.clear_depth(1.0);
     gl.clear_stencil(0);
@@ -200,7 +200,7 @@ fn clear_to(gl: &mut dyn Gl, c: [f32; 3]) {
 
 /// A new 2D texture object with `GL_GENERATE_MIPMAP` on (so every level exists whatever the
 /// filter), bound to the active unit. `format` is also the internal format.
-fn tex2d(gl: &mut dyn Gl, w: i32, h: i32, format: GLenum, px: &[u8]) -> u32 {
+pub(crate) fn tex2d(gl: &mut dyn Gl, w: i32, h: i32, format: GLenum, px: &[u8]) -> u32 {
     let mut name = [0u32];
     gl.gen_textures(1, &mut name);
     gl.bind_texture(GL_TEXTURE_2D, name[0]);
@@ -221,7 +221,7 @@ fn tex2d(gl: &mut dyn Gl, w: i32, h: i32, format: GLenum, px: &[u8]) -> u32 {
 }
 
 /// Filters and wrap mode (S, T and R) of the texture bound to `target`.
-fn sampling(gl: &mut dyn Gl, target: GLenum, min: GLenum, mag: GLenum, wrap: GLenum) {
+pub(crate) fn sampling(gl: &mut dyn Gl, target: GLenum, min: GLenum, mag: GLenum, wrap: GLenum) {
     gl.tex_parameteri(target, GL_TEXTURE_MIN_FILTER, min as i32);
     gl.tex_parameteri(target, GL_TEXTURE_MAG_FILTER, mag as i32);
     gl.tex_parameteri(target, GL_TEXTURE_WRAP_S, wrap as i32);
@@ -229,12 +229,17 @@ fn sampling(gl: &mut dyn Gl, target: GLenum, min: GLenum, mag: GLenum, wrap: GLe
     gl.tex_parameteri(target, GL_TEXTURE_WRAP_R, wrap as i32);
 }
 
-fn to_u8(v: f32) -> u8 {
+pub(crate) fn to_u8(v: f32) -> u8 {
     (v.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 
 /// An RGB(A) picture from a function of the texel centre (u, v in 0..1).
-fn paint(w: usize, h: usize, channels: usize, f: impl Fn(f32, f32) -> [f32; 4]) -> Vec<u8> {
+pub(crate) fn paint(
+    w: usize,
+    h: usize,
+    channels: usize,
+    f: impl Fn(f32, f32) -> [f32; 4],
+) -> Vec<u8> {
     let mut p = Vec::with_capacity(w * h * channels);
     for y in 0..h {
         for x in 0..w {
@@ -246,7 +251,7 @@ fn paint(w: usize, h: usize, channels: usize, f: impl Fn(f32, f32) -> [f32; 4]) 
 }
 
 /// Bricks: 4 rows of 2 bricks per tile, mortar lines, a per-brick tint.
-fn bricks(size: usize) -> Vec<u8> {
+pub(crate) fn bricks(size: usize) -> Vec<u8> {
     paint(size, size, 3, |u, v| {
         let row = (v * 4.0).floor();
         let uu = u * 2.0 + if row as i32 % 2 == 1 { 0.5 } else { 0.0 };
@@ -268,7 +273,7 @@ fn bump_height(u: f32, v: f32) -> f32 {
 
 /// A triangulated grid over (u, v) in [0, 1]^2: `n` x `n` cells as triangle strips; `vert`
 /// issues each vertex's attributes and position.
-fn grid(gl: &mut dyn Gl, n: usize, vert: &dyn Fn(&mut dyn Gl, f32, f32)) {
+pub(crate) fn grid(gl: &mut dyn Gl, n: usize, vert: &dyn Fn(&mut dyn Gl, f32, f32)) {
     for j in 0..n {
         gl.begin(GL_TRIANGLE_STRIP);
         for i in 0..=n {
@@ -281,7 +286,7 @@ fn grid(gl: &mut dyn Gl, n: usize, vert: &dyn Fn(&mut dyn Gl, f32, f32)) {
 }
 
 /// A torus around the y axis with normals (and 2D texture coordinates u, v).
-fn torus(gl: &mut dyn Gl, big: f32, small: f32, nu: usize, nv: usize) {
+pub(crate) fn torus(gl: &mut dyn Gl, big: f32, small: f32, nu: usize, nv: usize) {
     use std::f32::consts::TAU;
     for i in 0..nu {
         gl.begin(GL_TRIANGLE_STRIP);
@@ -300,7 +305,7 @@ fn torus(gl: &mut dyn Gl, big: f32, small: f32, nu: usize, nv: usize) {
 }
 
 /// An axis-aligned box as triangles with face normals.
-fn cuboid(gl: &mut dyn Gl, c: V3, h: V3) {
+pub(crate) fn cuboid(gl: &mut dyn Gl, c: V3, h: V3) {
     let faces: [(V3, V3, V3); 6] = [
         ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
         ([-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]),
@@ -336,14 +341,14 @@ fn cuboid(gl: &mut dyn Gl, c: V3, h: V3) {
 }
 
 /// Light 0 at `pos` (w = 0: directional), white, with a default grey material.
-fn lamp(gl: &mut dyn Gl, pos: [f32; 4]) {
+pub(crate) fn lamp(gl: &mut dyn Gl, pos: [f32; 4]) {
     gl.enable(GL_LIGHTING);
     gl.enable(GL_LIGHT0);
     gl.lightfv(GL_LIGHT0, GL_POSITION, &pos);
     gl.light_modelfv(GL_LIGHT_MODEL_AMBIENT, &[0.25, 0.25, 0.25, 1.0]);
 }
 
-fn material(gl: &mut dyn Gl, diffuse: [f32; 4], specular: f32, shininess: f32) {
+pub(crate) fn material(gl: &mut dyn Gl, diffuse: [f32; 4], specular: f32, shininess: f32) {
     gl.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, &diffuse);
     gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &diffuse);
     gl.materialfv(
@@ -357,7 +362,7 @@ fn material(gl: &mut dyn Gl, diffuse: [f32; 4], specular: f32, shininess: f32) {
 /// A textured quad in the plane y = 0 over x in [x0, x1], z in [z0, z1] (z1 nearer), with
 /// texture coordinates (0, 0)..(s, t) on each listed unit. Texture coordinates are affine in
 /// position, so any split of the quad gives the same picture.
-fn floor_quad(gl: &mut dyn Gl, x: [f32; 2], z: [f32; 2], st: &[(GLenum, f32, f32)]) {
+pub(crate) fn floor_quad(gl: &mut dyn Gl, x: [f32; 2], z: [f32; 2], st: &[(GLenum, f32, f32)]) {
     gl.normal_3f(0.0, 1.0, 0.0);
     gl.begin(GL_QUADS);
     for (u, v) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
@@ -635,7 +640,9 @@ fn ex_lightmap_multitexture(gl: &mut dyn Gl) {
     let l = light_map(32);
     tex2d(gl, 32, 32, GL_RGB, &l);
     sampling(gl, GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
-    gl.enable(GL_TEXTURE_2D);
+    if unit_on(1) {
+        gl.enable(GL_TEXTURE_2D);
+    }
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
     snap_texture(gl, "light_map", GL_TEXTURE_2D, 0, [32, 32, 1]);
     gl.active_texture(GL_TEXTURE0);
@@ -1770,7 +1777,9 @@ fn ex_decal(gl: &mut dyn Gl) {
     );
     snap_texture(gl, "decal_texture", GL_TEXTURE_2D, 0, [32, 32, 1]);
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL as i32);
-    gl.enable(GL_TEXTURE_2D);
+    if unit_on(1) {
+        gl.enable(GL_TEXTURE_2D);
+    }
     gl.matrix_mode(GL_TEXTURE);
     gl.translatef(0.5, 0.5, 0.0);
     gl.rotatef(20.0, 0.0, 0.0, 1.0);

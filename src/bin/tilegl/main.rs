@@ -1,10 +1,12 @@
 //! The `tilegl` command line.
 //!
-//! With no subcommand (`cargo run --release`) it renders the built-in scenes into `out/` and
-//! prints, for each, the PNG's path and how long it took. `tilegl gallery DIR` does the same
-//! into `DIR`. `run -- PROGRAM ARGS` runs an X11 GL program on tilegl's libGL.so.1.
-//! `replay`, `dump`, `conformance` and `bench` are the interfaces promised in DESIGN.md;
-//! `conformance` and `bench` point to the tilegl-conformance crate and exit with status 3.
+//! With no subcommand (`cargo run --release`) it writes the teaching gallery into
+//! `out/index.html` (every teaching scene and the built-in scenes on tilegl and on Mesa, with
+//! the difference, the stages and the text, by the conformance crate's `gallery` tool);
+//! `tilegl gallery DIR` does the same into `DIR`, `--tilegl-only` renders the built-in scenes
+//! alone as PNGs. `run -- PROGRAM ARGS` runs an X11 GL program on tilegl's libGL.so.1.
+//! `replay` and `dump` play and convert captures; `conformance` and `bench` run the
+//! tilegl-conformance crate's tools.
 
 mod run;
 mod scenes;
@@ -26,8 +28,8 @@ const NOT_AVAILABLE: u8 = 3;
     version,
     about = "An OpenGL 1.5 fixed-function driver emulated by a tile-based software rasterizer",
     long_about = "An OpenGL 1.5 fixed-function driver emulated by a tile-based software \
-                  rasterizer.\n\nWithout a subcommand, renders the built-in scenes into out/ \
-                  (the same as `tilegl gallery out`)."
+                  rasterizer.\n\nWithout a subcommand, writes the teaching gallery into \
+                  out/index.html (the same as `tilegl gallery out`)."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -102,7 +104,9 @@ enum Command {
         )]
         program: Vec<std::ffi::OsString>,
     },
-    /// Render the built-in scenes as PNGs into DIR (default `out`).
+    /// Render the teaching gallery into DIR/index.html (default `out`): every teaching scene
+    /// and the built-in scenes on tilegl and on Mesa, the difference, the stages and the text
+    /// (runs the tilegl-conformance crate's `gallery` tool).
     Gallery {
         /// Output directory.
         #[arg(default_value = "out")]
@@ -110,13 +114,20 @@ enum Command {
         /// Render only these scenes (repeatable); see --list.
         #[arg(long = "scene", value_name = "NAME")]
         scenes: Vec<String>,
-        /// List the built-in scenes and exit.
+        /// Framebuffer size for every scene instead of its own.
+        #[arg(long, value_name = "WxH")]
+        size: Option<String>,
+        /// List the scenes and exit.
         #[arg(long)]
         list: bool,
         /// Worker threads for tile shading (0: one per core). The pictures are identical
         /// for any count.
         #[arg(long, default_value_t = 0)]
         threads: usize,
+        /// Render only the built-in scenes, on tilegl alone, as DIR/NAME.png (no Mesa, no
+        /// conformance crate needed).
+        #[arg(long)]
+        tilegl_only: bool,
     },
 }
 
@@ -161,21 +172,38 @@ fn parse_frames(s: &str) -> Result<Frames, String> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        None => gallery(Path::new("out"), &[], 0),
+        None => conformance_tool("gallery", &["out".to_string()]),
         Some(Command::Gallery {
             dir,
             scenes,
+            size,
             list,
             threads,
+            tilegl_only,
         }) => {
-            if list {
-                for s in scenes::SCENES {
-                    println!("{:<14} {}x{}  {}", s.name, s.width, s.height, s.about);
+            if tilegl_only {
+                if list {
+                    for s in scenes::SCENES {
+                        println!("{:<14} {}x{}  {}", s.name, s.width, s.height, s.about);
+                    }
+                    return ExitCode::SUCCESS;
                 }
-                ExitCode::SUCCESS
-            } else {
-                gallery(&dir, &scenes, threads)
+                return gallery(&dir, &scenes, threads);
             }
+            let mut args = vec![dir.display().to_string()];
+            for s in scenes {
+                args.extend(["--scene".to_string(), s]);
+            }
+            if let Some(size) = size {
+                args.extend(["--size".to_string(), size]);
+            }
+            if threads != 0 {
+                args.extend(["--threads".to_string(), threads.to_string()]);
+            }
+            if list {
+                args.push("--list".to_string());
+            }
+            conformance_tool("gallery", &args)
         }
         Some(Command::Replay {
             file,
@@ -624,5 +652,7 @@ mod tests {
         assert!(parse(&["tilegl", "conformance", "--against", "nvidia"]).is_err());
         assert!(parse(&["tilegl", "bench", "--quick"]).is_ok());
         assert!(parse(&["tilegl", "gallery", "pics", "--scene", "clipping"]).is_ok());
+        assert!(parse(&["tilegl", "gallery", "--scene", "ex_decal", "--size", "64x48"]).is_ok());
+        assert!(parse(&["tilegl", "gallery", "--tilegl-only", "--list"]).is_ok());
     }
 }
