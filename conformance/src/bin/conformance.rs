@@ -20,7 +20,7 @@ fn main() -> ExitCode {
     let mut filter = String::new();
     let mut dir: Option<PathBuf> = None;
     let own = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("traces");
-    let mut traces = vec![own.join("shared"), own];
+    let mut traces = vec![own.join("shared"), own.join("corpus"), own];
     let mut quality = true;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
