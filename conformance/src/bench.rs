@@ -1206,6 +1206,11 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
 /// exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--scaling") {
+        let with_mesa =
+            !args.iter().any(|a| a == "--no-mesa") && crate::mesa::mesa_available().is_ok();
+        return crate::scaling::run(std::path::Path::new("target/bench"), with_mesa);
+    }
     let mut cfg = BenchConfig::default();
     let (child_out, all) = parse_args(&args, &mut cfg);
     if let Some(out) = child_out {

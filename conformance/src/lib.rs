@@ -13,6 +13,7 @@ pub mod mesa;
 pub mod prng;
 pub mod quality;
 pub mod report;
+pub mod scaling;
 pub mod scenes;
 pub mod scenes_arrays;
 pub mod scenes_cascade;

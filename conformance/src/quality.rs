@@ -95,7 +95,7 @@ fn box_down(src: &[u8], size: i32) -> Vec<u8> {
 
 /// Binds a new `size` x `size` checker texture; `box_levels` uploads box-filtered mipmaps,
 /// otherwise GL_GENERATE_MIPMAP makes them.
-fn texture(gl: &mut dyn Gl, size: i32, internal: GLenum, box_levels: bool) {
+pub(crate) fn texture(gl: &mut dyn Gl, size: i32, internal: GLenum, box_levels: bool) {
     let mut name = [0u32];
     gl.gen_textures(1, &mut name);
     gl.bind_texture(GL_TEXTURE_2D, name[0]);
@@ -489,7 +489,7 @@ fn time_frames(
     (times[times.len() / 2], Image::read(gl, size, size))
 }
 
-fn tilegl_context(size: i32, threads: usize) -> Context {
+pub(crate) fn tilegl_context(size: i32, threads: usize) -> Context {
     Context::with_config(ContextConfig {
         width: size,
         height: size,
@@ -586,7 +586,7 @@ pub fn measure(knob: &Knob, min_time: Duration, with_mesa: bool) -> KnobResult {
 /// Where the chart font comes from (Debian package fonts-dejavu-core).
 pub const FONT: &str = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
-fn register_font() -> Result<(), String> {
+pub(crate) fn register_font() -> Result<(), String> {
     use std::sync::OnceLock;
     static DONE: OnceLock<Result<(), String>> = OnceLock::new();
     DONE.get_or_init(|| {
