@@ -58,26 +58,7 @@ captures! {
 
 #[test]
 fn every_own_capture_has_a_test_and_every_known_failure_a_capture() {
-    let mut on_disk: Vec<String> = std::fs::read_dir(traces_dir())
-        .unwrap()
-        .filter_map(|e| {
-            let p = e.unwrap().path();
-            if p.extension()? != "trace" {
-                return None;
-            }
-            Some(p.file_stem()?.to_string_lossy().into_owned())
-        })
-        .collect();
-    on_disk.sort();
-    let mut listed: Vec<String> = ALL.iter().map(|s| s.to_string()).collect();
-    listed.sort();
-    assert_eq!(
-        on_disk, listed,
-        "add a line to captures! for each new capture"
-    );
-    for (name, _) in KNOWN_FAILURES {
-        assert!(ALL.contains(name), "known failure {name} is not a capture");
-    }
+    common::assert_every_capture_listed(&traces_dir(), ALL, KNOWN_FAILURES);
 }
 
 #[test]

@@ -201,3 +201,32 @@ pub fn random_texture(gl: &mut Context, rng: &mut Rng, format: GLenum, w: i32, h
     );
     gl.enable(GL_TEXTURE_2D);
 }
+
+/// Asserts that the captures (`NAME.trace`) in `dir` are exactly `all`, and that every known
+/// failure names one of them.
+pub fn assert_every_capture_listed(
+    dir: &std::path::Path,
+    all: &[&str],
+    known_failures: &[(&str, &str)],
+) {
+    let mut on_disk: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("test input missing: {}: {e}", dir.display()))
+        .filter_map(|e| {
+            let p = e.ok()?.path();
+            if p.extension()? != "trace" {
+                return None;
+            }
+            Some(p.file_stem()?.to_string_lossy().into_owned())
+        })
+        .collect();
+    on_disk.sort();
+    let mut listed: Vec<String> = all.iter().map(|s| s.to_string()).collect();
+    listed.sort();
+    assert_eq!(
+        on_disk, listed,
+        "add a line to captures! for each new capture"
+    );
+    for (name, _) in known_failures {
+        assert!(all.contains(name), "known failure {name} is not a capture");
+    }
+}
