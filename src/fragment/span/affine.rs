@@ -19,7 +19,7 @@ pub(super) struct FastUnit<'a> {
 #[derive(Clone, Copy, Debug)]
 pub struct AffineSpan<'a> {
     /// 1 and the q plane's value (s/q is the s plane divided by 1, then by q; non-zero and
-    /// finite), the form [`simd::coords8`] takes.
+    /// finite), the form [`texture_simd::coords8`] takes.
     pub(super) w: f64,
     pub(super) q: f64,
     /// `b * y` of the s and t planes on the span's row.
@@ -101,7 +101,7 @@ impl<'a> FastUnit<'a> {
             } => (levels, linear, Some(weight)),
         };
         let levels = [tex.fast_level(levels[0])?, tex.fast_level(levels[1])?];
-        let simd = if simd::available() {
+        let simd = if crate::common::cpu::available() {
             let wrap = tex.wrap_st();
             match (
                 Level8::new(&levels[0], wrap, u.base),
@@ -187,13 +187,12 @@ impl<'a> FastUnit<'a> {
             if let Some(levels) = &a.simd {
                 let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
                 let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
-                if let Some([s, t]) = simd::coords8(planes, a.w, a.q, x, count) {
-                    let t1 = simd::filter8(&levels[0], a.linear, &s, &t);
+                if let Some([s, t]) = texture_simd::coords8(planes, a.w, a.q, x, count) {
+                    let t1 = texture_simd::filter8(&levels[0], a.linear, &s, &t);
                     let ct = match (t1, a.weight) {
                         (Some(t1), None) => Some(t1),
-                        (Some(t1), Some(w)) => {
-                            simd::filter8(&levels[1], a.linear, &s, &t).map(|t2| lerp8(&t1, &t2, w))
-                        }
+                        (Some(t1), Some(w)) => texture_simd::filter8(&levels[1], a.linear, &s, &t)
+                            .map(|t2| lerp8(&t1, &t2, w)),
                         _ => None,
                     };
                     if let Some(ct) = ct {

@@ -128,7 +128,7 @@ pub(super) fn environment8(
 ) -> Texels8 {
     #[cfg(target_arch = "x86_64")]
     {
-        if simd::available() {
+        if crate::common::cpu::available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe { environment8_avx2(ds, primary, by_unit) };
         }

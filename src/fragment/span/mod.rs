@@ -24,6 +24,7 @@ use super::blend::{blend, blend_alpha_over};
 use super::key::{FragmentKey, Uniforms};
 use super::texenv::{self, CombineInputs};
 use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
+use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
 use crate::state::snapshot::{attr, FogDraw, TextureUnitDraw};
@@ -31,7 +32,7 @@ use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::texture::simd::{self, lerp8, After8, Level8, Sampling8, Tail8, Texels8};
+use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
 
 mod affine;
 mod coords;
@@ -106,7 +107,7 @@ impl<'a> UnitLevels<'a> {
     pub fn prepare(&mut self, ds: &'a DrawState) {
         self.units.clear();
         self.textured_tail = None;
-        if !ds.key.simd_units || !simd::available() {
+        if !ds.key.simd_units || !crate::common::cpu::available() {
             return;
         }
         if let (Some(layout), Some(unit)) = (ds.key.fast_texture, ds.units.first()) {

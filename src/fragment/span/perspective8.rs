@@ -8,7 +8,7 @@ pub(super) const MAX_FAST_LEVELS: usize = 17;
 
 /// One RGBA8 unit over one row of a perspective span, eight pixels at a time with AVX2: the
 /// s, t and q planes on the pixel's row and on the other row of its 2x2 quads, and the
-/// levels prepared for [`simd::filter8`] (on first use). Texels equal those of [`FastUnit::texel`] (the
+/// levels prepared for [`texture_simd::filter8`] (on first use). Texels equal those of [`FastUnit::texel`] (the
 /// general path): the same coordinates, the same per-quad derivatives, λ and level plan
 /// (computed per quad by the sampler's own functions), the same filter arithmetic.
 pub(super) struct Perspective8<'a> {
@@ -81,7 +81,7 @@ impl<'a> Perspective8<'a> {
     /// matter. False when a coordinate is beyond the filter's range (the caller samples one by
     /// one).
     pub(super) fn texels_into(&mut self, x: f64, live: u8, out: &mut Texels8) -> bool {
-        let Some(rows) = simd::perspective_rows8(&self.planes, x) else {
+        let Some(rows) = texture_simd::perspective_rows8(&self.planes, x) else {
             return false;
         };
         self.texels_at(&rows, live, out).is_some()
@@ -145,7 +145,7 @@ impl<'a> Perspective8<'a> {
     pub(super) fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
         // A 2D texture (or a fixed plan) in one go: the same texels.
         let levels: &[Option<Level8>] = self.levels;
-        if simd::block_texels8(
+        if texture_simd::block_texels8(
             &self.planes,
             x,
             live,
@@ -158,7 +158,7 @@ impl<'a> Perspective8<'a> {
         {
             return true;
         }
-        let Some([vs, vt]) = simd::perspective_block8(&self.planes, x) else {
+        let Some([vs, vt]) = texture_simd::perspective_block8(&self.planes, x) else {
             return false;
         };
         let fix = |v: f64| finite_or_zero(v as f32);
@@ -270,11 +270,11 @@ impl<'a> Perspective8<'a> {
             lanes &= !done;
             done |= lanes;
             let all = done == 0xFF && lanes == live;
-            let t1 = simd::filter8(self.level(d1)?, linear, s, t)?;
+            let t1 = texture_simd::filter8(self.level(d1)?, linear, s, t)?;
             let texels = if d2 == d1 {
                 t1
             } else {
-                let t2 = simd::filter8(self.level(d2)?, linear, s, t)?;
+                let t2 = texture_simd::filter8(self.level(d2)?, linear, s, t)?;
                 let mut mixed = [[0f32; 8]; 4];
                 for c in 0..4 {
                     for j in 0..8 {

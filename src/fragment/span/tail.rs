@@ -351,7 +351,10 @@ pub(super) fn group_depth_max(ds: &DrawState) -> Option<u32> {
 /// general path computes them, then added and blended in the tail): no stencil test, logic op
 /// or occlusion counting, and AVX2 present.
 pub fn tail8_applies(key: &FragmentKey) -> bool {
-    key.stencil.is_none() && key.logic_op.is_none() && !key.count_samples && simd::available()
+    key.stencil.is_none()
+        && key.logic_op.is_none()
+        && !key.count_samples
+        && crate::common::cpu::available()
 }
 
 /// The eight-fragment tail's blending for the draw's key.
