@@ -2,7 +2,7 @@
 
 use super::key::BlendKey;
 use super::span::color_to_u8;
-use crate::api::convert::{BlendEquation, BlendFactor};
+use crate::common::values::{BlendEquation, BlendFactor};
 
 /// The factor for one channel; `alpha` selects the alpha channel's rule.
 #[inline(always)]

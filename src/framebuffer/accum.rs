@@ -4,8 +4,9 @@
 //! nearest; results outside [-1, 1] saturate, which is where the spec leaves overflow
 //! undefined). `glAccum` works immediately on the flushed framebuffer, inside the scissor box.
 
-use crate::api::convert::{self, AccumOp};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::AccumOp;
 use crate::fragment::span::color_to_u8;
 use crate::state::Context;
 

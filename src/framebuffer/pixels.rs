@@ -1,7 +1,8 @@
 //! `glClear` recording and `glReadPixels`.
 
-use crate::api::convert::{self, ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
 use crate::fragment::span::{color_to_u8, depth_to_fixed};
 use crate::raster::scene::{ClearCommand, Command};
 use crate::state::Context;

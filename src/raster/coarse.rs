@@ -10,7 +10,7 @@
 //! then), are computed on first use and forgotten for the blocks a command may write depth to.
 
 use super::setup::{Plane, Rect};
-use crate::api::convert::CompareFunc;
+use crate::common::values::CompareFunc;
 use crate::fragment::key::FragmentKey;
 use crate::fragment::span::depth_to_fixed;
 use crate::framebuffer::{Tile, TILE};

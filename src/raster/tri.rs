@@ -270,7 +270,7 @@ fn stippled_row<'a>(
 
 use super::scene::{Command, Scene};
 use super::setup::{centre_range, PlaneSetup, Rect};
-use crate::api::convert::PolygonMode;
+use crate::common::values::PolygonMode;
 use crate::primitive::cull::triangle_area2;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};

@@ -10,11 +10,12 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert::{
-    self, CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery,
-    PixelTransferParam, TexPixelFormat, TexPixelType,
-};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{
+    CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery, PixelTransferParam,
+    TexPixelFormat, TexPixelType,
+};
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::primitive::clip::point_visible;
 use crate::raster::setup::Plane;

@@ -7,8 +7,8 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
-use crate::api::convert::{FogMode, TexEnvMode, TexGenMode};
+use crate::common::values::{Face, PolygonMode, ShadeModel, Winding};
+use crate::common::values::{FogMode, TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
 use crate::fragment::span::{PairFn, SpanFn};

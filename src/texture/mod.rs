@@ -22,7 +22,7 @@ pub mod simd;
 
 use std::collections::{HashMap, HashSet};
 
-use crate::api::convert::TextureTarget;
+use crate::common::values::TextureTarget;
 use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 
 pub use format::{BaseFormat, InternalFormat, S3tcFormat};

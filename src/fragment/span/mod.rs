@@ -23,7 +23,7 @@ use std::cell::Cell;
 use super::blend::{blend, blend_alpha_over};
 use super::key::{FragmentKey, Uniforms};
 use super::texenv::{self, CombineInputs};
-use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
+use crate::common::values::{CompareFunc, StencilOp, TexEnvMode};
 use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
