@@ -32,7 +32,6 @@ const UPWARD_EDGES: &[(&str, &str)] = &[
     ("fragment", "raster"),
     ("fragment", "state"),
     ("framebuffer", "api"),
-    ("framebuffer", "fragment"),
     ("framebuffer", "raster"),
     ("framebuffer", "state"),
     ("framebuffer", "texture"),

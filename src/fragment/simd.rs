@@ -592,7 +592,7 @@ mod x86 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fragment::span::depth_to_fixed;
+    use crate::common::fixed::depth_to_fixed;
     use crate::state::snapshot::{fog_exp, FogDraw};
 
     /// `fog_factors8` gives `FogDraw::factor`'s values bit for bit, for every mode, several

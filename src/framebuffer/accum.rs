@@ -6,8 +6,8 @@
 
 use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::fixed::color_to_u8;
 use crate::common::values::AccumOp;
-use crate::fragment::span::color_to_u8;
 use crate::state::Context;
 
 /// Scale of the fixed-point accumulation values.

@@ -9,8 +9,8 @@ use glam::{Vec3, Vec4};
 
 use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::limits;
 use crate::common::values::PrimitiveMode;
-use crate::state::tables::limits;
 use crate::state::Context;
 use crate::vertex::lighting::{LitLanes, VertexLanes};
 
