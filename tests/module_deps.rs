@@ -31,17 +31,12 @@ const RANKS: &[(&str, u32)] = &[
 const UPWARD_EDGES: &[(&str, &str)] = &[
     ("fragment", "raster"),
     ("fragment", "state"),
-    ("framebuffer", "api"),
-    ("framebuffer", "raster"),
-    ("framebuffer", "state"),
-    ("framebuffer", "texture"),
     ("primitive", "state"),
     ("raster", "primitive"),
     ("raster", "state"),
     ("state", "api"),
     ("state", "capi"),
     ("texture", "state"),
-    ("vertex", "api"),
     ("vertex", "state"),
 ];
 
