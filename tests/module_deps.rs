@@ -29,14 +29,11 @@ const RANKS: &[(&str, u32)] = &[
 
 /// Upward edges that exist today (from, to). Remove an entry when its edge is gone.
 const UPWARD_EDGES: &[(&str, &str)] = &[
-    ("fragment", "raster"),
     ("fragment", "state"),
     ("primitive", "state"),
-    ("raster", "primitive"),
     ("raster", "state"),
     ("state", "api"),
     ("state", "capi"),
-    ("texture", "state"),
     ("vertex", "state"),
 ];
 

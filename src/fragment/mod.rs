@@ -4,6 +4,7 @@
 pub mod blend;
 pub mod cache;
 pub mod key;
+pub mod plane;
 pub mod simd;
 pub mod span;
 pub mod texenv;

@@ -11,10 +11,10 @@ use glam::DVec4;
 
 use super::scene::{Command, RectCommand, Scene};
 use super::setup::Plane;
+use super::setup::WindowVertex;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::common::rect::Rect;
-use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::RasterDraw;
 use crate::state::DrawState;
 
