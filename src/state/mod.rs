@@ -13,6 +13,7 @@ pub mod clear_read;
 pub mod color_buffers;
 pub mod draw;
 pub mod fog;
+mod fragment_key;
 pub mod get;
 pub mod immediate;
 pub mod lighting;
