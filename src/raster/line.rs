@@ -17,10 +17,10 @@
 
 use super::point::{add_constant_planes, bin_rect, emit_rect};
 use super::setup::WindowVertex;
+use crate::common::attr::MAX_ATTRS;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::raster::scene::Scene;
-use crate::state::snapshot::MAX_ATTRS;
 use crate::state::DrawState;
 
 /// Whether the stipple lets fragment number `counter` through.

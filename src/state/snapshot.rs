@@ -21,55 +21,7 @@ use crate::texture::sample::{BoundTexture, LevelPlan, LodSelect};
 use crate::vertex::lighting::NormalTransform;
 use crate::vertex::texgen::GenCoord;
 
-/// Attribute layout of a vertex after the vertex stage. Rasterization interpolates the first
-/// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
-/// for back-facing polygons under two-sided lighting.
-pub mod attr {
-    use crate::common::limits::MAX_TEXTURE_UNITS;
-    /// Primary colour RGBA.
-    pub const COLOR0: usize = 0;
-    /// Fog coordinate (right after the primary colour, so that a fogged draw without colour
-    /// sum or texturing interpolates 5 attributes rather than 9 or 41).
-    pub const FOG: usize = 4;
-    /// Secondary colour RGBA.
-    pub const COLOR1: usize = FOG + 1;
-    /// How many attributes the two colours take.
-    pub const COLORS: usize = 8;
-    /// Texture coordinates (s, t, r, q) per unit.
-    pub const TEX: usize = COLOR1 + 4;
-    /// Back-face primary and secondary colours (8, in that order).
-    pub const BACK: usize = TEX + 4 * MAX_TEXTURE_UNITS;
-    /// All attributes.
-    pub const COUNT: usize = BACK + COLORS;
-
-    /// Whether attribute `i` is a component of the primary or the secondary colour.
-    #[inline]
-    pub fn is_color(i: usize) -> bool {
-        (COLOR0..COLOR0 + 4).contains(&i) || (COLOR1..COLOR1 + 4).contains(&i)
-    }
-
-    /// The attribute of component `c` (0..8) of the two colours, primary then secondary.
-    #[inline]
-    pub fn color(c: usize) -> usize {
-        if c < 4 {
-            COLOR0 + c
-        } else {
-            COLOR1 + c - 4
-        }
-    }
-
-    /// Copies the two colours (primary and secondary) of `from` into `to`.
-    #[inline]
-    pub fn copy_colors(to: &mut [f32], from: &[f32]) {
-        for c in 0..COLORS {
-            to[color(c)] = from[color(c)];
-        }
-    }
-}
-/// Number of interpolated colour attributes (primary RGBA).
-pub const COLOR_ATTRS: usize = 4;
-/// The most attributes a vertex can carry.
-pub const MAX_ATTRS: usize = attr::COUNT;
+pub use crate::common::attr::{self, COLOR_ATTRS, MAX_ATTRS};
 
 /// One texture unit that takes part in a draw: it has an enabled, complete texture.
 #[derive(Clone, Debug)]
@@ -89,62 +41,7 @@ pub struct TextureUnitDraw {
     pub fixed_plan: Option<(usize, bool)>,
 }
 
-/// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).
-#[derive(Clone, Debug, PartialEq)]
-pub struct RasterDraw {
-    /// `glPointSize`, before attenuation and clamping.
-    pub point_size: f32,
-    pub point_smooth: bool,
-    /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
-    pub point_attenuation: Option<[f32; 3]>,
-    /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.
-    pub point_size_range: [f32; 2],
-    pub line_width: f32,
-    pub line_smooth: bool,
-    /// Repeat factor and pattern, when stippling is enabled.
-    pub line_stipple: Option<(u32, u16)>,
-    /// Front, back.
-    pub polygon_mode: [PolygonMode; 2],
-    /// Depth offset (factor, units in resolvable steps) and where it applies (fill, line,
-    /// point); `None` when no mode enables it.
-    pub offset: Option<PolygonOffsetDraw>,
-    /// Rows bottom first; bit `1 << (31 - x % 32)` of row `y % 32`. `None` when disabled.
-    pub polygon_stipple: Option<[u32; 32]>,
-    /// `GL_POLYGON_SMOOTH`: filled polygons take their coverage into the alpha.
-    pub polygon_smooth: bool,
-}
-
-/// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
-/// resolvable depth difference (one step of the fixed-point depth buffer).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PolygonOffsetDraw {
-    pub factor: f64,
-    pub units: f64,
-    /// Enabled for fill, line, point polygon modes.
-    pub enabled: [bool; 3],
-}
-
-impl PolygonOffsetDraw {
-    /// The window-z offset for a polygon whose depth plane has slopes `dzdx`, `dzdy`
-    /// (section 3.5.5: m is the maximum of their magnitudes), when `mode` is enabled.
-    pub fn for_plane(&self, mode: PolygonMode, dzdx: f64, dzdy: f64, depth_max: u32) -> f64 {
-        let on = match mode {
-            PolygonMode::Fill => self.enabled[0],
-            PolygonMode::Line => self.enabled[1],
-            PolygonMode::Point => self.enabled[2],
-        };
-        if !on {
-            return 0.0;
-        }
-        let m = dzdx.abs().max(dzdy.abs());
-        let o = self.factor * m + self.units / depth_max.max(1) as f64;
-        if o.is_finite() {
-            o
-        } else {
-            0.0
-        }
-    }
-}
+pub use crate::raster::controls::{PolygonOffsetDraw, RasterDraw};
 
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]

@@ -6,8 +6,8 @@ pub mod lighting;
 pub mod texgen;
 pub mod transform;
 
+use crate::common::attr::{self, MAX_ATTRS};
 use crate::primitive::clip::ClipVertex;
-use crate::state::snapshot::{attr, MAX_ATTRS};
 use crate::state::DrawState;
 
 /// Batches at least this large are transformed in parallel (below, the hand-off costs more
