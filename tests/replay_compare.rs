@@ -22,11 +22,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
          GL_INVALID_ENUM and the sprites are not textured (21 % of the pixels off)",
     ),
     (
-        "piglit-bgra-sec-color-pointer",
-        "GL_BGRA as the size of glSecondaryColorPointer (ARB_vertex_array_bgra) is refused \
-         with GL_INVALID_VALUE, so the secondary colours are missing (4.2 % off)",
-    ),
-    (
         "piglit-gl-1.0-rendermode-feedback",
         "the reference shows only the clear colour (green): in GL_FEEDBACK mode nothing is \
          drawn, so the picture cannot check the replay",

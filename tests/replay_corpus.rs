@@ -25,10 +25,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
         "a MAP1_VERTEX_3 evaluator line strip compiled into a display list: call 110 has 0.229 % of the pixels off (allowed 0.1 %)",
     ),
     (
-        "piglit-gl-1.0-long-line-loop",
-        "a long GL_LINE_LOOP from vertex arrays with ONE/ONE blending: calls 464 and 485 have 0.107 % and 0.111 % of the pixels off (allowed 0.1 %; call 443: 0.090 %, within)",
-    ),
-    (
         "piglit-gl-1.0-scissor-bitmap",
         "glBitmap under SCISSOR_TEST: call 62 has 1.336 % of the pixels off (allowed 0.1 %)",
     ),
@@ -51,10 +47,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
         "piglit-provoking-vertex",
         "glProvokingVertex (EXT_provoking_vertex) is not implemented (unknown call, not replayed): flat-shaded triangles take the last vertex's colour where Mesa takes the first: call 382 has 1.04 % of the pixels off (allowed 0.167 %)",
-    ),
-    (
-        "piglit-triangle-rasterization-overdraw",
-        "triangle fans blended with ONE_MINUS_DST_COLOR/ZERO to find pixels drawn twice or never (fill rule on shared edges): calls 534, 558, 582 each have 2.96 % of the pixels off (allowed 0.1 %)",
     ),
     (
         "xss-atunnel",

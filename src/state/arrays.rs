@@ -86,8 +86,17 @@ impl ArrayPointer {
         }
     }
 
+    /// Components stored per element: `size`, or 4 for `GL_BGRA` (ARB_vertex_array_bgra).
+    fn components(&self) -> usize {
+        if self.size == GL_BGRA as i32 {
+            4
+        } else {
+            self.size as usize
+        }
+    }
+
     fn element_bytes(&self) -> usize {
-        self.size as usize * self.ty.size()
+        self.components() * self.ty.size()
     }
 
     fn effective_stride(&self) -> usize {
@@ -246,8 +255,12 @@ fn component(b: &[u8], off: usize, ty: ArrayType, normalize: bool) -> f32 {
 fn element(b: &[u8], a: &ArrayPointer, i: u32, normalize: bool, default: Vec4) -> Vec4 {
     let base = (i as usize).saturating_mul(a.effective_stride());
     let mut v = default.to_array();
-    for (c, out) in v.iter_mut().enumerate().take(a.size as usize) {
+    for (c, out) in v.iter_mut().enumerate().take(a.components()) {
         *out = component(b, base.saturating_add(c * a.ty.size()), a.ty, normalize);
+    }
+    if a.size == GL_BGRA as i32 {
+        // Stored blue, green, red, alpha.
+        v.swap(0, 2);
     }
     Vec4::from_array(v)
 }
@@ -355,6 +368,16 @@ impl Context {
         self.set_pointer(ClientArray::Normal, 3, &[3], type_, &types, stride, pointer);
     }
 
+    /// `GL_BGRA` as the size of a colour array (ARB_vertex_array_bgra, Mesa offers it): only
+    /// with `GL_UNSIGNED_BYTE`, INVALID_OPERATION otherwise. Whether the call may go on.
+    fn bgra_type_ok(&mut self, size: GLint, type_: GLenum) -> bool {
+        let ok = size != GL_BGRA as i32 || type_ == GL_UNSIGNED_BYTE;
+        if !ok {
+            self.record_error(GL_INVALID_OPERATION);
+        }
+        ok
+    }
+
     pub(crate) fn color_pointer(
         &mut self,
         size: GLint,
@@ -362,11 +385,14 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
+        if !self.bgra_type_ok(size, type_) {
+            return;
+        }
         let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::Color,
             size,
-            &[3, 4],
+            &[3, 4, GL_BGRA as i32],
             type_,
             &types,
             stride,
@@ -381,11 +407,14 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
+        if !self.bgra_type_ok(size, type_) {
+            return;
+        }
         let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::SecondaryColor,
             size,
-            &[3],
+            &[3, GL_BGRA as i32],
             type_,
             &types,
             stride,
