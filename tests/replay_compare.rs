@@ -17,11 +17,6 @@ mod common;
 /// shows only the clear colour, which fails the comparison whatever the replay draws).
 const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
-        "piglit-arb_point_sprite-checkerboard",
-        "ARB_point_sprite is not implemented: glEnable(GL_POINT_SPRITE) raises \
-         GL_INVALID_ENUM and the sprites are not textured (21 % of the pixels off)",
-    ),
-    (
         "piglit-gl-1.0-rendermode-feedback",
         "the reference shows only the clear colour (green): in GL_FEEDBACK mode nothing is \
          drawn, so the picture cannot check the replay",

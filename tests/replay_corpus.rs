@@ -17,10 +17,6 @@ mod common;
 /// more than 8 in each failing picture) and what the capture exercises.
 const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
-        "piglit-arb_point_sprite-mipmap",
-        "ARB_point_sprite is not implemented: glEnable(GL_POINT_SPRITE), glTexEnvf(GL_COORD_REPLACE) and glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN) raise GL_INVALID_ENUM, so the mipmapped sprites are not textured: calls 7154, 7199, 7244 have 16.9 %, 17.8 %, 18.8 % of the pixels off (allowed 0.1 %)",
-    ),
-    (
         "piglit-dlist-fdo31590",
         "a MAP1_VERTEX_3 evaluator line strip compiled into a display list: call 110 has 0.229 % of the pixels off (allowed 0.1 %)",
     ),

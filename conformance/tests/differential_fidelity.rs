@@ -24,6 +24,7 @@ differential!(
     tube_sphere_map_linear_fog,
     aniso_horizon,
     lit_after_arrays,
+    point_sprites,
 );
 
 #[test]

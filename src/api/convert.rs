@@ -256,6 +256,8 @@ pub enum Capability {
     TexGen(usize),
     Fog,
     PointSmooth,
+    /// `GL_POINT_SPRITE` (ARB_point_sprite).
+    PointSprite,
     LineSmooth,
     PolygonSmooth,
     LineStipple,
@@ -294,6 +296,7 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_COLOR_SUM => Capability::ColorSum,
         GL_FOG => Capability::Fog,
         GL_POINT_SMOOTH => Capability::PointSmooth,
+        GL_POINT_SPRITE => Capability::PointSprite,
         GL_LINE_SMOOTH => Capability::LineSmooth,
         GL_POLYGON_SMOOTH => Capability::PolygonSmooth,
         GL_LINE_STIPPLE => Capability::LineStipple,
@@ -1499,6 +1502,8 @@ pub enum PointParam {
     SizeMax,
     FadeThresholdSize,
     DistanceAttenuation,
+    /// `GL_POINT_SPRITE_COORD_ORIGIN` (GL 2.0; Mesa takes it with ARB_point_sprite).
+    SpriteCoordOrigin,
 }
 
 pub fn point_param(e: GLenum) -> Option<PointParam> {
@@ -1507,6 +1512,7 @@ pub fn point_param(e: GLenum) -> Option<PointParam> {
         GL_POINT_SIZE_MAX => PointParam::SizeMax,
         GL_POINT_FADE_THRESHOLD_SIZE => PointParam::FadeThresholdSize,
         GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
+        GL_POINT_SPRITE_COORD_ORIGIN => PointParam::SpriteCoordOrigin,
         _ => return None,
     })
 }

@@ -62,7 +62,7 @@ impl Default for ContextConfig {
 
 /// `GL_EXTENSIONS`: the extensions whose functionality is implemented and tested (most were
 /// folded into OpenGL 1.2-1.5 and are listed for programs that look for the old names).
-pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters \
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters GL_ARB_point_sprite \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
@@ -417,6 +417,7 @@ impl Context {
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled = on,
             Capability::Fog => self.fog.enabled = on,
             Capability::PointSmooth => self.raster.point_smooth = on,
+            Capability::PointSprite => self.raster.point_sprite = on,
             Capability::LineSmooth => self.raster.line_smooth = on,
             Capability::PolygonSmooth => self.raster.polygon_smooth = on,
             Capability::LineStipple => self.raster.line_stipple = on,
@@ -473,6 +474,7 @@ impl Context {
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled,
             Capability::Fog => self.fog.enabled,
             Capability::PointSmooth => self.raster.point_smooth,
+            Capability::PointSprite => self.raster.point_sprite,
             Capability::LineSmooth => self.raster.line_smooth,
             Capability::PolygonSmooth => self.raster.polygon_smooth,
             Capability::LineStipple => self.raster.line_stipple,

@@ -161,6 +161,9 @@ pub struct RasterDraw {
     /// `glPointSize`, before attenuation and clamping.
     pub point_size: f32,
     pub point_smooth: bool,
+    /// `GL_POINT_SPRITE` on: the units whose texture coordinates the sprite replaces (bit per
+    /// unit) and whether t runs down from the top (`GL_UPPER_LEFT`).
+    pub point_sprite: Option<(u32, bool)>,
     /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
     pub point_attenuation: Option<[f32; 3]>,
     /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.
@@ -458,6 +461,9 @@ impl Context {
         RasterDraw {
             point_size: r.point_size,
             point_smooth: r.point_smooth,
+            point_sprite: r
+                .point_sprite
+                .then_some((r.point_sprite_coord_replace, r.point_sprite_upper_left)),
             point_attenuation: (r.point_attenuation != [1.0, 0.0, 0.0])
                 .then_some(r.point_attenuation),
             point_size_range: [r.point_size_min, r.point_size_max],
