@@ -46,6 +46,7 @@ pub const FIDELITY_SCENES: &[Scene] = &[
     scene_with("aniso_horizon", aniso_horizon, spread(0.00977)),
     scene("lit_after_arrays", lit_after_arrays),
     scene("point_sprites", point_sprites),
+    scene("smooth_line_joints", smooth_line_joints),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -677,4 +678,32 @@ fn point_sprites(gl: &mut dyn Gl) {
     gl.multi_tex_coord_2f(GL_TEXTURE1, 0.75, 0.5);
     sprite(gl, 12.0, 54.0, 10.0);
     gl.active_texture(GL_TEXTURE0);
+}
+
+/// Antialiased lines of width 2 drawn as separate GL_LINES segments a few pixels long that
+/// meet end to end, depth-tested (a far grid line of xscreensaver's vigilance, a known failure
+/// of the shared captures): each segment's coverage reaches half a pixel past its ends, so
+/// with blending the joints are covered twice, on Mesa and on tilegl.
+fn smooth_line_joints(gl: &mut dyn Gl) {
+    black_pixel_space(gl);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.hint(GL_LINE_SMOOTH_HINT, GL_NICEST);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.line_width(2.0);
+    gl.color_3f(0.1, 0.9, 0.2);
+    // The depth test on, as in the hack: the second segment at a joint has the first's depth
+    // there.
+    gl.enable(GL_DEPTH_TEST);
+    for (row, step) in [(0, 3.7f32), (1, 2.3), (2, 5.1), (3, 1.6)] {
+        gl.begin(GL_LINES);
+        let y0 = 8.0 + 15.0 * row as f32;
+        let mut x = 1.3f32;
+        while x + step < 63.0 {
+            gl.vertex_3f(x, y0 + x * 0.07, 0.9 - x / 40.0);
+            gl.vertex_3f(x + step, y0 + (x + step) * 0.07, 0.9 - (x + step) / 40.0);
+            x += step;
+        }
+        gl.end();
+    }
 }
