@@ -45,22 +45,6 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
         "glProvokingVertex (EXT_provoking_vertex) is not implemented (unknown call, not replayed): flat-shaded triangles take the last vertex's colour where Mesa takes the first: call 382 has 1.04 % of the pixels off (allowed 0.167 %)",
     ),
     (
-        "xss-atunnel",
-        "a lit, textured tunnel with EXP fog: frames 17, 18, 19 have 2.6 %, 3.9 %, 4.5 % of the pixels off by up to 57 (allowed 0.1 %). Not the fog: the differences are the far, strongly minified part of the tunnel, whose 64- and 128-texel textures have no mipmaps (MIN_FILTER LINEAR), so each pixel samples one texel out of many and the picture there follows the last bits of the interpolated texture coordinates (llvmpipe vs softpipe: 0.000 %)",
-    ),
-    (
-        "xss-blocktube",
-        "sphere-map texgen with LINEAR fog on textured quads (the class issue 24 lists): frames 9, 10, 11 have 4.5 %, 4.6 %, 4.7 % of the pixels off by up to 89 (allowed 0.1 %)",
-    ),
-    (
-        "xss-pulsar",
-        "blended (SRC_ALPHA/ONE_MINUS_SRC_ALPHA) overlapping quads from display lists: frames 17, 18, 19 have 3.9 %, 4.1 %, 4.6 % of the pixels off (allowed 0.1 %)",
-    ),
-    (
-        "xss-razzledazzle",
-        "flat-shaded triangles and quads from display lists and vertex arrays with NORMALIZE: frames 5, 6, 7 have 0.59 %, 0.60 %, 0.59 % of the pixels off (allowed 0.1 %)",
-    ),
-    (
         "xss-starwars",
         "smooth points and lines with alpha test and textured text (blended): frames 17, 18, 19 have 0.37 %, 0.38 %, 0.38 % of the pixels off (allowed 0.1 %)",
     ),

@@ -47,6 +47,7 @@ pub const FIDELITY_SCENES: &[Scene] = &[
     scene("lit_after_arrays", lit_after_arrays),
     scene("point_sprites", point_sprites),
     scene("smooth_line_joints", smooth_line_joints),
+    scene("quad_splits", quad_splits),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -706,4 +707,45 @@ fn smooth_line_joints(gl: &mut dyn Gl) {
         }
         gl.end();
     }
+}
+
+/// Smooth quads whose corner colours are not affine, so the diagonal a quad is split along
+/// shows: drawn directly inside the view volume (Mesa splits at vertices 0-2), with a vertex
+/// outside it (the batch goes through Mesa's clipper, which splits at 1-3), and from a display
+/// list (compiled into triangles split at 1-3); non-convex quads likewise.
+fn quad_splits(gl: &mut dyn Gl) {
+    black_pixel_space(gl);
+    let quad = |gl: &mut dyn Gl, x: f32, y: f32, far: f32| {
+        gl.begin(GL_QUADS);
+        gl.color_3f(1.0, 0.0, 0.0);
+        gl.vertex_2f(x + 2.0, y + 2.0);
+        gl.color_3f(0.0, 1.0, 0.0);
+        gl.vertex_2f(x + 18.0, y + 4.0);
+        gl.color_3f(0.0, 0.0, 1.0);
+        gl.vertex_2f(x + far, y + far);
+        gl.color_3f(1.0, 1.0, 1.0);
+        gl.vertex_2f(x + 3.0, y + 17.0);
+        // Non-convex: vertex 2 inside the triangle of the others.
+        gl.color_3f(1.0, 1.0, 0.0);
+        gl.vertex_2f(x + 2.0, y + 21.0);
+        gl.color_3f(0.0, 1.0, 1.0);
+        gl.vertex_2f(x + 19.0, y + 21.5);
+        gl.color_3f(1.0, 0.0, 1.0);
+        gl.vertex_2f(x + 7.0, y + 25.0);
+        gl.color_3f(0.2, 0.2, 0.2);
+        gl.vertex_2f(x + 3.0, y + 30.5);
+        gl.end();
+    };
+    quad(gl, 0.0, 0.0, 14.0);
+    // Mesa decides the split per buffered draw, and merges consecutive glBegin/glEnd pairs
+    // with no state change between them into one: glFlush ends the draw, as tilegl's
+    // decision per glBegin/glEnd assumes.
+    gl.flush();
+    // The third vertex far outside the window: clipped.
+    quad(gl, 22.0, 0.0, 140.0);
+    let list = gl.gen_lists(1);
+    gl.new_list(list, GL_COMPILE);
+    quad(gl, 42.0, 32.0, 14.0);
+    gl.end_list();
+    gl.call_list(list);
 }

@@ -2,7 +2,7 @@
 //! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them; a 16384-wide float texture;
 //! lit, textured, fogged tunnels receding into the distance; anisotropy 16 towards the horizon;
 //! lit primitives drawn with the current values an array draw left; point sprites; smooth
-//! line segments meeting end to end.
+//! line segments meeting end to end; the diagonal quads are split along.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -27,6 +27,7 @@ differential!(
     lit_after_arrays,
     point_sprites,
     smooth_line_joints,
+    quad_splits,
 );
 
 #[test]
