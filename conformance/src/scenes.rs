@@ -1003,6 +1003,7 @@ pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(||
         crate::scenes_eval::EVAL_SCENES,
         crate::scenes_cascade::CASCADE_SCENES,
         crate::scenes_fidelity::FIDELITY_SCENES,
+        crate::scenes_extremes::EXTREME_SCENES,
     ]
     .concat()
 });

@@ -1,7 +1,8 @@
 //! Differential tests of the fidelity classes found replaying real programs (scenes in
 //! `tilegl_conformance::scenes_fidelity`): antialiased wide lines flat and receding; point sizes and line widths of 1000; all six user clip planes and every subset of them; a 16384-wide float texture;
 //! lit, textured, fogged tunnels receding into the distance; anisotropy 16 towards the horizon;
-//! lit primitives drawn with the current values an array draw left.
+//! lit primitives drawn with the current values an array draw left; point sprites; smooth
+//! line segments meeting end to end; the diagonal quads are split along.
 
 use tilegl_conformance::differential;
 use tilegl_conformance::scenes_fidelity::FIDELITY_SCENES;
@@ -24,6 +25,9 @@ differential!(
     tube_sphere_map_linear_fog,
     aniso_horizon,
     lit_after_arrays,
+    point_sprites,
+    smooth_line_joints,
+    quad_splits,
 );
 
 #[test]

@@ -95,6 +95,12 @@ impl ListState {
 }
 
 impl Context {
+    /// True while a display list executes (inside `glCallList`/`glCallLists`).
+    #[inline]
+    pub(crate) fn list_executing(&self) -> bool {
+        self.lists.depth > 0
+    }
+
     /// True while calls are recorded into a list (compiling, and not executing a list).
     #[inline]
     pub(crate) fn list_recording(&self) -> bool {

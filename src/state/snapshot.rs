@@ -41,7 +41,136 @@ pub struct TextureUnitDraw {
     pub fixed_plan: Option<(usize, bool)>,
 }
 
+<<<<<<< HEAD
 pub use crate::raster::controls::{PolygonOffsetDraw, RasterDraw};
+=======
+/// Fog parameters of a draw (section 3.10).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FogDraw {
+    pub mode: FogMode,
+    pub density: f32,
+    pub start: f32,
+    pub end: f32,
+    pub color: [f32; 3],
+    /// Use the vertex fog coordinate instead of the eye distance.
+    pub coord_from_vertex: bool,
+}
+
+impl FogDraw {
+    /// The fog factor f for fog coordinate `c`, clamped to [0, 1]. With start == end the
+    /// linear factor uses a scale of 1 (as Mesa does) instead of dividing by zero.
+    #[inline]
+    pub fn factor(&self, c: f32) -> f32 {
+        let f = match self.mode {
+            FogMode::Linear => (self.end - c) * self.linear_scale(),
+            FogMode::Exp => fog_exp(-self.density * c),
+            FogMode::Exp2 => {
+                let d = self.density * c;
+                fog_exp(-d * d)
+            }
+        };
+        f.max(0.0).min(1.0)
+    }
+
+    /// The linear factor's scale: 1 / (end - start), or 1 when start == end.
+    #[inline]
+    pub fn linear_scale(&self) -> f32 {
+        let range = self.end - self.start;
+        if range != 0.0 {
+            1.0 / range
+        } else {
+            1.0
+        }
+    }
+}
+
+/// `ln(2)^k / k!` for k = 1..6: the Taylor coefficients of 2^f.
+pub const EXP2_TAYLOR: [f32; 6] = [
+    std::f32::consts::LN_2,
+    0.240_226_5,
+    0.055_504_11,
+    0.009_618_129,
+    0.001_333_355_8,
+    0.000_154_035_3,
+];
+
+/// e^x for the fog factor, from operations that eight lanes repeat exactly
+/// (`fragment::simd::fog_factors8`), so the eight-lane paths give the general path's factors:
+/// t = x log2(e) clamped to [-126, 126], n = floor(t + 1/2), 2^(t - n) by its degree-6
+/// Taylor polynomial (|t - n| <= 1/2: relative error below 2e-7, a thousandth of an 8-bit
+/// step), times 2^n built from its exponent bits. NaN gives 2^-126 (a factor of 0, as NaN
+/// clamps to 0), and below x = -87 the result stays at about 1e-38 instead of 0: both
+/// mean "all fog" after 8-bit rounding.
+#[inline]
+pub fn fog_exp(x: f32) -> f32 {
+    let t = (x * std::f32::consts::LOG2_E).max(-126.0).min(126.0);
+    let n = (t + 0.5).floor();
+    let f = t - n;
+    let k = EXP2_TAYLOR;
+    let p = (((((k[5] * f + k[4]) * f + k[3]) * f + k[2]) * f + k[1]) * f + k[0]) * f + 1.0;
+    p * f32::from_bits(((n as i32 + 127) as u32) << 23)
+}
+
+/// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RasterDraw {
+    /// `glPointSize`, before attenuation and clamping.
+    pub point_size: f32,
+    pub point_smooth: bool,
+    /// `GL_POINT_SPRITE` on: the units whose texture coordinates the sprite replaces (bit per
+    /// unit) and whether t runs down from the top (`GL_UPPER_LEFT`).
+    pub point_sprite: Option<(u32, bool)>,
+    /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
+    pub point_attenuation: Option<[f32; 3]>,
+    /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.
+    pub point_size_range: [f32; 2],
+    pub line_width: f32,
+    pub line_smooth: bool,
+    /// Repeat factor and pattern, when stippling is enabled.
+    pub line_stipple: Option<(u32, u16)>,
+    /// Front, back.
+    pub polygon_mode: [PolygonMode; 2],
+    /// Depth offset (factor, units in resolvable steps) and where it applies (fill, line,
+    /// point); `None` when no mode enables it.
+    pub offset: Option<PolygonOffsetDraw>,
+    /// Rows bottom first; bit `1 << (31 - x % 32)` of row `y % 32`. `None` when disabled.
+    pub polygon_stipple: Option<[u32; 32]>,
+    /// `GL_POLYGON_SMOOTH`: filled polygons take their coverage into the alpha.
+    pub polygon_smooth: bool,
+}
+
+/// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
+/// resolvable depth difference (one step of the fixed-point depth buffer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolygonOffsetDraw {
+    pub factor: f64,
+    pub units: f64,
+    /// Enabled for fill, line, point polygon modes.
+    pub enabled: [bool; 3],
+}
+
+impl PolygonOffsetDraw {
+    /// The window-z offset for a polygon whose depth plane has slopes `dzdx`, `dzdy`
+    /// (section 3.5.5: m is the maximum of their magnitudes), when `mode` is enabled.
+    pub fn for_plane(&self, mode: PolygonMode, dzdx: f64, dzdy: f64, depth_max: u32) -> f64 {
+        let on = match mode {
+            PolygonMode::Fill => self.enabled[0],
+            PolygonMode::Line => self.enabled[1],
+            PolygonMode::Point => self.enabled[2],
+        };
+        if !on {
+            return 0.0;
+        }
+        let m = dzdx.abs().max(dzdy.abs());
+        let o = self.factor * m + self.units / depth_max.max(1) as f64;
+        if o.is_finite() {
+            o
+        } else {
+            0.0
+        }
+    }
+}
+>>>>>>> fidelity
 
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]
@@ -289,6 +418,9 @@ impl Context {
         RasterDraw {
             point_size: r.point_size,
             point_smooth: r.point_smooth,
+            point_sprite: r
+                .point_sprite
+                .then_some((r.point_sprite_coord_replace, r.point_sprite_upper_left)),
             point_attenuation: (r.point_attenuation != [1.0, 0.0, 0.0])
                 .then_some(r.point_attenuation),
             point_size_range: [r.point_size_min, r.point_size_max],

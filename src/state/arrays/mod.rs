@@ -92,8 +92,17 @@ impl ArrayPointer {
         }
     }
 
+    /// Components stored per element: `size`, or 4 for `GL_BGRA` (ARB_vertex_array_bgra).
+    fn components(&self) -> usize {
+        if self.size == GL_BGRA as i32 {
+            4
+        } else {
+            self.size as usize
+        }
+    }
+
     fn element_bytes(&self) -> usize {
-        self.size as usize * self.ty.size()
+        self.components() * self.ty.size()
     }
 
     fn effective_stride(&self) -> usize {
@@ -252,8 +261,12 @@ fn component(b: &[u8], off: usize, ty: ArrayType, normalize: bool) -> f32 {
 fn element(b: &[u8], a: &ArrayPointer, i: u32, normalize: bool, default: Vec4) -> Vec4 {
     let base = (i as usize).saturating_mul(a.effective_stride());
     let mut v = default.to_array();
-    for (c, out) in v.iter_mut().enumerate().take(a.size as usize) {
+    for (c, out) in v.iter_mut().enumerate().take(a.components()) {
         *out = component(b, base.saturating_add(c * a.ty.size()), a.ty, normalize);
+    }
+    if a.size == GL_BGRA as i32 {
+        // Stored blue, green, red, alpha.
+        v.swap(0, 2);
     }
     Vec4::from_array(v)
 }
