@@ -55,24 +55,7 @@ pub struct Entry {
 
 /// The scene lists and the area each belongs to, in report order.
 pub fn scene_areas() -> Vec<(&'static str, &'static [Scene])> {
-    vec![
-        ("lighting and per-fragment", crate::scenes::BASE_SCENES),
-        ("texturing", crate::scenes_texture::TEXTURE_SCENES),
-        ("arrays and lists", crate::scenes_arrays::ARRAY_SCENES),
-        ("rasterization", crate::scenes_raster::RASTER_SCENES),
-        ("teaching examples", crate::scenes_examples::EXAMPLE_SCENES),
-        (
-            "teaching techniques",
-            crate::scenes_techniques::TECHNIQUE_SCENES,
-        ),
-        ("state", crate::scenes_state::STATE_SCENES),
-        (
-            "texture matrix",
-            crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
-        ),
-        ("evaluators", crate::scenes_eval::EVAL_SCENES),
-        ("texenv cascade", crate::scenes_cascade::CASCADE_SCENES),
-    ]
+    crate::scenes::SCENE_LISTS.to_vec()
 }
 
 /// A progress line on the terminal (a bar when stderr is a terminal, a line every tenth
