@@ -10,6 +10,7 @@ pub mod gallery;
 pub mod known_failures;
 pub mod machine;
 pub mod mesa;
+pub mod piglit;
 pub mod prng;
 pub mod quality;
 pub mod report;

@@ -41,7 +41,7 @@ impl<T: Debug> Recorded for (String, T) {
 }
 
 /// A state or error case, declared once in its list.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug)]
 pub struct StateCase {
     pub name: &'static str,
     /// What the specification says the answers are (the expected result).
@@ -70,13 +70,13 @@ impl StateCase {
 
 /// Every list of state and error cases with its feature area, in report order.
 pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
-    ("state and errors: queries, matrices, errors", basic::CASES),
+    ("state cases: queries, matrices, errors", basic::CASES),
     (
-        "state and errors: attributes, queries, selection, feedback",
+        "state cases: attributes, queries, selection, feedback",
         attrib::CASES,
     ),
-    ("state and errors: arrays, buffers, lists", arrays::CASES),
-    ("state and errors: evaluators", eval::CASES),
+    ("state cases: arrays, buffers, lists", arrays::CASES),
+    ("state cases: evaluators", eval::CASES),
 ];
 
 /// Every state and error case.
