@@ -20,6 +20,7 @@ pub mod scenes_arrays;
 pub mod scenes_cascade;
 pub mod scenes_eval;
 pub mod scenes_examples;
+pub mod scenes_extreme;
 pub mod scenes_fidelity;
 pub mod scenes_raster;
 pub mod scenes_state;

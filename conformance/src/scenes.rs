@@ -1009,6 +1009,7 @@ pub const SCENE_LISTS: &[(&str, &[Scene])] = &[
     ("evaluators", crate::scenes_eval::EVAL_SCENES),
     ("texenv cascade", crate::scenes_cascade::CASCADE_SCENES),
     ("fidelity", crate::scenes_fidelity::FIDELITY_SCENES),
+    ("extreme cases", crate::scenes_extreme::EXTREME_SCENES),
 ];
 
 /// Every differential scene, in report order (the lists of [`SCENE_LISTS`] one after another).

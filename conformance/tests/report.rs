@@ -296,3 +296,51 @@ fn piglit_table_comes_from_the_committed_record() {
     assert!(table.split("<tr class=").count() > 300);
     assert!(table.contains("gl-1.0-beginend-coverage</td><td>pass</td><td>fail</td>"));
 }
+
+/// Every extreme-case scene is in the report with its figures, in its own area; the case where
+/// Mesa is known to be less exact carries the note and its own verdict.
+#[test]
+fn extreme_cases_are_in_the_report_in_their_own_area() {
+    if compare::serve_child_request(&SCENES) || !tilegl_conformance::mesa::require_mesa("report") {
+        return;
+    }
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("report-extreme");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let list = tilegl_conformance::scenes_extreme::EXTREME_SCENES;
+    let mut progress = Progress::new(list.len());
+    let child = [
+        "extreme_cases_are_in_the_report_in_their_own_area",
+        "--exact",
+        "--nocapture",
+    ];
+    let entries = report::run_scenes(&dir, "extreme_", &mut progress, &child);
+    let names: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
+    let expected: Vec<&str> = list.iter().map(|s| s.name).collect();
+    assert_eq!(names, expected);
+    for e in &entries {
+        assert_eq!(e.area, "extreme cases", "{}", e.name);
+        assert!(
+            e.diff.is_some() && e.spread.is_some(),
+            "{}: figures",
+            e.name
+        );
+        assert!(
+            e.pictures.iter().all(|p| p.is_some()),
+            "{}: pictures",
+            e.name
+        );
+        match tilegl_conformance::known_failures::mesa_less_exact(&e.name) {
+            Some(why) => {
+                assert_eq!(e.verdict, Verdict::MesaLessExact, "{}", e.name);
+                assert!(e.note.contains(why), "{}: the note", e.name);
+            }
+            None => assert_eq!(e.verdict, Verdict::Pass, "{}: {}", e.name, e.note),
+        }
+    }
+    assert!(entries.iter().any(|e| e.verdict == Verdict::MesaLessExact));
+    let html =
+        std::fs::read_to_string(report::write_html(&dir, &entries, "Mesa").unwrap()).unwrap();
+    assert!(html.contains("<td>extreme cases</td>"));
+    assert!(html.contains("Mesa less exact") && html.contains("tests/cascade_extremes.rs"));
+}
