@@ -1,9 +1,9 @@
 //! Extreme cases: stiff and extreme numerics against Mesa. Coordinates near 1e30, w near zero
 //! and negative, slivers and degenerate triangles, non-finite vertices; zero-length normals
 //! under `GL_NORMALIZE`, spot cut-offs 90 and 180, shininess 0 and 128, huge eye-plane
-//! coefficients, a sphere map with m = 0 and
-//! q = 0 from texture-coordinate generation. (`tests/extremes.rs` and
-//! `tests/cascade_extremes.rs` check the same inputs against the specification's equations.)
+//! coefficients, a sphere map with m = 0 and q = 0 from texture-coordinate generation.
+//! (`tests/extremes.rs` and `tests/cascade_extremes.rs` check the same inputs against the
+//! specification's equations.)
 //!
 //! Where Mesa is known to be less exact than tilegl, the case is listed in
 //! [`crate::known_failures::MESA_LESS_EXACT`] with the reason, and the report shows it.
