@@ -433,7 +433,7 @@ pub fn write_page(dir: &Path, report: &Report) -> Result<PathBuf, String> {
     };
     let mut h = String::new();
     h.push_str("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>tilegl conformance report</title>\n");
-    h.push_str("<style>body{font-family:sans-serif;margin:1em}table{border-collapse:collapse}table.answers td{font-size:11px}pre{font-size:11px;background:#f4f4f4;padding:4px;max-width:900px;overflow:auto}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px}th{background:#eee;cursor:pointer}tr.FAIL{background:#fdd}tr.known{background:#ffd}tr.mesa{background:#def}td.num{text-align:right}img{width:96px;image-rendering:pixelated;border:1px solid #999}</style>\n");
+    h.push_str("<style>body{font-family:sans-serif;margin:1em}table{border-collapse:collapse}table.answers td{font-size:11px}pre{font-size:11px;background:#f4f4f4;padding:4px;max-width:900px;overflow:auto}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px}th{background:#eee;cursor:pointer}tr.FAIL{background:#fdd}tr.known{background:#ffd}tr.mesa{background:#def}td.note{max-width:360px;font-size:12px;overflow-wrap:anywhere}td.num{text-align:right}img{width:96px;image-rendering:pixelated;border:1px solid #999}</style>\n");
     h.push_str("<script>function sortBy(t,c){const b=t.tBodies[0];const r=[...b.rows];const d=t.dataset.col==c&&t.dataset.dir!='d';t.dataset.col=c;t.dataset.dir=d?'d':'a';r.sort((x,y)=>{const p=x.cells[c].dataset.v??x.cells[c].textContent,q=y.cells[c].dataset.v??y.cells[c].textContent;const a=parseFloat(p),e=parseFloat(q);const k=isNaN(a)||isNaN(e)?p.localeCompare(q):a-e;return d?-k:k});r.forEach(x=>b.appendChild(x))}</script>\n</head><body>\n");
     let _ = writeln!(
         h,
@@ -538,7 +538,7 @@ pub fn write_page(dir: &Path, report: &Report) -> Result<PathBuf, String> {
             .collect();
         let _ = writeln!(
             h,
-            "<tr class=\"{class}\"><td data-v=\"{}\">{}</td><td>{}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num data-v=\"{}\">{}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td>{pics}</td><td>{}</td></tr>",
+            "<tr class=\"{class}\"><td data-v=\"{}\">{}</td><td>{}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num data-v=\"{}\">{}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td>{pics}</td><td class=note>{}</td></tr>",
             e.verdict as u8,
             e.verdict.label(),
             esc(e.area),
@@ -673,7 +673,7 @@ fn write_states(h: &mut String, states: &[StateEntry]) {
         detail.push_str("</table></details>");
         let _ = writeln!(
             h,
-            "<tr class=\"{}\"><td data-v=\"{}\">{}</td><td>{}</td><td>{}</td><td>{}</td><td class=num data-v=\"{}\">{agreeing} / {}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td>{detail}</td><td>{}</td></tr>",
+            "<tr class=\"{}\"><td data-v=\"{}\">{}</td><td>{}</td><td>{}</td><td>{}</td><td class=num data-v=\"{}\">{agreeing} / {}</td><td>{}</td><td class=num>{}</td><td class=num>{}</td><td class=num>{}</td><td>{detail}</td><td class=note>{}</td></tr>",
             match s.verdict {
                 Verdict::Fail => "FAIL",
                 Verdict::KnownFailure | Verdict::MesaLessExact => "known",
