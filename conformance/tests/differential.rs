@@ -119,3 +119,33 @@ fn threads_do_not_change_pictures() {
     };
     assert_eq!(one.image, two.image);
 }
+
+/// A list test fails naming every failing case with its message, after running all of them.
+#[test]
+fn a_list_test_names_every_failing_case() {
+    let cases = [
+        ("first", true),
+        ("second", false),
+        ("third", true),
+        ("fourth", false),
+    ];
+    let err = std::panic::catch_unwind(|| {
+        tilegl_conformance::run_case_list(
+            "planted",
+            &cases,
+            |c| c.0,
+            |c| {
+                if c.1 {
+                    Ok("fine".into())
+                } else {
+                    Err(format!("{} is off", c.0))
+                }
+            },
+        )
+    })
+    .expect_err("two cases fail");
+    let text = err.downcast_ref::<String>().cloned().unwrap_or_default();
+    assert!(text.contains("2 of 4 cases failed"), "{text}");
+    assert!(text.contains("- second: second is off") && text.contains("- fourth: fourth is off"));
+    assert!(!text.contains("first") && !text.contains("third"), "{text}");
+}
