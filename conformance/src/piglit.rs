@@ -32,10 +32,11 @@ pub fn committed_record() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/piglit.md")
 }
 
-/// The rows of a markdown table starting at the line after `heading` (the first table after
-/// it), each row's cells trimmed; the header and separator lines are left out.
+/// The rows of the first markdown table after the line `heading`, each row's cells trimmed;
+/// the header and separator lines are left out.
 fn table_after<'a>(md: &'a str, heading: &str) -> Vec<Vec<&'a str>> {
-    let Some(at) = md.find(heading) else {
+    // The heading on a line of its own (the text may mention it too).
+    let Some(at) = md.find(&format!("\n{heading}\n")) else {
         return Vec::new();
     };
     md[at..]
