@@ -12,8 +12,8 @@ use crate::api::convert::{
 use crate::api::enums::*;
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
-use crate::texture::object::{level_count, max_size, TextureObject, MAX_TEXTURE_MAX_ANISOTROPY};
-use crate::texture::{mipmap, pixels};
+use crate::texture::object::{level_count, max_size, MAX_TEXTURE_MAX_ANISOTROPY};
+use crate::texture::{mipmap, pixels, ObjectMut, ObjectRef};
 
 /// The texture entry points `impl Gl for Context` forwards (see `gl_forward_all!`).
 macro_rules! texture_entry_points {
@@ -253,7 +253,7 @@ impl Context {
             return;
         }
         for (&name, &p) in textures.iter().zip(priorities).take(n as usize) {
-            if let Some(o) = self.textures.object_mut(name) {
+            if let Some(mut o) = self.textures.object_mut(name) {
                 o.priority = clamp01(p);
             }
         }
@@ -284,19 +284,26 @@ impl Context {
     // ----- helpers
 
     /// The object a (non-proxy or proxy) image target addresses on the active unit.
-    fn image_object_mut(&mut self, target: TexImageTarget) -> &mut TextureObject {
+    fn image_object_mut(&mut self, target: TexImageTarget) -> ObjectMut<'_> {
         let t = target.texture_target();
         if target.is_proxy() {
-            self.textures.proxy_mut(t)
+            ObjectMut::Own(self.textures.proxy_mut(t))
         } else {
             self.textures.bound_mut(self.active_texture, t)
         }
     }
 
-    fn image_object(&self, target: TexImageTarget) -> &TextureObject {
+    /// The image at `target`/`level` (a copy sharing the texels).
+    fn image_at(&self, target: TexImageTarget, level: usize) -> Option<TexImage> {
+        self.image_object(target)
+            .image(target.face(), level)
+            .cloned()
+    }
+
+    fn image_object(&self, target: TexImageTarget) -> ObjectRef<'_> {
         let t = target.texture_target();
         if target.is_proxy() {
-            self.textures.proxy(t)
+            ObjectRef::Own(self.textures.proxy(t))
         } else {
             self.textures.bound(self.active_texture, t)
         }
@@ -306,8 +313,7 @@ impl Context {
     /// `GL_GENERATE_MIPMAP`.
     fn install_image(&mut self, target: TexImageTarget, level: usize, img: TexImage) {
         let face = target.face();
-        let obj = self.image_object_mut(target);
-        obj.images[face][level] = Some(img);
+        self.image_object_mut(target).images[face][level] = Some(img);
         if !target.is_proxy() {
             self.after_image_change(target, level);
         }
@@ -317,9 +323,9 @@ impl Context {
     fn after_image_change(&mut self, target: TexImageTarget, level: usize) {
         let face = target.face();
         let tt = target.texture_target();
-        let obj = self.image_object_mut(target);
+        let mut obj = self.image_object_mut(target);
+        let mut oom = false;
         if obj.params.generate_mipmap && level == obj.params.base_level.max(0) as usize {
-            let mut oom = false;
             if let Some(base) = obj.image(face, level) {
                 let last = obj
                     .last_level(tt, level, base.inner_size())
@@ -337,9 +343,10 @@ impl Context {
                     }
                 }
             }
-            if oom {
-                self.record_error(GL_OUT_OF_MEMORY);
-            }
+        }
+        drop(obj);
+        if oom {
+            self.record_error(GL_OUT_OF_MEMORY);
         }
         self.invalidate();
     }
@@ -449,17 +456,14 @@ impl Context {
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let (b, inner) = (img.borders(), img.inner_size());
             check_sub_region(dims, offset, size, b, inner)?;
             check_format_type(pf, pt)?;
             if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
                 return Err(GL_INVALID_OPERATION);
             }
-            check_compressed_alignment(img, offset, size)?;
+            check_compressed_alignment(&img, offset, size)?;
             let mut n = [1usize; 3];
             for d in 0..dims {
                 n[d] = size[d] as usize;
@@ -475,7 +479,7 @@ impl Context {
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
             let depth = pf == TexPixelFormat::DepthComponent;
             let face = target.face();
-            let obj = self.image_object_mut(target);
+            let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
                 let o = [
                     offset[0] + b[0],
@@ -488,6 +492,7 @@ impl Context {
                 });
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
+            drop(obj);
             self.after_image_change(target, level);
             Ok(())
         })();
@@ -726,10 +731,7 @@ impl Context {
             if size[0] < 0 || size[1] < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let (b, inner) = (img.borders(), img.inner_size());
             let h = if dims >= 2 { size[1] } else { 1 };
             // The copied region is w x h x 1 at the offsets.
@@ -742,7 +744,7 @@ impl Context {
                 off[2] = 0;
             }
             check_sub_region(dims, off, region, b, inner)?;
-            check_compressed_alignment(img, off, region)?;
+            check_compressed_alignment(&img, off, region)?;
             let depth = img.format.is_depth();
             if depth && self.framebuffer.config.depth_bits == 0 {
                 return Err(GL_INVALID_OPERATION);
@@ -889,10 +891,7 @@ impl Context {
             .filter(|t| !t.is_proxy())
             .ok_or(GL_INVALID_ENUM)?;
         let level = check_level(target.texture_target(), level)?;
-        Ok(self
-            .image_object(target)
-            .image(target.face(), level)
-            .map(|_| (target, level)))
+        Ok(self.image_at(target, level).map(|_| (target, level)))
     }
 
     /// Dimensions and size of the image at `target`/`level`, if there is one.
@@ -902,7 +901,7 @@ impl Context {
         level: GLint,
     ) -> Option<(usize, [usize; 3])> {
         let (target, level) = self.image_for_get(target, level).ok()??;
-        let img = self.image_object(target).image(target.face(), level)?;
+        let img = self.image_at(target, level)?;
         let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
         Some((target.dims(), size))
     }
@@ -910,7 +909,7 @@ impl Context {
     /// Bytes of the compressed blocks of the image at `target`/`level`, if it is compressed.
     pub(crate) fn texture_image_blocks_len(&self, target: GLenum, level: GLint) -> Option<usize> {
         let (target, level) = self.image_for_get(target, level).ok()??;
-        let img = self.image_object(target).image(target.face(), level)?;
+        let img = self.image_at(target, level)?;
         img.blocks.as_ref().map(|b| b.len())
     }
 
@@ -929,7 +928,7 @@ impl Context {
             let (pf, pt) = pixel_format_type(format, type_)?;
             let level = check_level(target.texture_target(), level)?;
             check_format_type(pf, pt)?;
-            let Some(img) = self.image_object(target).image(target.face(), level) else {
+            let Some(img) = self.image_at(target, level) else {
                 return Ok(());
             };
             if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
@@ -972,7 +971,7 @@ impl Context {
             if v.len() < needed {
                 return Err(GL_INVALID_VALUE);
             }
-            let obj = self.textures.bound_mut(self.active_texture, t);
+            let mut obj = self.textures.bound_mut(self.active_texture, t);
             let mut params = obj.params;
             let mut priority = obj.priority;
             let e = v.enumv(0);
@@ -1155,7 +1154,7 @@ impl Context {
         let target = convert::tex_image_target(target).ok_or(GL_INVALID_ENUM)?;
         let level = check_level(target.texture_target(), level)?;
         let p = convert::tex_level_param(pname).ok_or(GL_INVALID_ENUM)?;
-        let img = self.image_object(target).image(target.face(), level);
+        let img = self.image_at(target, level);
         let Some(img) = img else {
             return match p {
                 TexLevelParam::InternalFormat => Ok(1),
@@ -1363,17 +1362,14 @@ impl Context {
             if width < 0 || height < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             if img.format.compressed != Some(f) {
                 return Err(GL_INVALID_OPERATION);
             }
             let offset = [xoffset, yoffset, 0];
             let size = [width, height, 1];
             check_sub_region(2, offset, size, img.borders(), img.inner_size())?;
-            check_compressed_alignment(img, offset, size)?;
+            check_compressed_alignment(&img, offset, size)?;
             let expected = f.image_bytes(width as usize, height as usize);
             if image_size < 0 || image_size as usize != expected {
                 return Err(GL_INVALID_VALUE);
@@ -1407,10 +1403,7 @@ impl Context {
                 .filter(|t| !t.is_proxy())
                 .ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
-            let image = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let image = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let blocks = image.blocks.as_ref().ok_or(GL_INVALID_OPERATION)?;
             let dst = img.get_mut(..blocks.len()).ok_or(GL_INVALID_VALUE)?;
             dst.copy_from_slice(blocks);
