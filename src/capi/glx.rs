@@ -1,7 +1,9 @@
 //! GLX 1.4 over Xlib without the server's GLX extension (as Mesa's xlib "fake GLX" does): the
 //! visuals are the X server's TrueColor visuals, tilegl renders into its own buffers and
-//! `glXSwapBuffers` (or a flush of a front buffer) copies the picture into the window with
-//! `XPutImage`. `libGL.so.1` (a link to this library) exports these with the GL functions.
+//! `glXSwapBuffers` (or a flush of a front buffer) copies the picture into the window (MIT-SHM
+//! or `XPutImage`, see `window`). Contexts created with a share context share its texture
+//! objects, display lists and buffer objects (`state::share`). `libGL.so.1` (a link to this
+//! library) exports these with the GL functions.
 //!
 //! Limits, reported honestly to the caller: no colour-index, stereo, auxiliary-buffer,
 //! multisample or pbuffer configurations (choosing one finds none); reading from a

@@ -1,6 +1,7 @@
 //! What GLX and EGL share: Xlib (loaded at run time from the `libX11.so.6` the program already
 //! uses, through `x11-dl`), the framebuffer configurations offered for an X screen's visuals,
-//! window-system contexts, and presenting a colour buffer in a drawable with `XPutImage`.
+//! window-system contexts, and presenting a colour buffer in a drawable (MIT-SHM's
+//! `XShmPutImage` when the server is local and has it, else `XPutImage`).
 //!
 //! Like Mesa's xlib "fake GLX", nothing here needs the server's GLX extension: the
 //! configurations are made from the server's TrueColor visuals (`XGetVisualInfo`), tilegl
