@@ -28,8 +28,8 @@ use parking_lot::{
     MappedRwLockReadGuard, MappedRwLockWriteGuard, RwLock, RwLockReadGuard, RwLockWriteGuard,
 };
 
-use crate::api::convert::TextureTarget;
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::values::TextureTarget;
 
 pub use format::{BaseFormat, InternalFormat, S3tcFormat};
 pub use image::TexImage;
