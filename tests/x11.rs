@@ -743,6 +743,24 @@ fn glx_resized_window_matches_mesa() {
     }
 }
 
+/// A program that closes its display and opens another (piglit does) keeps presenting:
+/// what presentation kept for the closed display (its shared-memory images) is dropped.
+#[test]
+fn glx_present_after_reopening_the_display() {
+    let Some((exe, lib, x)) = features_setup("reopen") else {
+        return;
+    };
+    let (ok, out, _) = features(&x, &exe, None, &["reopen"], &[]);
+    assert!(ok, "reopen on Mesa:\n{out}");
+    for no_shm in ["0", "1"] {
+        let env = [("TILEGL_NO_SHM", no_shm), ("TILEGL_DEBUG_PRESENT", "1")];
+        let (ok, out, err) = features(&x, &exe, Some(&lib), &["reopen"], &env);
+        assert!(ok, "reopen on tilegl (TILEGL_NO_SHM={no_shm}):\n{out}{err}");
+        // Each of the three displays is examined afresh: the closed one was forgotten.
+        assert_eq!(err.matches("tilegl: presenting on").count(), 3, "{err}");
+    }
+}
+
 /// Presenting through MIT-SHM and through XPutImage (`TILEGL_NO_SHM=1`) shows the same
 /// 1024x768 picture, the same as Mesa's; the swap times of both paths are printed
 /// (docs/piglit.md records them).

@@ -466,15 +466,19 @@ fn shm_table() -> &'static Mutex<ShmTable> {
 /// shared pixmaps' image support, the display is local (a `:N` or `unix:N` name: a remote
 /// server cannot map this process's memory) and `TILEGL_NO_SHM` is not set to 1.
 fn shm_usable(dpy: *mut Display) -> bool {
-    static BY_DISPLAY: OnceLock<Mutex<HashMap<usize, bool>>> = OnceLock::new();
-    let mut known = BY_DISPLAY
-        .get_or_init(|| Mutex::new(HashMap::new()))
-        .lock()
-        .unwrap_or_else(|e| e.into_inner());
+    let mut known = shm_displays().lock().unwrap_or_else(|e| e.into_inner());
     *known.entry(dpy as usize).or_insert_with(|| {
         let (Some(x), Some(ext)) = (xlib(), xext()) else {
             return false;
         };
+        // SAFETY: an open display; the hook runs inside XCloseDisplay and only drops what is
+        // kept here for this display (its address may be reused by a later XOpenDisplay).
+        unsafe {
+            let codes = (x.XAddExtension)(dpy);
+            if !codes.is_null() {
+                (x.XESetCloseDisplay)(dpy, (*codes).extension, Some(forget_display));
+            }
+        }
         // SAFETY: an open display; XDisplayString returns its name (owned by Xlib).
         let name = unsafe {
             let p = (x.XDisplayString)(dpy);
@@ -496,6 +500,37 @@ fn shm_usable(dpy: *mut Display) -> bool {
         }
         usable
     })
+}
+
+/// What presenting knows per display (address): whether it uses MIT-SHM there.
+fn shm_displays() -> &'static Mutex<HashMap<usize, bool>> {
+    static D: OnceLock<Mutex<HashMap<usize, bool>>> = OnceLock::new();
+    D.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+/// Xlib's close-display hook: forgets the display and its shared-memory images (the server
+/// drops its side of the segments with the connection; this process unmaps its own).
+unsafe extern "C" fn forget_display(dpy: *mut Display, _codes: *mut xlib::XExtCodes) -> c_int {
+    shm_displays()
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .remove(&(dpy as usize));
+    let mut table = shm_table().lock().unwrap_or_else(|e| e.into_inner());
+    let Some(x) = xlib() else { return 0 };
+    table.retain(|((d, _), s)| {
+        if *d != dpy as usize {
+            return true;
+        }
+        // SAFETY: made by new_shm_image; only client-side memory is released (the image
+        // structure, detached from the segment first, and this process's mapping).
+        unsafe {
+            (*s.image).data = std::ptr::null_mut();
+            (x.XDestroyImage)(s.image);
+            shmdt(s.info.shmaddr as *const std::ffi::c_void);
+        }
+        false
+    });
+    0
 }
 
 /// Frees a shared-memory image (detached from the server, then from this process).
@@ -603,9 +638,8 @@ fn present_shm(x: &Xlib, t: &Target, rows: &[u8], w: i32, h: i32, gc: xlib::GC) 
             };
             if table.len() >= SHM_IMAGES {
                 let ((old_dpy, _), old) = table.remove(0);
-                // SAFETY: made by new_shm_image; displays stay open while their drawables
-                // are drawn to (the program's contract); a closed one was forgotten by Xlib
-                // and its segment is only detached here.
+                // SAFETY: made by new_shm_image on a display still open (closing a display
+                // drops its images, `forget_display`).
                 unsafe { free_shm_image(x, ext, old_dpy as *mut Display, old) };
             }
             table.push((key, img));

@@ -9,6 +9,8 @@
  *   glx_features xfont OUT.ppm    text drawn with glXUseXFont's display lists
  *   glx_features resize OUT.ppm   a window resized between frames (glViewport and
  *                                 glXMakeCurrent pick up the new size)
+ *   glx_features reopen          three times: open the display, show a frame, close it (the
+ *                                 presentation state of a closed display is dropped)
  *   glx_features present OUT.ppm W H SWAPS
  *                                 a W x H frame, then SWAPS timed swaps (prints the mean)
  */
@@ -495,6 +497,39 @@ static int present(const char *out, int w, int h, int swaps)
     return 0;
 }
 
+/* ----- reopen */
+
+static int reopen(void)
+{
+    XCloseDisplay(dpy);
+    static const unsigned long colours[3] = {0xff0000, 0x00ff00, 0x0000ff};
+    for (int i = 0; i < 3; i++) {
+        dpy = XOpenDisplay(NULL);
+        CHECK(dpy != NULL, "reopen %d", i);
+        if (!dpy)
+            return 1;
+        XVisualInfo *vi = visual();
+        Window win = make_window(vi, 64, 64, 0);
+        GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+        CHECK(ctx && glXMakeCurrent(dpy, win, ctx), "context %d", i);
+        glClearColor(i == 0, i == 1, i == 2, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glXSwapBuffers(dpy, win);
+        XSync(dpy, False);
+        XImage *img = XGetImage(dpy, win, 32, 32, 1, 1, AllPlanes, ZPixmap);
+        unsigned long p = img ? XGetPixel(img, 0, 0) & 0xffffff : 0xdeadbeef;
+        if (img)
+            XDestroyImage(img);
+        CHECK(p == colours[i], "frame %d shows %06lx, wanted %06lx", i, p, colours[i]);
+        glXMakeCurrent(dpy, None, NULL);
+        glXDestroyContext(dpy, ctx);
+        XFree(vi);
+        if (i < 2)
+            XCloseDisplay(dpy);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     XInitThreads();
@@ -513,6 +548,8 @@ int main(int argc, char **argv)
         r = xfont(argv[2]);
     else if (!strcmp(mode, "resize") && argc == 3)
         r = resize(argv[2]);
+    else if (!strcmp(mode, "reopen"))
+        r = reopen();
     else if (!strcmp(mode, "present") && argc == 6)
         r = present(argv[2], atoi(argv[3]), atoi(argv[4]), atoi(argv[5]));
     else
