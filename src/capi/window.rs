@@ -399,7 +399,19 @@ unsafe fn fill_image(img: *mut xlib::XImage, data: &mut [u8], rows: &[u8], w: us
     let (gs, gb) = shift_and_bits(i.green_mask);
     let (bs, bb) = shift_and_bits(i.blue_mask);
     let px = |c: &[u8]| channel(c[0], rs, rb) | channel(c[1], gs, gb) | channel(c[2], bs, bb);
-    if bpp == 32 {
+    let bgrx = bpp == 32
+        && order == xlib::LSBFirst
+        && (i.red_mask, i.green_mask, i.blue_mask) == (0xff0000, 0xff00, 0xff);
+    if bgrx {
+        // The usual 24-bit TrueColor layout: bytes B, G, R, unused (a plain byte shuffle).
+        for y in 0..h {
+            let src = &rows[(h - 1 - y) * w * 4..][..w * 4];
+            let dst = &mut data[y * bpl..][..w * 4];
+            for (s, d) in src.chunks_exact(4).zip(dst.chunks_exact_mut(4)) {
+                d.copy_from_slice(&[s[2], s[1], s[0], 0]);
+            }
+        }
+    } else if bpp == 32 {
         for y in 0..h {
             let src = &rows[(h - 1 - y) * w * 4..][..w * 4];
             let dst = &mut data[y * bpl..][..w * 4];
