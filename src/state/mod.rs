@@ -24,6 +24,7 @@ pub mod pixel_rect;
 pub mod queries;
 pub mod rasterization;
 pub mod select;
+pub mod share;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
@@ -145,6 +146,9 @@ pub struct Context {
     strings: HashMap<String, CString>,
     /// Set by `glFlush`/`glFinish`: the front end should show the finished picture.
     present_requested: bool,
+    /// Set by `glViewport`: a window-system front end checks the drawable's size there (as
+    /// Mesa's xlib driver does), so a resized window gets buffers of its new size.
+    pub(crate) drawable_check_requested: bool,
     /// Forces the general fragment path (used by the fast-path twin tests).
     pub(crate) force_general_path: bool,
     /// Vertex arrays, buffer objects and the client attribute stack.
@@ -243,6 +247,7 @@ impl Context {
             shading_threads,
             strings: HashMap::new(),
             present_requested: false,
+            drawable_check_requested: false,
             force_general_path: false,
             client: Default::default(),
             lists: Default::default(),
@@ -294,6 +299,12 @@ impl Context {
     /// picture to where the application expects it.
     pub fn take_present_request(&mut self) -> bool {
         std::mem::take(&mut self.present_requested)
+    }
+
+    /// True once after each `glViewport`: the caller (the C ABI) resizes the buffers to a
+    /// window whose size changed.
+    pub fn take_drawable_check_request(&mut self) -> bool {
+        std::mem::take(&mut self.drawable_check_requested)
     }
 
     /// Makes every draw take the general fragment path instead of a specialised one (for

@@ -21,6 +21,9 @@
 //! zeros.
 
 use std::collections::HashMap;
+use std::sync::Arc;
+
+use parking_lot::{MappedRwLockWriteGuard, RwLock, RwLockReadGuard, RwLockWriteGuard};
 
 use glam::{Vec3, Vec4};
 
@@ -169,12 +172,41 @@ impl Default for BufferObject {
     }
 }
 
-/// Buffer objects by name: `None` for a name `glGenBuffers` returned that was never bound
-/// (not yet a buffer object, `glIsBuffer` is false).
-#[derive(Clone, Debug, Default)]
-pub struct Buffers {
+/// The buffer objects of a share group, by name: `None` for a name `glGenBuffers` returned
+/// that was never bound (not yet a buffer object, `glIsBuffer` is false).
+#[derive(Debug, Default)]
+pub struct BufferNames {
     objects: HashMap<GLuint, Option<BufferObject>>,
     next: GLuint,
+}
+
+/// A context's view of its share group's buffer objects (every context created sharing
+/// objects with another holds the same `Arc`; the bindings stay per context).
+#[derive(Clone, Debug, Default)]
+pub struct Buffers {
+    names: Arc<RwLock<BufferNames>>,
+}
+
+impl Buffers {
+    /// The buffer objects (the share group's handle).
+    pub(crate) fn names(&self) -> &Arc<RwLock<BufferNames>> {
+        &self.names
+    }
+
+    /// Uses the buffer objects of a share group (for a new context).
+    pub(crate) fn set_names(&mut self, names: Arc<RwLock<BufferNames>>) {
+        self.names = names;
+    }
+
+    /// Recursive, so that a context may hold two reads at once whatever other threads wait
+    /// for; writes come from `&mut` borrows, exclusive within the context.
+    fn read(&self) -> RwLockReadGuard<'_, BufferNames> {
+        self.names.read_recursive()
+    }
+
+    fn write(&mut self) -> RwLockWriteGuard<'_, BufferNames> {
+        self.names.write()
+    }
 }
 
 /// One entry of the client attribute stack.
