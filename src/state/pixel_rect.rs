@@ -237,6 +237,9 @@ fn centre_span(a: f64, b: f64) -> (i64, i64) {
     (clamp(first), clamp(last))
 }
 
+/// How far below a whole pixel a raster position may be and still start a bitmap there.
+const BITMAP_MARGIN: f64 = 1e-4;
+
 impl Context {
     // ------------------------------------------------------------------ raster position
 
@@ -635,7 +638,17 @@ impl Context {
         type_: GLenum,
         pixels: Option<&[u8]>,
     ) {
-        let Some(f) = convert::draw_pixels_format(format) else {
+        let f = convert::draw_pixels_format(format);
+        // Section 3.6.4: the packed types need format RGB (3_3_2, 5_6_5) or RGBA/BGRA (the
+        // others), else INVALID_OPERATION. A format outside the command's set also makes
+        // INVALID_ENUM; of the two, GL records either, and llvmpipe (like piglit) this one.
+        if let Some(TexPixelType::Packed(p)) = convert::tex_pixel_type(type_) {
+            if !matches!(f, Some(DrawPixelsFormat::Color(cf)) if p.accepts(cf)) {
+                self.record_error(GL_INVALID_OPERATION);
+                return;
+            }
+        }
+        let Some(f) = f else {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
@@ -651,16 +664,6 @@ impl Context {
         }
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
-            return;
-        }
-        if let (DrawPixelsFormat::Color(cf), Some(TexPixelType::Packed(p))) = (f, color_ty) {
-            if !p.accepts(cf) {
-                self.record_error(GL_INVALID_OPERATION);
-                return;
-            }
-        }
-        if let (DrawPixelsFormat::Depth, Some(TexPixelType::Packed(_))) = (f, color_ty) {
-            self.record_error(GL_INVALID_OPERATION);
             return;
         }
         let cfg = self.framebuffer.config;
@@ -859,9 +862,13 @@ impl Context {
             self.flush_scene();
             let ds = self.snapshot();
             let bounds = self.scissored_window();
+            // Section 3.7: the bitmap starts at floor(x_r - x_o). A raster position given as
+            // a whole pixel comes out of the single-precision transform a few ulps off it,
+            // and below it the floor would move the bitmap a whole pixel: a margin of 1e-4
+            // keeps it (llvmpipe places bitmaps with the same margin).
             let [xr, yr, zr] = self.raster_pos.window;
-            let x0 = (xr - xorig as f64).floor() as i64;
-            let y0 = (yr - yorig as f64).floor() as i64;
+            let x0 = (xr + BITMAP_MARGIN - xorig as f64).floor() as i64;
+            let y0 = (yr + BITMAP_MARGIN - yorig as f64).floor() as i64;
             let mut planes = Vec::new();
             self.raster_planes(&ds, self.raster_pos.color, &mut planes);
             for j in 0..h {

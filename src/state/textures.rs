@@ -151,6 +151,7 @@ fn check_internal_format(value: GLint, dims: usize) -> Check<InternalFormat> {
 /// records no error for it).
 fn check_size(
     target: TexImageTarget,
+    level: usize,
     size: [GLsizei; 3],
     border: GLint,
 ) -> Result<[i32; 3], Option<GLenum>> {
@@ -175,7 +176,9 @@ fn check_size(
     {
         return Err(Some(GL_INVALID_VALUE));
     }
-    let max = max_size(target.texture_target()) as i64;
+    // Level `lod` of a mipmap holds images up to 2^(k - lod) (section 3.8.1, k the log2 of
+    // the maximum size).
+    let max = (max_size(target.texture_target()) >> level) as i64;
     for &s in &size[..dims] {
         if s as i64 - 2 * border as i64 > max {
             return Err(None);
@@ -389,7 +392,7 @@ impl Context {
         let (pf, pt) = pixel_format_type(format, type_)?;
         let level = check_level(target.texture_target(), level)?;
         let ifmt = check_internal_format(internalformat, dims)?;
-        let stored = match check_size(target, size, border) {
+        let stored = match check_size(target, level, size, border) {
             Ok(s) => s,
             Err(Some(e)) => return Err(e),
             Err(None) if target.is_proxy() => {
@@ -674,11 +677,13 @@ impl Context {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
+            // Section 3.8.2: not the GL 1.0 component counts 1-4 (an enum parameter, so
+            // INVALID_ENUM as for any other value outside its set).
             if (1..=4).contains(&internalformat) {
-                return Err(GL_INVALID_VALUE);
+                return Err(GL_INVALID_ENUM);
             }
             let ifmt = check_internal_format(internalformat as GLint, dims)?;
-            let stored = check_size(target, [size[0], size[1], 1], border)
+            let stored = check_size(target, level, [size[0], size[1], 1], border)
                 .map_err(|e| e.unwrap_or(GL_INVALID_VALUE))?;
             if ifmt.compressed.is_some() && border != 0 {
                 return Err(GL_INVALID_OPERATION);
@@ -1312,7 +1317,7 @@ impl Context {
             let f = s3tc(internalformat).ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
             let ifmt = InternalFormat::s3tc(internalformat as GLint, f);
-            let stored = match check_size(target, [width, height, 1], border) {
+            let stored = match check_size(target, level, [width, height, 1], border) {
                 Ok(s) => s,
                 Err(Some(e)) => return Err(e),
                 Err(None) if target.is_proxy() => {
