@@ -769,6 +769,28 @@ impl Context {
         Some(out)
     }
 
+    /// `glCopyPixels(GL_DEPTH_STENCIL)` (EXT_packed_depth_stencil, which piglit's GL 1.1
+    /// depth-stencil tests and Mesa use on the default framebuffer): the depth copy, then
+    /// the stencil copy of the same rectangle. The copies read before they write, so
+    /// doing them one after the other is doing them together unless the depth copy's
+    /// fragments change stencil (a stencil test is on) inside the source rectangle.
+    fn copy_depth_stencil(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let cfg = self.framebuffer.config;
+        if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if self.pixel_op_feedback(convert::FeedbackToken::CopyPixel) {
+            return;
+        }
+        self.copy_pixels(x, y, width, height, GL_DEPTH);
+        self.copy_pixels(x, y, width, height, GL_STENCIL);
+    }
+
     pub(crate) fn copy_pixels(
         &mut self,
         x: GLint,
@@ -777,6 +799,10 @@ impl Context {
         height: GLsizei,
         type_: GLenum,
     ) {
+        if type_ == GL_DEPTH_STENCIL_EXT {
+            self.copy_depth_stencil(x, y, width, height);
+            return;
+        }
         let Some(ty) = convert::copy_pixels_type(type_) else {
             self.record_error(GL_INVALID_ENUM);
             return;

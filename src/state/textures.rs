@@ -187,12 +187,30 @@ fn check_size(
     Ok(out)
 }
 
-/// Whether an internal format may be used on a target (depth textures: 1D and 2D only).
+/// Whether client groups of `format`/`type` are, byte for byte, texels of an uncompressed
+/// `internal` image with 8-bit storage (unsigned bytes, the same components in the same
+/// order, no pixel transfer): then uploads copy rows instead of converting each group
+/// (c / 255 stored as round(255 c / 255) is c).
+fn bytes_are_texels(
+    transfer: bool,
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    internal: InternalFormat,
+) -> bool {
+    !transfer
+        && ty == TexPixelType::UnsignedByte
+        && internal.compressed.is_none()
+        && internal.storage() == crate::texture::format::Storage::U8
+        && format.slots() == internal.base.slots()
+}
+
+/// Whether an internal format may be used on a target (depth textures: 1D, 2D and, as
+/// ARB_texture_rectangle allows with ARB_depth_texture, rectangles).
 fn check_depth_target(target: TexImageTarget, f: InternalFormat) -> Check<()> {
     if f.is_depth()
         && !matches!(
             target.texture_target(),
-            TextureTarget::T1D | TextureTarget::T2D
+            TextureTarget::T1D | TextureTarget::T2D | TextureTarget::Rectangle
         )
     {
         return Err(GL_INVALID_OPERATION);
@@ -423,10 +441,14 @@ impl Context {
             // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
             let depth = pf == TexPixelFormat::DepthComponent;
-            pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
-                let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                img.store(x as i32, y as i32, z as i32, rgba)
-            });
+            let copied = bytes_are_texels(xfer.is_some(), pf, pt, ifmt)
+                && img.store_byte_rows(data, &layout, [0; 3], usize3);
+            if !copied {
+                pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
+                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                    img.store(x as i32, y as i32, z as i32, rgba)
+                });
+            }
             img.encode_region(0, 0, img.width, img.height);
         }
         self.install_image(target, level, img);
@@ -485,10 +507,15 @@ impl Context {
                     if dims >= 2 { offset[1] + b[1] } else { 0 },
                     if dims >= 3 { offset[2] + b[2] } else { 0 },
                 ];
-                pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
-                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                    img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
-                });
+                let copied = bytes_are_texels(xfer.is_some(), pf, pt, img.format)
+                    && o.iter().all(|&v| v >= 0)
+                    && img.store_byte_rows(data, &layout, o.map(|v| v as usize), n);
+                if !copied {
+                    pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
+                        let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                        img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
+                    });
+                }
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
             self.after_image_change(target, level);
@@ -947,11 +974,21 @@ impl Context {
                 return Err(GL_INVALID_VALUE);
             }
             let swap = self.pack.swap_bytes;
+            // Luminance is the image's R (table 6.1 puts a luminance image's L in R), not
+            // ReadPixels' R + G + B: llvmpipe returns an RGBA image's R, and piglit's
+            // getteximage-luminance expects it (section 6.1.4 only points at ReadPixels).
+            let luminance = matches!(
+                pf,
+                TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+            );
             for z in 0..size[2] {
                 for y in 0..size[1] {
                     let row = layout.start + z * layout.image_stride + y * layout.row_stride;
                     for x in 0..size[0] {
-                        let v = img.fetch(x as i32, y as i32, z as i32);
+                        let mut v = img.fetch(x as i32, y as i32, z as i32);
+                        if luminance {
+                            (v[1], v[2]) = (0.0, 0.0);
+                        }
                         pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
                     }
                 }
@@ -1178,13 +1215,14 @@ impl Context {
             TexLevelParam::Depth => img.depth as i64,
             TexLevelParam::InternalFormat => f.reported() as i64,
             TexLevelParam::Border => img.border as i64,
-            TexLevelParam::RedSize | TexLevelParam::GreenSize | TexLevelParam::BlueSize => {
-                has(matches!(f.base, Rgb | Rgba))
-            }
+            TexLevelParam::RedSize => has(matches!(f.base, Red | Rg | Rgb | Rgba)),
+            TexLevelParam::GreenSize => has(matches!(f.base, Rg | Rgb | Rgba)),
+            TexLevelParam::BlueSize => has(matches!(f.base, Rgb | Rgba)),
             TexLevelParam::AlphaSize => has(matches!(f.base, Alpha | LuminanceAlpha | Rgba)),
             TexLevelParam::LuminanceSize => has(matches!(f.base, Luminance | LuminanceAlpha)),
             TexLevelParam::IntensitySize => has(f.base == Intensity),
             TexLevelParam::DepthSize => has(f.base == DepthComponent),
+            TexLevelParam::StencilSize => 0,
             TexLevelParam::Compressed => f.compressed.is_some() as i64,
             TexLevelParam::CompressedImageSize => match (f.compressed, &img.blocks) {
                 (Some(c), _) => {

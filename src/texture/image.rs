@@ -214,6 +214,42 @@ impl TexImage {
     /// Writes the texel at stored coordinates from internal RGBA (copy on write when a
     /// snapshot shares the texels).
     #[inline]
+    /// Stores rows of client bytes that already are this image's texels (8-bit storage, a
+    /// group of `layout` being one texel's components in their stored order): what `store`
+    /// of every converted group gives, a row at a time. The `size` block at `origin` (stored
+    /// coordinates) must lie inside the image and `data` hold `layout.end` bytes; otherwise,
+    /// or for other storage, nothing is stored and the answer is false.
+    pub fn store_byte_rows(
+        &mut self,
+        data: &[u8],
+        layout: &super::pixels::Layout,
+        origin: [usize; 3],
+        size: [usize; 3],
+    ) -> bool {
+        let c = self.format.base.components();
+        let dims = [self.width, self.height, self.depth].map(|s| s.max(0) as usize);
+        let fits = (0..3).all(|k| origin[k] + size[k] <= dims[k]);
+        if !matches!(*self.texels, Texels::U8(_))
+            || layout.group != c
+            || !fits
+            || data.len() < layout.end
+        {
+            return false;
+        }
+        let row = size[0] * c;
+        let Texels::U8(t) = Arc::make_mut(&mut self.texels) else {
+            return false;
+        };
+        for z in 0..size[2] {
+            for y in 0..size[1] {
+                let src = layout.start + z * layout.image_stride + y * layout.row_stride;
+                let dst = (((origin[2] + z) * dims[1] + origin[1] + y) * dims[0] + origin[0]) * c;
+                t[dst..dst + row].copy_from_slice(&data[src..src + row]);
+            }
+        }
+        true
+    }
+
     pub fn store(&mut self, x: i32, y: i32, z: i32, rgba: [f32; 4]) {
         if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
             return;

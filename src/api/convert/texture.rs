@@ -361,6 +361,8 @@ pub enum TexLevelParam {
     LuminanceSize,
     IntensitySize,
     DepthSize,
+    /// `GL_TEXTURE_STENCIL_SIZE` (EXT_packed_depth_stencil): 0, no format here keeps stencil.
+    StencilSize,
     Compressed,
     CompressedImageSize,
 }
@@ -380,6 +382,7 @@ pub fn tex_level_param(e: GLenum) -> Option<TexLevelParam> {
         GL_TEXTURE_LUMINANCE_SIZE => LuminanceSize,
         GL_TEXTURE_INTENSITY_SIZE => IntensitySize,
         GL_TEXTURE_DEPTH_SIZE => DepthSize,
+        GL_TEXTURE_STENCIL_SIZE_EXT => StencilSize,
         GL_TEXTURE_COMPRESSED => Compressed,
         GL_TEXTURE_COMPRESSED_IMAGE_SIZE => CompressedImageSize,
         _ => return None,
