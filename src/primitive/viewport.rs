@@ -1,7 +1,7 @@
 //! Perspective division and the viewport transformation (section 2.11.1).
 
 use super::clip::ClipVertex;
-use crate::raster::setup::to_fixed;
+use crate::common::fixed::to_fixed;
 use crate::state::DrawState;
 
 /// A vertex in window coordinates.
@@ -47,7 +47,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
     let mut done = 0;
     #[cfg(target_arch = "x86_64")]
     {
-        if ds.clip_planes.is_empty() && crate::texture::simd::available() {
+        if ds.clip_planes.is_empty() && crate::common::cpu::available() {
             for (c, o) in clip.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
                 // SAFETY: AVX2 is present (checked just above).
                 if !unsafe { x86::windows4(ds, c, o) } {
@@ -67,7 +67,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use super::{ClipVertex, DrawState, WindowVertex};
-    use crate::raster::setup::SUBPIXEL;
+    use crate::common::fixed::SUBPIXEL;
     use std::arch::x86_64::*;
 
     /// [`super::guard_band_windows`] of four vertices (`clip` and `out` hold four), without

@@ -9,10 +9,11 @@
 //! The block maxima live with the worker shading one tile of one scene (the tile is its alone
 //! then), are computed on first use and forgotten for the blocks a command may write depth to.
 
-use super::setup::{Plane, Rect};
-use crate::api::convert::CompareFunc;
+use super::setup::Plane;
+use crate::common::fixed::depth_to_fixed;
+use crate::common::rect::Rect;
+use crate::common::values::CompareFunc;
 use crate::fragment::key::FragmentKey;
-use crate::fragment::span::depth_to_fixed;
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
 
@@ -151,7 +152,7 @@ pub fn applies(key: &FragmentKey) -> bool {
 fn block_max(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
     #[cfg(target_arch = "x86_64")]
     {
-        if crate::texture::simd::available() {
+        if crate::common::cpu::available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe { block_max_avx2(rows) };
         }

@@ -8,7 +8,7 @@ mod client_sizes;
 pub mod evaluators;
 pub mod arrays;
 pub mod attrib;
-pub mod buffers;
+pub mod color_buffers;
 pub mod fog;
 pub mod get;
 pub mod lighting;
@@ -28,10 +28,11 @@ use std::collections::HashMap;
 use std::ffi::CString;
 use std::sync::Arc;
 
-use crate::api::convert::{self, Capability, HintTarget, PixelStoreParam, StringName};
+use crate::api::convert;
 use crate::api::enums::*;
 use crate::api::error::ErrorFlag;
 use crate::api::*;
+use crate::common::values::{Capability, HintTarget, PixelStoreParam, StringName};
 use crate::framebuffer::{Framebuffer, FramebufferConfig};
 use crate::raster::scene::Scene;
 use crate::vertex::immediate::ImmediateBatch;
@@ -123,7 +124,7 @@ pub struct Context {
     pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
     /// `glDrawBuffer` / `glReadBuffer` settings.
-    pub(crate) buffers: buffers::BufferSelection,
+    pub(crate) buffers: color_buffers::BufferSelection,
     pub(crate) scene: Scene,
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
     pub(crate) draw_state: Option<Arc<DrawState>>,
@@ -229,7 +230,7 @@ impl Context {
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
-            buffers: buffers::BufferSelection::new(config.framebuffer.double_buffer),
+            buffers: color_buffers::BufferSelection::new(config.framebuffer.double_buffer),
             framebuffer,
             scene,
             in_flight: None,

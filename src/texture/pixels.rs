@@ -6,7 +6,7 @@
 //! `GL_BITMAP` data, which texture images do not take. Signed and unsigned integers become
 //! floats by table 2.9 of OpenGL 1.5: unsigned `c / (2^b - 1)`, signed `(2c + 1) / (2^b - 1)`.
 
-use crate::api::convert::{TexPixelFormat, TexPixelType};
+use crate::common::values::{TexPixelFormat, TexPixelType};
 use crate::state::tables::PixelStore;
 
 /// Where the pixels of an image lie in client memory.
@@ -277,7 +277,7 @@ pub fn pack_group(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::convert::PackedType;
+    use crate::common::values::PackedType;
 
     #[test]
     fn packed_layouts_by_hand() {
