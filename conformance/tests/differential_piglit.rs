@@ -216,6 +216,94 @@ fn piglit_depth_rectangle(gl: &mut dyn Gl, out: &mut Answers) {
     }
 }
 
+/// piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as
+/// GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures,
+/// and the errors of formats that do not match the internal format's kind.
+fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
+    let words: Vec<u8> = [0x4000_00bbu32, 0x7f00_00bb, 0xc000_00bb, 0xff00_00bb]
+        .iter()
+        .flat_map(|w| w.to_ne_bytes())
+        .collect();
+    for internal in [
+        GL_DEPTH24_STENCIL8_EXT,
+        GL_DEPTH_COMPONENT24,
+        GL_DEPTH_COMPONENT16,
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words),
+        );
+        err(gl, out, &format!("tex_image_2d 0x{internal:04x} from 24_8"));
+        // The lower row again through glTexSubImage2D, swapped.
+        let row: Vec<u8> = words[4..8].iter().chain(&words[0..4]).copied().collect();
+        gl.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            0,
+            0,
+            2,
+            1,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&row),
+        );
+        err(gl, out, "tex_sub_image_2d from 24_8");
+        let mut back = [0u8; 8];
+        gl.get_tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_SHORT,
+            &mut back,
+        );
+        out.push(Answer {
+            label: format!("0x{internal:04x} read back"),
+            values: back
+                .chunks(2)
+                .map(|c| u16::from_ne_bytes([c[0], c[1]]) as f64)
+                .collect(),
+            tolerance: 1.0,
+        });
+    }
+    let data = [0u8; 64];
+    for (internal, format, ty) in [
+        (GL_DEPTH_COMPONENT16, GL_STENCIL_INDEX, GL_INT),
+        (GL_DEPTH24_STENCIL8_EXT, GL_STENCIL_INDEX, GL_INT),
+        (GL_RGBA8, GL_DEPTH_COMPONENT, GL_FLOAT),
+        (GL_RGBA8, GL_DEPTH_STENCIL_EXT, GL_UNSIGNED_INT_24_8_EXT),
+        (
+            GL_DEPTH_COMPONENT24,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT_24_8_EXT,
+        ),
+        (GL_RGBA8, GL_RGBA, GL_UNSIGNED_INT_24_8_EXT),
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            format,
+            ty,
+            Some(&data),
+        );
+        err(
+            gl,
+            out,
+            &format!("tex_image_2d 0x{internal:04x} 0x{format:04x} 0x{ty:04x}"),
+        );
+    }
+}
+
 /// Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and
 /// glEnable of an array's name (several piglit GL 1.x tests enable their arrays so).
 fn piglit_errors(gl: &mut dyn Gl, out: &mut Answers) {
@@ -300,4 +388,9 @@ fn piglit_errors_match_mesa() {
 #[test]
 fn piglit_depth_rectangle_matches_mesa() {
     state_case("piglit_depth_rectangle", piglit_depth_rectangle);
+}
+
+#[test]
+fn piglit_depth_stencil_uploads_match_mesa() {
+    state_case("piglit_depth_stencil_uploads", piglit_depth_stencil_uploads);
 }

@@ -9,7 +9,8 @@ use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
 use crate::common::values::{
-    TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType, TextureTarget,
+    PackedType, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType,
+    TextureTarget,
 };
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
@@ -121,6 +122,31 @@ fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
         TexPixelType::Packed(p) if !p.accepts(format) => Err(GL_INVALID_OPERATION),
         _ => Ok(()),
     }
+}
+
+/// The client format and type of a texture upload: those of [`pixel_format_type`] and
+/// `GL_DEPTH_STENCIL` with `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil; another type
+/// with it is INVALID_ENUM, as that extension says). `GL_STENCIL_INDEX`, a pixel format
+/// texture images do not take, is INVALID_OPERATION (the rule GL 3.x states for formats
+/// that do not match the internal format's kind).
+pub(super) fn upload_format_type(
+    format: GLenum,
+    type_: GLenum,
+) -> Check<(TexPixelFormat, TexPixelType)> {
+    if format == GL_STENCIL_INDEX && convert::tex_pixel_type(type_).is_some() {
+        return Err(GL_INVALID_OPERATION);
+    }
+    let f = convert::tex_upload_format(format).ok_or(GL_INVALID_ENUM)?;
+    let t = convert::tex_pixel_type(type_).ok_or(GL_INVALID_ENUM)?;
+    let packed_depth_stencil = t == TexPixelType::Packed(PackedType::UInt248);
+    if (f == TexPixelFormat::DepthStencil) != packed_depth_stencil {
+        return Err(if f == TexPixelFormat::DepthStencil {
+            GL_INVALID_ENUM
+        } else {
+            GL_INVALID_OPERATION
+        });
+    }
+    Ok((f, t))
 }
 
 fn pixel_format_type(format: GLenum, type_: GLenum) -> Check<(TexPixelFormat, TexPixelType)> {
