@@ -379,7 +379,6 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["copyteximage", "2D", "-auto", "-fbo"],
     &["max-texture-size-level", "-auto", "-fbo"],
     &["draw-pixels", "-auto", "-fbo"],
-    &["sized-texture-format-channels", "-auto", "-fbo"],
     &["getteximage-luminance", "-auto", "-fbo"],
     &["getteximage-depth", "-auto", "-fbo"],
     &["fbo-depthstencil", "copypixels", "default_fb", "-auto"],
