@@ -2,6 +2,7 @@
 //! implementation limits, fixed-point conversions, pixel rectangles and the typed values of GL
 //! state. It uses no other module of the crate.
 
+pub mod attr;
 pub mod cpu;
 pub mod fixed;
 pub mod limits;

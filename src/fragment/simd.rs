@@ -216,7 +216,7 @@ mod x86 {
 
     use super::{After8, Sampling8, Tail8};
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
-    use crate::state::snapshot::EXP2_TAYLOR;
+    use crate::fragment::fog::EXP2_TAYLOR;
     use crate::texture::simd::x86::{block_coords8, coords8, filter8, filter8_regs, lane_mask};
     use crate::texture::simd::{Level8, Texels8};
 
@@ -593,7 +593,7 @@ mod x86 {
 mod tests {
     use super::*;
     use crate::common::fixed::depth_to_fixed;
-    use crate::state::snapshot::{fog_exp, FogDraw};
+    use crate::fragment::fog::{fog_exp, FogDraw};
 
     /// `fog_factors8` gives `FogDraw::factor`'s values bit for bit, for every mode, several
     /// parameter sets (start == end included) and coordinates from negative through huge to

@@ -3,9 +3,7 @@
 //!
 //! Coordinates are GL window coordinates: (0, 0) is the lower-left pixel.
 
-pub mod accum;
 pub mod image;
-pub mod pixels;
 
 /// Side of a square tile in pixels.
 pub const TILE: usize = 64;

@@ -270,12 +270,12 @@ fn stippled_row<'a>(
 }
 
 use super::scene::{Command, Scene};
+use super::setup::triangle_area2;
+use super::setup::WindowVertex;
 use super::setup::{centre_range, PlaneSetup};
+use crate::common::attr::{self, MAX_ATTRS};
 use crate::common::rect::Rect;
 use crate::common::values::PolygonMode;
-use crate::primitive::cull::triangle_area2;
-use crate::primitive::viewport::WindowVertex;
-use crate::state::snapshot::{attr, MAX_ATTRS};
 
 /// The window-z plane of a triangle (for polygon offset), or `None` when it has no area.
 pub fn depth_plane(v: [&WindowVertex; 3]) -> Option<Plane> {

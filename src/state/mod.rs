@@ -6,11 +6,16 @@ mod textures;
 mod client_sizes;
 #[macro_use]
 pub mod evaluators;
+pub mod accum;
 pub mod arrays;
 pub mod attrib;
+pub mod clear_read;
 pub mod color_buffers;
+pub mod draw;
 pub mod fog;
+mod fragment_key;
 pub mod get;
+pub mod immediate;
 pub mod lighting;
 pub mod lists;
 pub mod matrices;
