@@ -714,6 +714,15 @@ fn cases() -> Vec<Case> {
             *(p as *mut GLint) = GL_CLAMP as GLint;
             glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, p as *const GLint)
         }),
+        // EXT_texture_swizzle's RGBA parameter is four values too.
+        case!("glTexParameteriv", "params", 4 * F, F, no_setup, |p| {
+            let swizzle = [GL_BLUE, GL_RED, GL_GREEN, GL_ALPHA].map(|e| e as GLint);
+            std::ptr::copy_nonoverlapping(swizzle.as_ptr(), p as *mut GLint, 4);
+            glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, p as *const GLint)
+        }),
+        case!("glGetTexParameteriv", "params", 4 * F, F, no_setup, |p| {
+            glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, p as *mut GLint)
+        }),
         case!("glGetTexParameterfv", "params", 4 * F, F, no_setup, |p| {
             glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, p as *mut GLfloat)
         }),

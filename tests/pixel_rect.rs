@@ -211,6 +211,39 @@ fn bitmap_draws_set_bits_in_the_raster_colour_and_moves_the_raster_position() {
 }
 
 #[test]
+fn bitmaps_at_whole_pixel_raster_positions_start_there() {
+    // piglit's scissor-bitmap: an orthographic projection of a 400-pixel window, raster
+    // positions at whole pixels. The transform rounds some of them a few ulps low; section
+    // 3.7's floor(x_r - x_o) is of the exact position, so the bitmap's first bit lands on x_r.
+    let mut gl = Context::new(400, 400);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, 400.0, 0.0, 400.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.color_3f(1.0, 0.0, 0.0);
+    let rows = [0b1000_0000u8];
+    let mut misplaced = Vec::new();
+    for i in 0..40 {
+        let (x, y) = (5 + 9 * i, 3 + 7 * i);
+        gl.raster_pos_2f(x as f32, y as f32);
+        gl.bitmap(1, 1, 0.0, 0.0, 0.0, 0.0, &rows);
+        let row = common::read_rgba(&mut gl)
+            .chunks(400)
+            .nth(y as usize)
+            .map(|r| r.iter().position(|p| p[0] != 0))
+            .unwrap();
+        if row != Some(x as usize) {
+            misplaced.push((x, y, row));
+        }
+    }
+    assert!(
+        misplaced.is_empty(),
+        "(x_r, y_r, first lit x): {misplaced:?}"
+    );
+}
+
+#[test]
 fn copy_pixels_reads_before_writing_overlapping_regions() {
     let mut gl = setup();
     let img = image(6, 6);

@@ -289,7 +289,97 @@ fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
             |g| g.point_parameterf(GL_POINT_SIZE, 1.0),
             GL_INVALID_ENUM,
         ),
+        // Section 3.8.2: CopyTexImage's internalformat (an enum) may not be 1, 2, 3 or 4.
+        (
+            "copyTexImage1D internalformat 3",
+            none,
+            |g| g.copy_tex_image_1d(GL_TEXTURE_1D, 0, 3, 0, 0, 4, 0),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "copyTexImage2D internalformat 4",
+            none,
+            |g| g.copy_tex_image_2d(GL_TEXTURE_2D, 0, 4, 0, 0, 4, 4, 0),
+            GL_INVALID_ENUM,
+        ),
+        // Section 3.8.1: level l holds images up to 2^(k - l) (k = log2 MAX_TEXTURE_SIZE).
+        (
+            "texImage2D level 1 as wide as level 0 may be",
+            none,
+            |g| {
+                let max = max_texture_size(g);
+                g.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    1,
+                    GL_RGBA as i32,
+                    max,
+                    1,
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    None,
+                )
+            },
+            GL_INVALID_VALUE,
+        ),
+        (
+            "texImage2D level 2 as tall as level 1 may be",
+            none,
+            |g| {
+                let max = max_texture_size(g);
+                g.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    2,
+                    GL_RGBA as i32,
+                    1,
+                    max / 2,
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    None,
+                )
+            },
+            GL_INVALID_VALUE,
+        ),
+        (
+            "copyTexImage1D level 3 wider than 2^(k-3)",
+            none,
+            |g| {
+                let max = max_texture_size(g);
+                g.copy_tex_image_1d(GL_TEXTURE_1D, 3, GL_RGBA, 0, 0, max / 4, 0)
+            },
+            GL_INVALID_VALUE,
+        ),
+        // Section 3.6.4: packed types need format RGB or RGBA/BGRA.
+        (
+            "drawPixels stencil index with a packed type",
+            none,
+            |g| {
+                g.draw_pixels(
+                    1,
+                    1,
+                    GL_STENCIL_INDEX,
+                    GL_UNSIGNED_SHORT_5_6_5,
+                    Some(&[0; 2]),
+                )
+            },
+            GL_INVALID_OPERATION,
+        ),
+        // GL_RG (not GL 1.5's) with a packed type has two errors; GL records either, and
+        // llvmpipe and piglit's draw-pixels expect this one.
+        (
+            "drawPixels GL_RG with a packed type",
+            none,
+            |g| g.draw_pixels(1, 1, 0x8227, GL_UNSIGNED_BYTE_3_3_2, Some(&[0; 1])),
+            GL_INVALID_OPERATION,
+        ),
     ]
+}
+
+fn max_texture_size(g: &mut Context) -> i32 {
+    let mut max = [0];
+    g.get_integerv(GL_MAX_TEXTURE_SIZE, &mut max);
+    max[0]
 }
 
 #[test]

@@ -192,3 +192,17 @@ fn every_float_internal_format_is_accepted() {
         assert_eq!(f[0], internal as i32);
     }
 }
+
+#[test]
+fn extension_names_each_end_with_a_space() {
+    // Programs that print the names one per line by turning spaces into newlines (piglit's
+    // glinfo, whose verdict line must start a line) need the last name ended too.
+    let mut gl = tilegl::Context::new(4, 4);
+    let ext = gl.get_string(GL_EXTENSIONS).unwrap_or_default();
+    assert!(ext.ends_with(' '), "{ext:?}");
+    let names: Vec<&str> = ext.split(' ').collect();
+    assert_eq!(names.last(), Some(&""));
+    assert!(names[..names.len() - 1]
+        .iter()
+        .all(|n| n.starts_with("GL_") && n.len() > 3));
+}

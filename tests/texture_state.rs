@@ -567,9 +567,10 @@ fn copy_tex_image_from_colour_and_depth_buffers() {
     let mut out = [0u8; 32];
     gl.get_tex_image(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut out);
     assert_eq!(&out[16..20], &[0, 255, 0, 255]);
-    // Errors: 1..4 components, bad border.
+    // Errors: 1..4 components (not among internalformat's values, an enum: section 2.5's
+    // INVALID_ENUM, as llvmpipe), bad border.
     gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, 3, 0, 0, 2, 2, 0);
-    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
     gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 2, 2, 2);
     assert_eq!(gl.get_error(), GL_INVALID_VALUE);
 }
@@ -1456,4 +1457,108 @@ fn out_of_memory_and_huge_sizes_do_not_abort() {
         Some(&[0; 64]),
     );
     assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+}
+
+/// Unsigned bytes into 8-bit images are copied row by row (a fast path); the same values
+/// as unsigned shorts (c * 257, converted texel by texel) must give the same texels, and
+/// both the bytes given (c / 255 stored in 8 bits is c): glTexImage and glTexSubImage,
+/// with row length and skips in the unpack state.
+#[test]
+fn byte_uploads_into_8_bit_images_keep_every_byte() {
+    let (w, h) = (7usize, 5usize);
+    let mut seed = 0x9e37_79b9u32;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        (seed >> 24) as u8
+    };
+    for (internal, format, comps) in [
+        (GL_RGBA8, GL_RGBA, 4usize),
+        (GL_RGB8, GL_RGB, 3),
+        (GL_LUMINANCE8, GL_LUMINANCE, 1),
+        (GL_LUMINANCE8_ALPHA8, GL_LUMINANCE_ALPHA, 2),
+        (GL_ALPHA8, GL_ALPHA, 1),
+        (GL_INTENSITY8, GL_LUMINANCE, 1),
+    ] {
+        // Rows of 9 groups, the image starting 1 row and 2 groups in.
+        let (row_len, skip_rows, skip_pixels) = (9usize, 1usize, 2usize);
+        let bytes: Vec<u8> = (0..row_len * (h + skip_rows) * comps)
+            .map(|_| next())
+            .collect();
+        let shorts: Vec<u8> = bytes
+            .iter()
+            .flat_map(|&c| (c as u16 * 257).to_ne_bytes())
+            .collect();
+        let upload = |ty: GLenum, data: &[u8], sub: bool| {
+            let mut gl = ctx();
+            gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+            gl.pixel_storei(GL_UNPACK_ROW_LENGTH, row_len as i32);
+            gl.pixel_storei(GL_UNPACK_SKIP_ROWS, skip_rows as i32);
+            gl.pixel_storei(GL_UNPACK_SKIP_PIXELS, skip_pixels as i32);
+            if sub {
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    internal as i32,
+                    w as i32 + 3,
+                    h as i32 + 2,
+                    0,
+                    format,
+                    ty,
+                    None,
+                );
+                gl.tex_sub_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    2,
+                    1,
+                    w as i32,
+                    h as i32,
+                    format,
+                    ty,
+                    Some(data),
+                );
+            } else {
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    internal as i32,
+                    w as i32,
+                    h as i32,
+                    0,
+                    format,
+                    ty,
+                    Some(data),
+                );
+            }
+            assert_eq!(gl.get_error(), GL_NO_ERROR);
+            let (tw, th) = if sub { (w + 3, h + 2) } else { (w, h) };
+            let mut back = vec![0u8; tw * th * comps];
+            gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+            gl.get_tex_image(GL_TEXTURE_2D, 0, format, GL_UNSIGNED_BYTE, &mut back);
+            // The uploaded block only.
+            let (ox, oy) = if sub { (2, 1) } else { (0, 0) };
+            (0..h)
+                .flat_map(|y| {
+                    let at = ((oy + y) * tw + ox) * comps;
+                    back[at..at + w * comps].to_vec()
+                })
+                .collect::<Vec<u8>>()
+        };
+        let given: Vec<u8> = (0..h)
+            .flat_map(|y| {
+                let at = ((skip_rows + y) * row_len + skip_pixels) * comps;
+                bytes[at..at + w * comps].to_vec()
+            })
+            .collect();
+        for sub in [false, true] {
+            let from_bytes = upload(GL_UNSIGNED_BYTE, &bytes, sub);
+            let from_shorts = upload(GL_UNSIGNED_SHORT, &shorts, sub);
+            assert_eq!(from_bytes, from_shorts, "0x{internal:04x} sub {sub}");
+            if internal != GL_INTENSITY8 {
+                assert_eq!(from_bytes, given, "0x{internal:04x} sub {sub}");
+            }
+        }
+    }
 }

@@ -906,12 +906,6 @@ fn error_cases() -> Vec<(&'static str, Call, Call, GLenum)> {
             GL_INVALID_ENUM,
         ),
         (
-            "enable(VERTEX_ARRAY) is not a server capability",
-            none,
-            |g| g.enable(GL_VERTEX_ARRAY),
-            GL_INVALID_ENUM,
-        ),
-        (
             "drawArrays mode",
             none,
             |g| g.draw_arrays(GL_LINE, 0, 3),
@@ -1279,6 +1273,48 @@ fn disabled_vertex_array_draws_nothing_and_leaves_current_values() {
     gl.array_element(0);
     gl.get_floatv(GL_CURRENT_COLOR, &mut c);
     assert_eq!(c, col);
+}
+
+/// glEnable/glDisable of an array's name switch the array as glEnableClientState does
+/// (EXT_vertex_array's form, kept by Mesa's compatibility contexts and relied on by piglit's
+/// GL 1.x tests): the same picture and the same glIsEnabled answers.
+#[test]
+fn enable_of_an_array_name_enables_the_client_array() {
+    let arrays = [
+        GL_VERTEX_ARRAY,
+        GL_COLOR_ARRAY,
+        GL_NORMAL_ARRAY,
+        GL_SECONDARY_COLOR_ARRAY,
+        GL_FOG_COORD_ARRAY,
+        GL_TEXTURE_COORD_ARRAY,
+    ];
+    let via_client_state = arrays_picture(|gl| gl.draw_arrays(GL_TRIANGLES, 0, N as i32));
+    let via_enable = arrays_picture(|gl| {
+        for a in arrays {
+            gl.disable_client_state(a);
+            gl.enable(a);
+        }
+        gl.draw_arrays(GL_TRIANGLES, 0, N as i32);
+    });
+    assert_drawn(&via_client_state);
+    assert_same(
+        &via_enable,
+        &via_client_state,
+        "arrays enabled with glEnable",
+    );
+    let mut gl = Context::new(4, 4);
+    for a in [
+        GL_VERTEX_ARRAY,
+        GL_COLOR_ARRAY,
+        GL_EDGE_FLAG_ARRAY,
+        GL_FOG_COORD_ARRAY,
+    ] {
+        gl.enable(a);
+        assert_eq!(gl.is_enabled(a), GL_TRUE as GLboolean);
+        gl.disable(a);
+        assert_eq!(gl.is_enabled(a), GL_FALSE as GLboolean);
+    }
+    no_error(&mut gl);
 }
 
 #[test]

@@ -21,6 +21,7 @@ pub mod arrays;
 pub mod attrib;
 pub mod basic;
 pub mod eval;
+pub mod piglit;
 
 /// The framebuffer size every state case runs with.
 pub const SIZE: i32 = 64;
@@ -77,6 +78,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ),
     ("state cases: arrays, buffers, lists", arrays::CASES),
     ("state cases: evaluators", eval::CASES),
+    ("state cases: piglit scripts", piglit::CASES),
 ];
 
 /// Every state and error case.

@@ -86,6 +86,7 @@ pub fn pname_count(pname: u32) -> usize {
         | GL_FOG_COLOR
         | GL_TEXTURE_ENV_COLOR
         | GL_TEXTURE_BORDER_COLOR
+        | GL_TEXTURE_SWIZZLE_RGBA
         | GL_EYE_PLANE
         | GL_OBJECT_PLANE
         | GL_LIGHT_MODEL_AMBIENT => 4,

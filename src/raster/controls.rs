@@ -32,7 +32,8 @@ pub struct RasterDraw {
 }
 
 /// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
-/// resolvable depth difference (one step of the fixed-point depth buffer).
+/// resolvable depth difference: one step of the fixed-point depth buffer, but at least
+/// [`MIN_RESOLVABLE_DEPTH`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PolygonOffsetDraw {
     pub factor: f64,
@@ -40,6 +41,13 @@ pub struct PolygonOffsetDraw {
     /// Enabled for fill, line, point polygon modes.
     pub enabled: [bool; 3],
 }
+
+/// The smallest depth difference tilegl resolves everywhere in the depth range: window z
+/// comes out of the single-precision transform, and two surfaces one step of a 24-bit
+/// buffer apart near the near plane are not always told apart, two steps are (piglit's
+/// gl-1.4-polygon-offset measures this "ideal MRD" as 2^-23 on tilegl, as on llvmpipe,
+/// whose offset unit is the same).
+pub const MIN_RESOLVABLE_DEPTH: f64 = 1.0 / (1u32 << 23) as f64;
 
 impl PolygonOffsetDraw {
     /// The window-z offset for a polygon whose depth plane has slopes `dzdx`, `dzdy`
@@ -54,7 +62,8 @@ impl PolygonOffsetDraw {
             return 0.0;
         }
         let m = dzdx.abs().max(dzdy.abs());
-        let o = self.factor * m + self.units / depth_max.max(1) as f64;
+        let r = (1.0 / depth_max.max(1) as f64).max(MIN_RESOLVABLE_DEPTH);
+        let o = self.factor * m + self.units * r;
         if o.is_finite() {
             o
         } else {

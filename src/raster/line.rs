@@ -60,11 +60,26 @@ pub fn bin_line(
         return;
     }
     let s = SUBPIXEL as f64;
-    let (x0, y0) = (v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s);
-    let (x1, y1) = (v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s);
+    let (mut x0, mut y0) = (v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s);
+    let (mut x1, mut y1) = (v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s);
     let (dx, dy) = (x1 - x0, y1 - y0);
     if dx == 0.0 && dy == 0.0 {
         return;
+    }
+    // Section 3.4.1 rasterizes the segment moved by (-e, -e^2) for a tiny e, so that a segment
+    // running exactly through diamond corners (a horizontal line at an integer y, a vertical
+    // one at an integer x, a slope of 1/2 from a quarter-pixel start) still enters one pixel
+    // per column instead of none. Across the major axis that move amounts to
+    // `PERTURBATION` up for an x-major line rising to the right, down otherwise; llvmpipe
+    // breaks these ties the same way. (Along the major axis llvmpipe keeps the end points
+    // where they are, and so does this.)
+    if dx.abs() >= dy.abs() {
+        let up = if dy / dx > 0.0 { 1.0 } else { -1.0 };
+        y0 += up * PERTURBATION;
+        y1 += up * PERTURBATION;
+    } else {
+        x0 -= PERTURBATION;
+        x1 -= PERTURBATION;
     }
     let [wlo, whi] = limits::LINE_WIDTH_RANGE;
     let rounded = (ds.raster.line_width as f64).round();
@@ -322,6 +337,12 @@ impl SmoothLineQuad {
 /// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the segment from `p0` to
 /// `p1` produces the fragment when it meets the diamond `|x - cx| + |y - cy| < 1/2` and its end
 /// point lies outside it (it leaves the diamond).
+/// The tiny move of section 3.4.1's perturbed end points, across the major axis: far below
+/// the smallest distance (2^-29 pixel) at which a segment between sub-pixel positions of a
+/// 2^13-pixel window can pass a diamond without touching it, far above the rounding error
+/// (2^-39) of the positions along it.
+const PERTURBATION: f64 = 1.0 / (1u64 << 36) as f64;
+
 fn exits_diamond(p0: [f64; 2], p1: [f64; 2], c: [f64; 2]) -> bool {
     let l1 = |p: [f64; 2]| (p[0] - c[0]).abs() + (p[1] - c[1]).abs();
     if l1(p1) < 0.5 {
@@ -335,10 +356,10 @@ fn exits_diamond(p0: [f64; 2], p1: [f64; 2], c: [f64; 2]) -> bool {
         if d != 0.0 {
             let t = (c[axis] - p0[axis]) / d;
             if (0.0..=1.0).contains(&t) {
-                best = best.min(l1([
-                    p0[0] + t * (p1[0] - p0[0]),
-                    p0[1] + t * (p1[1] - p0[1]),
-                ]));
+                // On the crossing axis the point is exactly at the centre.
+                let o = 1 - axis;
+                let other = p0[o] + t * (p1[o] - p0[o]);
+                best = best.min((other - c[o]).abs());
             }
         }
     }

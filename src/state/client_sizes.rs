@@ -66,7 +66,7 @@ impl Context {
         size: [GLsizei; 3],
     ) -> usize {
         let (Some(f), Some(t)) = (
-            convert::tex_pixel_format(format),
+            convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;

@@ -69,6 +69,9 @@ impl Default for ContextConfig {
 
 /// `GL_EXTENSIONS`: the extensions whose functionality is implemented and tested (most were
 /// folded into OpenGL 1.2-1.5 and are listed for programs that look for the old names).
+/// Each name ends with a space, the last too, as in Mesa's and other drivers' strings:
+/// programs that print the names one per line by turning spaces into newlines (piglit's
+/// glinfo) end their last line so.
 pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters GL_ARB_point_sprite \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
@@ -83,7 +86,7 @@ GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
 GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle GL_EXT_vertex_array_bgra \
 GL_ATI_texture_mirror_once GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
-GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
+GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod ";
 
 /// A GL context: the state machine, its framebuffer and the deferred scene of binned work.
 pub struct Context {
@@ -405,6 +408,14 @@ impl Context {
 
     fn set_capability(&mut self, cap: GLenum, on: bool) {
         let Some(cap) = convert::capability(cap) else {
+            // The vertex arrays' names enable the arrays, as glEnable did in EXT_vertex_array
+            // (before GL 1.1 moved them to glEnableClientState) and still does in Mesa's and
+            // other drivers' compatibility contexts; programs (piglit's among them) rely on
+            // it. glIsEnabled answers for them as GL 1.1 specifies.
+            if convert::client_array(cap).is_some() {
+                self.set_client_state(cap, on);
+                return;
+            }
             self.record_error(GL_INVALID_ENUM);
             return;
         };

@@ -238,6 +238,9 @@ fn centre_span(a: f64, b: f64) -> (i64, i64) {
     (clamp(first), clamp(last))
 }
 
+/// How far below a whole pixel a raster position may be and still start a bitmap there.
+const BITMAP_MARGIN: f64 = 1e-4;
+
 impl Context {
     // ------------------------------------------------------------------ raster position
 
@@ -636,7 +639,17 @@ impl Context {
         type_: GLenum,
         pixels: Option<&[u8]>,
     ) {
-        let Some(f) = convert::draw_pixels_format(format) else {
+        let f = convert::draw_pixels_format(format);
+        // Section 3.6.4: the packed types need format RGB (3_3_2, 5_6_5) or RGBA/BGRA (the
+        // others), else INVALID_OPERATION. A format outside the command's set also makes
+        // INVALID_ENUM; of the two, GL records either, and llvmpipe (like piglit) this one.
+        if let Some(TexPixelType::Packed(p)) = convert::tex_pixel_type(type_) {
+            if !matches!(f, Some(DrawPixelsFormat::Color(cf)) if p.accepts(cf)) {
+                self.record_error(GL_INVALID_OPERATION);
+                return;
+            }
+        }
+        let Some(f) = f else {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
@@ -652,16 +665,6 @@ impl Context {
         }
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
-            return;
-        }
-        if let (DrawPixelsFormat::Color(cf), Some(TexPixelType::Packed(p))) = (f, color_ty) {
-            if !p.accepts(cf) {
-                self.record_error(GL_INVALID_OPERATION);
-                return;
-            }
-        }
-        if let (DrawPixelsFormat::Depth, Some(TexPixelType::Packed(_))) = (f, color_ty) {
-            self.record_error(GL_INVALID_OPERATION);
             return;
         }
         let cfg = self.framebuffer.config;
@@ -767,6 +770,28 @@ impl Context {
         Some(out)
     }
 
+    /// `glCopyPixels(GL_DEPTH_STENCIL)` (EXT_packed_depth_stencil, which piglit's GL 1.1
+    /// depth-stencil tests and Mesa use on the default framebuffer): the depth copy, then
+    /// the stencil copy of the same rectangle. The copies read before they write, so
+    /// doing them one after the other is doing them together unless the depth copy's
+    /// fragments change stencil (a stencil test is on) inside the source rectangle.
+    fn copy_depth_stencil(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let cfg = self.framebuffer.config;
+        if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if self.pixel_op_feedback(convert::FeedbackToken::CopyPixel) {
+            return;
+        }
+        self.copy_pixels(x, y, width, height, GL_DEPTH);
+        self.copy_pixels(x, y, width, height, GL_STENCIL);
+    }
+
     pub(crate) fn copy_pixels(
         &mut self,
         x: GLint,
@@ -775,6 +800,10 @@ impl Context {
         height: GLsizei,
         type_: GLenum,
     ) {
+        if type_ == GL_DEPTH_STENCIL_EXT {
+            self.copy_depth_stencil(x, y, width, height);
+            return;
+        }
         let Some(ty) = convert::copy_pixels_type(type_) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -860,9 +889,13 @@ impl Context {
             self.flush_scene();
             let ds = self.snapshot();
             let bounds = self.scissored_window();
+            // Section 3.7: the bitmap starts at floor(x_r - x_o). A raster position given as
+            // a whole pixel comes out of the single-precision transform a few ulps off it,
+            // and below it the floor would move the bitmap a whole pixel: a margin of 1e-4
+            // keeps it (llvmpipe places bitmaps with the same margin).
             let [xr, yr, zr] = self.raster_pos.window;
-            let x0 = (xr - xorig as f64).floor() as i64;
-            let y0 = (yr - yorig as f64).floor() as i64;
+            let x0 = (xr + BITMAP_MARGIN - xorig as f64).floor() as i64;
+            let y0 = (yr + BITMAP_MARGIN - yorig as f64).floor() as i64;
             let mut planes = Vec::new();
             self.raster_planes(&ds, self.raster_pos.color, &mut planes);
             for j in 0..h {

@@ -15,6 +15,40 @@ pub enum Texels {
     U32(Vec<u32>),
 }
 
+/// A block of an image being stored (see [`TexImage::store_block`]).
+struct Block {
+    dims: [usize; 3],
+    origin: [usize; 3],
+    /// One past the last stored coordinate, clipped to the image.
+    end: [usize; 3],
+    slots: &'static [usize],
+}
+
+impl Block {
+    fn fill<T>(
+        &self,
+        t: &mut [T],
+        mut texel: impl FnMut(usize, usize, usize) -> [f32; 4],
+        to: impl Fn(f64) -> T,
+    ) {
+        let (o, c) = (self.origin, self.slots.len());
+        for z in o[2]..self.end[2] {
+            for y in o[1]..self.end[1] {
+                let row = (z * self.dims[1] + y) * self.dims[0];
+                for x in o[0]..self.end[0] {
+                    let v = texel(x - o[0], y - o[1], z - o[2]);
+                    let at = (row + x) * c;
+                    for (k, &slot) in self.slots.iter().enumerate() {
+                        if let Some(d) = t.get_mut(at + k) {
+                            *d = to(clamp01(v[slot]) as f64);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// Allocation failed (`GL_OUT_OF_MEMORY`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OutOfMemory;
@@ -214,6 +248,69 @@ impl TexImage {
     /// Writes the texel at stored coordinates from internal RGBA (copy on write when a
     /// snapshot shares the texels).
     #[inline]
+    /// Stores rows of client bytes that already are this image's texels (8-bit storage, a
+    /// group of `layout` being one texel's components in their stored order): what `store`
+    /// of every converted group gives, a row at a time. The `size` block at `origin` (stored
+    /// coordinates) must lie inside the image and `data` hold `layout.end` bytes; otherwise,
+    /// or for other storage, nothing is stored and the answer is false.
+    pub fn store_byte_rows(
+        &mut self,
+        data: &[u8],
+        layout: &super::pixels::Layout,
+        origin: [usize; 3],
+        size: [usize; 3],
+    ) -> bool {
+        let c = self.format.base.components();
+        let dims = [self.width, self.height, self.depth].map(|s| s.max(0) as usize);
+        let fits = (0..3).all(|k| origin[k] + size[k] <= dims[k]);
+        if !matches!(*self.texels, Texels::U8(_))
+            || layout.group != c
+            || !fits
+            || data.len() < layout.end
+        {
+            return false;
+        }
+        let row = size[0] * c;
+        let Texels::U8(t) = Arc::make_mut(&mut self.texels) else {
+            return false;
+        };
+        for z in 0..size[2] {
+            for y in 0..size[1] {
+                let src = layout.start + z * layout.image_stride + y * layout.row_stride;
+                let dst = (((origin[2] + z) * dims[1] + origin[1] + y) * dims[0] + origin[0]) * c;
+                t[dst..dst + row].copy_from_slice(&data[src..src + row]);
+            }
+        }
+        true
+    }
+
+    /// Stores the `size` block at `origin` (stored coordinates), its texel (x, y, z) being
+    /// `texel(x, y, z)`: what `store` of each texel does, with the storage looked up once
+    /// (the uploads' general path). Texels outside the image are skipped.
+    pub fn store_block(
+        &mut self,
+        origin: [usize; 3],
+        size: [usize; 3],
+        texel: impl FnMut(usize, usize, usize) -> [f32; 4],
+    ) {
+        let dims = [self.width, self.height, self.depth].map(|s| s.max(0) as usize);
+        let end = [0, 1, 2].map(|k| origin[k].saturating_add(size[k]).min(dims[k]));
+        let slots = self.format.base.slots();
+        let block = Block {
+            dims,
+            origin,
+            end,
+            slots,
+        };
+        // v is in [0, 1], so truncating v * max + 1/2 rounds as `set` does (half away from
+        // zero), without a call to `round` per component.
+        match Arc::make_mut(&mut self.texels) {
+            Texels::U8(t) => block.fill(t, texel, |v| (v * 255.0 + 0.5) as u8),
+            Texels::U16(t) => block.fill(t, texel, |v| (v * 65535.0 + 0.5) as u16),
+            Texels::U32(t) => block.fill(t, texel, |v| (v * u32::MAX as f64 + 0.5) as u32),
+        }
+    }
+
     pub fn store(&mut self, x: i32, y: i32, z: i32, rgba: [f32; 4]) {
         if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
             return;

@@ -213,10 +213,21 @@ pub fn tex_level_param(e: GLenum) -> Option<TexLevelParam> {
         GL_TEXTURE_LUMINANCE_SIZE => LuminanceSize,
         GL_TEXTURE_INTENSITY_SIZE => IntensitySize,
         GL_TEXTURE_DEPTH_SIZE => DepthSize,
+        GL_TEXTURE_STENCIL_SIZE_EXT => StencilSize,
         GL_TEXTURE_COMPRESSED => Compressed,
         GL_TEXTURE_COMPRESSED_IMAGE_SIZE => CompressedImageSize,
         _ => return None,
     })
+}
+
+/// The client format of a texture upload (`glTexImage*`, `glTexSubImage*`): those of
+/// [`tex_pixel_format`] and `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil, whose depth goes
+/// into depth textures; piglit's GL 1.x texture tests upload depth so).
+pub fn tex_upload_format(e: GLenum) -> Option<TexPixelFormat> {
+    if e == GL_DEPTH_STENCIL_EXT {
+        return Some(TexPixelFormat::DepthStencil);
+    }
+    tex_pixel_format(e)
 }
 
 pub fn tex_pixel_format(e: GLenum) -> Option<TexPixelFormat> {
@@ -240,6 +251,9 @@ pub fn tex_pixel_format(e: GLenum) -> Option<TexPixelFormat> {
 impl PackedType {
     /// Whether `format` may be used with this type (otherwise `GL_INVALID_OPERATION`).
     pub fn accepts(self, format: TexPixelFormat) -> bool {
+        if self == PackedType::UInt248 || format == TexPixelFormat::DepthStencil {
+            return self == PackedType::UInt248 && format == TexPixelFormat::DepthStencil;
+        }
         match self.fields().len() {
             3 => format == TexPixelFormat::Rgb,
             _ => matches!(format, TexPixelFormat::Rgba | TexPixelFormat::Bgra),
@@ -270,6 +284,7 @@ pub fn tex_pixel_type(e: GLenum) -> Option<TexPixelType> {
         GL_UNSIGNED_INT_8_8_8_8_REV => Packed(UInt8888Rev),
         GL_UNSIGNED_INT_10_10_10_2 => Packed(UInt1010102),
         GL_UNSIGNED_INT_2_10_10_10_REV => Packed(UInt2101010Rev),
+        GL_UNSIGNED_INT_24_8_EXT => Packed(UInt248),
         _ => return None,
     })
 }

@@ -170,6 +170,8 @@ pub enum TexLevelParam {
     LuminanceSize,
     IntensitySize,
     DepthSize,
+    /// `GL_TEXTURE_STENCIL_SIZE` (EXT_packed_depth_stencil): 0, no format here keeps stencil.
+    StencilSize,
     Compressed,
     CompressedImageSize,
 }
@@ -188,15 +190,26 @@ pub enum TexPixelFormat {
     Luminance,
     LuminanceAlpha,
     DepthComponent,
+    /// `GL_DEPTH_STENCIL` (EXT_packed_depth_stencil) of texture uploads: depth, then a
+    /// stencil index that depth textures do not keep (unpacked to slot 3 and dropped).
+    DepthStencil,
 }
 
 impl TexPixelFormat {
+    /// Depth data (`GL_DEPTH_COMPONENT`, `GL_DEPTH_STENCIL`).
+    pub fn is_depth(self) -> bool {
+        matches!(
+            self,
+            TexPixelFormat::DepthComponent | TexPixelFormat::DepthStencil
+        )
+    }
+
     /// Components per group.
     pub fn components(self) -> usize {
         use TexPixelFormat::*;
         match self {
             Red | Green | Blue | Alpha | Luminance | DepthComponent => 1,
-            LuminanceAlpha => 2,
+            LuminanceAlpha | DepthStencil => 2,
             Rgb | Bgr => 3,
             Rgba | Bgra => 4,
         }
@@ -211,7 +224,7 @@ impl TexPixelFormat {
             Green => &[1],
             Blue => &[2],
             Alpha => &[3],
-            LuminanceAlpha => &[0, 3],
+            LuminanceAlpha | DepthStencil => &[0, 3],
             Rgb => &[0, 1, 2],
             Rgba => &[0, 1, 2, 3],
             Bgr => &[2, 1, 0],
@@ -235,6 +248,8 @@ pub enum PackedType {
     UInt8888Rev,
     UInt1010102,
     UInt2101010Rev,
+    /// `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil): 24 bits of depth, 8 of stencil.
+    UInt248,
 }
 
 impl PackedType {
@@ -244,7 +259,7 @@ impl PackedType {
         match self {
             UByte332 | UByte233Rev => 1,
             UShort565 | UShort565Rev | UShort4444 | UShort4444Rev | UShort5551 | UShort1555Rev => 2,
-            UInt8888 | UInt8888Rev | UInt1010102 | UInt2101010Rev => 4,
+            UInt8888 | UInt8888Rev | UInt1010102 | UInt2101010Rev | UInt248 => 4,
         }
     }
 
@@ -264,6 +279,7 @@ impl PackedType {
             UInt8888Rev => &[(0, 8), (8, 8), (16, 8), (24, 8)],
             UInt1010102 => &[(22, 10), (12, 10), (2, 10), (0, 2)],
             UInt2101010Rev => &[(0, 10), (10, 10), (20, 10), (30, 2)],
+            UInt248 => &[(8, 24), (0, 8)],
         }
     }
 }

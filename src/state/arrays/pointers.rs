@@ -279,7 +279,7 @@ impl Context {
         self.set_client_state(array, false);
     }
 
-    pub(super) fn set_client_state(&mut self, array: GLenum, on: bool) {
+    pub(crate) fn set_client_state(&mut self, array: GLenum, on: bool) {
         let Some(a) = convert::client_array(array) else {
             self.record_error(GL_INVALID_ENUM);
             return;

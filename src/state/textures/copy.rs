@@ -32,11 +32,13 @@ impl Context {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
+            // Section 3.8.2: not the GL 1.0 component counts 1-4 (an enum parameter, so
+            // INVALID_ENUM as for any other value outside its set).
             if (1..=4).contains(&internalformat) {
-                return Err(GL_INVALID_VALUE);
+                return Err(GL_INVALID_ENUM);
             }
             let ifmt = check_internal_format(internalformat as GLint, dims)?;
-            let stored = check_size(target, [size[0], size[1], 1], border)
+            let stored = check_size(target, level, [size[0], size[1], 1], border)
                 .map_err(|e| e.unwrap_or(GL_INVALID_VALUE))?;
             if ifmt.compressed.is_some() && border != 0 {
                 return Err(GL_INVALID_OPERATION);

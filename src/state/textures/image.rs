@@ -44,10 +44,10 @@ impl Context {
         pixels: Option<&[u8]>,
     ) -> Check<()> {
         let target = convert::tex_image_target_for(target, dims, true).ok_or(GL_INVALID_ENUM)?;
-        let (pf, pt) = pixel_format_type(format, type_)?;
+        let (pf, pt) = upload_format_type(format, type_)?;
         let level = check_level(target.texture_target(), level)?;
         let ifmt = check_internal_format(internalformat, dims)?;
-        let stored = match check_size(target, size, border) {
+        let stored = match check_size(target, level, size, border) {
             Ok(s) => s,
             Err(Some(e)) => return Err(e),
             Err(None) if target.is_proxy() => {
@@ -60,7 +60,7 @@ impl Context {
             return Err(GL_INVALID_OPERATION);
         }
         check_format_type(pf, pt)?;
-        if (pf == TexPixelFormat::DepthComponent) != ifmt.is_depth() {
+        if pf.is_depth() != ifmt.is_depth() {
             return Err(GL_INVALID_OPERATION);
         }
         check_depth_target(target, ifmt)?;
@@ -77,11 +77,19 @@ impl Context {
             let swap = self.unpack.swap_bytes;
             // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
-            let depth = pf == TexPixelFormat::DepthComponent;
-            pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
-                let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                img.store(x as i32, y as i32, z as i32, rgba)
-            });
+            let depth = pf.is_depth();
+            let copied = bytes_are_texels(xfer.is_some(), pf, pt, ifmt)
+                && img.store_byte_rows(data, &layout, [0; 3], usize3);
+            if !copied {
+                img.store_block([0; 3], usize3, |x, y, z| {
+                    let at = layout.start
+                        + z * layout.image_stride
+                        + y * layout.row_stride
+                        + x * layout.group;
+                    let rgba = pixels::unpack_group(data, at, pf, pt, swap);
+                    xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
+                });
+            }
             img.encode_region(0, 0, img.width, img.height);
         }
         self.install_image(target, level, img);
@@ -102,7 +110,7 @@ impl Context {
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
-            let (pf, pt) = pixel_format_type(format, type_)?;
+            let (pf, pt) = upload_format_type(format, type_)?;
             let level = check_level(target.texture_target(), level)?;
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
@@ -111,7 +119,7 @@ impl Context {
             let (b, inner) = (img.borders(), img.inner_size());
             check_sub_region(dims, offset, size, b, inner)?;
             check_format_type(pf, pt)?;
-            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+            if pf.is_depth() != img.format.is_depth() {
                 return Err(GL_INVALID_OPERATION);
             }
             check_compressed_alignment(&img, offset, size)?;
@@ -128,7 +136,7 @@ impl Context {
             }
             let swap = self.unpack.swap_bytes;
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
-            let depth = pf == TexPixelFormat::DepthComponent;
+            let depth = pf.is_depth();
             let face = target.face();
             let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
@@ -137,10 +145,20 @@ impl Context {
                     if dims >= 2 { offset[1] + b[1] } else { 0 },
                     if dims >= 3 { offset[2] + b[2] } else { 0 },
                 ];
-                pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
-                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                    img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
-                });
+                let copied = bytes_are_texels(xfer.is_some(), pf, pt, img.format)
+                    && o.iter().all(|&v| v >= 0)
+                    && img.store_byte_rows(data, &layout, o.map(|v| v as usize), n);
+                if !copied {
+                    let origin = o.map(|v| v.max(0) as usize);
+                    img.store_block(origin, n, |x, y, z| {
+                        let at = layout.start
+                            + z * layout.image_stride
+                            + y * layout.row_stride
+                            + x * layout.group;
+                        let rgba = pixels::unpack_group(data, at, pf, pt, swap);
+                        xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
+                    });
+                }
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
             drop(obj);
@@ -361,11 +379,21 @@ impl Context {
                 return Err(GL_INVALID_VALUE);
             }
             let swap = self.pack.swap_bytes;
+            // Luminance is the image's R (table 6.1 puts a luminance image's L in R), not
+            // ReadPixels' R + G + B: llvmpipe returns an RGBA image's R, and piglit's
+            // getteximage-luminance expects it (section 6.1.4 only points at ReadPixels).
+            let luminance = matches!(
+                pf,
+                TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+            );
             for z in 0..size[2] {
                 for y in 0..size[1] {
                     let row = layout.start + z * layout.image_stride + y * layout.row_stride;
                     for x in 0..size[0] {
-                        let v = img.fetch(x as i32, y as i32, z as i32);
+                        let mut v = img.fetch(x as i32, y as i32, z as i32);
+                        if luminance {
+                            (v[1], v[2]) = (0.0, 0.0);
+                        }
                         pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
                     }
                 }

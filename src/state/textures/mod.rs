@@ -9,7 +9,8 @@ use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
 use crate::common::values::{
-    TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType, TextureTarget,
+    PackedType, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType,
+    TextureTarget,
 };
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
@@ -123,6 +124,31 @@ fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
     }
 }
 
+/// The client format and type of a texture upload: those of [`pixel_format_type`] and
+/// `GL_DEPTH_STENCIL` with `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil; another type
+/// with it is INVALID_ENUM, as that extension says). `GL_STENCIL_INDEX`, a pixel format
+/// texture images do not take, is INVALID_OPERATION (the rule GL 3.x states for formats
+/// that do not match the internal format's kind).
+pub(super) fn upload_format_type(
+    format: GLenum,
+    type_: GLenum,
+) -> Check<(TexPixelFormat, TexPixelType)> {
+    if format == GL_STENCIL_INDEX && convert::tex_pixel_type(type_).is_some() {
+        return Err(GL_INVALID_OPERATION);
+    }
+    let f = convert::tex_upload_format(format).ok_or(GL_INVALID_ENUM)?;
+    let t = convert::tex_pixel_type(type_).ok_or(GL_INVALID_ENUM)?;
+    let packed_depth_stencil = t == TexPixelType::Packed(PackedType::UInt248);
+    if (f == TexPixelFormat::DepthStencil) != packed_depth_stencil {
+        return Err(if f == TexPixelFormat::DepthStencil {
+            GL_INVALID_ENUM
+        } else {
+            GL_INVALID_OPERATION
+        });
+    }
+    Ok((f, t))
+}
+
 fn pixel_format_type(format: GLenum, type_: GLenum) -> Check<(TexPixelFormat, TexPixelType)> {
     let f = convert::tex_pixel_format(format).ok_or(GL_INVALID_ENUM)?;
     let t = convert::tex_pixel_type(type_).ok_or(GL_INVALID_ENUM)?;
@@ -157,6 +183,7 @@ fn check_internal_format(value: GLint, dims: usize) -> Check<InternalFormat> {
 /// records no error for it).
 fn check_size(
     target: TexImageTarget,
+    level: usize,
     size: [GLsizei; 3],
     border: GLint,
 ) -> Result<[i32; 3], Option<GLenum>> {
@@ -181,7 +208,9 @@ fn check_size(
     {
         return Err(Some(GL_INVALID_VALUE));
     }
-    let max = max_size(target.texture_target()) as i64;
+    // Level `lod` of a mipmap holds images up to 2^(k - lod) (section 3.8.1, k the log2 of
+    // the maximum size).
+    let max = (max_size(target.texture_target()) >> level) as i64;
     for &s in &size[..dims] {
         if s as i64 - 2 * border as i64 > max {
             return Err(None);
@@ -190,12 +219,30 @@ fn check_size(
     Ok(out)
 }
 
-/// Whether an internal format may be used on a target (depth textures: 1D and 2D only).
+/// Whether client groups of `format`/`type` are, byte for byte, texels of an uncompressed
+/// `internal` image with 8-bit storage (unsigned bytes, the same components in the same
+/// order, no pixel transfer): then uploads copy rows instead of converting each group
+/// (c / 255 stored as round(255 c / 255) is c).
+pub(super) fn bytes_are_texels(
+    transfer: bool,
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    internal: InternalFormat,
+) -> bool {
+    !transfer
+        && ty == TexPixelType::UnsignedByte
+        && internal.compressed.is_none()
+        && internal.storage() == crate::texture::format::Storage::U8
+        && format.slots() == internal.base.slots()
+}
+
+/// Whether an internal format may be used on a target (depth textures: 1D, 2D and, as
+/// ARB_texture_rectangle allows with ARB_depth_texture, rectangles).
 fn check_depth_target(target: TexImageTarget, f: InternalFormat) -> Check<()> {
     if f.is_depth()
         && !matches!(
             target.texture_target(),
-            TextureTarget::T1D | TextureTarget::T2D
+            TextureTarget::T1D | TextureTarget::T2D | TextureTarget::Rectangle
         )
     {
         return Err(GL_INVALID_OPERATION);

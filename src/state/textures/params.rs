@@ -225,13 +225,14 @@ impl Context {
             TexLevelParam::Depth => img.depth as i64,
             TexLevelParam::InternalFormat => f.reported() as i64,
             TexLevelParam::Border => img.border as i64,
-            TexLevelParam::RedSize | TexLevelParam::GreenSize | TexLevelParam::BlueSize => {
-                has(matches!(f.base, Rgb | Rgba))
-            }
+            TexLevelParam::RedSize => has(matches!(f.base, Red | Rg | Rgb | Rgba)),
+            TexLevelParam::GreenSize => has(matches!(f.base, Rg | Rgb | Rgba)),
+            TexLevelParam::BlueSize => has(matches!(f.base, Rgb | Rgba)),
             TexLevelParam::AlphaSize => has(matches!(f.base, Alpha | LuminanceAlpha | Rgba)),
             TexLevelParam::LuminanceSize => has(matches!(f.base, Luminance | LuminanceAlpha)),
             TexLevelParam::IntensitySize => has(f.base == Intensity),
             TexLevelParam::DepthSize => has(f.base == DepthComponent),
+            TexLevelParam::StencilSize => 0,
             TexLevelParam::Compressed => f.compressed.is_some() as i64,
             TexLevelParam::CompressedImageSize => match (f.compressed, &img.blocks) {
                 (Some(c), _) => {

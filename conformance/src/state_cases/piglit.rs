@@ -1,0 +1,373 @@
+//! Scripts from piglit's GL 1.x tests that tilegl failed (docs/piglit.md): the same calls on
+//! Mesa and on tilegl (Rust API and C ABI), every answer (queries, read-backs, GL errors)
+//! equal to Mesa's. Depth read-backs may differ by one unit of the 16-bit type (both
+//! implementations round a converted depth).
+
+super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer, b: &Answer| {
+    a.values.len() == b.values.len()
+        && a.values
+            .iter()
+            .zip(&b.values)
+            .all(|(x, y)| (x - y).abs() <= a.tolerance)
+};
+    piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_get_tex_image_luminance: "piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+);
+
+use tilegl::api::GLenum;
+use tilegl::enums::*;
+use tilegl::Gl;
+
+/// One answer: a label, the values, and how far they may differ from Mesa's.
+#[derive(Debug)]
+pub struct Answer {
+    label: String,
+    values: Vec<f64>,
+    tolerance: f64,
+}
+
+type Answers = Vec<Answer>;
+
+impl super::Recorded for Answer {
+    fn label(&self) -> String {
+        self.label.clone()
+    }
+    fn value(&self) -> String {
+        format!("{:?}", self.values)
+    }
+}
+
+fn exact(out: &mut Answers, label: String, values: Vec<f64>) {
+    out.push(Answer {
+        label,
+        values,
+        tolerance: 0.0,
+    });
+}
+
+fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
+    let e = gl.get_error();
+    exact(out, format!("glGetError after {label}"), vec![e as f64]);
+}
+
+/// piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter
+/// reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil).
+fn piglit_sized_format_channels(gl: &mut dyn Gl, out: &mut Answers) {
+    const SIZES: [GLenum; 8] = [
+        GL_TEXTURE_RED_SIZE,
+        GL_TEXTURE_GREEN_SIZE,
+        GL_TEXTURE_BLUE_SIZE,
+        GL_TEXTURE_ALPHA_SIZE,
+        GL_TEXTURE_LUMINANCE_SIZE,
+        GL_TEXTURE_INTENSITY_SIZE,
+        GL_TEXTURE_DEPTH_SIZE,
+        GL_TEXTURE_STENCIL_SIZE_EXT,
+    ];
+    for (format, data_format) in [
+        (GL_ALPHA8, GL_RGBA),
+        (GL_LUMINANCE8, GL_RGBA),
+        (GL_LUMINANCE8_ALPHA8, GL_RGBA),
+        (GL_INTENSITY8, GL_RGBA),
+        (GL_RGB8, GL_RGBA),
+        (GL_RGBA8, GL_RGBA),
+        (GL_R8, GL_RGBA),
+        (GL_RG8, GL_RGBA),
+        (GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT),
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            format as i32,
+            1,
+            1,
+            0,
+            data_format,
+            GL_FLOAT,
+            None,
+        );
+        let values = SIZES
+            .iter()
+            .map(|&p| {
+                let mut v = [-1];
+                gl.get_tex_level_parameteriv(GL_TEXTURE_2D, 0, p, &mut v);
+                v[0] as f64
+            })
+            .collect();
+        exact(out, format!("sizes of 0x{format:04x}"), values);
+        err(gl, out, &format!("0x{format:04x}"));
+    }
+}
+
+/// piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and
+/// GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA.
+fn piglit_get_tex_image_luminance(gl: &mut dyn Gl, out: &mut Answers) {
+    let rgba = [128u8, 64, 32, 200];
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA8 as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&rgba),
+    );
+    for format in [GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_RED, GL_RGBA] {
+        let mut px = [0u8; 4];
+        gl.get_tex_image(GL_TEXTURE_2D, 0, format, GL_UNSIGNED_BYTE, &mut px);
+        exact(
+            out,
+            format!("RGBA image as 0x{format:04x}"),
+            px.iter().map(|&v| v as f64).collect(),
+        );
+    }
+    let lum = [96u8];
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE8 as i32,
+        1,
+        1,
+        0,
+        GL_LUMINANCE,
+        GL_UNSIGNED_BYTE,
+        Some(&lum),
+    );
+    for format in [GL_LUMINANCE, GL_RGBA] {
+        let mut px = [0u8; 4];
+        gl.get_tex_image(GL_TEXTURE_2D, 0, format, GL_UNSIGNED_BYTE, &mut px);
+        exact(
+            out,
+            format!("luminance image as 0x{format:04x}"),
+            px.iter().map(|&v| v as f64).collect(),
+        );
+    }
+    err(gl, out, "get_tex_image");
+}
+
+/// piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the
+/// depth and the stencil of a rectangle.
+fn piglit_copy_pixels_depth_stencil(gl: &mut dyn Gl, out: &mut Answers) {
+    gl.clear_depth(0.0);
+    gl.clear_stencil(0xfe);
+    gl.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.enable(GL_DEPTH_TEST);
+    gl.depth_func(GL_ALWAYS);
+    gl.enable(GL_STENCIL_TEST);
+    gl.stencil_op(GL_KEEP, GL_KEEP, GL_REPLACE);
+    gl.stencil_func(GL_ALWAYS, 0x33, !0);
+    // The upper-right quarter at depth 0.25, stencil 0x33.
+    gl.begin(GL_QUADS);
+    for (x, y) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+        gl.vertex_3f(x, y, -0.5);
+    }
+    gl.end();
+    gl.disable(GL_STENCIL_TEST);
+    gl.raster_pos_2f(-1.0, -1.0);
+    gl.copy_pixels(33, 33, 31, 31, GL_DEPTH_STENCIL_EXT);
+    err(gl, out, "copy_pixels(GL_DEPTH_STENCIL)");
+    gl.disable(GL_DEPTH_TEST);
+    for (x, y) in [(0, 0), (30, 30), (10, 20), (31, 31), (40, 40), (5, 50)] {
+        let mut d = [0u8; 2];
+        gl.read_pixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &mut d);
+        out.push(Answer {
+            label: format!("depth at ({x}, {y})"),
+            values: vec![u16::from_ne_bytes(d) as f64],
+            tolerance: 1.0,
+        });
+        let mut s = [0u8; 1];
+        gl.read_pixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &mut s);
+        exact(out, format!("stencil at ({x}, {y})"), vec![s[0] as f64]);
+    }
+    err(gl, out, "read-backs");
+}
+
+/// piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles.
+fn piglit_depth_rectangle(gl: &mut dyn Gl, out: &mut Answers) {
+    let depths: Vec<u8> = (0..8)
+        .flat_map(|i| (i as f32 / 7.0).to_ne_bytes())
+        .collect();
+    for format in [
+        GL_DEPTH_COMPONENT,
+        GL_DEPTH_COMPONENT16,
+        GL_DEPTH_COMPONENT24,
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_RECTANGLE_ARB,
+            0,
+            format as i32,
+            4,
+            2,
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_FLOAT,
+            Some(&depths),
+        );
+        err(gl, out, &format!("rectangle 0x{format:04x}"));
+        let mut back = [0u8; 16];
+        gl.get_tex_image(
+            GL_TEXTURE_RECTANGLE_ARB,
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_SHORT,
+            &mut back,
+        );
+        out.push(Answer {
+            label: format!("rectangle 0x{format:04x} read back"),
+            values: back
+                .chunks(2)
+                .map(|c| u16::from_ne_bytes([c[0], c[1]]) as f64)
+                .collect(),
+            tolerance: 1.0,
+        });
+        err(gl, out, "get_tex_image");
+    }
+}
+
+/// piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as
+/// GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures,
+/// and the errors of formats that do not match the internal format's kind.
+fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
+    let words: Vec<u8> = [0x4000_00bbu32, 0x7f00_00bb, 0xc000_00bb, 0xff00_00bb]
+        .iter()
+        .flat_map(|w| w.to_ne_bytes())
+        .collect();
+    for internal in [
+        GL_DEPTH24_STENCIL8_EXT,
+        GL_DEPTH_COMPONENT24,
+        GL_DEPTH_COMPONENT16,
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words),
+        );
+        err(gl, out, &format!("tex_image_2d 0x{internal:04x} from 24_8"));
+        // The lower row again through glTexSubImage2D, swapped.
+        let row: Vec<u8> = words[4..8].iter().chain(&words[0..4]).copied().collect();
+        gl.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            0,
+            0,
+            2,
+            1,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&row),
+        );
+        err(gl, out, "tex_sub_image_2d from 24_8");
+        let mut back = [0u8; 8];
+        gl.get_tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_SHORT,
+            &mut back,
+        );
+        out.push(Answer {
+            label: format!("0x{internal:04x} read back"),
+            values: back
+                .chunks(2)
+                .map(|c| u16::from_ne_bytes([c[0], c[1]]) as f64)
+                .collect(),
+            tolerance: 1.0,
+        });
+    }
+    let data = [0u8; 64];
+    for (internal, format, ty) in [
+        (GL_DEPTH_COMPONENT16, GL_STENCIL_INDEX, GL_INT),
+        (GL_DEPTH24_STENCIL8_EXT, GL_STENCIL_INDEX, GL_INT),
+        (GL_RGBA8, GL_DEPTH_COMPONENT, GL_FLOAT),
+        (GL_RGBA8, GL_DEPTH_STENCIL_EXT, GL_UNSIGNED_INT_24_8_EXT),
+        (
+            GL_DEPTH_COMPONENT24,
+            GL_DEPTH_COMPONENT,
+            GL_UNSIGNED_INT_24_8_EXT,
+        ),
+        (GL_RGBA8, GL_RGBA, GL_UNSIGNED_INT_24_8_EXT),
+    ] {
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            format,
+            ty,
+            Some(&data),
+        );
+        err(
+            gl,
+            out,
+            &format!("tex_image_2d 0x{internal:04x} 0x{format:04x} 0x{ty:04x}"),
+        );
+    }
+}
+
+/// Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and
+/// glEnable of an array's name (several piglit GL 1.x tests enable their arrays so).
+fn piglit_errors(gl: &mut dyn Gl, out: &mut Answers) {
+    for f in 1..=4 {
+        gl.copy_tex_image_2d(GL_TEXTURE_2D, 0, f, 0, 0, 4, 4, 0);
+        err(gl, out, &format!("copy_tex_image_2d internalformat {f}"));
+    }
+    let mut max = [0];
+    gl.get_integerv(GL_MAX_TEXTURE_SIZE, &mut max);
+    for level in 1..3 {
+        let size = max[0] >> (level - 1);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            level,
+            GL_RGBA as i32,
+            size,
+            1,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        err(
+            gl,
+            out,
+            &format!("tex_image_2d level {level} width max/2^{}", level - 1),
+        );
+    }
+    let data = [0u8; 64];
+    for format in [
+        GL_STENCIL_INDEX,
+        GL_DEPTH_COMPONENT,
+        GL_LUMINANCE,
+        GL_RGBA,
+        GL_RGB,
+    ] {
+        for ty in [GL_UNSIGNED_BYTE_3_3_2, GL_UNSIGNED_SHORT_4_4_4_4] {
+            gl.draw_pixels(2, 2, format, ty, Some(&data));
+            err(gl, out, &format!("draw_pixels 0x{format:04x} 0x{ty:04x}"));
+        }
+    }
+    for array in [GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY] {
+        gl.enable(array);
+        let on = gl.is_enabled(array);
+        err(gl, out, &format!("enable(0x{array:04x})"));
+        gl.disable(array);
+        let off = gl.is_enabled(array);
+        exact(
+            out,
+            format!("is_enabled(0x{array:04x}) after enable, disable"),
+            vec![on as f64, off as f64],
+        );
+    }
+}
