@@ -1037,7 +1037,7 @@ fn retained_client_arrays_are_held_to_a_declared_buffer() {
     // One buffer: three 2D vertices (24 bytes), then six indices (12 bytes), then room, so the
     // vertices lie before a bound declared on the indices and the reads past either are real
     // memory.
-    let mut memory = vec![0u8; 64];
+    let mut memory = [0u8; 64];
     for (i, v) in [-1.0f32, -1.0, 1.0, -1.0, 0.0, 1.0].iter().enumerate() {
         memory[i * 4..i * 4 + 4].copy_from_slice(&v.to_ne_bytes());
     }
