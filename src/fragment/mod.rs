@@ -3,7 +3,9 @@
 
 pub mod blend;
 pub mod cache;
+pub mod fog;
 pub mod key;
+pub mod plane;
 pub mod simd;
 pub mod span;
 pub mod texenv;

@@ -2,9 +2,55 @@
 //! previous unit (the primary colour for the first) with its texel, by the unit's mode, or by
 //! the programmable `GL_COMBINE` functions (table 3.24, with ARB_texture_env_crossbar sources).
 
-use crate::api::convert::{CombineFunc, CombineOperand, CombineSource, TexEnvMode};
-use crate::state::texenv::{Combine, TexEnv};
+use crate::common::values::{CombineFunc, CombineOperand, CombineSource, TexEnvMode};
 use crate::texture::format::BaseFormat;
+
+/// The environment of one texture unit (table 6.21).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TexEnv {
+    pub mode: TexEnvMode,
+    pub color: [f32; 4],
+    /// `GL_TEXTURE_FILTER_CONTROL`'s `GL_TEXTURE_LOD_BIAS`.
+    pub lod_bias: f32,
+    pub combine: Combine,
+}
+
+/// The `GL_COMBINE` settings of a unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Combine {
+    pub rgb: CombineFunc,
+    pub alpha: CombineFunc,
+    /// Arguments 0-2, and argument 3 of NV_texture_env_combine4's `GL_COMBINE4_NV`.
+    pub src_rgb: [CombineSource; 4],
+    pub src_alpha: [CombineSource; 4],
+    pub op_rgb: [CombineOperand; 4],
+    pub op_alpha: [CombineOperand; 4],
+    /// 1, 2 or 4.
+    pub rgb_scale: u8,
+    pub alpha_scale: u8,
+}
+
+impl Default for TexEnv {
+    fn default() -> Self {
+        use CombineOperand::*;
+        use CombineSource::*;
+        TexEnv {
+            mode: TexEnvMode::Modulate,
+            color: [0.0; 4],
+            lod_bias: 0.0,
+            combine: Combine {
+                rgb: CombineFunc::Modulate,
+                alpha: CombineFunc::Modulate,
+                src_rgb: [Texture, Previous, Constant, Zero],
+                src_alpha: [Texture, Previous, Constant, Zero],
+                op_rgb: [SrcColor, SrcColor, SrcAlpha, SrcColor],
+                op_alpha: [SrcAlpha, SrcAlpha, SrcAlpha, SrcAlpha],
+                rgb_scale: 1,
+                alpha_scale: 1,
+            },
+        }
+    }
+}
 
 /// The arithmetic the environment needs, on one fragment (`f32`) or on eight at once
 /// ([`Lanes8`]): the same operations in the same order, so both give the same values.
@@ -378,7 +424,7 @@ pub fn combine<L: Lanes>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::convert::{CombineFunc as F, CombineOperand as O, CombineSource as S};
+    use crate::common::values::{CombineFunc as F, CombineOperand as O, CombineSource as S};
 
     /// A small deterministic generator (values in [-0.25, 1.25], to reach the clamps).
     struct Gen(u64);

@@ -3,9 +3,7 @@
 //!
 //! Coordinates are GL window coordinates: (0, 0) is the lower-left pixel.
 
-pub mod accum;
 pub mod image;
-pub mod pixels;
 
 /// Side of a square tile in pixels, unless [`TILE_ENV`] chooses another.
 pub const TILE: usize = 64;
@@ -71,9 +69,9 @@ impl Tile {
     }
 
     /// The window pixels the tile covers.
-    pub fn rect(&self) -> crate::raster::setup::Rect {
+    pub fn rect(&self) -> crate::common::rect::Rect {
         let t = self.side();
-        crate::raster::setup::Rect {
+        crate::common::rect::Rect {
             x0: self.x0,
             y0: self.y0,
             x1: self.x0 + t,

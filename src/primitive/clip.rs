@@ -10,7 +10,7 @@
 
 use glam::DVec4;
 
-use crate::state::snapshot::MAX_ATTRS;
+use crate::common::attr::MAX_ATTRS;
 
 /// A vertex in clip space with its interpolated attributes.
 #[derive(Clone, Copy, Debug)]

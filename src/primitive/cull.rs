@@ -1,6 +1,7 @@
 //! Facing and culling (section 3.5.1): the sign of the window-space area decides the face.
 
-use crate::api::convert::{Face, Winding};
+use crate::common::values::{Face, Winding};
+pub use crate::raster::setup::triangle_area2;
 
 /// Twice the signed area of a polygon given in fixed-point window coordinates (y up):
 /// positive for counter-clockwise.
@@ -18,14 +19,6 @@ pub fn signed_area2(points: &[[i64; 2]]) -> i128 {
             p[0] as i128 * q[1] as i128 - q[0] as i128 * p[1] as i128
         })
         .sum()
-}
-
-/// Twice the signed area of a triangle of window vertices in the guard band (fixed point,
-/// y up), in i64: there coordinates stay below 2^23 sub-pixels, so the cross product fits.
-/// The same value as [`signed_area2`] of the three points.
-#[inline(always)]
-pub fn triangle_area2([a, b, c]: [[i64; 2]; 3]) -> i64 {
-    (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
 }
 
 /// Whether a polygon of signed area `area2` is front-facing under `front`.

@@ -1,23 +1,9 @@
 //! Perspective division and the viewport transformation (section 2.11.1).
 
 use super::clip::ClipVertex;
-use crate::raster::setup::to_fixed;
+use crate::common::fixed::to_fixed;
+pub use crate::raster::setup::WindowVertex;
 use crate::state::DrawState;
-
-/// A vertex in window coordinates.
-#[derive(Clone, Copy, Debug)]
-pub struct WindowVertex {
-    /// Fixed-point x, y (8 sub-pixel bits).
-    pub xy: [i64; 2],
-    /// The same position before snapping (window coordinates). Attribute planes use it:
-    /// interpolation from snapped positions extrapolates badly on long thin triangles
-    /// (a perspective plane near its horizon).
-    pub pos: [f64; 2],
-    /// Window z in [0, 1] (depth range applied).
-    pub z: f64,
-    /// 1 / w_clip.
-    pub inv_w: f64,
-}
 
 /// Divides by w and maps to the viewport. `v.pos.w` is positive (clipping guarantees it).
 pub fn to_window(ds: &DrawState, v: &ClipVertex) -> WindowVertex {
@@ -67,7 +53,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use super::{ClipVertex, DrawState, WindowVertex};
-    use crate::raster::setup::SUBPIXEL;
+    use crate::common::fixed::SUBPIXEL;
     use std::arch::x86_64::*;
 
     /// [`super::guard_band_windows`] of four vertices (`clip` and `out` hold four), without

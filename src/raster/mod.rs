@@ -3,6 +3,7 @@
 //! shaded in parallel, each replaying its commands in submission order.
 
 pub mod coarse;
+pub mod controls;
 pub mod line;
 pub mod point;
 pub mod prefetch;

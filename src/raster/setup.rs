@@ -1,58 +1,10 @@
 //! Primitive setup: fixed-point window coordinates (8 sub-pixel bits), 64-bit edge functions
 //! and attribute planes.
 
-use crate::state::tables::limits::SUBPIXEL_BITS;
-
-/// Sub-pixel units per pixel.
-pub const SUBPIXEL: i64 = 1 << SUBPIXEL_BITS;
-
-/// A pixel rectangle `[x0, x1) x [y0, y1)` in window coordinates.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Rect {
-    pub x0: i32,
-    pub y0: i32,
-    pub x1: i32,
-    pub y1: i32,
-}
-
-impl Rect {
-    pub fn intersect(&self, o: &Rect) -> Rect {
-        Rect {
-            x0: self.x0.max(o.x0),
-            y0: self.y0.max(o.y0),
-            x1: self.x1.min(o.x1),
-            y1: self.y1.min(o.y1),
-        }
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.x0 >= self.x1 || self.y0 >= self.y1
-    }
-}
-
-/// A linear function of window position: `a*x + b*y + c`, evaluated at pixel centres.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Plane {
-    pub a: f64,
-    pub b: f64,
-    pub c: f64,
-}
+use crate::common::fixed::SUBPIXEL;
+pub use crate::fragment::plane::Plane;
 
 impl Plane {
-    /// A constant.
-    pub fn constant(v: f64) -> Plane {
-        Plane {
-            a: 0.0,
-            b: 0.0,
-            c: v,
-        }
-    }
-
-    #[inline(always)]
-    pub fn at(&self, x: f64, y: f64) -> f64 {
-        self.a * x + self.b * y + self.c
-    }
-
     /// The plane through three (x, y, value) points; `inv_det` is 1 / twice the signed area.
     pub fn through(p: [[f64; 2]; 3], v: [f64; 3], inv_det: f64) -> Plane {
         PlaneSetup::new(p, inv_det).plane(v)
@@ -125,21 +77,6 @@ impl Edge {
     }
 }
 
-/// Snaps a window coordinate to fixed point. Callers pass clipped coordinates, which are finite
-/// and bounded by the viewport.
-#[inline]
-pub fn to_fixed(v: f64) -> i64 {
-    // `f64::round` (halves away from zero) without the libm call it becomes on x86-64
-    // without SSE4.1: shift by a half towards the sign, then truncate. Exact for |t| < 2^52,
-    // which clipping guarantees.
-    let t = v * SUBPIXEL as f64;
-    if t >= 0.0 {
-        (t + 0.5) as i64
-    } else {
-        (t - 0.5) as i64
-    }
-}
-
 /// Pixels whose centres lie in `[lo, hi]` (fixed point): first and one-past-last index.
 #[inline]
 pub fn centre_range(lo: i64, hi: i64) -> (i32, i32) {
@@ -150,4 +87,27 @@ pub fn centre_range(lo: i64, hi: i64) -> (i32, i32) {
         first.clamp(i32::MIN as i64, i32::MAX as i64) as i32,
         (last + 1).clamp(i32::MIN as i64, i32::MAX as i64) as i32,
     )
+}
+
+/// A vertex in window coordinates.
+#[derive(Clone, Copy, Debug)]
+pub struct WindowVertex {
+    /// Fixed-point x, y (8 sub-pixel bits).
+    pub xy: [i64; 2],
+    /// The same position before snapping (window coordinates). Attribute planes use it:
+    /// interpolation from snapped positions extrapolates badly on long thin triangles
+    /// (a perspective plane near its horizon).
+    pub pos: [f64; 2],
+    /// Window z in [0, 1] (depth range applied).
+    pub z: f64,
+    /// 1 / w_clip.
+    pub inv_w: f64,
+}
+
+/// Twice the signed area of a triangle of window vertices in the guard band (fixed point,
+/// y up), in i64: there coordinates stay below 2^23 sub-pixels, so the cross product fits.
+/// The same value as `primitive::cull::signed_area2` of the three points.
+#[inline(always)]
+pub fn triangle_area2([a, b, c]: [[i64; 2]; 3]) -> i64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1])
 }

@@ -2,7 +2,8 @@
 //! three edge functions directly (triangles are convex), then handed to the span function.
 
 use super::scene::TriangleCommand;
-use super::setup::{Edge, Plane, SUBPIXEL};
+use super::setup::{Edge, Plane};
+use crate::common::fixed::SUBPIXEL;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::Tile;
 use crate::state::DrawState;
@@ -270,11 +271,12 @@ fn stippled_row<'a>(
 }
 
 use super::scene::{Command, Scene};
-use super::setup::{centre_range, PlaneSetup, Rect};
-use crate::api::convert::PolygonMode;
-use crate::primitive::cull::triangle_area2;
-use crate::primitive::viewport::WindowVertex;
-use crate::state::snapshot::{attr, MAX_ATTRS};
+use super::setup::triangle_area2;
+use super::setup::WindowVertex;
+use super::setup::{centre_range, PlaneSetup};
+use crate::common::attr::{self, MAX_ATTRS};
+use crate::common::rect::Rect;
+use crate::common::values::PolygonMode;
 
 /// The window-z plane of a triangle (for polygon offset), or `None` when it has no area.
 pub fn depth_plane(v: [&WindowVertex; 3]) -> Option<Plane> {

@@ -5,102 +5,11 @@
 use glam::{Mat3, Vec3, Vec4};
 
 use super::Context;
-use crate::api::convert::{self, Face, LightModelParam, LightParam, MaterialParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{Face, LightModelParam, LightParam, MaterialParam};
 
-/// One light source (table 6.10); position and spot direction in eye coordinates.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Light {
-    pub enabled: bool,
-    pub ambient: Vec4,
-    pub diffuse: Vec4,
-    pub specular: Vec4,
-    pub position: Vec4,
-    pub spot_direction: Vec3,
-    pub spot_exponent: f32,
-    pub spot_cutoff: f32,
-    /// Constant, linear, quadratic.
-    pub attenuation: [f32; 3],
-}
-
-impl Light {
-    fn default_for(index: usize) -> Light {
-        let (diffuse, specular) = if index == 0 {
-            (Vec4::ONE, Vec4::ONE)
-        } else {
-            (Vec4::new(0.0, 0.0, 0.0, 1.0), Vec4::new(0.0, 0.0, 0.0, 1.0))
-        };
-        Light {
-            enabled: false,
-            ambient: Vec4::new(0.0, 0.0, 0.0, 1.0),
-            diffuse,
-            specular,
-            position: Vec4::new(0.0, 0.0, 1.0, 0.0),
-            spot_direction: Vec3::new(0.0, 0.0, -1.0),
-            spot_exponent: 0.0,
-            spot_cutoff: 180.0,
-            attenuation: [1.0, 0.0, 0.0],
-        }
-    }
-}
-
-/// Material of one face (table 6.9).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Material {
-    pub ambient: Vec4,
-    pub diffuse: Vec4,
-    pub specular: Vec4,
-    pub emission: Vec4,
-    pub shininess: f32,
-}
-
-impl Default for Material {
-    fn default() -> Self {
-        Material {
-            ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
-            diffuse: Vec4::new(0.8, 0.8, 0.8, 1.0),
-            specular: Vec4::new(0.0, 0.0, 0.0, 1.0),
-            emission: Vec4::new(0.0, 0.0, 0.0, 1.0),
-            shininess: 0.0,
-        }
-    }
-}
-
-/// All lighting state.
-#[derive(Clone, Debug)]
-pub struct LightingState {
-    pub enabled: bool,
-    pub lights: [Light; 8],
-    pub model_ambient: Vec4,
-    pub local_viewer: bool,
-    pub two_side: bool,
-    pub separate_specular: bool,
-    /// Front and back.
-    pub materials: [Material; 2],
-    pub color_material: bool,
-    pub color_material_face: Face,
-    pub color_material_mode: MaterialParam,
-    /// `GL_COLOR_SUM` (colour sum with lighting off).
-    pub color_sum: bool,
-}
-
-impl Default for LightingState {
-    fn default() -> Self {
-        LightingState {
-            enabled: false,
-            lights: std::array::from_fn(Light::default_for),
-            model_ambient: Vec4::new(0.2, 0.2, 0.2, 1.0),
-            local_viewer: false,
-            two_side: false,
-            separate_specular: false,
-            materials: [Material::default(); 2],
-            color_material: false,
-            color_material_face: Face::FrontAndBack,
-            color_material_mode: MaterialParam::AmbientAndDiffuse,
-            color_sum: false,
-        }
-    }
-}
+pub use crate::vertex::lighting::{Light, LightingState, Material};
 
 fn faces(face: Face) -> &'static [usize] {
     match face {

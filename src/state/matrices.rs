@@ -6,23 +6,11 @@ use glam::{DMat4, DVec4, Mat4, Vec3};
 
 use super::tables::{limits, Viewport};
 use super::Context;
-use crate::api::convert::{self, MatrixMode};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::MatrixMode;
 
-/// Inverse of `m`, or the identity when `m` is singular or not finite (Mesa does the same;
-/// the specification leaves it undefined).
-pub(crate) fn inverse_or_identity(m: Mat4) -> Mat4 {
-    let det = m.determinant();
-    if det == 0.0 || !det.is_finite() {
-        return Mat4::IDENTITY;
-    }
-    let inv = m.inverse();
-    if inv.is_finite() {
-        inv
-    } else {
-        Mat4::IDENTITY
-    }
-}
+pub(crate) use crate::vertex::transform::inverse_or_identity;
 
 impl Context {
     fn current_stack(&mut self) -> (&mut Vec<Mat4>, usize) {

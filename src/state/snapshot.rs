@@ -7,68 +7,21 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
-use crate::api::convert::{FogMode, TexEnvMode, TexGenMode};
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::rect::Rect;
+use crate::common::values::{Face, PolygonMode, ShadeModel, Winding};
+use crate::common::values::{TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
+pub use crate::fragment::fog::{fog_exp, FogDraw, EXP2_TAYLOR};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
 use crate::fragment::span::{PairFn, SpanFn};
-use crate::raster::setup::Rect;
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{BoundTexture, LevelPlan, LodSelect};
 use crate::vertex::lighting::NormalTransform;
 use crate::vertex::texgen::GenCoord;
 
-/// Attribute layout of a vertex after the vertex stage. Rasterization interpolates the first
-/// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
-/// for back-facing polygons under two-sided lighting.
-pub mod attr {
-    use crate::state::tables::limits::MAX_TEXTURE_UNITS;
-    /// Primary colour RGBA.
-    pub const COLOR0: usize = 0;
-    /// Fog coordinate (right after the primary colour, so that a fogged draw without colour
-    /// sum or texturing interpolates 5 attributes rather than 9 or 41).
-    pub const FOG: usize = 4;
-    /// Secondary colour RGBA.
-    pub const COLOR1: usize = FOG + 1;
-    /// How many attributes the two colours take.
-    pub const COLORS: usize = 8;
-    /// Texture coordinates (s, t, r, q) per unit.
-    pub const TEX: usize = COLOR1 + 4;
-    /// Back-face primary and secondary colours (8, in that order).
-    pub const BACK: usize = TEX + 4 * MAX_TEXTURE_UNITS;
-    /// All attributes.
-    pub const COUNT: usize = BACK + COLORS;
-
-    /// Whether attribute `i` is a component of the primary or the secondary colour.
-    #[inline]
-    pub fn is_color(i: usize) -> bool {
-        (COLOR0..COLOR0 + 4).contains(&i) || (COLOR1..COLOR1 + 4).contains(&i)
-    }
-
-    /// The attribute of component `c` (0..8) of the two colours, primary then secondary.
-    #[inline]
-    pub fn color(c: usize) -> usize {
-        if c < 4 {
-            COLOR0 + c
-        } else {
-            COLOR1 + c - 4
-        }
-    }
-
-    /// Copies the two colours (primary and secondary) of `from` into `to`.
-    #[inline]
-    pub fn copy_colors(to: &mut [f32], from: &[f32]) {
-        for c in 0..COLORS {
-            to[color(c)] = from[color(c)];
-        }
-    }
-}
-/// Number of interpolated colour attributes (primary RGBA).
-pub const COLOR_ATTRS: usize = 4;
-/// The most attributes a vertex can carry.
-pub const MAX_ATTRS: usize = attr::COUNT;
+pub use crate::common::attr::{self, COLOR_ATTRS, MAX_ATTRS};
 
 /// One texture unit that takes part in a draw: it has an enabled, complete texture.
 #[derive(Clone, Debug)]
@@ -88,129 +41,7 @@ pub struct TextureUnitDraw {
     pub fixed_plan: Option<(usize, bool)>,
 }
 
-/// Fog parameters of a draw (section 3.10).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FogDraw {
-    pub mode: FogMode,
-    pub density: f32,
-    pub start: f32,
-    pub end: f32,
-    pub color: [f32; 3],
-    /// Use the vertex fog coordinate instead of the eye distance.
-    pub coord_from_vertex: bool,
-}
-
-impl FogDraw {
-    /// The fog factor f for fog coordinate `c`, clamped to [0, 1]. With start == end the
-    /// linear factor uses a scale of 1 (as Mesa does) instead of dividing by zero.
-    #[inline]
-    pub fn factor(&self, c: f32) -> f32 {
-        let f = match self.mode {
-            FogMode::Linear => (self.end - c) * self.linear_scale(),
-            FogMode::Exp => fog_exp(-self.density * c),
-            FogMode::Exp2 => {
-                let d = self.density * c;
-                fog_exp(-d * d)
-            }
-        };
-        f.max(0.0).min(1.0)
-    }
-
-    /// The linear factor's scale: 1 / (end - start), or 1 when start == end.
-    #[inline]
-    pub fn linear_scale(&self) -> f32 {
-        let range = self.end - self.start;
-        if range != 0.0 {
-            1.0 / range
-        } else {
-            1.0
-        }
-    }
-}
-
-/// `ln(2)^k / k!` for k = 1..6: the Taylor coefficients of 2^f.
-pub const EXP2_TAYLOR: [f32; 6] = [
-    std::f32::consts::LN_2,
-    0.240_226_5,
-    0.055_504_11,
-    0.009_618_129,
-    0.001_333_355_8,
-    0.000_154_035_3,
-];
-
-/// e^x for the fog factor, from operations that eight lanes repeat exactly
-/// (`fragment::simd::fog_factors8`), so the eight-lane paths give the general path's factors:
-/// t = x log2(e) clamped to [-126, 126], n = floor(t + 1/2), 2^(t - n) by its degree-6
-/// Taylor polynomial (|t - n| <= 1/2: relative error below 2e-7, a thousandth of an 8-bit
-/// step), times 2^n built from its exponent bits. NaN gives 2^-126 (a factor of 0, as NaN
-/// clamps to 0), and below x = -87 the result stays at about 1e-38 instead of 0: both
-/// mean "all fog" after 8-bit rounding.
-#[inline]
-pub fn fog_exp(x: f32) -> f32 {
-    let t = (x * std::f32::consts::LOG2_E).max(-126.0).min(126.0);
-    let n = (t + 0.5).floor();
-    let f = t - n;
-    let k = EXP2_TAYLOR;
-    let p = (((((k[5] * f + k[4]) * f + k[3]) * f + k[2]) * f + k[1]) * f + k[0]) * f + 1.0;
-    p * f32::from_bits(((n as i32 + 127) as u32) << 23)
-}
-
-/// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).
-#[derive(Clone, Debug, PartialEq)]
-pub struct RasterDraw {
-    /// `glPointSize`, before attenuation and clamping.
-    pub point_size: f32,
-    pub point_smooth: bool,
-    /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
-    pub point_attenuation: Option<[f32; 3]>,
-    /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.
-    pub point_size_range: [f32; 2],
-    pub line_width: f32,
-    pub line_smooth: bool,
-    /// Repeat factor and pattern, when stippling is enabled.
-    pub line_stipple: Option<(u32, u16)>,
-    /// Front, back.
-    pub polygon_mode: [PolygonMode; 2],
-    /// Depth offset (factor, units in resolvable steps) and where it applies (fill, line,
-    /// point); `None` when no mode enables it.
-    pub offset: Option<PolygonOffsetDraw>,
-    /// Rows bottom first; bit `1 << (31 - x % 32)` of row `y % 32`. `None` when disabled.
-    pub polygon_stipple: Option<[u32; 32]>,
-    /// `GL_POLYGON_SMOOTH`: filled polygons take their coverage into the alpha.
-    pub polygon_smooth: bool,
-}
-
-/// `glPolygonOffset` as a draw applies it: `factor * m + units * r` with `r` the smallest
-/// resolvable depth difference (one step of the fixed-point depth buffer).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PolygonOffsetDraw {
-    pub factor: f64,
-    pub units: f64,
-    /// Enabled for fill, line, point polygon modes.
-    pub enabled: [bool; 3],
-}
-
-impl PolygonOffsetDraw {
-    /// The window-z offset for a polygon whose depth plane has slopes `dzdx`, `dzdy`
-    /// (section 3.5.5: m is the maximum of their magnitudes), when `mode` is enabled.
-    pub fn for_plane(&self, mode: PolygonMode, dzdx: f64, dzdy: f64, depth_max: u32) -> f64 {
-        let on = match mode {
-            PolygonMode::Fill => self.enabled[0],
-            PolygonMode::Line => self.enabled[1],
-            PolygonMode::Point => self.enabled[2],
-        };
-        if !on {
-            return 0.0;
-        }
-        let m = dzdx.abs().max(dzdy.abs());
-        let o = self.factor * m + self.units / depth_max.max(1) as f64;
-        if o.is_finite() {
-            o
-        } else {
-            0.0
-        }
-    }
-}
+pub use crate::raster::controls::{PolygonOffsetDraw, RasterDraw};
 
 /// The frozen state of one draw.
 #[derive(Clone, Debug)]

@@ -1,39 +1,17 @@
 //! GL state as plain data, grouped like the specification's state tables (OpenGL 1.5, section
 //! 6.2), with the defaults those tables give.
 
-use crate::api::convert::{
+use crate::api::enums::GL_DONT_CARE;
+use crate::api::GLenum;
+use crate::common::values::{
     BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode, ShadeModel,
     StencilOp, Winding,
 };
-use crate::api::enums::GL_DONT_CARE;
-use crate::api::GLenum;
 use glam::{DVec4, Mat4, Vec3, Vec4};
 
-/// Implementation limits reported by `glGet`.
-pub mod limits {
-    pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
-    pub const MAX_PROJECTION_STACK_DEPTH: usize = 4;
-    pub const MAX_TEXTURE_STACK_DEPTH: usize = 4;
-    /// User clip planes: 8, as Mesa reports (`GL_MAX_CLIP_PLANES`; the spec asks for at least
-    /// 6). `api/convert.rs` accepts `GL_CLIP_PLANE0 + 0..8` to match.
-    pub const MAX_CLIP_PLANES: usize = 8;
-    pub const MAX_TEXTURE_UNITS: usize = 8;
-    /// Largest viewport and framebuffer side.
-    pub const MAX_VIEWPORT_DIM: i32 = 8192;
-    /// Sub-pixel precision of window coordinates: 8 bits (1/256 pixel). With 64-bit edge
-    /// functions no product overflows for any coordinate inside `MAX_VIEWPORT_DIM` plus the
-    /// largest viewport offset.
-    pub const SUBPIXEL_BITS: i32 = 8;
-    pub const MAX_ATTRIB_STACK_DEPTH: usize = 16;
-    /// Point sizes and line widths rasterized (larger values are clamped to the maximum):
-    /// Mesa's (llvmpipe and softpipe report [1, 255] for aliased and smooth points and lines
-    /// alike), so a program asking for a size of 1000 gets the same picture on both.
-    pub const POINT_SIZE_RANGE: [f32; 2] = [1.0, 255.0];
-    pub const LINE_WIDTH_RANGE: [f32; 2] = [1.0, 255.0];
-    /// `GL_POINT_SIZE_GRANULARITY` and `GL_LINE_WIDTH_GRANULARITY`, as Mesa reports them
-    /// (sizes are not quantised: any granularity is honest).
-    pub const SIZE_GRANULARITY: f64 = 0.1;
-}
+/// Implementation limits reported by `glGet` (defined in the leaf module, where every stage
+/// reads them).
+pub use crate::common::limits;
 
 /// Table 6.6 / 6.7: transformation state.
 #[derive(Clone, Debug)]
@@ -80,8 +58,8 @@ pub struct Viewport {
 
 impl Viewport {
     /// The box's pixels (saturating, so huge sizes do not wrap).
-    pub fn rect(&self) -> crate::raster::setup::Rect {
-        crate::raster::setup::Rect {
+    pub fn rect(&self) -> crate::common::rect::Rect {
+        crate::common::rect::Rect {
             x0: self.x,
             y0: self.y,
             x1: self.x.saturating_add(self.width),
@@ -295,85 +273,5 @@ impl Default for Hints {
     }
 }
 
-/// Table 6.17: pixel storage modes of one direction (pack or unpack).
-#[derive(Clone, Copy, Debug)]
-pub struct PixelStore {
-    pub alignment: i32,
-    pub row_length: i32,
-    pub skip_pixels: i32,
-    pub skip_rows: i32,
-    pub skip_images: i32,
-    pub image_height: i32,
-    pub swap_bytes: bool,
-    pub lsb_first: bool,
-}
-
-impl Default for PixelStore {
-    fn default() -> Self {
-        PixelStore {
-            alignment: 4,
-            row_length: 0,
-            skip_pixels: 0,
-            skip_rows: 0,
-            skip_images: 0,
-            image_height: 0,
-            swap_bytes: false,
-            lsb_first: false,
-        }
-    }
-}
-
-impl PixelStore {
-    /// Bytes spanned by an image of `width` x `height` x `depth` pixels of `bytes_per_pixel`
-    /// (components times component size) under these storage modes, counting skips (section
-    /// 3.6.4). Returns `None` on overflow.
-    pub fn image_bytes(
-        &self,
-        width: usize,
-        height: usize,
-        depth: usize,
-        bytes_per_pixel: usize,
-        component_size: usize,
-    ) -> Option<usize> {
-        if width == 0 || height == 0 || depth == 0 {
-            return Some(0);
-        }
-        let row = self.row_stride(width, bytes_per_pixel, component_size)?;
-        let rows_per_image = if self.image_height > 0 {
-            self.image_height as usize
-        } else {
-            height
-        };
-        let image = row.checked_mul(rows_per_image)?;
-        let first = image
-            .checked_mul(self.skip_images.max(0) as usize)?
-            .checked_add(row.checked_mul(self.skip_rows.max(0) as usize)?)?
-            .checked_add((self.skip_pixels.max(0) as usize).checked_mul(bytes_per_pixel)?)?;
-        let last_row_end = width.checked_mul(bytes_per_pixel)?;
-        first
-            .checked_add(image.checked_mul(depth - 1)?)?
-            .checked_add(row.checked_mul(height - 1)?)?
-            .checked_add(last_row_end)
-    }
-
-    /// Distance in bytes between the starts of two rows.
-    pub fn row_stride(
-        &self,
-        width: usize,
-        bytes_per_pixel: usize,
-        component_size: usize,
-    ) -> Option<usize> {
-        let pixels = if self.row_length > 0 {
-            self.row_length as usize
-        } else {
-            width
-        };
-        let raw = pixels.checked_mul(bytes_per_pixel)?;
-        let align = self.alignment.max(1) as usize;
-        if component_size >= align {
-            Some(raw)
-        } else {
-            Some(raw.div_ceil(align) * align)
-        }
-    }
-}
+/// Table 6.17: pixel storage modes (defined in `texture::pixels`, which interprets them).
+pub use crate::texture::pixels::PixelStore;

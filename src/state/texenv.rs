@@ -4,58 +4,12 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert::{
-    self, CombineFunc, CombineOperand, CombineSource, TexEnvMode, TexEnvParam,
-};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::TexEnvParam;
 use crate::vertex::immediate::norm_i32;
 
-/// The environment of one texture unit (table 6.21).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TexEnv {
-    pub mode: TexEnvMode,
-    pub color: [f32; 4],
-    /// `GL_TEXTURE_FILTER_CONTROL`'s `GL_TEXTURE_LOD_BIAS`.
-    pub lod_bias: f32,
-    pub combine: Combine,
-}
-
-/// The `GL_COMBINE` settings of a unit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Combine {
-    pub rgb: CombineFunc,
-    pub alpha: CombineFunc,
-    /// Arguments 0-2, and argument 3 of NV_texture_env_combine4's `GL_COMBINE4_NV`.
-    pub src_rgb: [CombineSource; 4],
-    pub src_alpha: [CombineSource; 4],
-    pub op_rgb: [CombineOperand; 4],
-    pub op_alpha: [CombineOperand; 4],
-    /// 1, 2 or 4.
-    pub rgb_scale: u8,
-    pub alpha_scale: u8,
-}
-
-impl Default for TexEnv {
-    fn default() -> Self {
-        use CombineOperand::*;
-        use CombineSource::*;
-        TexEnv {
-            mode: TexEnvMode::Modulate,
-            color: [0.0; 4],
-            lod_bias: 0.0,
-            combine: Combine {
-                rgb: CombineFunc::Modulate,
-                alpha: CombineFunc::Modulate,
-                src_rgb: [Texture, Previous, Constant, Zero],
-                src_alpha: [Texture, Previous, Constant, Zero],
-                op_rgb: [SrcColor, SrcColor, SrcAlpha, SrcColor],
-                op_alpha: [SrcAlpha, SrcAlpha, SrcAlpha, SrcAlpha],
-                rgb_scale: 1,
-                alpha_scale: 1,
-            },
-        }
-    }
-}
+pub use crate::fragment::texenv::{Combine, TexEnv};
 
 impl Context {
     pub(crate) fn active_texture(&mut self, texture: GLenum) {

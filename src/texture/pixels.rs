@@ -6,8 +6,90 @@
 //! `GL_BITMAP` data, which texture images do not take. Signed and unsigned integers become
 //! floats by table 2.9 of OpenGL 1.5: unsigned `c / (2^b - 1)`, signed `(2c + 1) / (2^b - 1)`.
 
-use crate::api::convert::{TexPixelFormat, TexPixelType};
-use crate::state::tables::PixelStore;
+use crate::common::values::{TexPixelFormat, TexPixelType};
+
+/// Table 6.17: pixel storage modes of one direction (pack or unpack).
+#[derive(Clone, Copy, Debug)]
+pub struct PixelStore {
+    pub alignment: i32,
+    pub row_length: i32,
+    pub skip_pixels: i32,
+    pub skip_rows: i32,
+    pub skip_images: i32,
+    pub image_height: i32,
+    pub swap_bytes: bool,
+    pub lsb_first: bool,
+}
+
+impl Default for PixelStore {
+    fn default() -> Self {
+        PixelStore {
+            alignment: 4,
+            row_length: 0,
+            skip_pixels: 0,
+            skip_rows: 0,
+            skip_images: 0,
+            image_height: 0,
+            swap_bytes: false,
+            lsb_first: false,
+        }
+    }
+}
+
+impl PixelStore {
+    /// Bytes spanned by an image of `width` x `height` x `depth` pixels of `bytes_per_pixel`
+    /// (components times component size) under these storage modes, counting skips (section
+    /// 3.6.4). Returns `None` on overflow.
+    pub fn image_bytes(
+        &self,
+        width: usize,
+        height: usize,
+        depth: usize,
+        bytes_per_pixel: usize,
+        component_size: usize,
+    ) -> Option<usize> {
+        if width == 0 || height == 0 || depth == 0 {
+            return Some(0);
+        }
+        let row = self.row_stride(width, bytes_per_pixel, component_size)?;
+        let rows_per_image = if self.image_height > 0 {
+            self.image_height as usize
+        } else {
+            height
+        };
+        let image = row.checked_mul(rows_per_image)?;
+        let first = image
+            .checked_mul(self.skip_images.max(0) as usize)?
+            .checked_add(row.checked_mul(self.skip_rows.max(0) as usize)?)?
+            .checked_add((self.skip_pixels.max(0) as usize).checked_mul(bytes_per_pixel)?)?;
+        let last_row_end = width.checked_mul(bytes_per_pixel)?;
+        first
+            .checked_add(image.checked_mul(depth - 1)?)?
+            .checked_add(row.checked_mul(height - 1)?)?
+            .checked_add(last_row_end)
+    }
+
+    /// Distance in bytes between the starts of two rows.
+    pub fn row_stride(
+        &self,
+        width: usize,
+        bytes_per_pixel: usize,
+        component_size: usize,
+    ) -> Option<usize> {
+        let pixels = if self.row_length > 0 {
+            self.row_length as usize
+        } else {
+            width
+        };
+        let raw = pixels.checked_mul(bytes_per_pixel)?;
+        let align = self.alignment.max(1) as usize;
+        if component_size >= align {
+            Some(raw)
+        } else {
+            Some(raw.div_ceil(align) * align)
+        }
+    }
+}
 
 /// Where the pixels of an image lie in client memory.
 #[derive(Clone, Copy, Debug)]
@@ -277,7 +359,7 @@ pub fn pack_group(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::convert::PackedType;
+    use crate::common::values::PackedType;
 
     #[test]
     fn packed_layouts_by_hand() {

@@ -1,12 +1,27 @@
 //! Object to clip coordinates, and the per-vertex attributes the draw needs.
 
-use glam::DVec4;
+use glam::{DVec4, Mat4};
 
 use super::immediate::ImmVertex;
 use super::texgen;
+use crate::common::attr;
 use crate::primitive::clip::ClipVertex;
-use crate::state::snapshot::attr;
 use crate::state::DrawState;
+
+/// Inverse of `m`, or the identity when `m` is singular or not finite (Mesa does the same;
+/// the specification leaves it undefined).
+pub(crate) fn inverse_or_identity(m: Mat4) -> Mat4 {
+    let det = m.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return Mat4::IDENTITY;
+    }
+    let inv = m.inverse();
+    if inv.is_finite() {
+        inv
+    } else {
+        Mat4::IDENTITY
+    }
+}
 
 /// Transforms one vertex. Colours are clamped to [0, 1] here (section 2.14.7; with lighting
 /// off the current colour is used as is, then clamped).

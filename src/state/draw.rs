@@ -1,0 +1,298 @@
+//! The draw driver: a batch of vertices through the pipeline, from transform (`vertex`) through
+//! assembly, clipping, culling and the viewport (`primitive`) to binning (`raster`).
+
+use crate::common::values::{PolygonMode, PrimitiveMode};
+use crate::primitive::assemble::{self, Primitive};
+use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
+use crate::primitive::cull::{is_culled, is_front, signed_area2, triangle_area2};
+use crate::primitive::viewport::WindowVertex;
+use crate::primitive::viewport::{guard_band_windows, to_window};
+use crate::raster::{line, point, tri};
+use crate::state::{Context, DrawState};
+use crate::vertex::immediate::ImmVertex;
+use crate::vertex::{
+    copy_provoking_colors, transform, use_back_colors, PARALLEL_TRANSFORM_MIN, TRANSFORM_CHUNK,
+};
+use std::sync::Arc;
+
+impl Context {
+    /// Draws a batch of vertices of one primitive mode.
+    pub(crate) fn draw_vertices(&mut self, mode: PrimitiveMode, verts: &[ImmVertex]) {
+        if verts.is_empty() {
+            return;
+        }
+        if self.select.mode != crate::common::values::RenderMode::Render {
+            return self.select_feedback_vertices(mode, verts);
+        }
+        let ds = self.snapshot();
+        if ds.draw_rect.is_empty() || ds.key.writes_nothing() {
+            return;
+        }
+        // Reuse the clip-space buffer across draws: large batches would otherwise fault in
+        // fresh pages every frame. Every element is overwritten below (in place: a clip
+        // vertex is 264 bytes), so only elements beyond the old length are initialised.
+        let mut clip = std::mem::take(&mut self.clip_buffer);
+        clip.resize(verts.len(), ClipVertex::ZERO);
+        // Filled one-sided polygons whose vertices lie in the guard band (`in_guard_band`)
+        // need no clipping, only the window positions: each vertex's is computed once here,
+        // not once per triangle that shares it (a strip's vertex belongs to three).
+        let mut windows = std::mem::take(&mut self.window_buffer);
+        windows.clear();
+        let shared_windows = ds.raster.polygon_mode == [PolygonMode::Fill; 2]
+            && !ds.two_sided
+            && !matches!(
+                mode,
+                PrimitiveMode::Points
+                    | PrimitiveMode::Lines
+                    | PrimitiveMode::LineLoop
+                    | PrimitiveMode::LineStrip
+            );
+        // Large batches are transformed on the worker threads too (each vertex independently,
+        // results in order, so the output does not depend on the thread count).
+        match &self.pool {
+            Some(pool)
+                if verts.len() >= PARALLEL_TRANSFORM_MIN && pool.current_num_threads() > 1 =>
+            {
+                use rayon::prelude::*;
+                pool.install(|| {
+                    clip.par_chunks_mut(TRANSFORM_CHUNK)
+                        .zip(verts.par_chunks(TRANSFORM_CHUNK))
+                        .for_each(|(c, v)| transform::to_clip_batch(&ds, v, c));
+                    if shared_windows {
+                        windows.resize(clip.len(), None);
+                        windows
+                            .par_chunks_mut(TRANSFORM_CHUNK)
+                            .zip(clip.par_chunks(TRANSFORM_CHUNK))
+                            .for_each(|(w, c)| guard_band_windows(&ds, c, w));
+                    }
+                });
+            }
+            _ => {
+                transform::to_clip_batch(&ds, verts, &mut clip);
+                if shared_windows {
+                    windows.resize(clip.len(), None);
+                    guard_band_windows(&ds, &clip, &mut windows);
+                }
+            }
+        }
+        self.draw_clipped(&ds, mode, &clip, shared_windows.then_some(&windows[..]));
+        self.clip_buffer = clip;
+        self.window_buffer = windows;
+    }
+
+    /// Assembles, clips and bins the primitives of `clip`. `windows`, when given, holds each
+    /// vertex's window position (`None` outside the guard band); only filled one-sided
+    /// polygons take it.
+    fn draw_clipped(
+        &mut self,
+        ds: &Arc<DrawState>,
+        mode: PrimitiveMode,
+        clip: &[ClipVertex],
+        windows: Option<&[Option<WindowVertex>]>,
+    ) {
+        let n_attrs = ds.attr_count;
+        let clip_attrs = ds.clip_attr_count;
+        let user = &ds.clip_planes;
+        let mut poly = Vec::with_capacity(16);
+        let mut scratch = Vec::with_capacity(16);
+        let mut win = Vec::with_capacity(16);
+        let mut xy = Vec::with_capacity(16);
+        // Line stipple: the counter restarts with each independent segment (GL_LINES) and
+        // runs on along a strip or loop (section 3.4.2).
+        let mut stipple_counter = 0u32;
+        let independent_lines = mode == PrimitiveMode::Lines;
+        let edge_flags = assemble::uses_edge_flags(mode);
+        let mut prims = std::mem::take(&mut self.primitive_buffer);
+        assemble::assemble_into(mode, clip.len(), &mut prims);
+        for &prim in &prims {
+            if self.scene.is_full() {
+                self.flush_scene();
+            }
+            self.flush_in_background();
+            let state = self.scene.add_state(ds);
+            match prim {
+                Primitive::Point(i) => {
+                    if point_visible(&clip[i], user) {
+                        let w = to_window(ds, &clip[i]);
+                        let size = point::derived_size(&ds.raster, clip[i].eye);
+                        point::bin_point(
+                            ds,
+                            state,
+                            &w,
+                            size,
+                            0.0,
+                            &clip[i].attrs[..n_attrs],
+                            &mut self.scene,
+                        );
+                    }
+                }
+                Primitive::Line { v, provoking } => {
+                    let (mut a, mut b) = (clip[v[0]], clip[v[1]]);
+                    if ds.flat {
+                        copy_provoking_colors(ds, &mut a, &clip[provoking]);
+                        copy_provoking_colors(ds, &mut b, &clip[provoking]);
+                    }
+                    if independent_lines {
+                        stipple_counter = 0;
+                    }
+                    if let Some((a, b)) = clip_line(&a, &b, user, clip_attrs) {
+                        let wa = to_window(ds, &a);
+                        let wb = to_window(ds, &b);
+                        line::bin_line(
+                            ds,
+                            state,
+                            [&wa, &wb],
+                            [&a.attrs[..n_attrs], &b.attrs[..n_attrs]],
+                            0.0,
+                            &mut stipple_counter,
+                            &mut self.scene,
+                        );
+                    }
+                }
+                Primitive::Triangle {
+                    v,
+                    provoking,
+                    edges,
+                } => {
+                    let tri = [&clip[v[0]], &clip[v[1]], &clip[v[2]]];
+                    let inside = windows.and_then(|w| {
+                        Some([w[v[0]].as_ref()?, w[v[1]].as_ref()?, w[v[2]].as_ref()?])
+                    });
+                    if let Some(w) = inside {
+                        // Filled and inside the guard band (the common case): no clipping, no
+                        // copies.
+                        let area = triangle_area2([w[0].xy, w[1].xy, w[2].xy]) as i128;
+                        if area == 0 || is_culled(ds.cull, is_front(area, ds.front_face)) {
+                            continue;
+                        }
+                        // Flat shading takes the provoking vertex's colours only; texture and
+                        // fog coordinates still vary across the triangle.
+                        let flat;
+                        let verts = if ds.flat {
+                            let mut copies = [*tri[0], *tri[1], *tri[2]];
+                            for v in copies.iter_mut() {
+                                copy_provoking_colors(ds, v, &clip[provoking]);
+                            }
+                            flat = copies;
+                            [&flat[0], &flat[1], &flat[2]]
+                        } else {
+                            tri
+                        };
+                        tri::bin_triangle(
+                            ds,
+                            state,
+                            w,
+                            verts.map(|c| &c.attrs[..n_attrs]),
+                            &mut self.scene,
+                        );
+                        continue;
+                    }
+                    poly.clear();
+                    poly.extend(tri.iter().map(|&c| *c));
+                    for (k, p) in poly.iter_mut().enumerate() {
+                        // Diagonals of split quads and polygons are never boundary edges.
+                        p.edge = edges[k] && (p.edge || !edge_flags);
+                    }
+                    if ds.flat {
+                        for p in poly.iter_mut() {
+                            copy_provoking_colors(ds, p, &clip[provoking]);
+                        }
+                    }
+                    if !clip_polygon(&mut poly, &mut scratch, user, ds.guard, clip_attrs) {
+                        continue;
+                    }
+                    win.clear();
+                    win.extend(poly.iter().map(|p| to_window(ds, p)));
+                    xy.clear();
+                    xy.extend(win.iter().map(|w| w.xy));
+                    let area = signed_area2(&xy);
+                    if area == 0 {
+                        continue;
+                    }
+                    let front = is_front(area, ds.front_face);
+                    if is_culled(ds.cull, front) {
+                        continue;
+                    }
+                    if ds.two_sided && !front {
+                        for p in poly.iter_mut() {
+                            use_back_colors(&mut p.attrs);
+                        }
+                    }
+                    let polygon_mode = ds.raster.polygon_mode[usize::from(!front)];
+                    if polygon_mode != PolygonMode::Fill {
+                        self.draw_polygon_outline(ds, state, polygon_mode, &poly, &win);
+                        continue;
+                    }
+                    for k in 1..poly.len() - 1 {
+                        tri::bin_triangle(
+                            ds,
+                            state,
+                            [&win[0], &win[k], &win[k + 1]],
+                            [
+                                &poly[0].attrs[..n_attrs],
+                                &poly[k].attrs[..n_attrs],
+                                &poly[k + 1].attrs[..n_attrs],
+                            ],
+                            &mut self.scene,
+                        );
+                    }
+                }
+            }
+        }
+        self.primitive_buffer = prims;
+    }
+
+    /// A polygon in `GL_POINT` or `GL_LINE` mode (section 3.5.4): its boundary vertices as
+    /// points, or its boundary edges as lines, with the polygon's depth offset when the mode's
+    /// offset is enabled.
+    fn draw_polygon_outline(
+        &mut self,
+        ds: &Arc<DrawState>,
+        state: u32,
+        mode: PolygonMode,
+        poly: &[ClipVertex],
+        win: &[WindowVertex],
+    ) {
+        let n_attrs = ds.attr_count;
+        let z_offset = match (
+            &ds.raster.offset,
+            tri::depth_plane([&win[0], &win[1], &win[2]]),
+        ) {
+            (Some(o), Some(z)) => o.for_plane(mode, z.a, z.b, ds.depth_max),
+            _ => 0.0,
+        };
+        let n = poly.len();
+        for k in 0..n {
+            if !poly[k].edge {
+                continue;
+            }
+            match mode {
+                PolygonMode::Point => {
+                    let size = point::derived_size(&ds.raster, poly[k].eye);
+                    point::bin_point(
+                        ds,
+                        state,
+                        &win[k],
+                        size,
+                        z_offset,
+                        &poly[k].attrs[..n_attrs],
+                        &mut self.scene,
+                    );
+                }
+                _ => {
+                    let j = (k + 1) % n;
+                    let mut stipple_counter = 0;
+                    line::bin_line(
+                        ds,
+                        state,
+                        [&win[k], &win[j]],
+                        [&poly[k].attrs[..n_attrs], &poly[j].attrs[..n_attrs]],
+                        z_offset,
+                        &mut stipple_counter,
+                        &mut self.scene,
+                    );
+                }
+            }
+        }
+    }
+}
