@@ -469,6 +469,96 @@ fn capi_audit_tables(ex: &mut String, core: &[&Command]) {
     writeln!(ex, "];").unwrap();
 }
 
+/// The table of structured calls for the fuzzer (`fuzz/`, target `c_calls`): for every
+/// exported entry point, a call whose scalars come from a [`FuzzArgs`] source and whose
+/// pointers point to memory the source hands out, as long as the C ABI itself computes for
+/// those scalars and the current state (the same length expressions as the exports), so every
+/// call keeps the C contract. Pointers GL keeps (client arrays, selection and feedback
+/// buffers) are the source's to place.
+fn capi_fuzz_table(ex: &mut String, core: &[&Command]) {
+    ex.push_str(
+        "/// Where the fuzzer's structured calls (`FUZZ_CALLS`) take their arguments from.\n\
+#[doc(hidden)]\n\
+pub trait FuzzArgs {\n\
+    /// A value for the integer parameter `param` (of GL type `ty`) of `cmd`.\n\
+    fn int(&mut self, cmd: &'static str, param: &'static str, ty: &'static str) -> i64;\n\
+    /// A value for the floating-point parameter `param` of `cmd`.\n\
+    fn float(&mut self, cmd: &'static str, param: &'static str) -> f64;\n\
+    /// `bytes` bytes of memory, aligned for any GL type, for the pointer parameter `param`\n\
+    /// (elements of GL type `ty`, `void` for data of any type; null is allowed), valid until\n\
+    /// the call returns; `None` skips the call.\n\
+    fn memory(&mut self, cmd: &'static str, param: &'static str, ty: &'static str, bytes: usize) -> Option<*mut u8>;\n\
+    /// An address for a pointer parameter GL keeps after the call (client arrays, indices,\n\
+    /// selection and feedback buffers, `glGetPointerv`'s result).\n\
+    fn retained(&mut self, cmd: &'static str, param: &'static str) -> *mut u8;\n\
+}\n\
+/// A structured call: draws its arguments from the source, then calls the export.\n\
+#[doc(hidden)]\n\
+pub type FuzzCall = unsafe fn(&mut dyn FuzzArgs);\n\
+/// Every exported entry point (core names) with its structured call.\n\
+#[doc(hidden)]\n\
+#[allow(clippy::unnecessary_cast, clippy::let_unit_value, unused_parens, unused_variables)]\n\
+pub const FUZZ_CALLS: &[(&str, FuzzCall)] = &[\n",
+    );
+    for c in core {
+        let mut body = String::new();
+        for p in c.params.iter().filter(|p| p.depth == 0) {
+            let n = ident(&p.name);
+            let t = scalar(&p.base);
+            let v = if matches!(t, "GLfloat" | "GLclampf" | "GLdouble" | "GLclampd") {
+                format!("a.float(\"{}\", \"{}\") as {t}", c.name, p.name)
+            } else {
+                format!("a.int(\"{}\", \"{}\", \"{t}\") as {t}", c.name, p.name)
+            };
+            writeln!(body, "        let {n} = {v};").unwrap();
+        }
+        for p in c.params.iter().filter(|p| p.depth > 0) {
+            let n = ident(&p.name);
+            if is_retained(&c.name, p) {
+                writeln!(
+                    body,
+                    "        let {n} = a.retained(\"{}\", \"{}\") as {};",
+                    c.name,
+                    p.name,
+                    c_param_type(p)
+                )
+                .unwrap();
+                continue;
+            }
+            let elem = if p.base == "void" {
+                "u8"
+            } else {
+                scalar(&p.base)
+            };
+            writeln!(
+                body,
+                "        let bytes = with_current(|ctx| {{ let _ = &ctx; ({}) as usize }}).saturating_mul(std::mem::size_of::<{elem}>());",
+                c_len_expr(c, p)
+            )
+            .unwrap();
+            writeln!(
+                body,
+                "        let Some({n}) = a.memory(\"{}\", \"{}\", \"{}\", bytes) else {{ return; }};\n        let {n} = {n} as {};",
+                c.name,
+                p.name,
+                if p.base == "void" { "void" } else { scalar(&p.base) },
+                c_param_type(p)
+            )
+            .unwrap();
+        }
+        let args: Vec<String> = c.params.iter().map(|p| ident(&p.name)).collect();
+        writeln!(
+            ex,
+            "    (\"{0}\", |a| {{\n{1}        // SAFETY: every pointer spans what the C ABI reads or writes for these arguments.\n        let _ = unsafe {{ {0}({2}) }};\n    }}),",
+            c.name,
+            body,
+            args.join(", ")
+        )
+        .unwrap();
+    }
+    writeln!(ex, "];").unwrap();
+}
+
 /// The C text of a parameter's type, as `GL/gl.h` writes it.
 fn c_header_type(p: &Param) -> String {
     match (p.depth, p.is_const) {
@@ -1115,6 +1205,7 @@ fn main() {
     }
     writeln!(fo, "}}").unwrap();
     capi_audit_tables(&mut ex, &core);
+    capi_fuzz_table(&mut ex, &core);
     writeln!(ex, "/// The exported GL function of this name (core or ARB/EXT alias), for `OSMesaGetProcAddress`.").unwrap();
     writeln!(
         ex,

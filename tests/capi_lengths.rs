@@ -1035,3 +1035,52 @@ fn fixed_length_pointers_fit_and_short_ones_are_caught() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Pointers GL keeps are held to a declared buffer too, when a draw reads them: a client
+/// vertex array and a client index array read for more elements than the buffer holds are
+/// counted as overruns (and cut at its end), the same draws within it are not. The fuzzer's
+/// `c_calls` target relies on this for draws whose indices it chose.
+#[test]
+fn retained_client_arrays_are_held_to_a_declared_buffer() {
+    let _current = Current::new();
+    // One buffer: three 2D vertices (24 bytes), then six indices (12 bytes), then room, so the
+    // vertices lie before a bound declared on the indices and the reads past either are real
+    // memory.
+    let mut memory = [0u8; 64];
+    for (i, v) in [-1.0f32, -1.0, 1.0, -1.0, 0.0, 1.0].iter().enumerate() {
+        memory[i * 4..i * 4 + 4].copy_from_slice(&v.to_ne_bytes());
+    }
+    for (i, x) in [0u16, 1, 2, 2, 1, 0].iter().enumerate() {
+        memory[24 + i * 2..26 + i * 2].copy_from_slice(&x.to_ne_bytes());
+    }
+    let vertices = memory.as_ptr() as *const c_void;
+    // SAFETY: 24 is inside the 64-byte buffer.
+    let indices = unsafe { memory.as_ptr().add(24) } as *const c_void;
+    let draws = |declared: usize, count: GLsizei, elements: bool| -> (GLenum, usize) {
+        // SAFETY: the vertex array and the indices (in `memory`) outlive the draw; the
+        // declared length is at most what they hold, and reads past it are cut by the check
+        // under test (never past `memory`).
+        unsafe {
+            glEnableClientState(GL_VERTEX_ARRAY);
+            glVertexPointer(2, GL_FLOAT, 0, vertices);
+            let start = if elements { indices } else { vertices };
+            assert_eq!(tilegl_debug_client_bound(start, declared), 1);
+            if elements {
+                glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_SHORT, indices);
+            } else {
+                glDrawArrays(GL_TRIANGLES, 0, count);
+            }
+            let overruns = tilegl_debug_client_overruns();
+            tilegl_debug_client_bound(std::ptr::null(), 0);
+            glDisableClientState(GL_VERTEX_ARRAY);
+            (glGetError(), overruns)
+        }
+    };
+    assert_eq!(draws(24, 3, false), (GL_NO_ERROR, 0));
+    assert!(
+        draws(24, 6, false).1 > 0,
+        "6 vertices from a 3-vertex array"
+    );
+    assert_eq!(draws(12, 6, true), (GL_NO_ERROR, 0));
+    assert!(draws(6, 6, true).1 > 0, "6 indices from a 3-index buffer");
+}

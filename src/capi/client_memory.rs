@@ -21,7 +21,24 @@ use crate::api::types::ClientPtr;
 
 /// Calls `f` with the `len` bytes at `ptr` (an empty slice for a null pointer or `len == 0`).
 pub(crate) fn with_client_bytes<R>(ptr: ClientPtr, len: usize, f: impl FnOnce(&[u8]) -> R) -> R {
-    if ptr.0 == 0 || len == 0 || len > isize::MAX as usize {
+    with_client_bytes_from(ptr, 0, len, f)
+}
+
+/// Calls `f` with the `len` bytes `offset` bytes past `base` (a client array's start: the
+/// debug builds' client-buffer check holds the whole span from `base` to the declared
+/// buffer's end, as for pointer parameters; see `capi::client_bound`).
+pub(crate) fn with_client_bytes_from<R>(
+    base: ClientPtr,
+    offset: usize,
+    len: usize,
+    f: impl FnOnce(&[u8]) -> R,
+) -> R {
+    let span = super::client_bound::allowed(base.0, offset.saturating_add(len));
+    let len = len.min(span.saturating_sub(offset));
+    let Some(ptr) = base.0.checked_add(offset).map(ClientPtr) else {
+        return f(&[]);
+    };
+    if base.0 == 0 || len == 0 || len > isize::MAX as usize {
         return f(&[]);
     }
     // SAFETY: by the GL client-array contract (module docs) the application guarantees that
@@ -48,6 +65,8 @@ pub(crate) fn store_pointer(dest: ClientPtr, value: usize) {
 /// Copies `bytes` to the client memory at `dest` (the selection and feedback buffers, filled
 /// when `glRenderMode` leaves the mode), unless `dest` is null.
 pub(crate) fn write_client_bytes(dest: ClientPtr, bytes: &[u8]) {
+    // Debug builds hold the write to a declared client buffer (see `capi::client_bound`).
+    let bytes = &bytes[..super::client_bound::allowed(dest.0, bytes.len())];
     if dest.0 == 0 || bytes.is_empty() {
         return;
     }

@@ -5,10 +5,35 @@
 
 pub mod image;
 
-/// Side of a square tile in pixels.
+/// Side of a square tile in pixels, unless [`TILE_ENV`] chooses another.
 pub const TILE: usize = 64;
-/// Pixels per tile.
-pub const TILE_PIXELS: usize = TILE * TILE;
+/// The tile sides [`TILE_ENV`] may choose.
+pub const TILE_SIZES: [usize; 4] = [16, 32, 64, 128];
+/// The environment variable that chooses the tile side of the framebuffers a process makes:
+/// `TILEGL_TILE=16`, `32`, `64` or `128` (other values, or none, give [`TILE`]). Read once, at
+/// the first framebuffer; the pictures are the same for every size
+/// (`conformance/tests/determinism.rs`), only the work split changes.
+pub const TILE_ENV: &str = "TILEGL_TILE";
+
+/// log2 of the tile side framebuffers get, once known (0: not read yet).
+static TILE_SHIFT: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
+
+/// log2 of the tile side new framebuffers get ([`TILE_ENV`], else [`TILE`]).
+pub fn tile_shift() -> u32 {
+    match TILE_SHIFT.load(std::sync::atomic::Ordering::Relaxed) {
+        0 => {
+            let side = std::env::var(TILE_ENV)
+                .ok()
+                .and_then(|v| v.trim().parse::<usize>().ok())
+                .filter(|s| TILE_SIZES.contains(s))
+                .unwrap_or(TILE);
+            let shift = side.trailing_zeros();
+            TILE_SHIFT.store(shift, std::sync::atomic::Ordering::Relaxed);
+            shift
+        }
+        s => s,
+    }
+}
 
 /// One tile of every buffer.
 #[derive(Clone, Debug, Default)]
@@ -17,6 +42,8 @@ pub struct Tile {
     pub x0: i32,
     /// Window y of the tile's lower-left pixel.
     pub y0: i32,
+    /// log2 of the tile's side (its rows are `1 << shift` pixels apart).
+    pub shift: u32,
     /// RGBA8 pixels, bytes in R, G, B, A order; row-major from the bottom row.
     pub color: Vec<[u8; 4]>,
     /// Depth values as unsigned integers in `0..=depth_max`.
@@ -32,12 +59,18 @@ impl Tile {
     /// Index of window pixel (x, y) within the tile; the pixel must lie in it.
     #[inline(always)]
     pub fn index(&self, x: i32, y: i32) -> usize {
-        (y - self.y0) as usize * TILE + (x - self.x0) as usize
+        (((y - self.y0) as usize) << self.shift) + (x - self.x0) as usize
+    }
+
+    /// The tile's side in pixels.
+    #[inline(always)]
+    pub fn side(&self) -> i32 {
+        1 << self.shift
     }
 
     /// The window pixels the tile covers.
     pub fn rect(&self) -> crate::common::rect::Rect {
-        let t = TILE as i32;
+        let t = self.side();
         crate::common::rect::Rect {
             x0: self.x0,
             y0: self.y0,
@@ -96,6 +129,8 @@ pub struct Framebuffer {
     pub height: i32,
     pub tiles_x: usize,
     pub tiles_y: usize,
+    /// log2 of the tiles' side ([`tile_shift`] when the framebuffer was made).
+    pub tile_shift: u32,
     pub tiles: Vec<Tile>,
     pub config: FramebufferConfig,
     /// Which colour buffer the tiles' `color` storage holds at the moment.
@@ -119,27 +154,28 @@ impl Framebuffer {
     pub fn new(width: i32, height: i32, config: FramebufferConfig) -> Framebuffer {
         let width = width.max(0);
         let height = height.max(0);
-        let tiles_x = (width as usize).div_ceil(TILE);
-        let tiles_y = (height as usize).div_ceil(TILE);
+        let shift = tile_shift();
+        let side = 1usize << shift;
+        let pixels = side * side;
+        let tiles_x = (width as usize).div_ceil(side);
+        let tiles_y = (height as usize).div_ceil(side);
         let depth_max = depth_max(config.depth_bits);
         let mut tiles = Vec::with_capacity(tiles_x * tiles_y);
         for ty in 0..tiles_y {
             for tx in 0..tiles_x {
                 tiles.push(Tile {
-                    x0: (tx * TILE) as i32,
-                    y0: (ty * TILE) as i32,
-                    color: vec![[0; 4]; TILE_PIXELS],
-                    depth: vec![depth_max; TILE_PIXELS],
-                    stencil: vec![0; TILE_PIXELS],
+                    x0: (tx * side) as i32,
+                    y0: (ty * side) as i32,
+                    shift,
+                    color: vec![[0; 4]; pixels],
+                    depth: vec![depth_max; pixels],
+                    stencil: vec![0; pixels],
                     samples_passed: 0,
                 });
             }
         }
         let (parked, initial) = if config.double_buffer {
-            (
-                vec![vec![[0; 4]; TILE_PIXELS]; tiles.len()],
-                ColorBuffer::Back,
-            )
+            (vec![vec![[0; 4]; pixels]; tiles.len()], ColorBuffer::Back)
         } else {
             (Vec::new(), ColorBuffer::Front)
         };
@@ -153,6 +189,7 @@ impl Framebuffer {
             height,
             tiles_x,
             tiles_y,
+            tile_shift: shift,
             tiles,
             config,
             resident: initial,
@@ -219,10 +256,8 @@ impl Framebuffer {
             return None;
         }
         let (x, y) = (x as usize, y as usize);
-        Some((
-            (y / TILE) * self.tiles_x + x / TILE,
-            (y % TILE) * TILE + x % TILE,
-        ))
+        let (s, m) = (self.tile_shift, (1usize << self.tile_shift) - 1);
+        Some(((y >> s) * self.tiles_x + (x >> s), ((y & m) << s) + (x & m)))
     }
 
     /// Colour of window pixel (x, y) in the read buffer (`glReadBuffer`), or `None` outside
@@ -265,10 +300,11 @@ impl Framebuffer {
         let w = self.width.max(0) as usize;
         let mut out = Vec::with_capacity(w * self.height.max(0) as usize * 4);
         for y in 0..self.height.max(0) as usize {
+            let (s, side) = (self.tile_shift, 1usize << self.tile_shift);
             for tx in 0..self.tiles_x {
-                let tile = &self.tiles[(y / TILE) * self.tiles_x + tx];
-                let row = (y % TILE) * TILE;
-                let n = TILE.min(w - tx * TILE);
+                let tile = &self.tiles[(y >> s) * self.tiles_x + tx];
+                let row = (y & (side - 1)) << s;
+                let n = side.min(w - tx * side);
                 out.extend_from_slice(bytemuck::cast_slice(&tile.color[row..row + n]));
             }
         }

@@ -1,4 +1,5 @@
-//! Coarse depth: the largest depth of each 8x8 block of a tile, so that a triangle whose
+//! Coarse depth: the largest depth of each of a tile's 8x8 blocks (8x8 pixels each in a tile
+//! of the default side, 64; a tile of side S has blocks of S/8 pixels), so that a triangle whose
 //! fragments are all farther than everything stored in the blocks it covers is dropped before
 //! it is rasterized. Under a `LESS`, `LEQUAL` or `EQUAL` depth test such fragments all fail,
 //! and without a stencil test (`FragmentKey::stencil` is `None`) a failing fragment changes
@@ -14,13 +15,13 @@ use crate::common::fixed::depth_to_fixed;
 use crate::common::rect::Rect;
 use crate::common::values::CompareFunc;
 use crate::fragment::key::FragmentKey;
-use crate::framebuffer::{Tile, TILE};
+use crate::framebuffer::Tile;
 use crate::state::DrawState;
 
-/// Pixels per side of a block.
+/// Pixels per side of a block in a tile of the default side (the AVX2 maximum's shape).
 const BLOCK: usize = 8;
 /// Blocks per side of a tile.
-const BLOCKS: usize = TILE / BLOCK;
+const BLOCKS: usize = 8;
 
 /// The largest stored depth of each block of one tile, where known.
 #[derive(Clone, Debug)]
@@ -43,16 +44,17 @@ impl CoarseDepth {
     /// The blocks of `tile` that the window rectangle `rect` touches (none when it misses the
     /// tile).
     fn blocks(tile: &Tile, rect: Rect) -> u64 {
-        let t = TILE as i32;
+        let t = tile.side();
         let (x0, x1) = (rect.x0.max(tile.x0), rect.x1.min(tile.x0 + t));
         let (y0, y1) = (rect.y0.max(tile.y0), rect.y1.min(tile.y0 + t));
         if x0 >= x1 || y0 >= y1 {
             return 0;
         }
-        // Offsets inside the tile (not negative): blocks by unsigned division.
-        let b = BLOCK as u32;
-        let (bx0, bx1) = ((x0 - tile.x0) as u32 / b, (x1 - 1 - tile.x0) as u32 / b);
-        let (by0, by1) = ((y0 - tile.y0) as u32 / b, (y1 - 1 - tile.y0) as u32 / b);
+        // Offsets inside the tile (not negative): blocks by shifting (a block is 1/8 of the
+        // tile's side, a power of two).
+        let b = tile.shift - 3;
+        let (bx0, bx1) = ((x0 - tile.x0) as u32 >> b, (x1 - 1 - tile.x0) as u32 >> b);
+        let (by0, by1) = ((y0 - tile.y0) as u32 >> b, (y1 - 1 - tile.y0) as u32 >> b);
         // Block columns bx0..=bx1 of one block row (eight bits), then a marker bit at the
         // start of each block row by0..=by1: their product repeats the row on those rows.
         const _: () = assert!(BLOCKS == 8);
@@ -71,13 +73,24 @@ impl CoarseDepth {
     fn block_max(&mut self, tile: &Tile, b: usize) -> u32 {
         if self.known & (1 << b) == 0 {
             let (bx, by) = (b % BLOCKS, b / BLOCKS);
-            let rows: [&[u32; BLOCK]; BLOCK] = std::array::from_fn(|row| {
-                let start = (by * BLOCK + row) * TILE + bx * BLOCK;
-                tile.depth[start..start + BLOCK]
-                    .try_into()
-                    .expect("a block row is BLOCK depths")
-            });
-            self.max[b] = block_max(&rows);
+            let side = tile.side() as usize;
+            let block = side / BLOCKS;
+            self.max[b] = if block == BLOCK {
+                let rows: [&[u32; BLOCK]; BLOCK] = std::array::from_fn(|row| {
+                    let start = (by * BLOCK + row) * side + bx * BLOCK;
+                    tile.depth[start..start + BLOCK]
+                        .try_into()
+                        .expect("a block row is BLOCK depths")
+                });
+                block_max(&rows)
+            } else {
+                (0..block)
+                    .flat_map(|row| {
+                        let start = (by * block + row) * side + bx * block;
+                        &tile.depth[start..start + block]
+                    })
+                    .fold(0, |m, &d| m.max(d))
+            };
             self.known |= 1 << b;
         }
         self.max[b]
@@ -105,7 +118,7 @@ impl CoarseDepth {
         let terms = z.a.abs() * most(xa.abs(), xb.abs())
             + z.b.abs() * most(ya.abs(), yb.abs())
             + z.c.abs()
-            + z.a.abs() * TILE as f64;
+            + z.a.abs() * tile.side() as f64;
         let margin = 1e-9 + 256.0 * f64::EPSILON * terms;
         if !zmin.is_finite() || !margin.is_finite() {
             return false;
@@ -184,9 +197,10 @@ mod tests {
         Tile {
             x0: 64,
             y0: 128,
-            color: vec![[0; 4]; TILE * TILE],
-            depth: vec![0; TILE * TILE],
-            stencil: vec![0; TILE * TILE],
+            shift: 6,
+            color: vec![[0; 4]; 64 * 64],
+            depth: vec![0; 64 * 64],
+            stencil: vec![0; 64 * 64],
             samples_passed: 0,
         }
     }
@@ -290,9 +304,9 @@ mod tests {
     fn block_maxima_follow_forgotten_writes() {
         let mut t = tile();
         let mut c = CoarseDepth::default();
-        t.depth[TILE * 9 + 10] = 77; // block (1, 1)
+        t.depth[64 * 9 + 10] = 77; // block (1, 1)
         assert_eq!(c.block_max(&t, 9), 77);
-        t.depth[TILE * 9 + 11] = 99;
+        t.depth[64 * 9 + 11] = 99;
         // Not forgotten: the stale maximum.
         assert_eq!(c.block_max(&t, 9), 77);
         c.forget(

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use super::prefetch;
 use super::setup::{Edge, Plane};
 use crate::common::rect::Rect;
-use crate::framebuffer::{Framebuffer, TILE};
+use crate::framebuffer::Framebuffer;
 use crate::state::DrawState;
 
 /// A clear of part of the framebuffer.
@@ -130,6 +130,8 @@ pub struct Scene {
     pub planes: Vec<Plane>,
     tiles_x: usize,
     tiles_y: usize,
+    /// log2 of the framebuffer's tile side.
+    tile_shift: u32,
 }
 
 /// Recorded commands that force a flush: bounds the scene's memory (each command costs at most a
@@ -144,6 +146,7 @@ impl Scene {
             bins: vec![Vec::new(); fb.tiles_x * fb.tiles_y],
             tiles_x: fb.tiles_x,
             tiles_y: fb.tiles_y,
+            tile_shift: fb.tile_shift,
             ..Scene::default()
         }
     }
@@ -188,11 +191,11 @@ impl Scene {
             std::mem::size_of::<Command>(),
         );
         self.commands.push(cmd);
-        let t = TILE as i32;
-        let tx0 = (rect.x0.max(0) / t) as usize;
-        let ty0 = (rect.y0.max(0) / t) as usize;
-        let tx1 = (((rect.x1 - 1).max(0) / t) as usize).min(self.tiles_x.saturating_sub(1));
-        let ty1 = (((rect.y1 - 1).max(0) / t) as usize).min(self.tiles_y.saturating_sub(1));
+        let s = self.tile_shift;
+        let tx0 = (rect.x0.max(0) >> s) as usize;
+        let ty0 = (rect.y0.max(0) >> s) as usize;
+        let tx1 = (((rect.x1 - 1).max(0) >> s) as usize).min(self.tiles_x.saturating_sub(1));
+        let ty1 = (((rect.y1 - 1).max(0) >> s) as usize).min(self.tiles_y.saturating_sub(1));
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
                 let bin = &mut self.bins[ty * self.tiles_x + tx];

@@ -472,7 +472,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 if ds.key.depth_write {
                     coarse.forget(tile, r.rect);
                 }
-                let t = crate::framebuffer::TILE as i32;
+                let t = tile.side();
                 let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));
                 let (y0, y1) = (r.rect.y0.max(tile.y0), r.rect.y1.min(tile.y0 + t));
                 if x0 < x1 {
@@ -511,7 +511,7 @@ fn prefetch_planes(scene: &Scene, bin: &[u32], k: usize) {
 }
 
 fn clear_tile(c: &ClearCommand, tile: &mut Tile) {
-    let t = crate::framebuffer::TILE as i32;
+    let t = tile.side();
     let x0 = c.rect.x0.max(tile.x0);
     let x1 = c.rect.x1.min(tile.x0 + t);
     let y0 = c.rect.y0.max(tile.y0);

@@ -5,7 +5,7 @@ use super::scene::TriangleCommand;
 use super::setup::{Edge, Plane};
 use crate::common::fixed::SUBPIXEL;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
-use crate::framebuffer::{Tile, TILE};
+use crate::framebuffer::Tile;
 use crate::state::DrawState;
 
 /// A triangle's attribute planes spread over the draw's attribute layout (zero where an
@@ -69,7 +69,7 @@ pub fn raster_triangle<'a>(
     scratch: &'a mut AttrScratch,
     tile: &mut Tile,
 ) {
-    let tile_size = TILE as i32;
+    let tile_size = tile.side();
     let bbox = t.bbox();
     let x_lo = bbox.x0.max(tile.x0);
     let x_hi = bbox.x1.min(tile.x0 + tile_size);
@@ -131,10 +131,11 @@ pub fn raster_triangle<'a>(
         (None, Some(pair)) => {
             // Rows in pairs (even y first), gathered for one call of the pair function, which
             // then prepares what does not depend on the rows once per triangle (a tile has at
-            // most TILE / 2 pairs). A triangle covers no pixel twice, so shading its long lone
-            // rows on the way, before the pairs, gives the same pixels.
+            // most 32 pairs in a tile of the default side, 64; taller tiles hand them over in
+            // batches). A triangle covers no pixel twice, so shading its long lone rows on the
+            // way, before the pairs, or in several batches, gives the same pixels.
             const EMPTY: (i32, i32) = (0, 0);
-            let mut pairs = [(0, [EMPTY; 2]); TILE / 2];
+            let mut pairs = [(0, [EMPTY; 2]); crate::framebuffer::TILE / 2];
             let mut n = 0;
             let mut y = y_lo & !1;
             while y < y_hi {

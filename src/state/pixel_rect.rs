@@ -898,14 +898,15 @@ impl Context {
             let y0 = (yr + BITMAP_MARGIN - yorig as f64).floor() as i64;
             let mut planes = Vec::new();
             self.raster_planes(&ds, self.raster_pos.color, &mut planes);
+            // The origin may be far outside the window (saturated from a huge float).
             for j in 0..h {
-                let y = y0 + j as i64;
+                let y = y0.saturating_add(j as i64);
                 if y < bounds.y0 as i64 || y >= bounds.y1 as i64 {
                     continue;
                 }
                 let row = rows.first_row + j * rows.stride;
                 for i in 0..w {
-                    let x = x0 + i as i64;
+                    let x = x0.saturating_add(i as i64);
                     if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {
                         continue;
                     }

@@ -27,10 +27,7 @@ impl Context {
         let len = ((max - min) as usize)
             .saturating_mul(a.effective_stride())
             .saturating_add(a.element_bytes());
-        match a.pointer.0.checked_add(start) {
-            Some(p) if a.pointer.0 != 0 => client_memory::with_client_bytes(ClientPtr(p), len, f),
-            _ => f(&[]),
-        }
+        client_memory::with_client_bytes_from(a.pointer, start, len, f)
     }
 
     pub(super) fn buffer_mapped(&self, name: GLuint) -> bool {
