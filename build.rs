@@ -64,8 +64,18 @@ const EXTRA_EXTENSIONS: [&str; 10] = [
     "GL_EXT_packed_depth_stencil",
 ];
 
-/// Enums of later core versions that captures use, generated like the others.
-const EXTRA_ENUMS: [&str; 2] = ["GL_COMPRESSED_RED", "GL_COMPRESSED_RG"];
+/// Enums of later core versions that captures use, generated like the others: generic
+/// compressed RED/RG (GL 3.0) and point sprites (ARB_point_sprite, GL 2.0's coordinate
+/// origin).
+const EXTRA_ENUMS: [&str; 7] = [
+    "GL_COMPRESSED_RED",
+    "GL_COMPRESSED_RG",
+    "GL_POINT_SPRITE",
+    "GL_COORD_REPLACE",
+    "GL_POINT_SPRITE_COORD_ORIGIN",
+    "GL_LOWER_LEFT",
+    "GL_UPPER_LEFT",
+];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands.

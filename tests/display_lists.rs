@@ -463,3 +463,37 @@ fn every_list_error_is_recorded_and_changes_nothing() {
 
 /// Not a GL enum: a mode glNewList must reject.
 const GL_EXECUTE_AND_COMPILE_BAD: GLenum = GL_COMPILE_AND_EXECUTE + 1;
+
+/// A display list holding `glBegin(GL_LINE_STRIP)`, `glColor3f(1, 1, 0)`, `glEvalCoord1f`s of
+/// a `MAP1_VERTEX_3` curve and `glEnd` (piglit's dlist-fdo31590) draws the curve yellow: the
+/// list's commands execute in order (section 5.4), after the white set before `glCallList`.
+/// Mesa 22 draws it white, which is why the capture is a known failure.
+#[test]
+fn evaluated_strip_in_a_list_takes_the_lists_colour() {
+    let mut gl = Context::new(50, 50);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.ortho(-5.0, 5.0, -5.0, 5.0, -5.0, 5.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    let points = [
+        -4.0f32, -4.0, 0.0, -2.0, 4.0, 0.0, 2.0, -4.0, 0.0, 4.0, 4.0, 0.0,
+    ];
+    gl.map_1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 4, &points);
+    gl.enable(GL_MAP1_VERTEX_3);
+    gl.new_list(5, GL_COMPILE);
+    gl.begin(GL_LINE_STRIP);
+    gl.color_3f(1.0, 1.0, 0.0);
+    for i in 0..=30 {
+        gl.eval_coord_1f(i as f32 / 30.0);
+    }
+    gl.end();
+    gl.end_list();
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.call_list(5);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let drawn: Vec<[u8; 4]> = read_rgba(&mut gl)
+        .into_iter()
+        .filter(|p| p[..3] != [0, 0, 0])
+        .collect();
+    assert!(drawn.len() > 40, "only {} pixels drawn", drawn.len());
+    assert!(drawn.iter().all(|p| *p == [255, 255, 0, 255]), "{drawn:?}");
+}

@@ -404,3 +404,120 @@ fn smooth_polygon_coverage_adds_up_to_the_area_and_shared_edges_to_one() {
         assert!(a >= 254, "({x}, {y}): alpha {a}");
     }
 }
+
+/// Point sprites (ARB_point_sprite; GL 2.0 section 3.4.1): the state, its errors and attribute
+/// group, and a sprite's square of side `size` (not rounded) with s = 1/2 + (x_f + 1/2 - x) /
+/// size and t = 1/2 - (y_f + 1/2 - y) / size (upper-left origin) or + (lower-left).
+#[test]
+fn point_sprites_replace_texture_coordinates_across_the_square() {
+    let mut gl = Context::new(16, 16);
+    window_ortho(&mut gl);
+    let int = |gl: &mut Context, pname: GLenum| {
+        let mut v = [0i32];
+        gl.get_integerv(pname, &mut v);
+        v[0]
+    };
+    let coord_replace = |gl: &mut Context| {
+        let mut v = [7i32];
+        gl.get_tex_enviv(GL_POINT_SPRITE, GL_COORD_REPLACE, &mut v);
+        v[0]
+    };
+    assert_eq!(gl.is_enabled(GL_POINT_SPRITE), 0);
+    assert_eq!(coord_replace(&mut gl), 0);
+    assert_eq!(
+        int(&mut gl, GL_POINT_SPRITE_COORD_ORIGIN),
+        GL_UPPER_LEFT as i32
+    );
+    // Errors change nothing.
+    gl.point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_FRONT as i32);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    gl.tex_envi(GL_POINT_SPRITE, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    assert_eq!(
+        int(&mut gl, GL_POINT_SPRITE_COORD_ORIGIN),
+        GL_UPPER_LEFT as i32
+    );
+    // GL_COORD_REPLACE is per unit; the point attribute group saves all three.
+    gl.push_attrib(GL_POINT_BIT);
+    gl.enable(GL_POINT_SPRITE);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    gl.point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT as i32);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(coord_replace(&mut gl), 1);
+    gl.active_texture(GL_TEXTURE1);
+    assert_eq!(coord_replace(&mut gl), 0);
+    gl.active_texture(GL_TEXTURE0);
+    gl.pop_attrib();
+    assert_eq!(gl.is_enabled(GL_POINT_SPRITE), 0);
+    assert_eq!(coord_replace(&mut gl), 0);
+    assert_eq!(
+        int(&mut gl, GL_POINT_SPRITE_COORD_ORIGIN),
+        GL_UPPER_LEFT as i32
+    );
+
+    // A 4 x 4 texture of distinct texels (red the column, green the row), NEAREST.
+    let mut texels = Vec::new();
+    for j in 0..4u8 {
+        for i in 0..4u8 {
+            texels.extend_from_slice(&[40 + 60 * i, 40 + 60 * j, 0, 255]);
+        }
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        4,
+        4,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.enable(GL_POINT_SPRITE);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    // POINT_SMOOTH is ignored for sprites.
+    gl.enable(GL_POINT_SMOOTH);
+    for upper_left in [true, false] {
+        let origin = if upper_left {
+            GL_UPPER_LEFT
+        } else {
+            GL_LOWER_LEFT
+        };
+        gl.point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, origin as i32);
+        gl.clear_color(0.0, 0.0, 0.0, 0.0);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        // Size 3.6 at (8.3, 7.9): pixel centres in [6.5, 10.1) x [6.1, 9.7): columns 6-9, rows
+        // 6-9 (the size is not rounded to 4).
+        let (x, y, size) = (8.3f64, 7.9f64, 3.6f64);
+        gl.point_size(size as f32);
+        gl.begin(GL_POINTS);
+        gl.vertex_2f(x as f32, y as f32);
+        gl.end();
+        let img = read_rgba(&mut gl);
+        for py in 0..16 {
+            for px in 0..16 {
+                let got = img[py * 16 + px];
+                let (cx, cy) = (px as f64 + 0.5, py as f64 + 0.5);
+                let inside = (x - size / 2.0..x + size / 2.0).contains(&cx)
+                    && (y - size / 2.0..y + size / 2.0).contains(&cy);
+                let want = if inside {
+                    let s = 0.5 + (cx - x) / size;
+                    let t = if upper_left {
+                        0.5 - (cy - y) / size
+                    } else {
+                        0.5 + (cy - y) / size
+                    };
+                    let (i, j) = ((4.0 * s).floor() as u8, (4.0 * t).floor() as u8);
+                    [40 + 60 * i, 40 + 60 * j, 0, 255]
+                } else {
+                    [0, 0, 0, 0]
+                };
+                assert_eq!(got, want, "origin {origin:#x}, pixel ({px}, {py})");
+            }
+        }
+    }
+}

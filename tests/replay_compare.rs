@@ -17,16 +17,6 @@ mod common;
 /// shows only the clear colour, which fails the comparison whatever the replay draws).
 const KNOWN_FAILURES: &[(&str, &str)] = &[
     (
-        "piglit-arb_point_sprite-checkerboard",
-        "ARB_point_sprite is not implemented: glEnable(GL_POINT_SPRITE) raises \
-         GL_INVALID_ENUM and the sprites are not textured (21 % of the pixels off)",
-    ),
-    (
-        "piglit-bgra-sec-color-pointer",
-        "GL_BGRA as the size of glSecondaryColorPointer (ARB_vertex_array_bgra) is refused \
-         with GL_INVALID_VALUE, so the secondary colours are missing (4.2 % off)",
-    ),
-    (
         "piglit-gl-1.0-rendermode-feedback",
         "the reference shows only the clear colour (green): in GL_FEEDBACK mode nothing is \
          drawn, so the picture cannot check the replay",
@@ -44,13 +34,21 @@ const KNOWN_FAILURES: &[(&str, &str)] = &[
     ),
     (
         "xss-quasicrystal",
-        "COLOR_LOGIC_OP and DST_COLOR/SRC_COLOR blending over a 1D texture: 21-25 % of the \
-         pixels off by up to 48; llvmpipe and softpipe themselves differ on about 19 %, more \
-         than the 5 % cap (compare::SPREAD_CAP) lets a picture differ",
+        "seventeen 1D-textured layers blended with alpha 1/17, then COLOR_LOGIC_OP and \
+         DST_COLOR/SRC_COLOR blending, which amplify each layer's rounding: frames 7, 8, 9 have \
+         22.0 %, 24.5 %, 20.6 % of the pixels off by up to 48. The three implementations all \
+         differ: llvmpipe vs softpipe 19.1 %, 19.5 %, 17.7 % (more than the 5 % cap, \
+         compare::SPREAD_CAP), tilegl vs softpipe 13.1 %, 12.8 %, 11.9 %; llvmpipe blends in \
+         8-bit fixed point, softpipe and tilegl in floating point",
     ),
     (
         "xss-vigilance",
-        "lit, EXP2-fogged scene with smooth lines: 10 % of the pixels off by 9-22",
+        "one far grid line of a lit, EXP2-fogged, depth-tested scene (smooth GL_LINES of width \
+         2, blended, meeting end to end near the horizon): at each joint, every 3-4 pixels, \
+         Mesa's pixel is about twice as bright (35 vs 18), covered by both segments there and \
+         by one in tilegl: 0.233 % of the pixels off by up to 19 in frames 7, 8, 9. The same \
+         joints in window space match (differential scene smooth_line_joints), so the second \
+         segment's depth test at the horizon's depth is where the two differ",
     ),
 ];
 

@@ -1387,3 +1387,63 @@ fn a_draw_larger_than_one_fetch_chunk_equals_immediate_mode() {
     assert_drawn(&pb);
     assert_same(&pa, &pb, "large glDrawArrays");
 }
+
+/// ARB_vertex_array_bgra: `GL_BGRA` as the size of a colour or secondary colour array reads four
+/// unsigned bytes per element as blue, green, red, alpha (normalised); any other type is
+/// INVALID_OPERATION and changes nothing; the size query returns `GL_BGRA`.
+#[test]
+fn bgra_colour_and_secondary_colour_arrays_swap_red_and_blue() {
+    let mut gl = Context::new(8, 8);
+    let bytes = [10u8, 60, 200, 255, 255, 128, 0, 64];
+    buffer(&mut gl, GL_ARRAY_BUFFER, &bytes);
+    for (what, query, pname, type_pname) in [
+        (
+            GL_COLOR_ARRAY,
+            GL_CURRENT_COLOR,
+            GL_COLOR_ARRAY_SIZE,
+            GL_COLOR_ARRAY_TYPE,
+        ),
+        (
+            GL_SECONDARY_COLOR_ARRAY,
+            GL_CURRENT_SECONDARY_COLOR,
+            GL_SECONDARY_COLOR_ARRAY_SIZE,
+            GL_SECONDARY_COLOR_ARRAY_TYPE,
+        ),
+    ] {
+        gl.enable_client_state(what);
+        set_pointer(
+            &mut gl,
+            what,
+            GL_BGRA as i32,
+            GL_UNSIGNED_BYTE,
+            ClientPtr(0),
+        );
+        no_error(&mut gl);
+        let mut size = [0i32];
+        gl.get_integerv(pname, &mut size);
+        assert_eq!(size[0], GL_BGRA as i32);
+        for (i, [b, g, r, a]) in [[10u8, 60, 200, 255], [255, 128, 0, 64]]
+            .into_iter()
+            .enumerate()
+        {
+            gl.array_element(i as i32);
+            let mut v = [0f32; 4];
+            gl.get_floatv(query, &mut v);
+            let want = [r, g, b].map(|x| f32::from(x) / 255.0);
+            assert_eq!(v[..3], want, "{what:#x} element {i}");
+            if what == GL_COLOR_ARRAY {
+                assert_eq!(v[3], f32::from(a) / 255.0);
+            }
+        }
+        // Only unsigned bytes: INVALID_OPERATION, the array stays as it was.
+        set_pointer(&mut gl, what, GL_BGRA as i32, GL_FLOAT, ClientPtr(4));
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        let mut ty = [0i32];
+        gl.get_integerv(type_pname, &mut ty);
+        assert_eq!(
+            ty[0], GL_UNSIGNED_BYTE as i32,
+            "{what:#x}: type after the refused call"
+        );
+        gl.disable_client_state(what);
+    }
+}

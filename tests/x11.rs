@@ -508,8 +508,14 @@ fn glx_behaves_as_glx_says() {
 
 /// Builds `tests/x11/NAME.c` with `libs`; `None` (after `missing`) without a C toolchain.
 fn build_c(name: &str, libs: &[&str]) -> Option<PathBuf> {
+    build_c_as(name, name, libs)
+}
+
+/// Builds `tests/x11/NAME.c` as `EXE` in the scratch directory (tests running at the same
+/// time each build their own copy).
+fn build_c_as(name: &str, exe: &str, libs: &[&str]) -> Option<PathBuf> {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("tests/x11/{name}.c"));
-    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(exe);
     let o = Command::new("cc")
         .args(["-std=gnu99", "-Wall", "-o"])
         .arg(&exe)
@@ -557,4 +563,260 @@ fn egl_behaves_as_egl_says() {
             String::from_utf8_lossy(&o.stderr)
         );
     }
+}
+
+/// Runs `tests/x11/glx_features.c` in `mode` (with `args`) on tilegl (`lib`) or Mesa (`None`):
+/// (all its checks passed, its output, its stderr).
+fn features(
+    x: &Xvfb,
+    exe: &Path,
+    lib: Option<&Path>,
+    args: &[&str],
+    env: &[(&str, &str)],
+) -> (bool, String, String) {
+    let mut c = on(x, exe.to_str().unwrap(), lib);
+    c.args(args);
+    for (k, v) in env {
+        c.env(k, v);
+    }
+    let o = c.output().expect("run glx_features");
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    let who = if lib.is_some() { "tilegl" } else { "Mesa" };
+    println!("{who} {}:\n{out}{err}", args.join(" "));
+    (
+        o.status.success() && out.contains("all checks passed"),
+        out,
+        err,
+    )
+}
+
+/// Builds glx_features.c and starts a server: `None` (after `missing`) without the tools.
+fn features_setup(name: &str) -> Option<(PathBuf, PathBuf, Xvfb)> {
+    if !needs(&["Xvfb", "xdpyinfo"]) {
+        return None;
+    }
+    let exe = build_c_as(
+        "glx_features",
+        &format!("glx_features-{name}"),
+        &["-lGL", "-lX11", "-lpthread"],
+    )?;
+    let lib = tilegl_lib_dir(name);
+    Some((exe, lib, Xvfb::start()))
+}
+
+/// The same picture on Mesa and tilegl, pixel for pixel (`what` names it); also that it
+/// is not one flat colour (a program that drew nothing would match nothing).
+fn assert_same_picture(what: &str, mesa: &Path, tile: &Path) {
+    let (mw, mh, m) = read_ppm(mesa);
+    let (tw, th, t) = read_ppm(tile);
+    assert_eq!((tw, th), (mw, mh), "{what}: window sizes differ");
+    let (_, colours) = coverage(&m);
+    assert!(colours > 2, "{what}: Mesa's picture has {colours} colours");
+    let diff = m
+        .chunks_exact(3)
+        .zip(t.chunks_exact(3))
+        .filter(|(a, b)| a != b)
+        .count();
+    println!("{what}: {diff} of {} pixels differ", mw * mh);
+    assert_eq!(diff, 0, "{what}: tilegl's picture differs from Mesa's");
+}
+
+/// Context sharing (glXCreateContext's shareList): a texture, a display list and a buffer
+/// object made in one context are seen, changed and drawn by contexts sharing with it
+/// (directly and through another), not by an unshared context, and deleting them in one
+/// deletes them for the group; the picture drawn with them matches Mesa's exactly.
+#[test]
+fn glx_contexts_share_objects() {
+    let Some((exe, lib, x)) = features_setup("share") else {
+        return;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let (mesa_path, tile_path) = (dir.join("share-mesa.ppm"), dir.join("share-tilegl.ppm"));
+    let (ok, out, _) = features(&x, &exe, None, &["share", mesa_path.to_str().unwrap()], &[]);
+    assert!(ok, "the sharing checks do not hold on Mesa:\n{out}");
+    let (ok, out, _) = features(
+        &x,
+        &exe,
+        Some(&lib),
+        &["share", tile_path.to_str().unwrap()],
+        &[],
+    );
+    assert!(ok, "sharing on tilegl:\n{out}");
+    assert_same_picture("shared objects", &mesa_path, &tile_path);
+}
+
+/// Two threads, each with its own current context of one share group, create, draw with and
+/// delete textures, display lists and buffer objects at the same time: every draw shows the
+/// thread's own colour (names never collide), on tilegl as on Mesa.
+#[test]
+fn glx_shared_contexts_on_two_threads() {
+    let Some((exe, lib, x)) = features_setup("threads") else {
+        return;
+    };
+    let (ok, out, _) = features(&x, &exe, None, &["threads"], &[]);
+    assert!(ok, "the thread checks do not hold on Mesa:\n{out}");
+    for _ in 0..3 {
+        let (ok, out, err) = features(&x, &exe, Some(&lib), &["threads"], &[]);
+        assert!(ok, "threads on tilegl:\n{out}{err}");
+    }
+}
+
+/// glXUseXFont: text drawn with the display lists made from the server's fonts (the "fixed"
+/// text font and the cursor font, whose glyphs have varied sizes and bearings) matches Mesa's
+/// picture pixel for pixel, and moves the raster position as far.
+#[test]
+fn glx_use_x_font_draws_text_as_mesa() {
+    let Some((exe, lib, x)) = features_setup("xfont") else {
+        return;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let (mesa_path, tile_path) = (dir.join("xfont-mesa.ppm"), dir.join("xfont-tilegl.ppm"));
+    let (ok, mesa, _) = features(&x, &exe, None, &["xfont", mesa_path.to_str().unwrap()], &[]);
+    assert!(ok, "the font checks do not hold on Mesa:\n{mesa}");
+    let (ok, tile, _) = features(
+        &x,
+        &exe,
+        Some(&lib),
+        &["xfont", tile_path.to_str().unwrap()],
+        &[],
+    );
+    assert!(ok, "glXUseXFont on tilegl:\n{tile}");
+    // Mesa 22 records GL_OUT_OF_MEMORY for the space glyph (no pixels) and leaves its list
+    // empty; on tilegl there is no error and the space moves by the font's width for it.
+    assert!(tile.contains("glXUseXFont error 0x0"), "{tile}");
+    let space = tile
+        .lines()
+        .find_map(|l| l.strip_prefix("space: moved "))
+        .expect("space line");
+    let (moved, width) = space.split_once(", font width ").expect("space line");
+    assert_eq!(moved, width, "the space glyph's advance");
+    assert_ne!(width, "0");
+    let pos = |s: &str| {
+        s.lines()
+            .filter(|l| l.starts_with("raster position"))
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(pos(&tile), pos(&mesa), "raster positions after the text");
+    assert_eq!(pos(&mesa).len(), 2);
+    assert_same_picture("glXUseXFont text", &mesa_path, &tile_path);
+}
+
+/// A window resized between frames: the frame after `glViewport` fills the larger window,
+/// and after a shrink `glXMakeCurrent` picks up the smaller size; both pictures, read back
+/// from the server, match Mesa's.
+#[test]
+fn glx_resized_window_matches_mesa() {
+    let Some((exe, lib, x)) = features_setup("resize") else {
+        return;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let (mesa_base, tile_base) = (dir.join("resize-mesa"), dir.join("resize-tilegl"));
+    let (ok, out, _) = features(
+        &x,
+        &exe,
+        None,
+        &["resize", mesa_base.to_str().unwrap()],
+        &[],
+    );
+    assert!(ok, "resize on Mesa:\n{out}");
+    let (ok, out, _) = features(
+        &x,
+        &exe,
+        Some(&lib),
+        &["resize", tile_base.to_str().unwrap()],
+        &[],
+    );
+    assert!(ok, "resize on tilegl:\n{out}");
+    for n in 1..=2 {
+        let m = PathBuf::from(format!("{}.{n}.ppm", mesa_base.display()));
+        let t = PathBuf::from(format!("{}.{n}.ppm", tile_base.display()));
+        let (w, h, _) = read_ppm(&t);
+        assert_eq!((w, h), if n == 1 { (160, 120) } else { (120, 60) });
+        // The triangle is rasterized by each renderer: the project tolerance, as glxgears.
+        let (_, _, mp) = read_ppm(&m);
+        let (_, _, tp) = read_ppm(&t);
+        let d = diff_pixels(&mp, &tp, 3, w, PROJECT.channel);
+        println!("resize frame {n}: {d}");
+        assert!(PROJECT.accepts(&d), "resize frame {n} differs: {d}");
+    }
+}
+
+/// A program that closes its display and opens another (piglit does) keeps presenting:
+/// what presentation kept for the closed display (its shared-memory images) is dropped.
+#[test]
+fn glx_present_after_reopening_the_display() {
+    let Some((exe, lib, x)) = features_setup("reopen") else {
+        return;
+    };
+    let (ok, out, _) = features(&x, &exe, None, &["reopen"], &[]);
+    assert!(ok, "reopen on Mesa:\n{out}");
+    for no_shm in ["0", "1"] {
+        let env = [("TILEGL_NO_SHM", no_shm), ("TILEGL_DEBUG_PRESENT", "1")];
+        let (ok, out, err) = features(&x, &exe, Some(&lib), &["reopen"], &env);
+        assert!(ok, "reopen on tilegl (TILEGL_NO_SHM={no_shm}):\n{out}{err}");
+        // Each of the three displays is examined afresh: the closed one was forgotten.
+        assert_eq!(err.matches("tilegl: presenting on").count(), 3, "{err}");
+    }
+}
+
+/// Presenting through MIT-SHM and through XPutImage (`TILEGL_NO_SHM=1`) shows the same
+/// 1024x768 picture, the same as Mesa's; the swap times of both paths are printed
+/// (docs/piglit.md records them).
+#[test]
+fn glx_present_with_and_without_mit_shm() {
+    let Some((exe, lib, x)) = features_setup("present") else {
+        return;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let paths = ["mesa", "shm", "putimage"].map(|n| dir.join(format!("present-{n}.ppm")));
+    let arg = |p: &Path| -> Vec<String> {
+        ["present", p.to_str().unwrap(), "1024", "768", "30"]
+            .map(String::from)
+            .to_vec()
+    };
+    let a = arg(&paths[0]);
+    let (ok, out, _) = features(
+        &x,
+        &exe,
+        None,
+        &a.iter().map(String::as_str).collect::<Vec<_>>(),
+        &[],
+    );
+    assert!(ok, "present on Mesa:\n{out}");
+    let debug = ("TILEGL_DEBUG_PRESENT", "1");
+    let a = arg(&paths[1]);
+    let (ok, out, err) = features(
+        &x,
+        &exe,
+        Some(&lib),
+        &a.iter().map(String::as_str).collect::<Vec<_>>(),
+        &[debug],
+    );
+    assert!(ok, "present with MIT-SHM:\n{out}");
+    assert!(err.contains("with MIT-SHM"), "MIT-SHM was not used: {err}");
+    let a = arg(&paths[2]);
+    let (ok, out, err) = features(
+        &x,
+        &exe,
+        Some(&lib),
+        &a.iter().map(String::as_str).collect::<Vec<_>>(),
+        &[debug, ("TILEGL_NO_SHM", "1")],
+    );
+    assert!(ok, "present with XPutImage:\n{out}");
+    assert!(
+        err.contains("with XPutImage"),
+        "XPutImage was not used: {err}"
+    );
+    let (_, _, shm) = read_ppm(&paths[1]);
+    let (_, _, put) = read_ppm(&paths[2]);
+    assert!(shm == put, "MIT-SHM and XPutImage show different pictures");
+    let (w, _, mesa) = read_ppm(&paths[0]);
+    let d = diff_pixels(&mesa, &shm, 3, w, PROJECT.channel);
+    println!("present 1024x768, tilegl vs Mesa: {d}");
+    assert!(
+        PROJECT.accepts(&d),
+        "the presented frame differs from Mesa's: {d}"
+    );
 }

@@ -25,6 +25,15 @@ pub struct Scene {
     pub tolerance: crate::tolerance::Tolerance,
 }
 
+impl Scene {
+    /// What the report should show next to this scene's figures beyond pass or fail: why its
+    /// picture differs from Mesa's and which answer is exact
+    /// ([`crate::scenes_extremes::NOTES`]).
+    pub fn note(&self) -> Option<&'static str> {
+        crate::scenes_extremes::note(self.name)
+    }
+}
+
 impl fmt::Debug for Scene {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "Scene({} {}x{})", self.name, self.width, self.height)

@@ -33,6 +33,40 @@ pub struct Stage {
 
 thread_local! {
     static RECORDER: RefCell<Option<Vec<Stage>>> = const { RefCell::new(None) };
+    static FRAME_SCALE: std::cell::Cell<(f64, f64)> = const { std::cell::Cell::new((1.0, 1.0)) };
+}
+
+/// Runs `f` (which draws a scene) with the scene's window regions scaled by `sx` x `sy`: the
+/// gallery renders a scene at another size than its own this way. Viewports and scissor boxes
+/// the scene sets through [`viewport`] and [`scissor`] cover the same share of the window;
+/// passes that render into a texture keep their own size.
+pub fn with_frame_scale<R>(sx: f64, sy: f64, f: impl FnOnce() -> R) -> R {
+    let before = FRAME_SCALE.with(|s| s.replace((sx, sy)));
+    let out = f();
+    FRAME_SCALE.with(|s| s.set(before));
+    out
+}
+
+/// A window rectangle scaled by the frame scale (unchanged at the scene's own size): corners
+/// rounded to the nearest pixel, so neighbouring panels still tile the window.
+fn scaled(x: i32, y: i32, w: i32, h: i32) -> (i32, i32, i32, i32) {
+    let (sx, sy) = FRAME_SCALE.with(|s| s.get());
+    let fx = |v: i32| (v as f64 * sx).round() as i32;
+    let fy = |v: i32| (v as f64 * sy).round() as i32;
+    (fx(x), fy(y), fx(x + w) - fx(x), fy(y + h) - fy(y))
+}
+
+/// `glViewport` of a region of the scene's window (scaled with the frame, see
+/// [`with_frame_scale`]).
+pub fn viewport(gl: &mut dyn Gl, x: i32, y: i32, w: i32, h: i32) {
+    let (x, y, w, h) = scaled(x, y, w, h);
+    gl.viewport(x, y, w, h);
+}
+
+/// `glScissor` of a region of the scene's window (scaled with the frame).
+pub fn scissor(gl: &mut dyn Gl, x: i32, y: i32, w: i32, h: i32) {
+    let (x, y, w, h) = scaled(x, y, w, h);
+    gl.scissor(x, y, w, h);
 }
 
 fn recording() -> bool {

@@ -234,7 +234,13 @@ pub struct Pictures {
 
 fn draw_on(gl: &mut dyn Gl, entry: &Entry, w: i32, h: i32) -> (Image, u32) {
     match entry.draw {
-        Draw::Scene(s) => (s.draw)(gl),
+        // A scene drawn at another size than its own: its viewports and scissor boxes scale
+        // with the window (see `example_support::with_frame_scale`).
+        Draw::Scene(s) => crate::example_support::with_frame_scale(
+            w as f64 / s.width as f64,
+            h as f64 / s.height as f64,
+            || (s.draw)(gl),
+        ),
         Draw::Builtin(f) => f(gl, w, h),
     }
     let error = gl.get_error();

@@ -988,23 +988,37 @@ pub(crate) const fn spread(max_bad_share: f64) -> Tolerance {
     }
 }
 
-/// Every differential scene, in report order: this file's, the texturing ones, the
-/// vertex-array and display-list ones, then the rasterization-control ones.
-pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(|| {
-    [
-        BASE_SCENES,
-        crate::scenes_texture::TEXTURE_SCENES,
-        crate::scenes_arrays::ARRAY_SCENES,
-        crate::scenes_raster::RASTER_SCENES,
-        crate::scenes_examples::EXAMPLE_SCENES,
+/// Every list of differential scenes with its feature area, in report order. Each list's test
+/// (`conformance/tests/differential*.rs`) runs the whole list; the report and [`SCENES`] take
+/// their scenes from here, so a scene is declared once, in its list.
+pub const SCENE_LISTS: &[(&str, &[Scene])] = &[
+    ("lighting and per-fragment", BASE_SCENES),
+    ("texturing", crate::scenes_texture::TEXTURE_SCENES),
+    ("arrays and lists", crate::scenes_arrays::ARRAY_SCENES),
+    ("rasterization", crate::scenes_raster::RASTER_SCENES),
+    ("teaching examples", crate::scenes_examples::EXAMPLE_SCENES),
+    (
+        "teaching techniques",
         crate::scenes_techniques::TECHNIQUE_SCENES,
-        crate::scenes_state::STATE_SCENES,
+    ),
+    ("state", crate::scenes_state::STATE_SCENES),
+    (
+        "texture matrix",
         crate::scenes_texture_matrix::TEXTURE_MATRIX_SCENES,
-        crate::scenes_eval::EVAL_SCENES,
-        crate::scenes_cascade::CASCADE_SCENES,
-        crate::scenes_fidelity::FIDELITY_SCENES,
-    ]
-    .concat()
+    ),
+    ("evaluators", crate::scenes_eval::EVAL_SCENES),
+    ("texenv cascade", crate::scenes_cascade::CASCADE_SCENES),
+    ("fidelity", crate::scenes_fidelity::FIDELITY_SCENES),
+    ("extreme cases", crate::scenes_extreme::EXTREME_SCENES),
+    ("extreme cases", crate::scenes_extremes::EXTREME_SCENES),
+];
+
+/// Every differential scene, in report order (the lists of [`SCENE_LISTS`] one after another).
+pub static SCENES: std::sync::LazyLock<Vec<Scene>> = std::sync::LazyLock::new(|| {
+    SCENE_LISTS
+        .iter()
+        .flat_map(|(_, list)| list.iter().copied())
+        .collect()
 });
 
 /// The scene called `name`.

@@ -11,7 +11,7 @@
 //! open by GL) does not matter.
 
 use crate::compare::Scene;
-use crate::example_support::{snap_color, snap_depth, snap_stencil, snap_texture, unit_on};
+use crate::example_support::{self, snap_color, snap_depth, snap_stencil, snap_texture, unit_on};
 use crate::prng::XorShift;
 use crate::tolerance::{Tolerance, DIFFERENTIAL};
 use tilegl::enums::*;
@@ -428,7 +428,7 @@ fn ex_mipmap_filters(gl: &mut dyn Gl) {
         (GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR),
     ];
     for (i, (min, mag)) in filters.into_iter().enumerate() {
-        gl.viewport((i % 2) as i32 * 128, (1 - i / 2) as i32 * 128, 128, 128);
+        example_support::viewport(gl, (i % 2) as i32 * 128, (1 - i / 2) as i32 * 128, 128, 128);
         sampling(gl, GL_TEXTURE_2D, min, mag, GL_REPEAT);
         receding_plane(gl);
     }
@@ -454,7 +454,7 @@ fn ex_magnify_anisotropic(gl: &mut dyn Gl) {
     gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
     gl.enable(GL_TEXTURE_2D);
     for (i, filter) in [GL_NEAREST, GL_LINEAR].into_iter().enumerate() {
-        gl.viewport(i as i32 * 128, 128, 128, 128);
+        example_support::viewport(gl, i as i32 * 128, 128, 128, 128);
         sampling(gl, GL_TEXTURE_2D, filter, filter, GL_REPEAT);
         gl.matrix_mode(GL_PROJECTION);
         gl.load_identity();
@@ -470,7 +470,7 @@ fn ex_magnify_anisotropic(gl: &mut dyn Gl) {
         gl.end();
     }
     for (i, aniso) in [1.0f32, 16.0].into_iter().enumerate() {
-        gl.viewport(i as i32 * 128, 0, 128, 128);
+        example_support::viewport(gl, i as i32 * 128, 0, 128, 128);
         receding_checker(gl, aniso);
     }
 }
@@ -988,7 +988,7 @@ fn ex_cube_map_dynamic(gl: &mut dyn Gl) {
         );
     }
     // The camera's view: the world, then the mirror sphere.
-    gl.viewport(0, 0, 128, 128);
+    example_support::viewport(gl, 0, 0, 128, 128);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     camera(gl, 50.0, 1.0, DYN_EYE, DYN_CENTRE);
     dyn_world(gl, checker);
@@ -1271,6 +1271,8 @@ fn shadow_world(gl: &mut dyn Gl) {
 /// lit surfaces do not shadow themselves), copied into a GL_DEPTH_COMPONENT texture.
 fn shadow_pass1(gl: &mut dyn Gl) {
     clear_to(gl, [0.0, 0.0, 0.0]);
+    // The light's view is the shadow map: its own size, whatever the window's.
+    gl.viewport(0, 0, 128, 128);
     gl.enable(GL_DEPTH_TEST);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
@@ -1298,6 +1300,7 @@ fn shadow_pass1(gl: &mut dyn Gl) {
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL as i32);
     snap_texture(gl, "shadow_map", GL_TEXTURE_2D, 0, [128, 128, 1]);
     // Pass 2 set-up: the camera, lighting, texgen into the light's window coordinates.
+    example_support::viewport(gl, 0, 0, 128, 128);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     camera(gl, 50.0, 1.0, [-1.4, 2.4, 3.4], [0.0, 0.4, -0.3]);
     lamp(gl, [LIGHT_EYE[0], LIGHT_EYE[1], LIGHT_EYE[2], 1.0]);
@@ -1804,7 +1807,7 @@ const FOG: [f32; 4] = [0.7, 0.75, 0.82, 1.0];
 
 fn fog_panels(gl: &mut dyn Gl, fogged: bool) {
     for (i, mode) in [GL_LINEAR, GL_EXP, GL_EXP2].into_iter().enumerate() {
-        gl.viewport(128 * i as i32, 0, 128, 128);
+        example_support::viewport(gl, 128 * i as i32, 0, 128, 128);
         camera(gl, 50.0, 1.0, [0.0, 1.6, 1.8], [0.0, 0.0, -3.0]);
         if fogged {
             gl.enable(GL_FOG);
@@ -1826,7 +1829,7 @@ fn ex_fog_terrain(gl: &mut dyn Gl) {
     gl.enable(GL_DEPTH_TEST);
     fog_panels(gl, false);
     snap_color(gl, "without_fog", 384, 128);
-    gl.viewport(0, 0, 384, 128);
+    example_support::viewport(gl, 0, 0, 384, 128);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     fog_panels(gl, true);
 }

@@ -45,6 +45,9 @@ pub const FIDELITY_SCENES: &[Scene] = &[
     // 0.073 %, vs softpipe 1.050 %; `--bin calibrate`).
     scene_with("aniso_horizon", aniso_horizon, spread(0.00977)),
     scene("lit_after_arrays", lit_after_arrays),
+    scene("point_sprites", point_sprites),
+    scene("smooth_line_joints", smooth_line_joints),
+    scene("quad_splits", quad_splits),
 ];
 
 /// The six user clip planes of [`six_clip_planes`], in object coordinates of the box
@@ -582,4 +585,167 @@ fn lit_after_arrays(gl: &mut dyn Gl) {
     gl.array_element(4);
     gl.end();
     lit_shapes(gl, -0.9);
+}
+
+/// Point sprites (ARB_point_sprite, which Mesa offers and captures use): a mipmapped texture
+/// of a different colour per level and a checkerboard at level 0, on sprites of sizes 1.5 to
+/// 40 (not rounded), both coordinate origins, GL_COORD_REPLACE on unit 0 only (unit 1 keeps
+/// the vertex's coordinates) and with POINT_SMOOTH on, which sprites ignore.
+fn point_sprites(gl: &mut dyn Gl) {
+    black_pixel_space(gl);
+    let mut names = [0u32; 2];
+    gl.gen_textures(2, &mut names);
+    gl.bind_texture(GL_TEXTURE_2D, names[0]);
+    for level in 0..6 {
+        let n = 32usize >> level;
+        let mut texels = Vec::with_capacity(n * n * 4);
+        for j in 0..n {
+            for i in 0..n {
+                let c: [u8; 4] = match level {
+                    0 if (i / 4 + j / 4) % 2 == 0 => [255, 255, 255, 255],
+                    0 => [40, 40, 200, 255],
+                    1 => [255, 0, 0, 255],
+                    2 => [0, 255, 0, 255],
+                    3 => [255, 255, 0, 255],
+                    4 => [0, 255, 255, 255],
+                    _ => [255, 0, 255, 255],
+                };
+                // The top-left quarter of level 0 marks the origin.
+                let c = if level == 0 && i < n / 4 && j >= 3 * n / 4 {
+                    [255, 128, 0, 255]
+                } else {
+                    c
+                };
+                texels.extend_from_slice(&c);
+            }
+        }
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            level,
+            GL_RGBA as i32,
+            n as i32,
+            n as i32,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&texels),
+        );
+    }
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_NEAREST_MIPMAP_NEAREST as i32,
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    gl.enable(GL_POINT_SPRITE);
+    gl.tex_envi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE as i32);
+    gl.color_3f(1.0, 1.0, 1.0);
+    let sprite = |gl: &mut dyn Gl, size: f32, x: f32, y: f32| {
+        gl.point_size(size);
+        gl.begin(GL_POINTS);
+        gl.vertex_2f(x, y);
+        gl.end();
+    };
+    // Upper-left origin (the default), then lower-left.
+    sprite(gl, 27.3, 16.0, 48.0);
+    sprite(gl, 13.7, 40.3, 52.6);
+    sprite(gl, 6.5, 56.0, 56.0);
+    sprite(gl, 1.5, 56.2, 43.8);
+    gl.point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT as i32);
+    sprite(gl, 21.2, 16.5, 18.4);
+    gl.enable(GL_POINT_SMOOTH);
+    sprite(gl, 9.9, 40.0, 22.0);
+    gl.disable(GL_POINT_SMOOTH);
+    // Unit 1 textured too, without GL_COORD_REPLACE: its coordinate is the vertex's.
+    gl.active_texture(GL_TEXTURE1);
+    gl.bind_texture(GL_TEXTURE_2D, names[1]);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        2,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[255, 255, 255, 255, 255, 60, 60, 255]),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    gl.multi_tex_coord_2f(GL_TEXTURE1, 0.75, 0.5);
+    sprite(gl, 12.0, 54.0, 10.0);
+    gl.active_texture(GL_TEXTURE0);
+}
+
+/// Antialiased lines of width 2 drawn as separate GL_LINES segments a few pixels long that
+/// meet end to end, depth-tested (a far grid line of xscreensaver's vigilance, a known failure
+/// of the shared captures): each segment's coverage reaches half a pixel past its ends, so
+/// with blending the joints are covered twice, on Mesa and on tilegl.
+fn smooth_line_joints(gl: &mut dyn Gl) {
+    black_pixel_space(gl);
+    gl.enable(GL_LINE_SMOOTH);
+    gl.hint(GL_LINE_SMOOTH_HINT, GL_NICEST);
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.line_width(2.0);
+    gl.color_3f(0.1, 0.9, 0.2);
+    // The depth test on, as in the hack: the second segment at a joint has the first's depth
+    // there.
+    gl.enable(GL_DEPTH_TEST);
+    for (row, step) in [(0, 3.7f32), (1, 2.3), (2, 5.1), (3, 1.6)] {
+        gl.begin(GL_LINES);
+        let y0 = 8.0 + 15.0 * row as f32;
+        let mut x = 1.3f32;
+        while x + step < 63.0 {
+            gl.vertex_3f(x, y0 + x * 0.07, 0.9 - x / 40.0);
+            gl.vertex_3f(x + step, y0 + (x + step) * 0.07, 0.9 - (x + step) / 40.0);
+            x += step;
+        }
+        gl.end();
+    }
+}
+
+/// Smooth quads whose corner colours are not affine, so the diagonal a quad is split along
+/// shows: drawn directly inside the view volume (Mesa splits at vertices 0-2), with a vertex
+/// outside it (the batch goes through Mesa's clipper, which splits at 1-3), and from a display
+/// list (compiled into triangles split at 1-3); non-convex quads likewise.
+fn quad_splits(gl: &mut dyn Gl) {
+    black_pixel_space(gl);
+    let quad = |gl: &mut dyn Gl, x: f32, y: f32, far: f32| {
+        gl.begin(GL_QUADS);
+        gl.color_3f(1.0, 0.0, 0.0);
+        gl.vertex_2f(x + 2.0, y + 2.0);
+        gl.color_3f(0.0, 1.0, 0.0);
+        gl.vertex_2f(x + 18.0, y + 4.0);
+        gl.color_3f(0.0, 0.0, 1.0);
+        gl.vertex_2f(x + far, y + far);
+        gl.color_3f(1.0, 1.0, 1.0);
+        gl.vertex_2f(x + 3.0, y + 17.0);
+        // Non-convex: vertex 2 inside the triangle of the others.
+        gl.color_3f(1.0, 1.0, 0.0);
+        gl.vertex_2f(x + 2.0, y + 21.0);
+        gl.color_3f(0.0, 1.0, 1.0);
+        gl.vertex_2f(x + 19.0, y + 21.5);
+        gl.color_3f(1.0, 0.0, 1.0);
+        gl.vertex_2f(x + 7.0, y + 25.0);
+        gl.color_3f(0.2, 0.2, 0.2);
+        gl.vertex_2f(x + 3.0, y + 30.5);
+        gl.end();
+    };
+    quad(gl, 0.0, 0.0, 14.0);
+    // Mesa decides the split per buffered draw, and merges consecutive glBegin/glEnd pairs
+    // with no state change between them into one: glFlush ends the draw, as tilegl's
+    // decision per glBegin/glEnd assumes.
+    gl.flush();
+    // The third vertex far outside the window: clipped.
+    quad(gl, 22.0, 0.0, 140.0);
+    let list = gl.gen_lists(1);
+    gl.new_list(list, GL_COMPILE);
+    quad(gl, 42.0, 32.0, 14.0);
+    gl.end_list();
+    gl.call_list(list);
 }

@@ -7,7 +7,7 @@
 //! of each unit of the cascade on its own.
 
 use crate::compare::Scene;
-use crate::example_support::{snap_color, snap_stencil, snap_texture, unit_on};
+use crate::example_support::{self, snap_color, snap_stencil, snap_texture, unit_on};
 use crate::prng::XorShift;
 use crate::scenes_examples::{
     camera, clear_to, cross, cuboid, dot, floor_quad, grid, lamp, material, norm, paint, sampling,
@@ -300,8 +300,8 @@ pub const TECHNIQUE_TEXTS: &[(&str, &str, &str, &str)] = &[
 
 /// Viewport and scissor on one panel.
 fn panel(gl: &mut dyn Gl, x: i32, y: i32, w: i32, h: i32) {
-    gl.viewport(x, y, w, h);
-    gl.scissor(x, y, w, h);
+    example_support::viewport(gl, x, y, w, h);
+    example_support::scissor(gl, x, y, w, h);
     gl.enable(GL_SCISSOR_TEST);
 }
 
@@ -1033,7 +1033,7 @@ fn ex_billboards_impostors(gl: &mut dyn Gl) {
     let tree_tex = tex2d(gl, 32, 64, GL_RGBA, &tree);
     sampling(gl, GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
     // 2. The scene.
-    gl.viewport(0, 0, 256, 128);
+    example_support::viewport(gl, 0, 0, 256, 128);
     clear_to(gl, [0.55, 0.72, 0.92]);
     let eye = [0.3, 1.6, 5.0];
     camera(gl, 40.0, 2.0, eye, [0.0, 0.4, 0.0]);

@@ -1,39 +1,13 @@
 //! Differential tests of the teaching examples' scenes (`tilegl_conformance::scenes_examples`,
 //! run by `examples/*.rs`), under each scene's tolerance.
 
-use tilegl_conformance::differential;
 use tilegl_conformance::scenes_examples::EXAMPLE_SCENES;
 
-differential!(
-    ex_mipmap_filters,
-    ex_mipmap_levels,
-    ex_magnify_anisotropic,
-    ex_wrap_modes,
-    ex_dxt_compression,
-    ex_lightmap_multitexture,
-    ex_lightmap_multipass,
-    ex_gloss_map,
-    ex_sphere_map,
-    ex_cube_map,
-    ex_cube_map_dynamic,
-    ex_emboss_bump,
-    ex_dot3_bump,
-    ex_projective_texture,
-    ex_shadow_map,
-    ex_shadow_map_alpha_test,
-    ex_contour,
-    ex_volume_3d,
-    ex_text,
-    ex_cross_tree,
-    ex_decal,
-    ex_hsv_lookup,
-    ex_fog_terrain,
-    ex_planar_reflection,
-);
-
+/// Every scene of the list against Mesa, one line per scene, all failures listed at the end
+/// (`TILEGL_CASE=NAME` runs only the scenes whose names contain NAME).
 #[test]
-fn every_example_scene_has_a_test() {
-    tilegl_conformance::assert_every_scene_has_a_test(EXAMPLE_SCENES, CASES);
+fn example_scenes_agree_with_mesa() {
+    tilegl_conformance::run_differential_list("EXAMPLE_SCENES", EXAMPLE_SCENES);
 }
 
 /// Recording the stages, as the examples do, must not change the pictures: the `snap_*` calls

@@ -1,23 +1,11 @@
 //! Differential tests of texturing, texture coordinate generation and the texture environment
 //! (scenes in `tilegl_conformance::scenes_texture`), under each scene's tolerance.
 
-use tilegl_conformance::differential;
 use tilegl_conformance::scenes_texture::TEXTURE_SCENES;
 
-differential!(
-    tex_nearest_replace,
-    tex_linear_modulate_clamp,
-    tex_floor_nearest,
-    tex_floor_trilinear,
-    tex_floor_mipmap_nearest,
-    texgen_sphere_map,
-    texgen_object_linear,
-    texgen_eye_linear,
-    multitexture_combine,
-    texture_rectangle,
-);
-
+/// Every scene of the list against Mesa, one line per scene, all failures listed at the end
+/// (`TILEGL_CASE=NAME` runs only the scenes whose names contain NAME).
 #[test]
-fn every_texture_scene_has_a_test() {
-    tilegl_conformance::assert_every_scene_has_a_test(TEXTURE_SCENES, CASES);
+fn texture_scenes_agree_with_mesa() {
+    tilegl_conformance::run_differential_list("TEXTURE_SCENES", TEXTURE_SCENES);
 }

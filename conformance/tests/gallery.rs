@@ -175,3 +175,156 @@ fn cascade_views_leave_units_off() {
         assert_eq!(all, full, "{name}");
     }
 }
+
+/// A picture at half the size: each pixel the rounded mean of a 2x2 block.
+fn half(img: &tilegl_conformance::Image) -> tilegl_conformance::Image {
+    let (w, h) = (img.width / 2, img.height / 2);
+    let mut pixels = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            for c in 0..4 {
+                let s: u32 = [(0, 0), (1, 0), (0, 1), (1, 1)]
+                    .iter()
+                    .map(|(dx, dy)| img.pixel(2 * x + dx, 2 * y + dy)[c] as u32)
+                    .sum();
+                pixels.push(((s + 2) / 4) as u8);
+            }
+        }
+    }
+    tilegl_conformance::Image {
+        width: w,
+        height: h,
+        pixels,
+    }
+}
+
+/// The lower-left `w` x `h` corner of a picture (what a scene drawn at its own size in a
+/// bigger window would leave there).
+fn corner(img: &tilegl_conformance::Image, w: i32, h: i32) -> tilegl_conformance::Image {
+    let mut pixels = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            pixels.extend_from_slice(&img.pixel(x, y));
+        }
+    }
+    tilegl_conformance::Image {
+        width: w,
+        height: h,
+        pixels,
+    }
+}
+
+/// Entries whose picture at twice the size, halved, legitimately differs from the picture at
+/// their own size by more than the bound below, and why.
+const SIZE_DEPENDENT: &[(&str, &str)] = &[
+    (
+        "ex_prefilter_mip_rip_sat",
+        "the mipmap level follows the pixel size",
+    ),
+    (
+        "ex_mipmap_filters",
+        "the mipmap level follows the pixel size",
+    ),
+    ("ex_mipmap_levels", "each mipmap level has its own colour"),
+    (
+        "ex_magnify_anisotropic",
+        "the mipmap level follows the pixel size",
+    ),
+    (
+        "ex_detail_texture",
+        "the detail texture's level follows the pixel size",
+    ),
+    ("ex_cross_tree", "the mipmap level follows the pixel size"),
+    (
+        "ex_planar_reflection",
+        "the mipmap level follows the pixel size",
+    ),
+    (
+        "ex_cube_map_dynamic",
+        "the cube faces keep their size (64 texels)",
+    ),
+    (
+        "ex_airbrush",
+        "the canvas copied into a texture keeps its size",
+    ),
+    ("wide_points", "point sizes are in pixels"),
+    ("smooth_points", "point sizes are in pixels"),
+    ("point_attenuation", "point sizes are in pixels"),
+    ("wide_lines", "line widths are in pixels"),
+    ("smooth_lines", "line widths are in pixels"),
+    ("line_stipple", "stipple patterns are in pixels"),
+    (
+        "raster_modes",
+        "point sizes, line widths and stipples are in pixels",
+    ),
+];
+
+/// `--size` renders the scene at that size (its geometry scales with the window), not its own
+/// picture in a corner of a bigger window: for every gallery entry, the picture at twice the
+/// size, halved, is closer to the picture at its own size than the bigger picture's corner is;
+/// and, except where the picture legitimately depends on the pixel size (listed with the
+/// reason), at most 5 % of its pixels differ by more than 24 in a channel.
+#[test]
+fn a_scene_at_twice_its_size_is_the_same_picture_scaled() {
+    for e in gallery::entries() {
+        let render = |size| {
+            let opts = Options {
+                only: vec![e.name.clone()],
+                size,
+                no_mesa: true,
+                ..Options::default()
+            };
+            gallery::run(&opts).unwrap().remove(0).tilegl.image
+        };
+        let one = render(None);
+        let two = render(Some((2 * e.width, 2 * e.height)));
+        assert_eq!((two.width, two.height), (2 * e.width, 2 * e.height));
+        let scaled = tilegl_conformance::compare::diff(&one, &half(&two), 24);
+        let cornered =
+            tilegl_conformance::compare::diff(&one, &corner(&two, e.width, e.height), 24);
+        println!("{}: halved {scaled}; corner {cornered}", e.name);
+        assert!(
+            scaled.mean < cornered.mean,
+            "{}: at twice the size the picture is not scaled (halved: {scaled}; its corner: \
+             {cornered})",
+            e.name
+        );
+        if !SIZE_DEPENDENT.iter().any(|(n, _)| *n == e.name) {
+            assert!(
+                scaled.bad_share <= 0.05,
+                "{}: at twice the size, halved: {scaled}",
+                e.name
+            );
+        }
+    }
+}
+
+/// At another size than their own, scenes still agree with Mesa drawn at that size.
+#[test]
+fn a_scene_at_another_size_agrees_with_mesa() {
+    if !mesa::require_mesa("gallery --size") {
+        return;
+    }
+    for (name, size) in [
+        ("ex_texenv_modes", (576, 384)),
+        ("ex_fog_terrain", (768, 256)),
+        ("ex_shadow_map", (256, 256)),
+        ("clipping", (192, 96)),
+    ] {
+        let opts = Options {
+            only: vec![name.to_string()],
+            size: Some(size),
+            ..Options::default()
+        };
+        let o = gallery::run(&opts).unwrap().remove(0);
+        let mesa = o.mesa.as_ref().unwrap();
+        assert_eq!((mesa.image.width, mesa.image.height), size);
+        let d = tilegl_conformance::compare::diff(
+            &o.tilegl.image,
+            &mesa.image,
+            o.entry.tolerance.channel,
+        );
+        println!("{name} at {size:?}: {d}");
+        assert!(o.entry.tolerance.accepts(&d), "{name} at {size:?}: {d}");
+    }
+}

@@ -171,6 +171,7 @@ pub fn capability(e: GLenum) -> Option<Capability> {
         GL_COLOR_SUM => Capability::ColorSum,
         GL_FOG => Capability::Fog,
         GL_POINT_SMOOTH => Capability::PointSmooth,
+        GL_POINT_SPRITE => Capability::PointSprite,
         GL_LINE_SMOOTH => Capability::LineSmooth,
         GL_POLYGON_SMOOTH => Capability::PolygonSmooth,
         GL_LINE_STIPPLE => Capability::LineStipple,
@@ -898,6 +899,7 @@ pub fn point_param(e: GLenum) -> Option<PointParam> {
         GL_POINT_SIZE_MAX => PointParam::SizeMax,
         GL_POINT_FADE_THRESHOLD_SIZE => PointParam::FadeThresholdSize,
         GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
+        GL_POINT_SPRITE_COORD_ORIGIN => PointParam::SpriteCoordOrigin,
         _ => return None,
     })
 }

@@ -10,7 +10,7 @@
 //!
 //! Limits, reported through `eglGetError`: only `EGL_OPENGL_API` (up to OpenGL 1.5) can be
 //! bound, only window surfaces can be made (pbuffer and pixmap surfaces fail with
-//! `EGL_BAD_MATCH`), no context sharing, no multisample configurations, and swaps never wait
+//! `EGL_BAD_MATCH`), no multisample configurations, and swaps never wait
 //! (`eglSwapInterval` is recorded, `EGL_MAX_SWAP_INTERVAL` is 0).
 
 #![allow(non_snake_case)]
@@ -805,10 +805,14 @@ pub unsafe extern "C" fn eglCreateContext(
     let Some(c) = window::valid_config(config) else {
         return fail(EGL_BAD_CONFIG, std::ptr::null_mut());
     };
-    if !share.is_null() {
-        // Sharing is not supported.
-        return fail(EGL_BAD_MATCH, std::ptr::null_mut());
-    }
+    let share = if share.is_null() {
+        None
+    } else {
+        match o.contexts.get(&(share as usize)) {
+            Some(s) => Some(&**s as *const WindowContext),
+            None => return fail(EGL_BAD_CONTEXT, std::ptr::null_mut()),
+        }
+    };
     let (mut major, mut minor) = (1, 0);
     // SAFETY: forwarded contract.
     for (a, v) in unsafe { pairs(attribs) } {
@@ -824,7 +828,9 @@ pub unsafe extern "C" fn eglCreateContext(
     if major != 1 || !(0..=5).contains(&minor) {
         return fail(EGL_BAD_MATCH, std::ptr::null_mut());
     }
-    let ctx = Box::new(WindowContext::new(c));
+    let Some(ctx) = WindowContext::new(c, share).map(Box::new) else {
+        return fail(EGL_BAD_CONTEXT, std::ptr::null_mut());
+    };
     let p = &*ctx as *const WindowContext as usize;
     o.contexts.insert(p, ctx);
     ok(p as EGLContext)

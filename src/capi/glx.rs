@@ -1,11 +1,12 @@
 //! GLX 1.4 over Xlib without the server's GLX extension (as Mesa's xlib "fake GLX" does): the
 //! visuals are the X server's TrueColor visuals, tilegl renders into its own buffers and
-//! `glXSwapBuffers` (or a flush of a front buffer) copies the picture into the window with
-//! `XPutImage`. `libGL.so.1` (a link to this library) exports these with the GL functions.
+//! `glXSwapBuffers` (or a flush of a front buffer) copies the picture into the window (MIT-SHM
+//! or `XPutImage`, see `window`). Contexts created with a share context share its texture
+//! objects, display lists and buffer objects (`state::share`). `libGL.so.1` (a link to this
+//! library) exports these with the GL functions.
 //!
 //! Limits, reported honestly to the caller: no colour-index, stereo, auxiliary-buffer,
-//! multisample or pbuffer configurations (choosing one finds none); no display-list or
-//! texture sharing between contexts (`share_list` makes context creation fail); reading from a
+//! multisample or pbuffer configurations (choosing one finds none); reading from a
 //! drawable other than the one drawn to (`glXMakeContextCurrent` with `read != draw`) reads the
 //! draw drawable; swaps never wait for a vertical blank, so the swap-interval extensions record
 //! the interval and report 0 as the interval in effect and as the maximum.
@@ -616,11 +617,14 @@ fn create(config: Option<&'static FbConfig>, share: GLXContext) -> GLXContext {
     let Some(config) = config else {
         return std::ptr::null_mut();
     };
-    if !share.is_null() {
-        // Sharing lists and textures between contexts is not supported.
+    if !share.is_null() && !live(share) {
         return std::ptr::null_mut();
     }
-    let p = Box::into_raw(Box::new(WindowContext::new(config)));
+    let Some(wc) = WindowContext::new(config, (!share.is_null()).then_some(share as *const _))
+    else {
+        return std::ptr::null_mut();
+    };
+    let p = Box::into_raw(Box::new(wc));
     contexts()
         .lock()
         .unwrap_or_else(|e| e.into_inner())
@@ -1134,6 +1138,9 @@ pub(crate) fn proc_address(name: &str) -> *const c_void {
         glXGetProcAddress,
         glXGetProcAddressARB,
     );
+    if name == "glXUseXFont" {
+        return super::xfont::glXUseXFont as *const c_void;
+    }
     let c_name = std::ffi::CString::new(name).unwrap_or_default();
     // SAFETY: a NUL-terminated string.
     unsafe { super::osmesa::OSMesaGetProcAddress(c_name.as_ptr()) }

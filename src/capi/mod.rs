@@ -9,6 +9,7 @@ pub mod foreign;
 pub mod glx;
 pub mod osmesa;
 pub mod window;
+pub mod xfont;
 
 use std::ffi::c_void;
 
@@ -24,6 +25,9 @@ fn with_current<R: Default>(f: impl FnOnce(&mut Context) -> R) -> R {
         let r = f(&mut c.gl);
         if c.gl.take_present_request() {
             c.present();
+        }
+        if c.gl.take_drawable_check_request() {
+            c.check_drawable_size();
         }
         r
     })

@@ -5,11 +5,14 @@
 #![allow(non_snake_case)]
 
 use std::cell::Cell;
+use std::collections::HashMap;
 use std::ffi::{c_char, c_void, CStr};
 use std::sync::atomic::{AtomicU8, Ordering};
+use std::sync::{Mutex, OnceLock};
 
 use crate::api::enums::*;
 use crate::framebuffer::FramebufferConfig;
+use crate::state::share::ShareGroup;
 use crate::state::{Context, ContextConfig};
 
 pub const OSMESA_COLOR_INDEX: GLenum = GL_COLOR_INDEX;
@@ -42,6 +45,8 @@ pub struct OsMesaContext {
     /// A window-system context (GLX, EGL): what a flush point does instead of copying into a
     /// caller buffer.
     window_present: Option<fn(&mut Context)>,
+    /// A window-system context: resizes the buffers to the drawable (after `glViewport`).
+    window_resize: Option<fn(&mut Context)>,
     /// Which threads an OSMesa context is current on ([`UNBOUND`], [`BOUND`],
     /// [`BOUND_DESTROY`], [`DEAD`]): a context is current on one thread at a time, and one
     /// destroyed while current on another thread is freed when that thread lets it go.
@@ -77,6 +82,36 @@ fn release_current() {
         // SAFETY: destroyed by another thread while current here; this thread was the last
         // user and is no longer, so the context is freed exactly once, here.
         drop(unsafe { Box::from_raw(old) });
+    }
+}
+
+/// The share group of every live context (OSMesa's, and the GLX and EGL contexts' inner ones),
+/// by address: a context created sharing with another finds the group here, without touching
+/// the other context, which may be current and in use on another thread.
+fn share_groups() -> &'static Mutex<HashMap<usize, ShareGroup>> {
+    static G: OnceLock<Mutex<HashMap<usize, ShareGroup>>> = OnceLock::new();
+    G.get_or_init(|| Mutex::new(HashMap::new()))
+}
+
+/// Registers `ctx` (boxed: its address is its key until it is dropped) in the share group
+/// of `share`, or in its own group for null. False (nothing registered) when `share` is not
+/// a live context.
+pub(crate) fn join_share_group(ctx: &mut OsMesaContext, share: *const OsMesaContext) -> bool {
+    let mut groups = share_groups().lock().unwrap_or_else(|e| e.into_inner());
+    if !share.is_null() {
+        let Some(group) = groups.get(&(share as usize)) else {
+            return false;
+        };
+        ctx.gl.join_share_group(group);
+    }
+    groups.insert(ctx as *const OsMesaContext as usize, ctx.gl.share_group());
+    true
+}
+
+impl Drop for OsMesaContext {
+    fn drop(&mut self) {
+        let mut groups = share_groups().lock().unwrap_or_else(|e| e.into_inner());
+        groups.remove(&(self as *const OsMesaContext as usize));
     }
 }
 
@@ -132,7 +167,11 @@ fn from_format(format: GLenum, p: &[u8]) -> [u8; 4] {
 impl OsMesaContext {
     /// A context of a window-system layer: no caller buffer; `present` runs at each flush
     /// point (`glFlush`, `glFinish`).
-    pub(crate) fn for_window(config: ContextConfig, present: fn(&mut Context)) -> OsMesaContext {
+    pub(crate) fn for_window(
+        config: ContextConfig,
+        present: fn(&mut Context),
+        resize: fn(&mut Context),
+    ) -> OsMesaContext {
         OsMesaContext {
             gl: Context::with_config(config),
             format: OSMESA_RGBA,
@@ -143,6 +182,7 @@ impl OsMesaContext {
             y_up: true,
             depth_copy: Vec::new(),
             window_present: Some(present),
+            window_resize: Some(resize),
             binding: AtomicU8::new(UNBOUND),
         }
     }
@@ -186,6 +226,13 @@ impl OsMesaContext {
         }
     }
 
+    /// Resizes a window-system context's buffers to its drawable, if that changed size.
+    pub(crate) fn check_drawable_size(&mut self) {
+        if let Some(f) = self.window_resize {
+            f(&mut self.gl);
+        }
+    }
+
     /// Loads the caller's buffer into the colour buffer (OSMesa renders on top of it).
     fn adopt(&mut self) {
         let bpp = bytes_per_pixel(self.format).unwrap_or(4);
@@ -213,8 +260,8 @@ pub extern "C" fn OSMesaCreateContext(
     OSMesaCreateContextExt(format, 24, 8, 0, sharelist)
 }
 
-/// `OSMesaCreateContextExt`. Sharing display lists and textures between contexts is not
-/// supported: a non-null `sharelist` returns null.
+/// `OSMesaCreateContextExt`. With a `sharelist` context, the new context shares its texture
+/// objects, display lists and buffer objects (null when `sharelist` is not a live context).
 #[no_mangle]
 pub extern "C" fn OSMesaCreateContextExt(
     format: GLenum,
@@ -223,7 +270,7 @@ pub extern "C" fn OSMesaCreateContextExt(
     accum_bits: GLint,
     sharelist: *mut OsMesaContext,
 ) -> *mut OsMesaContext {
-    if !sharelist.is_null() || bytes_per_pixel(format).is_none() {
+    if bytes_per_pixel(format).is_none() {
         return std::ptr::null_mut();
     }
     let depth_bits = match depth_bits {
@@ -243,7 +290,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         },
         threads: 0,
     };
-    Box::into_raw(Box::new(OsMesaContext {
+    let mut ctx = Box::new(OsMesaContext {
         gl: Context::with_config(config),
         format,
         buffer: std::ptr::null_mut(),
@@ -253,8 +300,13 @@ pub extern "C" fn OSMesaCreateContextExt(
         y_up: true,
         depth_copy: Vec::new(),
         window_present: None,
+        window_resize: None,
         binding: AtomicU8::new(UNBOUND),
-    }))
+    });
+    if !join_share_group(&mut ctx, sharelist) {
+        return std::ptr::null_mut();
+    }
+    Box::into_raw(ctx)
 }
 
 /// `OSMesaMakeCurrent`: binds `buffer` (`width` x `height` pixels of the context's format,
@@ -308,6 +360,7 @@ pub unsafe extern "C" fn OSMesaMakeCurrent(
         c.row_length = width;
     }
     c.gl.resize(width, height);
+    c.gl.refresh_shared_objects();
     if first {
         c.gl.viewport(0, 0, width, height);
         c.gl.scissor(0, 0, width, height);

@@ -37,6 +37,32 @@ pub fn assemble(mode: PrimitiveMode, count: usize) -> Vec<Primitive> {
     out
 }
 
+/// Re-splits the triangles [`assemble`] made of `GL_QUADS` along the other diagonal, from
+/// vertex 1 to the provoking vertex 3: (0, 1, 3) and (1, 2, 3). Section 2.6.1 leaves the split
+/// open; it decides the coverage of a non-convex quad and the shading of a smooth quad whose
+/// attributes are not affine. Mesa splits at 0-2 when it draws a batch directly and at 1-3 when
+/// the batch goes through its clipping pipeline (some vertex outside the view volume or a
+/// clip plane), which the caller decides.
+pub fn split_quads_through_1_3(prims: &mut [Primitive]) {
+    for p in prims.iter_mut() {
+        if let Primitive::Triangle {
+            v,
+            provoking,
+            edges,
+        } = p
+        {
+            let q = *provoking - 3;
+            *v = if v[1] == q + 1 {
+                *edges = [true, false, true];
+                [q, q + 1, q + 3]
+            } else {
+                *edges = [true, true, false];
+                [q + 1, q + 2, q + 3]
+            };
+        }
+    }
+}
+
 /// [`assemble`] into `out` (cleared first), reusing its allocation: large batches would
 /// otherwise fault in fresh pages on every draw.
 pub fn assemble_into(mode: PrimitiveMode, count: usize, out: &mut Vec<Primitive>) {
@@ -149,6 +175,26 @@ pub fn assemble_into(mode: PrimitiveMode, count: usize, out: &mut Vec<Primitive>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn quads_split_through_1_3_keep_winding_provoking_vertex_and_boundary() {
+        let mut prims = assemble(PrimitiveMode::Quads, 8);
+        split_quads_through_1_3(&mut prims);
+        let tri = |v, edges| Primitive::Triangle {
+            v,
+            provoking: v[2],
+            edges,
+        };
+        assert_eq!(
+            prims,
+            vec![
+                tri([0, 1, 3], [true, false, true]),
+                tri([1, 2, 3], [true, true, false]),
+                tri([4, 5, 7], [true, false, true]),
+                tri([5, 6, 7], [true, true, false]),
+            ]
+        );
+    }
 
     #[test]
     fn counts_follow_the_spec() {

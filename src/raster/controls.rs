@@ -9,6 +9,9 @@ pub struct RasterDraw {
     /// `glPointSize`, before attenuation and clamping.
     pub point_size: f32,
     pub point_smooth: bool,
+    /// `GL_POINT_SPRITE` on: the units whose texture coordinates the sprite replaces (bit per
+    /// unit) and whether t runs down from the top (`GL_UPPER_LEFT`).
+    pub point_sprite: Option<(u32, bool)>,
     /// Distance attenuation coefficients (a, b, c); `None` for the default (1, 0, 0).
     pub point_attenuation: Option<[f32; 3]>,
     /// `GL_POINT_SIZE_MIN`, `GL_POINT_SIZE_MAX`.

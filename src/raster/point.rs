@@ -72,6 +72,20 @@ pub fn bin_point(
     let s = SUBPIXEL as f64;
     let (x, y) = (v.xy[0] as f64 / s, v.xy[1] as f64 / s);
     let z = v.z + z_offset;
+    if let Some((replace, upper_left)) = ds.raster.point_sprite {
+        bin_sprite(
+            ds,
+            state,
+            [x, y],
+            z,
+            size,
+            replace,
+            upper_left,
+            attrs,
+            scene,
+        );
+        return;
+    }
     if !ds.raster.point_smooth {
         let w = aliased_width(size);
         let half = (w - 1) as f64 / 2.0;
@@ -95,6 +109,57 @@ pub fn bin_point(
             }
         }
     }
+}
+
+/// A point sprite (ARB_point_sprite, GL 2.0 section 3.4.1): the pixels whose centres lie in the
+/// square of side `size` (not rounded; antialiasing does not apply) centred on `xy`, with the
+/// texture coordinates of the units in `replace` replaced by s = 1/2 + (x_f + 1/2 - x) / size,
+/// t = 1/2 - (y_f + 1/2 - y) / size (`upper_left`, the default) or 1/2 + (y_f + 1/2 - y) / size,
+/// r = 0, q = 1: planes over the pixel centres, so the texture's level of detail follows the
+/// size.
+#[allow(clippy::too_many_arguments)]
+fn bin_sprite(
+    ds: &DrawState,
+    state: u32,
+    [x, y]: [f64; 2],
+    z: f64,
+    size: f64,
+    replace: u32,
+    upper_left: bool,
+    attrs: &[f32],
+    scene: &mut Scene,
+) {
+    let [lo, hi] = limits::POINT_SIZE_RANGE;
+    let size = size.max(lo as f64).min(hi as f64);
+    let half = size / 2.0;
+    // Pixel px is in when x - half <= px + 1/2 < x + half.
+    let first = |c: f64| (c - half - 0.5).ceil() as i64;
+    let r = [first(x), first(y), first(x + size), first(y + size)];
+    if clip_to_draw_rect(ds, r).is_none() {
+        return;
+    }
+    let offset = add_constant_planes(attrs, scene);
+    for unit in 0..32 {
+        let base = crate::state::snapshot::attr::TEX + 4 * unit;
+        if replace >> unit & 1 == 0 || base + 4 > attrs.len() {
+            continue;
+        }
+        let t_sign = if upper_left { -1.0 } else { 1.0 };
+        let planes = &mut scene.planes[offset as usize + base..offset as usize + base + 4];
+        planes[0] = Plane {
+            a: 1.0 / size,
+            b: 0.0,
+            c: 0.5 - x / size,
+        };
+        planes[1] = Plane {
+            a: 0.0,
+            b: t_sign / size,
+            c: 0.5 - t_sign * y / size,
+        };
+        planes[2] = Plane::constant(0.0);
+        planes[3] = Plane::constant(1.0);
+    }
+    bin_rect(ds, state, r, z, offset, 1.0, scene);
 }
 
 /// Coverage of pixel `(px, py)` by the disc at `(cx, cy)` of radius `r`: the box-filtered

@@ -62,12 +62,14 @@ impl Edge {
     /// belong to one triangle only.
     ///
     /// Fill rule: in GL window coordinates (y up), pixel centres on an edge are included when it
-    /// is a left edge (interior to its right: the edge runs downwards) or a top edge (horizontal
-    /// with the interior below).
+    /// is a left edge (interior to its right: the edge runs downwards) or a bottom edge
+    /// (horizontal with the interior above). Section 3.5.1 leaves the choice open; this is the
+    /// one Mesa makes (its rasterizers work top-down, where a GL bottom edge is a top edge), so
+    /// triangles sharing edges with the window rows match it pixel for pixel.
     pub fn new(p: [i64; 2], q: [i64; 2]) -> (Edge, u8) {
         let dx = q[0] - p[0];
         let dy = q[1] - p[1];
-        let top_left = dy < 0 || (dy == 0 && dx < 0);
+        let top_left = dy < 0 || (dy == 0 && dx > 0);
         let edge = Edge {
             a: -dy,
             b: dx,

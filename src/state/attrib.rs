@@ -194,6 +194,9 @@ impl Context {
             r.point_size_max = e.raster.point_size_max;
             r.point_fade_threshold = e.raster.point_fade_threshold;
             r.point_attenuation = e.raster.point_attenuation;
+            r.point_sprite = e.raster.point_sprite;
+            r.point_sprite_coord_replace = e.raster.point_sprite_coord_replace;
+            r.point_sprite_upper_left = e.raster.point_sprite_upper_left;
         }
         if g.line {
             r.line_smooth = e.raster.line_smooth;
@@ -290,6 +293,7 @@ impl Context {
             r.line_smooth = e.raster.line_smooth;
             r.line_stipple = e.raster.line_stipple;
             r.point_smooth = e.raster.point_smooth;
+            r.point_sprite = e.raster.point_sprite;
             r.polygon_smooth = e.raster.polygon_smooth;
             r.polygon_stipple = e.raster.polygon_stipple;
             r.offset_enabled = e.raster.offset_enabled;

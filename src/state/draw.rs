@@ -104,6 +104,13 @@ impl Context {
         let edge_flags = assemble::uses_edge_flags(mode);
         let mut prims = std::mem::take(&mut self.primitive_buffer);
         assemble::assemble_into(mode, clip.len(), &mut prims);
+        if mode == PrimitiveMode::Quads
+            && (self.list_executing() || clip.iter().any(|v| !point_visible(v, user)))
+        {
+            // As Mesa does for quads from a display list (compiled into triangles) and for a
+            // batch that needs clipping; the reference pictures are its.
+            assemble::split_quads_through_1_3(&mut prims);
+        }
         for &prim in &prims {
             if self.scene.is_full() {
                 self.flush_scene();

@@ -300,6 +300,11 @@ impl Context {
                     PointParam::DistanceAttenuation => {
                         Floats(r.point_attenuation.map(|v| v as f64).to_vec())
                     }
+                    PointParam::SpriteCoordOrigin => Enum(if r.point_sprite_upper_left {
+                        GL_UPPER_LEFT
+                    } else {
+                        GL_LOWER_LEFT
+                    }),
                 }
             }
             Query::ColorMaterialFace => Enum(self.lighting.color_material_face.to_gl()),

@@ -31,6 +31,8 @@
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
+use parking_lot::RwLock;
+
 use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
@@ -48,24 +50,32 @@ pub(crate) type ListCommand = Box<dyn Fn(&mut Context) + Send + Sync>;
 /// A compiled display list.
 pub(crate) type List = Arc<Vec<ListCommand>>;
 
+/// The display lists of a share group: every context created sharing objects with another
+/// holds the same `Arc`. A list runs from its own `Arc` after the lookup, so the lock is held
+/// only to find, define or delete lists.
+#[derive(Default)]
+pub struct ListNames {
+    lists: BTreeMap<GLuint, List>,
+    /// The largest name ever defined or generated: `glGenLists` hands out names above it
+    /// while it can (deleted names are not reused at once, as in Mesa).
+    high: GLuint,
+}
+
 /// Display-list state: the lists, the one being compiled, `glListBase`, execution depth.
 #[derive(Default)]
 pub struct ListState {
-    lists: BTreeMap<GLuint, List>,
+    names: Arc<RwLock<ListNames>>,
     /// The list being compiled: name, `GL_COMPILE_AND_EXECUTE`, commands so far.
     compiling: Option<(GLuint, bool, Vec<ListCommand>)>,
     /// Nesting depth of list execution (0 outside `glCallList`).
     depth: u32,
-    /// The largest name ever defined or generated: `glGenLists` hands out names above it
-    /// while it can (deleted names are not reused at once, as in Mesa).
-    high: GLuint,
     base: GLuint,
 }
 
 impl std::fmt::Debug for ListState {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("ListState")
-            .field("lists", &self.lists.len())
+            .field("lists", &self.names.read().lists.len())
             .field("compiling", &self.compiling.as_ref().map(|c| (c.0, c.1)))
             .field("depth", &self.depth)
             .field("base", &self.base)
@@ -74,6 +84,16 @@ impl std::fmt::Debug for ListState {
 }
 
 impl ListState {
+    /// The display lists (the share group's handle).
+    pub(crate) fn names(&self) -> &Arc<RwLock<ListNames>> {
+        &self.names
+    }
+
+    /// Uses the display lists of a share group (for a new context).
+    pub(crate) fn set_names(&mut self, names: Arc<RwLock<ListNames>>) {
+        self.names = names;
+    }
+
     /// `GL_LIST_BASE`.
     pub fn base(&self) -> GLuint {
         self.base
@@ -95,6 +115,12 @@ impl ListState {
 }
 
 impl Context {
+    /// True while a display list executes (inside `glCallList`/`glCallLists`).
+    #[inline]
+    pub(crate) fn list_executing(&self) -> bool {
+        self.lists.depth > 0
+    }
+
     /// True while calls are recorded into a list (compiling, and not executing a list).
     #[inline]
     pub(crate) fn list_recording(&self) -> bool {
@@ -140,31 +166,28 @@ impl Context {
         }
         // Above every name used so far; when that overflows, the first run of `range` unused
         // names (names are used once defined or generated).
-        let mut start: u64 = self.lists.high as u64 + 1;
+        let mut names = self.lists.names.write();
+        let mut start: u64 = names.high as u64 + 1;
         if start + range as u64 - 1 > u32::MAX as u64 {
             start = 1;
         }
         loop {
             let end = start + range as u64 - 1;
             if end > u32::MAX as u64 {
+                drop(names);
                 self.record_error(GL_OUT_OF_MEMORY);
                 return 0;
             }
-            match self
-                .lists
-                .lists
-                .range(start as u32..=end as u32)
-                .next_back()
-            {
+            match names.lists.range(start as u32..=end as u32).next_back() {
                 Some((&used, _)) => start = used as u64 + 1,
                 None => break,
             }
         }
         let empty: List = Arc::new(Vec::new());
         for name in start..start + range as u64 {
-            self.lists.lists.insert(name as u32, empty.clone());
+            names.lists.insert(name as u32, empty.clone());
         }
-        self.lists.high = self.lists.high.max((start + range as u64 - 1) as GLuint);
+        names.high = names.high.max((start + range as u64 - 1) as GLuint);
         start as GLuint
     }
 
@@ -189,15 +212,16 @@ impl Context {
             self.record_error(GL_INVALID_OPERATION);
             return;
         };
-        self.lists.lists.insert(name, Arc::new(cmds));
-        self.lists.high = self.lists.high.max(name);
+        let mut names = self.lists.names.write();
+        names.lists.insert(name, Arc::new(cmds));
+        names.high = names.high.max(name);
     }
 
     pub(crate) fn call_list(&mut self, list: GLuint) {
         if self.lists.depth >= MAX_LIST_NESTING {
             return;
         }
-        let Some(l) = self.lists.lists.get(&list).cloned() else {
+        let Some(l) = self.lists.names.read().lists.get(&list).cloned() else {
             return;
         };
         self.lists.depth += 1;
@@ -244,19 +268,15 @@ impl Context {
             return;
         }
         let end = (list as u64 + range as u64 - 1).min(u32::MAX as u64) as u32;
-        let names: Vec<GLuint> = self
-            .lists
-            .lists
-            .range(list..=end)
-            .map(|(&k, _)| k)
-            .collect();
-        for k in names {
-            self.lists.lists.remove(&k);
+        let mut names = self.lists.names.write();
+        let doomed: Vec<GLuint> = names.lists.range(list..=end).map(|(&k, _)| k).collect();
+        for k in doomed {
+            names.lists.remove(&k);
         }
     }
 
     pub(crate) fn is_list(&mut self, list: GLuint) -> GLboolean {
-        self.lists.lists.contains_key(&list) as GLboolean
+        self.lists.names.read().lists.contains_key(&list) as GLboolean
     }
 }
 

@@ -190,6 +190,7 @@ impl Context {
     }
 
     pub(crate) fn viewport(&mut self, x: GLint, y: GLint, width: GLsizei, height: GLsizei) {
+        self.drawable_check_requested = true;
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
             return;

@@ -24,6 +24,7 @@ pub mod pixel_rect;
 pub mod queries;
 pub mod rasterization;
 pub mod select;
+pub mod share;
 pub mod snapshot;
 pub mod tables;
 pub mod texenv;
@@ -68,11 +69,11 @@ impl Default for ContextConfig {
 
 /// `GL_EXTENSIONS`: the extensions whose functionality is implemented and tested (most were
 /// folded into OpenGL 1.2-1.5 and are listed for programs that look for the old names).
-pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters \
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters GL_ARB_point_sprite \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
-GL_ARB_texture_rectangle GL_ARB_transpose_matrix GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra \
+GL_ARB_texture_rectangle GL_ARB_transpose_matrix GL_ARB_vertex_array_bgra GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra \
 GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract \
 GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
@@ -80,7 +81,7 @@ GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secon
 GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
-GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle \
+GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle GL_EXT_vertex_array_bgra \
 GL_ATI_texture_mirror_once GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
 GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod";
 
@@ -145,6 +146,9 @@ pub struct Context {
     strings: HashMap<String, CString>,
     /// Set by `glFlush`/`glFinish`: the front end should show the finished picture.
     present_requested: bool,
+    /// Set by `glViewport`: a window-system front end checks the drawable's size there (as
+    /// Mesa's xlib driver does), so a resized window gets buffers of its new size.
+    pub(crate) drawable_check_requested: bool,
     /// Forces the general fragment path (used by the fast-path twin tests).
     pub(crate) force_general_path: bool,
     /// Vertex arrays, buffer objects and the client attribute stack.
@@ -243,6 +247,7 @@ impl Context {
             shading_threads,
             strings: HashMap::new(),
             present_requested: false,
+            drawable_check_requested: false,
             force_general_path: false,
             client: Default::default(),
             lists: Default::default(),
@@ -294,6 +299,12 @@ impl Context {
     /// picture to where the application expects it.
     pub fn take_present_request(&mut self) -> bool {
         std::mem::take(&mut self.present_requested)
+    }
+
+    /// True once after each `glViewport`: the caller (the C ABI) resizes the buffers to a
+    /// window whose size changed.
+    pub fn take_drawable_check_request(&mut self) -> bool {
+        std::mem::take(&mut self.drawable_check_requested)
     }
 
     /// Makes every draw take the general fragment path instead of a specialised one (for
@@ -423,6 +434,7 @@ impl Context {
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled = on,
             Capability::Fog => self.fog.enabled = on,
             Capability::PointSmooth => self.raster.point_smooth = on,
+            Capability::PointSprite => self.raster.point_sprite = on,
             Capability::LineSmooth => self.raster.line_smooth = on,
             Capability::PolygonSmooth => self.raster.polygon_smooth = on,
             Capability::LineStipple => self.raster.line_stipple = on,
@@ -479,6 +491,7 @@ impl Context {
             Capability::TexGen(c) => self.tex_gen[self.active_texture][c].enabled,
             Capability::Fog => self.fog.enabled,
             Capability::PointSmooth => self.raster.point_smooth,
+            Capability::PointSprite => self.raster.point_sprite,
             Capability::LineSmooth => self.raster.line_smooth,
             Capability::PolygonSmooth => self.raster.polygon_smooth,
             Capability::LineStipple => self.raster.line_stipple,

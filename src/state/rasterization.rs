@@ -145,6 +145,14 @@ impl Context {
             PointParam::SizeMax => r.point_size_max = v[0],
             PointParam::FadeThresholdSize => r.point_fade_threshold = v[0],
             PointParam::DistanceAttenuation => r.point_attenuation = [v[0], v[1], v[2]],
+            PointParam::SpriteCoordOrigin => match v[0] as GLenum {
+                GL_UPPER_LEFT if v[0].fract() == 0.0 => r.point_sprite_upper_left = true,
+                GL_LOWER_LEFT if v[0].fract() == 0.0 => r.point_sprite_upper_left = false,
+                _ => {
+                    self.record_error(GL_INVALID_ENUM);
+                    return;
+                }
+            },
         }
         self.invalidate();
     }

@@ -289,6 +289,9 @@ impl Context {
         RasterDraw {
             point_size: r.point_size,
             point_smooth: r.point_smooth,
+            point_sprite: r
+                .point_sprite
+                .then_some((r.point_sprite_coord_replace, r.point_sprite_upper_left)),
             point_attenuation: (r.point_attenuation != [1.0, 0.0, 0.0])
                 .then_some(r.point_attenuation),
             point_size_range: [r.point_size_min, r.point_size_max],

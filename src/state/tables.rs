@@ -96,6 +96,11 @@ pub struct RasterState {
     pub point_size_max: f32,
     pub point_fade_threshold: f32,
     pub point_attenuation: [f32; 3],
+    /// `GL_POINT_SPRITE` (ARB_point_sprite), the units whose `GL_COORD_REPLACE` is on (bit
+    /// per unit) and `GL_POINT_SPRITE_COORD_ORIGIN` (`GL_UPPER_LEFT`: true, the default).
+    pub point_sprite: bool,
+    pub point_sprite_coord_replace: u32,
+    pub point_sprite_upper_left: bool,
 }
 
 impl Default for RasterState {
@@ -123,6 +128,9 @@ impl Default for RasterState {
             point_size_max: limits::POINT_SIZE_RANGE[1],
             point_fade_threshold: 1.0,
             point_attenuation: [1.0, 0.0, 0.0],
+            point_sprite: false,
+            point_sprite_coord_replace: 0,
+            point_sprite_upper_left: true,
         }
     }
 }

@@ -37,6 +37,19 @@ impl Context {
     }
 
     fn tex_env_values(&mut self, target: GLenum, pname: GLenum, v: &[f32], vector: bool) {
+        if target == GL_POINT_SPRITE {
+            // ARB_point_sprite: the unit's GL_COORD_REPLACE, a boolean.
+            if pname != GL_COORD_REPLACE || v.is_empty() {
+                self.record_error(GL_INVALID_ENUM);
+                return;
+            }
+            let bit = 1u32 << self.active_texture;
+            let r = &mut self.raster;
+            r.point_sprite_coord_replace =
+                (r.point_sprite_coord_replace & !bit) | if v[0] != 0.0 { bit } else { 0 };
+            self.invalidate();
+            return;
+        }
         let Some(p) = convert::tex_env_param(target, pname) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -132,6 +145,10 @@ impl Context {
         pname: GLenum,
         len: usize,
     ) -> Option<(Vec<f32>, bool)> {
+        if target == GL_POINT_SPRITE && pname == GL_COORD_REPLACE {
+            let on = self.raster.point_sprite_coord_replace >> self.active_texture & 1;
+            return Some((vec![on as f32], false)).filter(|_| len >= 1);
+        }
         let Some(p) = convert::tex_env_param(target, pname) else {
             self.record_error(GL_INVALID_ENUM);
             return None;

@@ -21,6 +21,12 @@ pub mod sample;
 pub mod simd;
 
 use std::collections::{HashMap, HashSet};
+use std::ops::{Deref, DerefMut};
+use std::sync::Arc;
+
+use parking_lot::{
+    MappedRwLockReadGuard, MappedRwLockWriteGuard, RwLock, RwLockReadGuard, RwLockWriteGuard,
+};
 
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::TextureTarget;
@@ -43,22 +49,86 @@ pub const TARGET_PRECEDENCE: [TextureTarget; TARGET_COUNT] = [
     TextureTarget::T1D,
 ];
 
+/// The named texture objects of a share group: every context created sharing objects with
+/// another holds the same `Arc` (GLX 1.4 section 2.3: texture objects are shared, the default
+/// textures of name 0 are not).
+#[derive(Debug)]
+pub struct TextureNames {
+    /// Named objects (created by their first bind).
+    objects: HashMap<u32, TextureObject>,
+    /// Names returned by `glGenTextures` and not yet bound or deleted.
+    reserved: HashSet<u32>,
+    next_name: u32,
+}
+
+impl Default for TextureNames {
+    fn default() -> Self {
+        TextureNames {
+            objects: HashMap::new(),
+            reserved: HashSet::new(),
+            next_name: 1,
+        }
+    }
+}
+
+/// A texture object borrowed from a context: its own default texture or proxy, or a named
+/// object behind the share group's lock (held while this lives).
+pub enum ObjectRef<'a> {
+    Own(&'a TextureObject),
+    Named(MappedRwLockReadGuard<'a, TextureObject>),
+}
+
+impl Deref for ObjectRef<'_> {
+    type Target = TextureObject;
+    fn deref(&self) -> &TextureObject {
+        match self {
+            ObjectRef::Own(o) => o,
+            ObjectRef::Named(g) => g,
+        }
+    }
+}
+
+/// A texture object borrowed mutably (see [`ObjectRef`]).
+pub enum ObjectMut<'a> {
+    Own(&'a mut TextureObject),
+    Named(MappedRwLockWriteGuard<'a, TextureObject>),
+}
+
+impl Deref for ObjectMut<'_> {
+    type Target = TextureObject;
+    fn deref(&self) -> &TextureObject {
+        match self {
+            ObjectMut::Own(o) => o,
+            ObjectMut::Named(g) => g,
+        }
+    }
+}
+
+impl DerefMut for ObjectMut<'_> {
+    fn deref_mut(&mut self) -> &mut TextureObject {
+        match self {
+            ObjectMut::Own(o) => o,
+            ObjectMut::Named(g) => g,
+        }
+    }
+}
+
 /// All texture state of a context (objects, bindings, per-unit enables).
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct TextureState {
     /// Per unit: enabled targets.
     enabled: [[bool; TARGET_COUNT]; MAX_TEXTURE_UNITS],
     /// Per unit and target: the bound name (0 = the default texture of the target).
     bindings: [[u32; TARGET_COUNT]; MAX_TEXTURE_UNITS],
-    /// Named objects (created by their first bind).
-    objects: HashMap<u32, TextureObject>,
-    /// Names returned by `glGenTextures` and not yet bound or deleted.
-    reserved: HashSet<u32>,
+    /// The named objects, shared with the contexts of the share group. Reads take the lock
+    /// recursively (a context may hold two objects at once; borrows keep a writer exclusive
+    /// within the context), and nothing below `state` reads it: snapshots hold the texels'
+    /// `Arc`s.
+    names: Arc<RwLock<TextureNames>>,
     /// The default texture of each target (name 0).
     defaults: [TextureObject; TARGET_COUNT],
     /// The proxy texture of each target (image parameters only, no texels).
     pub(crate) proxies: [TextureObject; TARGET_COUNT],
-    next_name: u32,
 }
 
 impl Default for TextureState {
@@ -73,16 +143,32 @@ impl Default for TextureState {
         TextureState {
             enabled: [[false; TARGET_COUNT]; MAX_TEXTURE_UNITS],
             bindings: [[0; TARGET_COUNT]; MAX_TEXTURE_UNITS],
-            objects: HashMap::new(),
-            reserved: HashSet::new(),
+            names: Default::default(),
             defaults: targets.map(|t| TextureObject::new(Some(t))),
             proxies: targets.map(|t| TextureObject::new(Some(t))),
-            next_name: 1,
         }
     }
 }
 
 impl TextureState {
+    /// The named objects (the share group's handle).
+    pub(crate) fn names(&self) -> &Arc<RwLock<TextureNames>> {
+        &self.names
+    }
+
+    /// Uses the named objects of a share group (for a new context: its own names are dropped).
+    pub(crate) fn set_names(&mut self, names: Arc<RwLock<TextureNames>>) {
+        self.names = names;
+    }
+
+    fn read(&self) -> RwLockReadGuard<'_, TextureNames> {
+        self.names.read_recursive()
+    }
+
+    fn write(&self) -> RwLockWriteGuard<'_, TextureNames> {
+        self.names.write()
+    }
+
     /// `glEnable`/`glDisable` of a texture target on `unit`.
     pub fn set_enabled(&mut self, unit: usize, target: TextureTarget, on: bool) {
         if let Some(u) = self.enabled.get_mut(unit) {
@@ -101,20 +187,28 @@ impl TextureState {
     }
 
     /// The object bound to `target` on `unit`.
-    pub fn bound(&self, unit: usize, target: TextureTarget) -> &TextureObject {
+    /// A name another context of the share group deleted reads as the default texture.
+    pub fn bound(&self, unit: usize, target: TextureTarget) -> ObjectRef<'_> {
         let name = self.binding(unit, target);
-        self.objects
-            .get(&name)
-            .unwrap_or(&self.defaults[target as usize])
+        if name != 0 {
+            if let Some(o) = self.object(name) {
+                return ObjectRef::Named(o);
+            }
+        }
+        ObjectRef::Own(&self.defaults[target as usize])
     }
 
     /// The object bound to `target` on `unit`, mutably.
-    pub fn bound_mut(&mut self, unit: usize, target: TextureTarget) -> &mut TextureObject {
+    pub fn bound_mut(&mut self, unit: usize, target: TextureTarget) -> ObjectMut<'_> {
         let name = self.binding(unit, target);
-        match self.objects.get_mut(&name) {
-            Some(o) => o,
-            None => &mut self.defaults[target as usize],
+        if name != 0 {
+            if let Ok(o) =
+                RwLockWriteGuard::try_map(self.names.write(), |n| n.objects.get_mut(&name))
+            {
+                return ObjectMut::Named(o);
+            }
         }
+        ObjectMut::Own(&mut self.defaults[target as usize])
     }
 
     /// The snapshot of what `unit` samples: the object bound to the unit's highest-precedence
@@ -129,38 +223,41 @@ impl TextureState {
 
     /// `glGenTextures`: `n` unused names.
     pub fn gen_names(&mut self, out: &mut [u32]) {
+        let mut n = self.write();
         for slot in out.iter_mut() {
-            while self.next_name == 0
-                || self.objects.contains_key(&self.next_name)
-                || self.reserved.contains(&self.next_name)
+            while n.next_name == 0
+                || n.objects.contains_key(&n.next_name)
+                || n.reserved.contains(&n.next_name)
             {
-                self.next_name = self.next_name.wrapping_add(1);
+                n.next_name = n.next_name.wrapping_add(1);
             }
-            *slot = self.next_name;
-            self.reserved.insert(self.next_name);
-            self.next_name = self.next_name.wrapping_add(1);
+            *slot = n.next_name;
+            let name = n.next_name;
+            n.reserved.insert(name);
+            n.next_name = name.wrapping_add(1);
         }
     }
 
     /// The object named `name`, if it exists (was bound).
-    pub fn object(&self, name: u32) -> Option<&TextureObject> {
-        self.objects.get(&name)
+    pub fn object(&self, name: u32) -> Option<MappedRwLockReadGuard<'_, TextureObject>> {
+        RwLockReadGuard::try_map(self.read(), |n| n.objects.get(&name)).ok()
     }
 
-    pub fn object_mut(&mut self, name: u32) -> Option<&mut TextureObject> {
-        self.objects.get_mut(&name)
+    pub fn object_mut(&mut self, name: u32) -> Option<MappedRwLockWriteGuard<'_, TextureObject>> {
+        RwLockWriteGuard::try_map(self.write(), |n| n.objects.get_mut(&name)).ok()
     }
 
     /// `glBindTexture` after validation: creates the object on first bind. Returns false when
     /// the object exists with another target (`GL_INVALID_OPERATION`).
     pub fn bind(&mut self, unit: usize, target: TextureTarget, name: u32) -> bool {
         if name != 0 {
-            match self.objects.get(&name) {
+            let mut n = self.write();
+            match n.objects.get(&name) {
                 Some(o) if o.target.is_some_and(|t| t != target) => return false,
                 Some(_) => {}
                 None => {
-                    self.reserved.remove(&name);
-                    self.objects.insert(name, TextureObject::new(Some(target)));
+                    n.reserved.remove(&name);
+                    n.objects.insert(name, TextureObject::new(Some(target)));
                 }
             }
         }
@@ -175,8 +272,12 @@ impl TextureState {
         if name == 0 {
             return;
         }
-        self.reserved.remove(&name);
-        if self.objects.remove(&name).is_some() {
+        let removed = {
+            let mut n = self.write();
+            n.reserved.remove(&name);
+            n.objects.remove(&name).is_some()
+        };
+        if removed {
             for unit in self.bindings.iter_mut() {
                 for b in unit.iter_mut() {
                     if *b == name {
@@ -189,7 +290,7 @@ impl TextureState {
 
     /// Whether `name` names a texture object (`glIsTexture`).
     pub fn is_texture(&self, name: u32) -> bool {
-        name != 0 && self.objects.contains_key(&name)
+        name != 0 && self.read().objects.contains_key(&name)
     }
 
     /// The proxy object of a target.
@@ -216,6 +317,7 @@ impl TextureState {
     /// The state `GL_TEXTURE_BIT` pushes.
     pub fn save_attrib(&self) -> TextureAttrib {
         let mut params = Vec::new();
+        let names = self.read();
         for unit in 0..MAX_TEXTURE_UNITS {
             for t in 0..TARGET_COUNT {
                 let name = self.bindings[unit][t];
@@ -225,7 +327,7 @@ impl TextureState {
                 {
                     continue;
                 }
-                let o = self.objects.get(&name).unwrap_or(&self.defaults[t]);
+                let o = names.objects.get(&name).unwrap_or(&self.defaults[t]);
                 params.push((name, t, o.params, o.priority));
             }
         }
@@ -245,9 +347,10 @@ impl TextureState {
     /// is not recreated: its binding reverts to the default texture.
     pub fn restore_attrib(&mut self, a: &TextureAttrib) {
         self.enabled = a.enabled;
+        let mut names = self.names.write();
         for (unit, targets) in a.bindings.iter().enumerate() {
             for (t, &name) in targets.iter().enumerate() {
-                self.bindings[unit][t] = if name == 0 || self.objects.contains_key(&name) {
+                self.bindings[unit][t] = if name == 0 || names.objects.contains_key(&name) {
                     name
                 } else {
                     0
@@ -258,7 +361,7 @@ impl TextureState {
             let o = if *name == 0 {
                 Some(&mut self.defaults[*t])
             } else {
-                self.objects.get_mut(name)
+                names.objects.get_mut(name)
             };
             if let Some(o) = o {
                 o.params = *params;

@@ -128,7 +128,7 @@ impl NormalTransform {
     pub fn apply(&self, normal: Vec3, normalize: bool) -> Vec3 {
         let n = self.matrix * normal;
         if normalize {
-            n.normalize_or_zero()
+            Vec3::from_array(normalize_exact(n.to_array()))
         } else if let Some(f) = self.rescale {
             n * f
         } else {
@@ -195,15 +195,32 @@ fn clamp_lanes<const N: usize>(v: [[f32; N]; 4]) -> [[f32; N]; 4] {
     v.map(|row| row.map(|x| x.max(0.0).min(1.0)))
 }
 
-/// `Vec3::normalize_or_zero` per lane: n / |n|, or zero where 1 / |n| is not a positive
-/// finite number.
+/// n / |n| (section 2.11.3, GL_NORMALIZE), or zero for a zero or non-finite normal. Where the
+/// squared length leaves the range of normal floats (components under about 1e-17, as a normal
+/// scaled by 1e-20 has, or over about 1e19) the squares lose their precision, vanish or
+/// overflow in single precision, so such a normal is normalised in double precision, whose
+/// range holds the square of every float.
+pub(crate) fn normalize_exact(n: [f32; 3]) -> [f32; 3] {
+    let square = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (f32::MIN_POSITIVE * 65536.0..=f32::MAX).contains(&square) {
+        let rcp = 1.0 / square.sqrt();
+        return n.map(|c| c * rcp);
+    }
+    let d = n.map(f64::from);
+    let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if length > 0.0 && length.is_finite() {
+        d.map(|c| (c / length) as f32)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// [`normalize_exact`] per lane.
 fn normalize_lanes<const N: usize>(n: &mut [[f32; N]; 3]) {
     for j in 0..N {
-        let length = ((n[0][j] * n[0][j]) + (n[1][j] * n[1][j]) + (n[2][j] * n[2][j])).sqrt();
-        let rcp = 1.0 / length;
-        let ok = rcp.is_finite() && rcp > 0.0;
-        for row in n.iter_mut() {
-            row[j] = if ok { row[j] * rcp } else { 0.0 };
+        let u = normalize_exact([n[0][j], n[1][j], n[2][j]]);
+        for (row, c) in n.iter_mut().zip(u) {
+            row[j] = c;
         }
     }
 }

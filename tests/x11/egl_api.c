@@ -100,6 +100,26 @@ int main(void)
     if (img)
         XDestroyImage(img);
 
+    /* share_context: a context sharing with c sees c's texture and list, one without does
+     * not; a share context that is no context is EGL_BAD_CONTEXT. */
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    GLuint list = glGenLists(1);
+    glNewList(list, GL_COMPILE);
+    glEndList();
+    EGLContext shared = eglCreateContext(d, configs[0], c, ctx_attrs);
+    EGLContext alone = eglCreateContext(d, configs[0], EGL_NO_CONTEXT, ctx_attrs);
+    CHECK(shared != EGL_NO_CONTEXT && alone != EGL_NO_CONTEXT, "sharing contexts: %x", eglGetError());
+    CHECK(eglCreateContext(d, configs[0], (EGLContext)&failures, ctx_attrs) == EGL_NO_CONTEXT &&
+              eglGetError() == EGL_BAD_CONTEXT, "bad share context");
+    CHECK(eglMakeCurrent(d, s, s, shared), "make the sharing context current");
+    CHECK(glIsTexture(tex) && glIsList(list), "shared: texture %d list %d", glIsTexture(tex), glIsList(list));
+    CHECK(eglMakeCurrent(d, s, s, alone), "make the unshared context current");
+    CHECK(!glIsTexture(tex) && !glIsList(list), "unshared: texture %d list %d", glIsTexture(tex), glIsList(list));
+    CHECK(eglMakeCurrent(d, s, s, c), "c again");
+    CHECK(eglDestroyContext(d, shared) && eglDestroyContext(d, alone), "destroy the sharing contexts");
+
     CHECK(eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT), "release");
     CHECK(eglGetCurrentContext() == EGL_NO_CONTEXT, "nothing current");
     CHECK(!eglSwapBuffers(d, (EGLSurface)&failures) && eglGetError() == EGL_BAD_SURFACE, "bad surface");

@@ -84,6 +84,13 @@ enum Command {
         /// Write the report into DIR.
         #[arg(long, value_name = "DIR")]
         report: Option<PathBuf>,
+        /// The report's piglit table from a fresh run (the outputs of tests/piglit/run.sh on
+        /// Mesa and on tilegl) instead of the committed record docs/piglit.md.
+        #[arg(long, num_args = 2, value_names = ["MESA_TSV", "TILEGL_TSV"])]
+        piglit: Option<Vec<PathBuf>>,
+        /// Leave the quality-knob charts out of the report.
+        #[arg(long)]
+        no_quality: bool,
     },
     /// Run the benchmarks (live in the tilegl-conformance crate).
     Bench {
@@ -233,6 +240,8 @@ fn main() -> ExitCode {
             filter,
             report,
             against,
+            piglit,
+            no_quality,
         }) => {
             let mut args = Vec::new();
             if let Some(pattern) = filter {
@@ -240,6 +249,13 @@ fn main() -> ExitCode {
             }
             if let Some(dir) = report {
                 args.extend(["--report".to_string(), dir.display().to_string()]);
+            }
+            if let Some(files) = piglit {
+                args.push("--piglit".to_string());
+                args.extend(files.iter().map(|f| f.display().to_string()));
+            }
+            if no_quality {
+                args.push("--no-quality".to_string());
             }
             // Mesa (OSMesa) is the only oracle; the flag is accepted for it.
             let _ = against;
@@ -650,6 +666,26 @@ mod tests {
         ])
         .is_ok());
         assert!(parse(&["tilegl", "conformance", "--against", "nvidia"]).is_err());
+        assert!(parse(&[
+            "tilegl",
+            "conformance",
+            "--report",
+            "r",
+            "--piglit",
+            "m.tsv"
+        ])
+        .is_err());
+        assert!(parse(&[
+            "tilegl",
+            "conformance",
+            "--report",
+            "r",
+            "--piglit",
+            "m.tsv",
+            "t.tsv",
+            "--no-quality"
+        ])
+        .is_ok());
         assert!(parse(&["tilegl", "bench", "--quick"]).is_ok());
         assert!(parse(&["tilegl", "gallery", "pics", "--scene", "clipping"]).is_ok());
         assert!(parse(&["tilegl", "gallery", "--scene", "ex_decal", "--size", "64x48"]).is_ok());

@@ -575,7 +575,10 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
     gl.clear(GL_COLOR_BUFFER_BIT);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();
-    gl.ortho(0.0, width as f64, 0.0, height as f64, -1.0, 1.0);
+    // Drawn in the coordinates of its own 320x240 window, whatever the window's size; point
+    // sizes, line widths and the pixel zoom grow with it (stipples and bitmaps stay in pixels).
+    gl.ortho(0.0, 320.0, 0.0, 240.0, -1.0, 1.0);
+    let s = (width as f32 / 320.0).min(height as f32 / 240.0);
     gl.matrix_mode(GL_MODELVIEW);
     gl.load_identity();
     gl.enable(GL_BLEND);
@@ -588,7 +591,7 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
         for k in 0..8 {
             let c = palette(k);
             gl.color_3f(c[0], c[1], c[2]);
-            gl.point_size(1.0 + 2.0 * k as f32);
+            gl.point_size((1.0 + 2.0 * k as f32) * s);
             gl.begin(GL_POINTS);
             gl.vertex_2f(14.3 + 19.0 * k as f32, 222.4 - 24.0 * row as f32);
             gl.end();
@@ -599,13 +602,13 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
     for k in 0..5 {
         let c = palette(k + 2);
         gl.color_3f(c[0], c[1], c[2]);
-        gl.line_width(1.0 + k as f32 * 1.5);
+        gl.line_width((1.0 + k as f32 * 1.5) * s);
         gl.begin(GL_LINES);
         gl.vertex_2f(8.3, 150.2 - 10.0 * k as f32);
         gl.vertex_2f(150.7, 162.6 - 10.0 * k as f32);
         gl.end();
     }
-    gl.line_width(2.0);
+    gl.line_width(2.0 * s);
     gl.enable(GL_LINE_STIPPLE);
     gl.line_stipple(3, 0xAAF0);
     gl.color_3f(1.0, 1.0, 1.0);
@@ -619,7 +622,7 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
     gl.end();
     gl.disable(GL_LINE_STIPPLE);
     gl.enable(GL_LINE_SMOOTH);
-    gl.line_width(1.5);
+    gl.line_width(1.5 * s);
     gl.begin(GL_LINES);
     for k in 0..6 {
         let a = 0.2 + k as f32 * 0.25;
@@ -654,7 +657,7 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
     gl.end();
     gl.disable(GL_POLYGON_STIPPLE);
     gl.polygon_mode(GL_FRONT_AND_BACK, GL_LINE);
-    gl.line_width(2.0);
+    gl.line_width(2.0 * s);
     gl.color_3f(1.0, 0.9, 0.3);
     gl.begin(GL_POLYGON);
     for p in &star {
@@ -676,7 +679,7 @@ pub fn raster_modes(gl: &mut dyn Gl, width: i32, height: i32) {
     let img: Vec<u8> = (0..16 * 12)
         .flat_map(|k| [(k % 16 * 16) as u8, (k / 16 * 21) as u8, 180, 255])
         .collect();
-    gl.pixel_zoom(3.0, 3.0);
+    gl.pixel_zoom(3.0 * s, 3.0 * s);
     gl.raster_pos_2i(180, 8);
     gl.draw_pixels(16, 12, GL_RGBA, GL_UNSIGNED_BYTE, Some(&img));
     gl.pixel_zoom(1.0, 1.0);

@@ -123,6 +123,8 @@ pub enum Capability {
     TexGen(usize),
     Fog,
     PointSmooth,
+    /// `GL_POINT_SPRITE` (ARB_point_sprite).
+    PointSprite,
     LineSmooth,
     PolygonSmooth,
     LineStipple,
@@ -625,6 +627,8 @@ pub enum PointParam {
     SizeMax,
     FadeThresholdSize,
     DistanceAttenuation,
+    /// `GL_POINT_SPRITE_COORD_ORIGIN` (GL 2.0; Mesa takes it with ARB_point_sprite).
+    SpriteCoordOrigin,
 }
 
 /// The colour buffer names of `glDrawBuffer` / `glReadBuffer` (table 4.4 of the GL 1.5 spec).

@@ -12,18 +12,19 @@ impl Context {
 
     /// The buffer object bound to `target` (INVALID_ENUM for a bad target, INVALID_OPERATION
     /// when 0 is bound).
-    pub(super) fn bound_buffer(&mut self, target: GLenum) -> Result<&mut BufferObject, GLenum> {
+    pub(super) fn bound_buffer(
+        &mut self,
+        target: GLenum,
+    ) -> Result<MappedRwLockWriteGuard<'_, BufferObject>, GLenum> {
         let t = convert::buffer_target(target).ok_or(GL_INVALID_ENUM)?;
         let name = self.bound_buffer_name(t);
         if name == 0 {
             return Err(GL_INVALID_OPERATION);
         }
-        self.client
-            .buffers
-            .objects
-            .get_mut(&name)
-            .and_then(|b| b.as_mut())
-            .ok_or(GL_INVALID_OPERATION)
+        RwLockWriteGuard::try_map(self.client.buffers.write(), |n| {
+            n.objects.get_mut(&name).and_then(|b| b.as_mut())
+        })
+        .map_err(|_| GL_INVALID_OPERATION)
     }
 
     pub(crate) fn gen_buffers(&mut self, n: GLsizei, buffers: &mut [GLuint]) {
@@ -31,7 +32,7 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let b = &mut self.client.buffers;
+        let mut b = self.client.buffers.write();
         for out in buffers.iter_mut().take(n as usize) {
             loop {
                 b.next = b.next.wrapping_add(1);
@@ -39,8 +40,9 @@ impl Context {
                     break;
                 }
             }
-            b.objects.insert(b.next, None);
-            *out = b.next;
+            let name = b.next;
+            b.objects.insert(name, None);
+            *out = name;
         }
     }
 
@@ -51,8 +53,9 @@ impl Context {
         };
         if buffer != 0 {
             // glGenBuffers continues above names bound without being generated.
-            self.client.buffers.next = self.client.buffers.next.max(buffer);
-            let slot = self.client.buffers.objects.entry(buffer).or_insert(None);
+            let mut b = self.client.buffers.write();
+            b.next = b.next.max(buffer);
+            let slot = b.objects.entry(buffer).or_insert(None);
             if slot.is_none() {
                 *slot = Some(BufferObject::default());
             }
@@ -70,7 +73,7 @@ impl Context {
             return;
         }
         for &name in buffers.iter().take(n as usize) {
-            if name == 0 || self.client.buffers.objects.remove(&name).is_none() {
+            if name == 0 || self.client.buffers.write().objects.remove(&name).is_none() {
                 continue;
             }
             // A deleted buffer is unbound from every binding point (section 2.9).
@@ -100,7 +103,10 @@ impl Context {
     }
 
     pub(crate) fn is_buffer(&mut self, buffer: GLuint) -> GLboolean {
-        matches!(self.client.buffers.objects.get(&buffer), Some(Some(_))) as GLboolean
+        matches!(
+            self.client.buffers.read().objects.get(&buffer),
+            Some(Some(_))
+        ) as GLboolean
     }
 
     pub(crate) fn buffer_data(
@@ -127,44 +133,46 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let b = match self.bound_buffer(target) {
-            Ok(b) => b,
-            Err(e) => return self.record_error(e),
-        };
-        let mut store = Vec::new();
-        if store.try_reserve_exact(size as usize).is_err() {
-            self.record_error(GL_OUT_OF_MEMORY);
-            return;
+        let r = self.bound_buffer(target).and_then(|mut b| {
+            let mut store = Vec::new();
+            store
+                .try_reserve_exact(size as usize)
+                .map_err(|_| GL_OUT_OF_MEMORY)?;
+            match data {
+                Some(d) => store.extend_from_slice(&d[..size as usize]),
+                None => store.resize(size as usize, 0),
+            }
+            // The old store goes (a mapping of it ends), the new one starts unmapped.
+            *b = BufferObject {
+                data: store,
+                usage,
+                access: BufferAccess::ReadWrite,
+                mapped: false,
+            };
+            Ok(())
+        });
+        if let Err(e) = r {
+            self.record_error(e);
         }
-        match data {
-            Some(d) => store.extend_from_slice(&d[..size as usize]),
-            None => store.resize(size as usize, 0),
-        }
-        // The old store goes (a mapping of it ends), the new one starts unmapped.
-        *b = BufferObject {
-            data: store,
-            usage,
-            access: BufferAccess::ReadWrite,
-            mapped: false,
-        };
     }
 
-    /// The range `offset..offset + size` of the bound buffer, checked (INVALID_VALUE when out
-    /// of the store, INVALID_OPERATION when mapped).
-    pub(super) fn buffer_range(
+    /// Runs `f` on the bound buffer and the range `offset..offset + size` of it, checked
+    /// (INVALID_VALUE when out of the store, INVALID_OPERATION when mapped).
+    fn with_buffer_range<R>(
         &mut self,
         target: GLenum,
         offset: GLintptr,
         size: GLsizeiptr,
-    ) -> Result<(&mut BufferObject, std::ops::Range<usize>), GLenum> {
-        let b = self.bound_buffer(target)?;
+        f: impl FnOnce(&mut BufferObject, std::ops::Range<usize>) -> Result<R, GLenum>,
+    ) -> Result<R, GLenum> {
+        let mut b = self.bound_buffer(target)?;
         if offset < 0 || size < 0 || (offset as u64 + size as u64) > b.data.len() as u64 {
             return Err(GL_INVALID_VALUE);
         }
         if b.mapped {
             return Err(GL_INVALID_OPERATION);
         }
-        Ok((b, offset as usize..(offset + size) as usize))
+        f(&mut b, offset as usize..(offset + size) as usize)
     }
 
     pub(crate) fn buffer_sub_data(
@@ -174,19 +182,20 @@ impl Context {
         size: GLsizeiptr,
         data: Option<&[u8]>,
     ) {
-        let (b, r) = match self.buffer_range(target, offset, size) {
-            Ok(x) => x,
-            Err(e) => return self.record_error(e),
-        };
-        let Some(d) = data else {
-            return;
-        };
-        if d.len() < r.len() {
-            self.record_error(GL_INVALID_VALUE);
-            return;
+        let r = self.with_buffer_range(target, offset, size, |b, r| {
+            let Some(d) = data else {
+                return Ok(());
+            };
+            if d.len() < r.len() {
+                return Err(GL_INVALID_VALUE);
+            }
+            let n = r.len();
+            b.data[r].copy_from_slice(&d[..n]);
+            Ok(())
+        });
+        if let Err(e) = r {
+            self.record_error(e);
         }
-        let n = r.len();
-        b.data[r].copy_from_slice(&d[..n]);
     }
 
     pub(crate) fn get_buffer_sub_data(
@@ -196,16 +205,17 @@ impl Context {
         size: GLsizeiptr,
         data: &mut [u8],
     ) {
-        let (b, r) = match self.buffer_range(target, offset, size) {
-            Ok(x) => x,
-            Err(e) => return self.record_error(e),
-        };
-        if data.len() < r.len() {
-            self.record_error(GL_INVALID_VALUE);
-            return;
+        let r = self.with_buffer_range(target, offset, size, |b, r| {
+            if data.len() < r.len() {
+                return Err(GL_INVALID_VALUE);
+            }
+            let n = r.len();
+            data[..n].copy_from_slice(&b.data[r]);
+            Ok(())
+        });
+        if let Err(e) = r {
+            self.record_error(e);
         }
-        let n = r.len();
-        data[..n].copy_from_slice(&b.data[r]);
     }
 
     pub(crate) fn map_buffer(&mut self, target: GLenum, access: GLenum) -> ClientPtr {
@@ -214,47 +224,48 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return ClientPtr(0);
         };
-        let b = match self.bound_buffer(target) {
-            Ok(b) => b,
-            Err(e) => {
-                self.record_error(e);
-                return ClientPtr(0);
+        let r = self.bound_buffer(target).and_then(|mut b| {
+            if b.mapped {
+                return Err(GL_INVALID_OPERATION);
             }
-        };
-        if b.mapped {
-            self.record_error(GL_INVALID_OPERATION);
-            return ClientPtr(0);
-        }
-        b.mapped = true;
-        b.access = access;
-        // The store is not reallocated while mapped (every call that would is refused or ends
-        // the mapping first), so the address stays valid until glUnmapBuffer.
-        ClientPtr(b.data.as_mut_ptr() as usize)
+            b.mapped = true;
+            b.access = access;
+            // The store is not reallocated while mapped (every call that would is refused or
+            // ends the mapping first), so the address stays valid until glUnmapBuffer.
+            Ok(ClientPtr(b.data.as_mut_ptr() as usize))
+        });
+        r.unwrap_or_else(|e| {
+            self.record_error(e);
+            ClientPtr(0)
+        })
     }
 
     /// The store of the buffer mapped on `target`, for Rust callers (the safe form of writing
     /// through the `glMapBuffer` pointer). `None` unless a buffer is bound there and mapped.
-    pub fn mapped_buffer_mut(&mut self, target: GLenum) -> Option<&mut [u8]> {
-        match self.bound_buffer(target) {
-            Ok(b) if b.mapped => Some(&mut b.data[..]),
-            _ => None,
-        }
+    pub fn mapped_buffer_mut(
+        &mut self,
+        target: GLenum,
+    ) -> Option<MappedRwLockWriteGuard<'_, [u8]>> {
+        let b = self.bound_buffer(target).ok()?;
+        b.mapped
+            .then(|| MappedRwLockWriteGuard::map(b, |b| &mut b.data[..]))
     }
 
     pub(crate) fn unmap_buffer(&mut self, target: GLenum) -> GLboolean {
-        let b = match self.bound_buffer(target) {
-            Ok(b) => b,
+        let r = self.bound_buffer(target).and_then(|mut b| {
+            if !b.mapped {
+                return Err(GL_INVALID_OPERATION);
+            }
+            b.mapped = false;
+            Ok(())
+        });
+        match r {
+            Ok(()) => GL_TRUE as GLboolean,
             Err(e) => {
                 self.record_error(e);
-                return GL_FALSE as GLboolean;
+                GL_FALSE as GLboolean
             }
-        };
-        if !b.mapped {
-            self.record_error(GL_INVALID_OPERATION);
-            return GL_FALSE as GLboolean;
         }
-        b.mapped = false;
-        GL_TRUE as GLboolean
     }
 
     pub(crate) fn get_buffer_parameteriv(
@@ -267,15 +278,15 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
-        let b = match self.bound_buffer(target) {
-            Ok(b) => b,
-            Err(e) => return self.record_error(e),
-        };
-        let v = match p {
+        let r = self.bound_buffer(target).map(|b| match p {
             BufferParam::Size => b.data.len().min(i32::MAX as usize) as GLint,
             BufferParam::Usage => b.usage as GLint,
             BufferParam::Access => b.access.to_gl() as GLint,
             BufferParam::Mapped => b.mapped as GLint,
+        });
+        let v = match r {
+            Ok(v) => v,
+            Err(e) => return self.record_error(e),
         };
         match params.first_mut() {
             Some(out) => *out = v,
@@ -288,15 +299,16 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         }
-        let b = match self.bound_buffer(target) {
-            Ok(b) => b,
-            Err(e) => return self.record_error(e),
-        };
-        let p = if b.mapped {
-            b.data.as_mut_ptr() as usize
-        } else {
-            0
-        };
-        client_memory::store_pointer(params, p);
+        let r = self.bound_buffer(target).map(|mut b| {
+            if b.mapped {
+                b.data.as_mut_ptr() as usize
+            } else {
+                0
+            }
+        });
+        match r {
+            Ok(p) => client_memory::store_pointer(params, p),
+            Err(e) => self.record_error(e),
+        }
     }
 }

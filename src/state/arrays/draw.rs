@@ -15,9 +15,8 @@ impl Context {
     ) -> R {
         let start = (min as usize).saturating_mul(a.effective_stride());
         if a.buffer != 0 {
-            let data = self
-                .client
-                .buffers
+            let names = self.client.buffers.read();
+            let data = names
                 .objects
                 .get(&a.buffer)
                 .and_then(|b| b.as_ref())
@@ -37,7 +36,7 @@ impl Context {
     pub(super) fn buffer_mapped(&self, name: GLuint) -> bool {
         name != 0
             && matches!(
-                self.client.buffers.objects.get(&name),
+                self.client.buffers.read().objects.get(&name),
                 Some(Some(BufferObject { mapped: true, .. }))
             )
     }
@@ -344,6 +343,7 @@ impl Context {
             let len = self
                 .client
                 .buffers
+                .read()
                 .objects
                 .get(&p.buffer)
                 .and_then(|b| b.as_ref())
@@ -376,9 +376,8 @@ impl Context {
             out.extend((0..count).map(|i| index_value(b, i, ty)));
         };
         if eab != 0 {
-            let data = self
-                .client
-                .buffers
+            let names = self.client.buffers.read();
+            let data = names
                 .objects
                 .get(&eab)
                 .and_then(|b| b.as_ref())

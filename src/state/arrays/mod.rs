@@ -21,6 +21,9 @@
 //! zeros.
 
 use std::collections::HashMap;
+use std::sync::Arc;
+
+use parking_lot::{MappedRwLockWriteGuard, RwLock, RwLockReadGuard, RwLockWriteGuard};
 
 use glam::{Vec3, Vec4};
 
@@ -92,8 +95,17 @@ impl ArrayPointer {
         }
     }
 
+    /// Components stored per element: `size`, or 4 for `GL_BGRA` (ARB_vertex_array_bgra).
+    fn components(&self) -> usize {
+        if self.size == GL_BGRA as i32 {
+            4
+        } else {
+            self.size as usize
+        }
+    }
+
     fn element_bytes(&self) -> usize {
-        self.size as usize * self.ty.size()
+        self.components() * self.ty.size()
     }
 
     fn effective_stride(&self) -> usize {
@@ -160,12 +172,41 @@ impl Default for BufferObject {
     }
 }
 
-/// Buffer objects by name: `None` for a name `glGenBuffers` returned that was never bound
-/// (not yet a buffer object, `glIsBuffer` is false).
-#[derive(Clone, Debug, Default)]
-pub struct Buffers {
+/// The buffer objects of a share group, by name: `None` for a name `glGenBuffers` returned
+/// that was never bound (not yet a buffer object, `glIsBuffer` is false).
+#[derive(Debug, Default)]
+pub struct BufferNames {
     objects: HashMap<GLuint, Option<BufferObject>>,
     next: GLuint,
+}
+
+/// A context's view of its share group's buffer objects (every context created sharing
+/// objects with another holds the same `Arc`; the bindings stay per context).
+#[derive(Clone, Debug, Default)]
+pub struct Buffers {
+    names: Arc<RwLock<BufferNames>>,
+}
+
+impl Buffers {
+    /// The buffer objects (the share group's handle).
+    pub(crate) fn names(&self) -> &Arc<RwLock<BufferNames>> {
+        &self.names
+    }
+
+    /// Uses the buffer objects of a share group (for a new context).
+    pub(crate) fn set_names(&mut self, names: Arc<RwLock<BufferNames>>) {
+        self.names = names;
+    }
+
+    /// Recursive, so that a context may hold two reads at once whatever other threads wait
+    /// for; writes come from `&mut` borrows, exclusive within the context.
+    fn read(&self) -> RwLockReadGuard<'_, BufferNames> {
+        self.names.read_recursive()
+    }
+
+    fn write(&mut self) -> RwLockWriteGuard<'_, BufferNames> {
+        self.names.write()
+    }
 }
 
 /// One entry of the client attribute stack.
@@ -252,8 +293,12 @@ fn component(b: &[u8], off: usize, ty: ArrayType, normalize: bool) -> f32 {
 fn element(b: &[u8], a: &ArrayPointer, i: u32, normalize: bool, default: Vec4) -> Vec4 {
     let base = (i as usize).saturating_mul(a.effective_stride());
     let mut v = default.to_array();
-    for (c, out) in v.iter_mut().enumerate().take(a.size as usize) {
+    for (c, out) in v.iter_mut().enumerate().take(a.components()) {
         *out = component(b, base.saturating_add(c * a.ty.size()), a.ty, normalize);
+    }
+    if a.size == GL_BGRA as i32 {
+        // Stored blue, green, red, alpha.
+        v.swap(0, 2);
     }
     Vec4::from_array(v)
 }

@@ -91,6 +91,16 @@ impl Context {
         self.set_pointer(ClientArray::Normal, 3, &[3], type_, &types, stride, pointer);
     }
 
+    /// `GL_BGRA` as the size of a colour array (ARB_vertex_array_bgra, Mesa offers it): only
+    /// with `GL_UNSIGNED_BYTE`, INVALID_OPERATION otherwise. Whether the call may go on.
+    fn bgra_type_ok(&mut self, size: GLint, type_: GLenum) -> bool {
+        let ok = size != GL_BGRA as i32 || type_ == GL_UNSIGNED_BYTE;
+        if !ok {
+            self.record_error(GL_INVALID_OPERATION);
+        }
+        ok
+    }
+
     pub(crate) fn color_pointer(
         &mut self,
         size: GLint,
@@ -98,11 +108,14 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
+        if !self.bgra_type_ok(size, type_) {
+            return;
+        }
         let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::Color,
             size,
-            &[3, 4],
+            &[3, 4, GL_BGRA as i32],
             type_,
             &types,
             stride,
@@ -117,11 +130,14 @@ impl Context {
         stride: GLsizei,
         pointer: ClientPtr,
     ) {
+        if !self.bgra_type_ok(size, type_) {
+            return;
+        }
         let types = ArrayType::ALL;
         self.set_pointer(
             ClientArray::SecondaryColor,
             size,
-            &[3],
+            &[3, GL_BGRA as i32],
             type_,
             &types,
             stride,

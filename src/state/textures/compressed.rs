@@ -146,17 +146,14 @@ impl Context {
             if width < 0 || height < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             if img.format.compressed != Some(f) {
                 return Err(GL_INVALID_OPERATION);
             }
             let offset = [xoffset, yoffset, 0];
             let size = [width, height, 1];
             check_sub_region(2, offset, size, img.borders(), img.inner_size())?;
-            check_compressed_alignment(img, offset, size)?;
+            check_compressed_alignment(&img, offset, size)?;
             let expected = f.image_bytes(width as usize, height as usize);
             if image_size < 0 || image_size as usize != expected {
                 return Err(GL_INVALID_VALUE);
@@ -190,10 +187,7 @@ impl Context {
                 .filter(|t| !t.is_proxy())
                 .ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
-            let image = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let image = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let blocks = image.blocks.as_ref().ok_or(GL_INVALID_OPERATION)?;
             let dst = img.get_mut(..blocks.len()).ok_or(GL_INVALID_VALUE)?;
             dst.copy_from_slice(blocks);

@@ -84,10 +84,7 @@ impl Context {
             if size[0] < 0 || size[1] < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let (b, inner) = (img.borders(), img.inner_size());
             let h = if dims >= 2 { size[1] } else { 1 };
             // The copied region is w x h x 1 at the offsets.
@@ -100,7 +97,7 @@ impl Context {
                 off[2] = 0;
             }
             check_sub_region(dims, off, region, b, inner)?;
-            check_compressed_alignment(img, off, region)?;
+            check_compressed_alignment(&img, off, region)?;
             let depth = img.format.is_depth();
             if depth && self.framebuffer.config.depth_bits == 0 {
                 return Err(GL_INVALID_OPERATION);

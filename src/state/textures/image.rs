@@ -107,17 +107,14 @@ impl Context {
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self
-                .image_object(target)
-                .image(target.face(), level)
-                .ok_or(GL_INVALID_OPERATION)?;
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let (b, inner) = (img.borders(), img.inner_size());
             check_sub_region(dims, offset, size, b, inner)?;
             check_format_type(pf, pt)?;
             if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
                 return Err(GL_INVALID_OPERATION);
             }
-            check_compressed_alignment(img, offset, size)?;
+            check_compressed_alignment(&img, offset, size)?;
             let mut n = [1usize; 3];
             for d in 0..dims {
                 n[d] = size[d] as usize;
@@ -133,7 +130,7 @@ impl Context {
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
             let depth = pf == TexPixelFormat::DepthComponent;
             let face = target.face();
-            let obj = self.image_object_mut(target);
+            let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
                 let o = [
                     offset[0] + b[0],
@@ -146,6 +143,7 @@ impl Context {
                 });
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
+            drop(obj);
             self.after_image_change(target, level);
             Ok(())
         })();
@@ -313,10 +311,7 @@ impl Context {
             .filter(|t| !t.is_proxy())
             .ok_or(GL_INVALID_ENUM)?;
         let level = check_level(target.texture_target(), level)?;
-        Ok(self
-            .image_object(target)
-            .image(target.face(), level)
-            .map(|_| (target, level)))
+        Ok(self.image_at(target, level).map(|_| (target, level)))
     }
 
     /// Dimensions and size of the image at `target`/`level`, if there is one.
@@ -326,7 +321,7 @@ impl Context {
         level: GLint,
     ) -> Option<(usize, [usize; 3])> {
         let (target, level) = self.image_for_get(target, level).ok()??;
-        let img = self.image_object(target).image(target.face(), level)?;
+        let img = self.image_at(target, level)?;
         let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
         Some((target.dims(), size))
     }
@@ -334,7 +329,7 @@ impl Context {
     /// Bytes of the compressed blocks of the image at `target`/`level`, if it is compressed.
     pub(crate) fn texture_image_blocks_len(&self, target: GLenum, level: GLint) -> Option<usize> {
         let (target, level) = self.image_for_get(target, level).ok()??;
-        let img = self.image_object(target).image(target.face(), level)?;
+        let img = self.image_at(target, level)?;
         img.blocks.as_ref().map(|b| b.len())
     }
 
@@ -353,7 +348,7 @@ impl Context {
             let (pf, pt) = pixel_format_type(format, type_)?;
             let level = check_level(target.texture_target(), level)?;
             check_format_type(pf, pt)?;
-            let Some(img) = self.image_object(target).image(target.face(), level) else {
+            let Some(img) = self.image_at(target, level) else {
                 return Ok(());
             };
             if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {

@@ -13,8 +13,8 @@ use crate::common::values::{
 };
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
-use crate::texture::object::{level_count, max_size, TextureObject, MAX_TEXTURE_MAX_ANISOTROPY};
-use crate::texture::{mipmap, pixels};
+use crate::texture::object::{level_count, max_size, MAX_TEXTURE_MAX_ANISOTROPY};
+use crate::texture::{mipmap, pixels, ObjectMut, ObjectRef};
 
 mod compressed;
 mod copy;
@@ -259,7 +259,7 @@ impl Context {
             return;
         }
         for (&name, &p) in textures.iter().zip(priorities).take(n as usize) {
-            if let Some(o) = self.textures.object_mut(name) {
+            if let Some(mut o) = self.textures.object_mut(name) {
                 o.priority = clamp01(p);
             }
         }
@@ -290,19 +290,26 @@ impl Context {
     // ----- helpers
 
     /// The object a (non-proxy or proxy) image target addresses on the active unit.
-    fn image_object_mut(&mut self, target: TexImageTarget) -> &mut TextureObject {
+    fn image_object_mut(&mut self, target: TexImageTarget) -> ObjectMut<'_> {
         let t = target.texture_target();
         if target.is_proxy() {
-            self.textures.proxy_mut(t)
+            ObjectMut::Own(self.textures.proxy_mut(t))
         } else {
             self.textures.bound_mut(self.active_texture, t)
         }
     }
 
-    fn image_object(&self, target: TexImageTarget) -> &TextureObject {
+    /// The image at `target`/`level` (a copy sharing the texels).
+    fn image_at(&self, target: TexImageTarget, level: usize) -> Option<TexImage> {
+        self.image_object(target)
+            .image(target.face(), level)
+            .cloned()
+    }
+
+    fn image_object(&self, target: TexImageTarget) -> ObjectRef<'_> {
         let t = target.texture_target();
         if target.is_proxy() {
-            self.textures.proxy(t)
+            ObjectRef::Own(self.textures.proxy(t))
         } else {
             self.textures.bound(self.active_texture, t)
         }
@@ -312,8 +319,7 @@ impl Context {
     /// `GL_GENERATE_MIPMAP`.
     fn install_image(&mut self, target: TexImageTarget, level: usize, img: TexImage) {
         let face = target.face();
-        let obj = self.image_object_mut(target);
-        obj.images[face][level] = Some(img);
+        self.image_object_mut(target).images[face][level] = Some(img);
         if !target.is_proxy() {
             self.after_image_change(target, level);
         }
@@ -323,9 +329,9 @@ impl Context {
     fn after_image_change(&mut self, target: TexImageTarget, level: usize) {
         let face = target.face();
         let tt = target.texture_target();
-        let obj = self.image_object_mut(target);
+        let mut obj = self.image_object_mut(target);
+        let mut oom = false;
         if obj.params.generate_mipmap && level == obj.params.base_level.max(0) as usize {
-            let mut oom = false;
             if let Some(base) = obj.image(face, level) {
                 let last = obj
                     .last_level(tt, level, base.inner_size())
@@ -343,9 +349,10 @@ impl Context {
                     }
                 }
             }
-            if oom {
-                self.record_error(GL_OUT_OF_MEMORY);
-            }
+        }
+        drop(obj);
+        if oom {
+            self.record_error(GL_OUT_OF_MEMORY);
         }
         self.invalidate();
     }

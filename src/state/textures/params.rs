@@ -15,7 +15,7 @@ impl Context {
             if v.len() < needed {
                 return Err(GL_INVALID_VALUE);
             }
-            let obj = self.textures.bound_mut(self.active_texture, t);
+            let mut obj = self.textures.bound_mut(self.active_texture, t);
             let mut params = obj.params;
             let mut priority = obj.priority;
             let e = v.enumv(0);
@@ -207,7 +207,7 @@ impl Context {
         let target = convert::tex_image_target(target).ok_or(GL_INVALID_ENUM)?;
         let level = check_level(target.texture_target(), level)?;
         let p = convert::tex_level_param(pname).ok_or(GL_INVALID_ENUM)?;
-        let img = self.image_object(target).image(target.face(), level);
+        let img = self.image_at(target, level);
         let Some(img) = img else {
             return match p {
                 TexLevelParam::InternalFormat => Ok(1),
