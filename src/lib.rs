@@ -5,7 +5,9 @@
 //! errors) -> [`state`] (the state machine and the frozen per-draw snapshot) -> [`vertex`]
 //! (transform) -> [`primitive`] (assembly, clipping, culling, viewport) -> [`raster`] (setup,
 //! binning into tiles, parallel tile shading) -> [`fragment`] (specialised span functions) ->
-//! [`framebuffer`] (tiled buffers, clears, pixel reads).
+//! [`texture`] (objects, formats, sampling) -> [`framebuffer`] (tiled buffers), each using only
+//! the modules after it; [`common`] (CPU features, limits, fixed point, rectangles, the typed
+//! values of GL state) is the leaf they all share. `tests/module_deps.rs` checks the order.
 //!
 //! ```
 //! use tilegl::{Context, Gl, enums::*};

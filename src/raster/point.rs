@@ -140,7 +140,7 @@ fn bin_sprite(
     }
     let offset = add_constant_planes(attrs, scene);
     for unit in 0..32 {
-        let base = crate::state::snapshot::attr::TEX + 4 * unit;
+        let base = crate::common::attr::TEX + 4 * unit;
         if replace >> unit & 1 == 0 || base + 4 > attrs.len() {
             continue;
         }
