@@ -860,8 +860,12 @@ impl Context {
             let ds = self.snapshot();
             let bounds = self.scissored_window();
             let [xr, yr, zr] = self.raster_pos.window;
-            let x0 = (xr - xorig as f64).floor() as i64;
-            let y0 = (yr - yorig as f64).floor() as i64;
+            // A raster position meant to be whole lands a rounding error below it after the
+            // projection and viewport (26 comes out as 25.99999 under a window-sized ortho):
+            // flooring with a small allowance keeps text on the row Mesa puts it on.
+            const ALLOWANCE: f64 = 1e-4;
+            let x0 = (xr - xorig as f64 + ALLOWANCE).floor() as i64;
+            let y0 = (yr - yorig as f64 + ALLOWANCE).floor() as i64;
             let mut planes = Vec::new();
             self.raster_planes(&ds, self.raster_pos.color, &mut planes);
             for j in 0..h {

@@ -420,10 +420,15 @@ impl Context {
             // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
             let depth = pf == TexPixelFormat::DepthComponent;
-            pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
-                let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                img.store(x as i32, y as i32, z as i32, rgba)
-            });
+            // Bytes that are already the stored texels are copied row by row.
+            if xfer.is_some()
+                || !pixels::copy_bytes(&mut img, [0; 3], data, &layout, usize3, pf, pt)
+            {
+                pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
+                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                    img.store(x as i32, y as i32, z as i32, rgba)
+                });
+            }
             img.encode_region(0, 0, img.width, img.height);
         }
         self.install_image(target, level, img);
@@ -482,10 +487,13 @@ impl Context {
                     if dims >= 2 { offset[1] + b[1] } else { 0 },
                     if dims >= 3 { offset[2] + b[2] } else { 0 },
                 ];
-                pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
-                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
-                    img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
-                });
+                // Bytes that are already the stored texels are copied row by row.
+                if xfer.is_some() || !pixels::copy_bytes(img, o, data, &layout, n, pf, pt) {
+                    pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
+                        let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                        img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
+                    });
+                }
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
             self.after_image_change(target, level);

@@ -6,8 +6,11 @@
 //! `GL_BITMAP` data, which texture images do not take. Signed and unsigned integers become
 //! floats by table 2.9 of OpenGL 1.5: unsigned `c / (2^b - 1)`, signed `(2c + 1) / (2^b - 1)`.
 
+use std::sync::Arc;
+
 use crate::api::convert::{TexPixelFormat, TexPixelType};
 use crate::state::tables::PixelStore;
+use crate::texture::image::{TexImage, Texels};
 
 /// Where the pixels of an image lie in client memory.
 #[derive(Clone, Copy, Debug)]
@@ -206,6 +209,68 @@ pub fn unpack_image(
             }
         }
     }
+}
+
+/// Stores unsigned-byte groups into `img` (at stored coordinates `origin`) by copying rows,
+/// when the groups hold exactly the image's stored components in order (RGBA into an RGBA
+/// image, RGB into RGB, and LUMINANCE, ALPHA, LUMINANCE_ALPHA into their own) and the image
+/// keeps uncompressed 8-bit texels. The general path turns a byte c into c / 255 and stores
+/// it back as c, so the texels are the same. Returns false, having written nothing, in every
+/// other case (and when the region does not fit the image or the data).
+pub fn copy_bytes(
+    img: &mut TexImage,
+    origin: [i32; 3],
+    data: &[u8],
+    layout: &Layout,
+    size: [usize; 3],
+    format: TexPixelFormat,
+    ty: TexPixelType,
+) -> bool {
+    use crate::texture::format::BaseFormat as B;
+    use TexPixelFormat as F;
+    let matches = matches!(
+        (format, img.format.base),
+        (F::Rgba, B::Rgba)
+            | (F::Rgb, B::Rgb)
+            | (F::Luminance, B::Luminance)
+            | (F::Alpha, B::Alpha)
+            | (F::LuminanceAlpha, B::LuminanceAlpha)
+    );
+    let c = img.format.base.components();
+    if !matches
+        || ty != TexPixelType::UnsignedByte
+        || layout.group != c
+        || img.format.compressed.is_some()
+        || !matches!(*img.texels, Texels::U8(_))
+        || origin.iter().any(|&o| o < 0)
+    {
+        return false;
+    }
+    let (w, h, d) = (
+        img.width.max(0) as usize,
+        img.height.max(0) as usize,
+        img.depth.max(0) as usize,
+    );
+    let o = origin.map(|v| v as usize);
+    if o[0] + size[0] > w || o[1] + size[1] > h || o[2] + size[2] > d {
+        return false;
+    }
+    let row_bytes = size[0] * c;
+    let last = |z: usize, y: usize| layout.start + z * layout.image_stride + y * layout.row_stride;
+    if size.contains(&0) || data.len() < last(size[2] - 1, size[1] - 1) + row_bytes {
+        return size.contains(&0);
+    }
+    let Texels::U8(texels) = Arc::make_mut(&mut img.texels) else {
+        return false;
+    };
+    for z in 0..size[2] {
+        for y in 0..size[1] {
+            let src = last(z, y);
+            let dst = (((o[2] + z) * h + o[1] + y) * w + o[0]) * c;
+            texels[dst..dst + row_bytes].copy_from_slice(&data[src..src + row_bytes]);
+        }
+    }
+    true
 }
 
 #[inline]
