@@ -39,6 +39,7 @@
 #[macro_use]
 pub mod api;
 pub mod capi;
+pub mod common;
 pub mod compare;
 pub mod fragment;
 pub mod framebuffer;

@@ -24,6 +24,7 @@ const RANKS: &[(&str, u32)] = &[
     ("texture", 7),
     ("framebuffer", 8),
     ("compare", 9),
+    ("common", 10),
 ];
 
 /// Upward edges that exist today (from, to). Remove an entry when its edge is gone.
@@ -44,7 +45,6 @@ const UPWARD_EDGES: &[(&str, &str)] = &[
     ("state", "api"),
     ("state", "capi"),
     ("texture", "api"),
-    ("texture", "fragment"),
     ("texture", "state"),
     ("vertex", "api"),
     ("vertex", "state"),

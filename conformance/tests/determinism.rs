@@ -3,7 +3,7 @@
 //! off (`TILEGL_NO_SIMD=1`) as with them on. Binned tiles replay their commands in submission
 //! order whichever thread takes them (DESIGN.md, "How a draw call flows" step 6), and every
 //! AVX2 route does the arithmetic of its scalar twin in the same order and precision
-//! (`src/texture/simd.rs`), so nothing may differ, not even by one step.
+//! (`src/texture/simd.rs`, `src/fragment/simd.rs`), so nothing may differ, not even by one step.
 //!
 //! The SIMD switch is read once per process, so the scalar pictures come from a child process
 //! of this test binary started with `TILEGL_NO_SIMD=1`.
@@ -14,7 +14,7 @@
 
 use std::io::Write;
 
-use tilegl::texture::simd;
+use tilegl::common::cpu as simd;
 use tilegl_conformance::compare::{render_tilegl_with_threads, Rendered};
 use tilegl_conformance::scenes::SCENES;
 use tilegl_conformance::Image;

@@ -8,7 +8,6 @@ use super::span::{
     span_untextured8, tail8_applies, tex_mode, untextured8_applies, PairFn, SpanFn,
 };
 use crate::api::convert::CompareFunc;
-use crate::texture::simd;
 
 /// The span function for `key`; `force_general` always answers the general path.
 pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
@@ -36,7 +35,7 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
         if sampled8_applies(key) {
             return span_sampled8;
         }
-        if key.simd_units && simd::available() {
+        if key.simd_units && crate::common::cpu::available() {
             return span_sampled;
         }
         return span_general;

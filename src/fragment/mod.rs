@@ -4,5 +4,6 @@
 pub mod blend;
 pub mod cache;
 pub mod key;
+pub mod simd;
 pub mod span;
 pub mod texenv;

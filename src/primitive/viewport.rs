@@ -47,7 +47,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
     let mut done = 0;
     #[cfg(target_arch = "x86_64")]
     {
-        if ds.clip_planes.is_empty() && crate::texture::simd::available() {
+        if ds.clip_planes.is_empty() && crate::common::cpu::available() {
             for (c, o) in clip.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
                 // SAFETY: AVX2 is present (checked just above).
                 if !unsafe { x86::windows4(ds, c, o) } {

@@ -151,7 +151,7 @@ pub fn applies(key: &FragmentKey) -> bool {
 fn block_max(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
     #[cfg(target_arch = "x86_64")]
     {
-        if crate::texture::simd::available() {
+        if crate::common::cpu::available() {
             // SAFETY: AVX2 is present (checked just above).
             return unsafe { block_max_avx2(rows) };
         }

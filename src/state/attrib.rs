@@ -111,7 +111,7 @@ pub(crate) struct AttribEntry {
     transform: TransformAttrib,
     fog: super::fog::FogState,
     multisample: MultisampleState,
-    buffers: super::buffers::BufferSelection,
+    buffers: super::color_buffers::BufferSelection,
     list_base: GLuint,
     /// `GL_COLOR_SUM` (fog and enable groups).
     color_sum: bool,

@@ -8,7 +8,7 @@ mod client_sizes;
 pub mod evaluators;
 pub mod arrays;
 pub mod attrib;
-pub mod buffers;
+pub mod color_buffers;
 pub mod fog;
 pub mod get;
 pub mod lighting;
@@ -120,7 +120,7 @@ pub struct Context {
     pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
     /// `glDrawBuffer` / `glReadBuffer` settings.
-    pub(crate) buffers: buffers::BufferSelection,
+    pub(crate) buffers: color_buffers::BufferSelection,
     pub(crate) scene: Scene,
     /// The snapshot for the next draw; `None` after any state change that affects drawing.
     pub(crate) draw_state: Option<Arc<DrawState>>,
@@ -226,7 +226,7 @@ impl Context {
             textures: Default::default(),
             lighting: Default::default(),
             light_setup: None,
-            buffers: buffers::BufferSelection::new(config.framebuffer.double_buffer),
+            buffers: color_buffers::BufferSelection::new(config.framebuffer.double_buffer),
             framebuffer,
             scene,
             in_flight: None,

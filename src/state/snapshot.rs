@@ -139,7 +139,7 @@ pub const EXP2_TAYLOR: [f32; 6] = [
 ];
 
 /// e^x for the fog factor, from operations that eight lanes repeat exactly
-/// (`texture::simd::fog_factors8`), so the eight-lane paths give the general path's factors:
+/// (`fragment::simd::fog_factors8`), so the eight-lane paths give the general path's factors:
 /// t = x log2(e) clamped to [-126, 126], n = floor(t + 1/2), 2^(t - n) by its degree-6
 /// Taylor polynomial (|t - n| <= 1/2: relative error below 2e-7, a thousandth of an 8-bit
 /// step), times 2^n built from its exponent bits. NaN gives 2^-126 (a factor of 0, as NaN

@@ -81,7 +81,7 @@ pub fn is_sphere_map(gen: &[Option<GenCoord>; 4]) -> bool {
 pub fn sphere_map8(eye: &[[f32; 8]; 4], normal: &[[f32; 8]; 3]) -> Option<[[f32; 8]; 2]> {
     #[cfg(target_arch = "x86_64")]
     {
-        if crate::texture::simd::available() {
+        if crate::common::cpu::available() {
             // SAFETY: AVX2 is present (checked just above).
             return Some(unsafe { x86::sphere_map8(eye, normal) });
         }

@@ -27,7 +27,7 @@ pub fn to_clip_into(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex) {
 /// sphere map (`texgen::is_sphere_map`) get it eight vertices at a time
 /// (`texgen::sphere_map8`, the same values). The same clip vertices as one by one.
 pub fn to_clip_batch(ds: &DrawState, verts: &[ImmVertex], out: &mut [ClipVertex]) {
-    let deferred = crate::texture::simd::available()
+    let deferred = crate::common::cpu::available()
         && ds.units.iter().any(|u| texgen::is_sphere_map(&u.texgen));
     if !deferred {
         for (c, v) in out.iter_mut().zip(verts) {

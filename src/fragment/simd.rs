@@ -1,0 +1,738 @@
+//! The fragment stage's eight-lane kernels with AVX2 (x86-64, detected at run time): the
+//! tail after texturing (`shade8`: environment, alpha test, blending, colour mask), the depth
+//! test (`depth8`), fog factors (`fog_factors8`), and the fused kernels that filter texels
+//! with `texture::simd` and shade them in one go (`textured8`, `block_shaded8`). Every lane
+//! does the arithmetic of the general fragment path in the same order and precision, so the
+//! pixels are identical (twin tests in `tests/raster.rs`).
+
+use crate::api::convert::{CompareFunc, FogMode};
+use crate::common::cpu::available;
+use crate::fragment::key::BlendKey;
+use crate::texture::simd::{Level8, Texels8};
+
+/// How the quads of a block choose their level for [`block_shaded8`]: `None` when the level
+/// is fixed for the draw; `Some((magnified_below, [width, height]))` when every live quad must
+/// be surely magnified (`LodSelect::surely_magnified` on a 2D texture of that base size).
+pub type BlockLod = Option<(f32, [f32; 2])>;
+
+/// A 4x2 block of a perspective textured span in one go: the texture coordinates as
+/// [`perspective_block8`](crate::texture::simd::perspective_block8) computes them (rounded to f32, non-finite as 0), each quad's
+/// derivatives and level test as `Perspective8::texels_block` does, [`filter8`](crate::texture::simd::filter8) on `level`,
+/// then [`shade8`] with lanes `live`. `None` without AVX2, when a live quad is not surely
+/// magnified (`lod`), or when [`filter8`](crate::texture::simd::filter8) would answer `None`: the caller takes the usual
+/// route, which gives the same pixels.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn block_shaded8(
+    planes: &[[[f64; 3]; 3]; 2],
+    x: f64,
+    level: &Level8,
+    linear: bool,
+    lod: BlockLod,
+    live: u8,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    dst: &[u32; 8],
+    after: &After8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::block_shaded8(
+                    planes, x, level, linear, lod, live, tail, primary, dst, after,
+                )
+            };
+        }
+    }
+    let _ = (
+        planes, x, level, linear, lod, live, tail, primary, dst, after,
+    );
+    None
+}
+
+/// The blending [`shade8`] does: none, the two common cases by their own code, or any other.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TailBlend {
+    None,
+    /// `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA`.
+    AlphaOver,
+    /// `ONE`, `ONE`.
+    AddOneOne,
+    /// Any other blending (equations, factors, the constant colour), as
+    /// `fragment::blend::blend` computes it.
+    General(BlendKey, [f32; 4]),
+}
+
+/// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
+/// [`shade8`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Tail8 {
+    /// `MODULATE` (else `REPLACE`) with an RGBA texture.
+    pub modulate: bool,
+    /// The alpha test's function and reference, when it applies.
+    pub alpha_test: Option<(CompareFunc, f32)>,
+    /// An RGB texture under `REPLACE`: the fragment keeps the primary colour's alpha.
+    pub alpha_from_primary: bool,
+    /// An ALPHA texture (no colour): the fragment keeps the primary colour's R, G, B.
+    pub rgb_from_primary: bool,
+    /// The blending.
+    pub blend: TailBlend,
+    /// Bytes of the colour words that may be written (the colour mask).
+    pub color_mask: u32,
+    /// Add the secondary colour ([`After8::secondary`]) after the environment (the colour
+    /// sum, section 3.9).
+    pub color_sum: bool,
+    /// Fog's colour, when the fragments are fogged: each lane's colour is blended towards it
+    /// by the lane's fog factor (section 3.10) after the environment, as
+    /// `fragment::span::fog_fragment` does.
+    pub fog: Option<[f32; 3]>,
+}
+
+/// What the tail adds to eight fragments after the environment: their secondary colours
+/// (with [`Tail8::color_sum`]) and fog factors (with [`Tail8::fog`]), read for passing lanes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct After8 {
+    pub secondary: [[f32; 8]; 3],
+    pub fog: [f32; 8],
+}
+
+/// Eight fragments of a textured span after the texture lookup, as the general fragment path
+/// computes them one by one: the environment on the primary colour `primary` (each channel
+/// clamped to [0, 1]) and texel `tex`, the alpha test, conversion to 8 bits, blending with
+/// `dst` (the colour words in the tile, R in the low byte) and the colour mask. `pass` has
+/// bit j set for fragments that exist and pass the depth test. Answers the new colour words
+/// (`dst` where a fragment is rejected) and the bits of the fragments that passed every test;
+/// `None` without AVX2. `after` holds what the colour sum and fog add ([`After8`]).
+#[inline]
+pub fn shade8(
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    tex: &Texels8,
+    dst: &[u32; 8],
+    pass: u8,
+    after: &After8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::shade8(tail, primary, tex, dst, pass, after) });
+        }
+    }
+    let _ = (tail, primary, tex, dst, pass, after);
+    None
+}
+
+/// What [`textured8`] needs besides the fragments: an affine span's coordinate planes and
+/// level selection.
+#[derive(Clone, Copy, Debug)]
+pub struct Sampling8<'a> {
+    /// The s and t planes as `[a, b * y, c]` for the row.
+    pub planes: [[f64; 3]; 2],
+    /// The two divisors of the plane values (see [`coords8`](crate::texture::simd::coords8)), constant over the span.
+    pub w: f64,
+    pub q: f64,
+    /// The first level and, with a weight, the second.
+    pub levels: [Level8<'a>; 2],
+    pub linear: bool,
+    pub weight: Option<f32>,
+}
+
+/// [`coords8`](crate::texture::simd::coords8), [`filter8`](crate::texture::simd::filter8) on one or two levels and [`shade8`] in one go, for the `count`
+/// pixels from centre `x`; `None` when [`coords8`](crate::texture::simd::coords8) or [`filter8`](crate::texture::simd::filter8) would answer `None`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn textured8(
+    sampling: &Sampling8,
+    x: f64,
+    count: usize,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    dst: &[u32; 8],
+    pass: u8,
+    after: &After8,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::textured8(sampling, x, count, tail, primary, dst, pass, after) };
+        }
+    }
+    let _ = (sampling, x, count, tail, primary, dst, pass, after);
+    None
+}
+
+/// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
+/// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
+/// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
+/// and the lanes of `live` that pass. `None` without AVX2 or when `depth_max` needs 32 bits.
+#[inline]
+pub fn depth8(
+    z: &[f64; 8],
+    stored: &[u32; 8],
+    live: u8,
+    depth_max: u32,
+    func: Option<CompareFunc>,
+) -> Option<([u32; 8], u8)> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() && depth_max < 1 << 31 {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::depth8(z, stored, live, depth_max, func) });
+        }
+    }
+    let _ = (z, stored, live, depth_max, func);
+    None
+}
+
+/// The fog factors of eight fog coordinates `c`, as `FogDraw::factor` computes them one by one
+/// (the same operations in the same order, `fog_exp` for EXP and EXP2): `mode` with `density`,
+/// `end` and the linear scale `scale` (`FogDraw::linear_scale`). `None` without AVX2.
+#[inline]
+pub fn fog_factors8(
+    mode: FogMode,
+    density: f32,
+    end: f32,
+    scale: f32,
+    c: &[f32; 8],
+) -> Option<[f32; 8]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::fog_factors8(mode, density, end, scale, c) });
+        }
+    }
+    let _ = (mode, density, end, scale, c);
+    None
+}
+
+#[cfg(target_arch = "x86_64")]
+mod x86 {
+    use std::arch::x86_64::*;
+
+    use super::{After8, Sampling8, Tail8};
+    use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode};
+    use crate::state::snapshot::EXP2_TAYLOR;
+    use crate::texture::simd::x86::{block_coords8, coords8, filter8, filter8_regs, lane_mask};
+    use crate::texture::simd::{Level8, Texels8};
+
+    /// [`super::fog_factors8`].
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn fog_factors8(
+        mode: FogMode,
+        density: f32,
+        end: f32,
+        scale: f32,
+        c: &[f32; 8],
+    ) -> [f32; 8] {
+        // SAFETY: `c` holds eight f32; unaligned load.
+        let c = unsafe { _mm256_loadu_ps(c.as_ptr()) };
+        let f = match mode {
+            FogMode::Linear => {
+                _mm256_mul_ps(_mm256_sub_ps(_mm256_set1_ps(end), c), _mm256_set1_ps(scale))
+            }
+            FogMode::Exp => exp8(_mm256_mul_ps(_mm256_set1_ps(-density), c)),
+            FogMode::Exp2 => {
+                let d = _mm256_mul_ps(_mm256_set1_ps(density), c);
+                // -d by its sign bit, exactly as the scalar negation.
+                let neg = _mm256_xor_ps(d, _mm256_set1_ps(-0.0));
+                exp8(_mm256_mul_ps(neg, d))
+            }
+        };
+        // f.max(0.0).min(1.0): max_ps answers its second operand (0) for NaN, as f32::max
+        // ignores a NaN.
+        let f = _mm256_min_ps(_mm256_max_ps(f, _mm256_setzero_ps()), _mm256_set1_ps(1.0));
+        let mut out = [0f32; 8];
+        // SAFETY: `out` holds eight f32; unaligned store.
+        unsafe { _mm256_storeu_ps(out.as_mut_ptr(), f) };
+        out
+    }
+
+    /// `fog_exp` per lane (`state::snapshot::fog_exp`: the same operations in the same order).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn exp8(x: __m256) -> __m256 {
+        let t = _mm256_mul_ps(x, _mm256_set1_ps(std::f32::consts::LOG2_E));
+        // max(t, -126) answers -126 for NaN, as f32::max does.
+        let t = _mm256_min_ps(
+            _mm256_max_ps(t, _mm256_set1_ps(-126.0)),
+            _mm256_set1_ps(126.0),
+        );
+        let n = _mm256_floor_ps(_mm256_add_ps(t, _mm256_set1_ps(0.5)));
+        let f = _mm256_sub_ps(t, n);
+        let k = EXP2_TAYLOR;
+        let mut p = _mm256_set1_ps(k[5]);
+        for &kk in k[..5].iter().rev() {
+            p = _mm256_add_ps(_mm256_mul_ps(p, f), _mm256_set1_ps(kk));
+        }
+        p = _mm256_add_ps(_mm256_mul_ps(p, f), _mm256_set1_ps(1.0));
+        let bits = _mm256_slli_epi32::<23>(_mm256_add_epi32(
+            _mm256_cvttps_epi32(n),
+            _mm256_set1_epi32(127),
+        ));
+        _mm256_mul_ps(p, _mm256_castsi256_ps(bits))
+    }
+
+    /// `color_to_u8` per lane: `c * 255 + 0.5` clamped to [0, 255] (NaN as 0), truncated.
+    #[target_feature(enable = "avx2")]
+    fn to_u8(c: __m256) -> __m256i {
+        let v = _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
+        // max_ps answers its second operand (0) when v is NaN.
+        let v = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(255.0));
+        _mm256_cvttps_epi32(v)
+    }
+
+    /// A blend factor for channel `ch` of eight fragments, as `fragment::blend` computes it
+    /// (source and destination already in [0, 1]; no NaN reaches here).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn factor8(
+        f: BlendFactor,
+        s: &[__m256; 4],
+        d: &[__m256; 4],
+        c: &[f32; 4],
+        ch: usize,
+    ) -> __m256 {
+        let one = _mm256_set1_ps(1.0);
+        match f {
+            BlendFactor::Zero => _mm256_setzero_ps(),
+            BlendFactor::One => one,
+            BlendFactor::SrcColor => s[ch],
+            BlendFactor::OneMinusSrcColor => _mm256_sub_ps(one, s[ch]),
+            BlendFactor::DstColor => d[ch],
+            BlendFactor::OneMinusDstColor => _mm256_sub_ps(one, d[ch]),
+            BlendFactor::SrcAlpha => s[3],
+            BlendFactor::OneMinusSrcAlpha => _mm256_sub_ps(one, s[3]),
+            BlendFactor::DstAlpha => d[3],
+            BlendFactor::OneMinusDstAlpha => _mm256_sub_ps(one, d[3]),
+            BlendFactor::ConstantColor => _mm256_set1_ps(c[ch]),
+            BlendFactor::OneMinusConstantColor => _mm256_set1_ps(1.0 - c[ch]),
+            BlendFactor::ConstantAlpha => _mm256_set1_ps(c[3]),
+            BlendFactor::OneMinusConstantAlpha => _mm256_set1_ps(1.0 - c[3]),
+            BlendFactor::SrcAlphaSaturate => {
+                if ch == 3 {
+                    one
+                } else {
+                    _mm256_min_ps(s[3], _mm256_sub_ps(one, d[3]))
+                }
+            }
+        }
+    }
+
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn shade8(
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        tex: &Texels8,
+        dst: &[u32; 8],
+        pass: u8,
+        after: &After8,
+    ) -> ([u32; 8], u8) {
+        // SAFETY: each array holds eight f32; unaligned loads.
+        let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+        let mut tex_v = [_mm256_setzero_ps(); 4];
+        for c in 0..4 {
+            tex_v[c] = load(&tex[c]);
+        }
+        shade8_regs(tail, primary, &tex_v, dst, pass, after)
+    }
+
+    /// [`shade8`] with the texels in registers.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn shade8_regs(
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        tex: &[__m256; 4],
+        dst: &[u32; 8],
+        pass: u8,
+        after: &After8,
+    ) -> ([u32; 8], u8) {
+        // SAFETY: each array holds eight f32; unaligned loads.
+        let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+        let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+        // c.max(0.0).min(1.0): max_ps answers 0 for NaN.
+        // (Loops rather than `array::from_fn`/`map`: closures passed to functions without
+        // AVX2 would not be inlined.)
+        let mut color = [zero; 4];
+        for c in 0..4 {
+            let ct = tex[c];
+            color[c] = if c < 3 && tail.rgb_from_primary {
+                _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one)
+            } else if tail.modulate {
+                let cf = _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one);
+                _mm256_mul_ps(cf, ct)
+            } else if c == 3 && tail.alpha_from_primary {
+                _mm256_min_ps(_mm256_max_ps(load(&primary[c]), zero), one)
+            } else {
+                ct
+            };
+        }
+        if tail.color_sum {
+            // `c.clamp(0.0, 1.0) + secondary` per colour channel, as the general path adds
+            // the secondary colour (the clamp as below).
+            for (c, s) in color.iter_mut().zip(&after.secondary) {
+                *c = _mm256_add_ps(_mm256_max_ps(zero, _mm256_min_ps(one, *c)), load(s));
+            }
+        }
+        if let Some(fog_color) = tail.fog {
+            // `k * c.clamp(0.0, 1.0) + (1.0 - k) * fog` per colour channel, as the general
+            // path computes it (max(0, min(1, c)) is `clamp`, NaN and the sign of zero
+            // included: min_ps and max_ps answer their second operand for NaN and for
+            // equal operands).
+            let k = load(&after.fog);
+            let rest = _mm256_sub_ps(one, k);
+            for (c, &f) in color.iter_mut().zip(&fog_color) {
+                let clamped = _mm256_max_ps(zero, _mm256_min_ps(one, *c));
+                *c = _mm256_add_ps(
+                    _mm256_mul_ps(k, clamped),
+                    _mm256_mul_ps(rest, _mm256_set1_ps(f)),
+                );
+            }
+        }
+        let mut keep = lane_mask(pass);
+        if let Some((func, reference)) = tail.alpha_test {
+            // alpha.clamp(0.0, 1.0), keeping NaN (min_ps and max_ps answer their second
+            // operand for NaN), then `alpha OP reference` as `CompareFunc::test`.
+            let a = _mm256_max_ps(zero, _mm256_min_ps(one, color[3]));
+            let r = _mm256_set1_ps(reference);
+            let ok = match func {
+                CompareFunc::Never => zero,
+                CompareFunc::Less => _mm256_cmp_ps::<_CMP_LT_OQ>(a, r),
+                CompareFunc::Equal => _mm256_cmp_ps::<_CMP_EQ_OQ>(a, r),
+                CompareFunc::LessEqual => _mm256_cmp_ps::<_CMP_LE_OQ>(a, r),
+                CompareFunc::Greater => _mm256_cmp_ps::<_CMP_GT_OQ>(a, r),
+                CompareFunc::NotEqual => _mm256_cmp_ps::<_CMP_NEQ_UQ>(a, r),
+                CompareFunc::GreaterEqual => _mm256_cmp_ps::<_CMP_GE_OQ>(a, r),
+                CompareFunc::Always => _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+            };
+            keep = _mm256_and_ps(keep, ok);
+        }
+        // SAFETY: `dst` holds eight u32; unaligned load.
+        let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
+        let mut src = [_mm256_setzero_si256(); 4];
+        for c in 0..4 {
+            src[c] = to_u8(color[c]);
+        }
+        let k = _mm256_set1_ps(255.0);
+        let byte = _mm256_set1_epi32(0xFF);
+        let d = [
+            old,
+            _mm256_srli_epi32::<8>(old),
+            _mm256_srli_epi32::<16>(old),
+            _mm256_srli_epi32::<24>(old),
+        ];
+        let pack = |out: &[__m256i; 4]| {
+            _mm256_or_si256(
+                _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
+                _mm256_or_si256(
+                    _mm256_slli_epi32::<16>(out[2]),
+                    _mm256_slli_epi32::<24>(out[3]),
+                ),
+            )
+        };
+        let word = if tail.blend == super::TailBlend::AddOneOne {
+            // ONE, ONE: `color_to_u8(s / 255 + d / 255)` is exactly min(s + d, 255) for bytes
+            // s and d (the f32 errors stay far below the 0.5 of rounding;
+            // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
+            // saturation.
+            _mm256_adds_epu8(pack(&src), old)
+        } else if tail.blend == super::TailBlend::AlphaOver {
+            let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
+            let inv = _mm256_sub_ps(one, sa);
+            let mut out = [_mm256_setzero_si256(); 4];
+            for c in 0..4 {
+                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
+                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
+                out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
+            }
+            pack(&out)
+        } else if let super::TailBlend::General(key, constant) = &tail.blend {
+            let s: [__m256; 4] = [0, 1, 2, 3].map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
+            let d: [__m256; 4] = [0, 1, 2, 3]
+                .map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k));
+            let mut out = [_mm256_setzero_si256(); 4];
+            for ch in 0..4 {
+                let (sf, df, eq) = if ch == 3 {
+                    (key.src_alpha, key.dst_alpha, key.equation_alpha)
+                } else {
+                    (key.src_rgb, key.dst_rgb, key.equation)
+                };
+                let v = match eq {
+                    BlendEquation::Min => _mm256_min_ps(s[ch], d[ch]),
+                    BlendEquation::Max => _mm256_max_ps(s[ch], d[ch]),
+                    eq => {
+                        let a = _mm256_mul_ps(s[ch], factor8(sf, &s, &d, constant, ch));
+                        let b = _mm256_mul_ps(d[ch], factor8(df, &s, &d, constant, ch));
+                        match eq {
+                            BlendEquation::Add => _mm256_add_ps(a, b),
+                            BlendEquation::Subtract => _mm256_sub_ps(a, b),
+                            _ => _mm256_sub_ps(b, a),
+                        }
+                    }
+                };
+                out[ch] = to_u8(v);
+            }
+            pack(&out)
+        } else {
+            pack(&src)
+        };
+        let cm = _mm256_set1_epi32(tail.color_mask as i32);
+        let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));
+        let word = _mm256_blendv_epi8(old, word, _mm256_castps_si256(keep));
+        let mut res = [0u32; 8];
+        // SAFETY: `res` holds eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(res.as_mut_ptr() as *mut __m256i, word) };
+        (res, _mm256_movemask_ps(keep) as u8)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[target_feature(enable = "avx2")]
+    pub fn textured8(
+        sm: &Sampling8,
+        x: f64,
+        count: usize,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        pass: u8,
+        after: &After8,
+    ) -> Option<([u32; 8], u8)> {
+        let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
+        let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
+        if let Some(w) = sm.weight {
+            let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
+            ct = crate::texture::simd::lerp8(&ct, &t2, w);
+        }
+        Some(shade8(tail, primary, &ct, dst, pass, after))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn block_shaded8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        level: &Level8,
+        linear: bool,
+        lod: super::BlockLod,
+        live: u8,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        after: &After8,
+    ) -> Option<([u32; 8], u8)> {
+        let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
+        if let Some((magnified_below, _)) = lod {
+            // Both at most the threshold (false for NaN): then so is their maximum, which is
+            // what `surely_magnified` compares.
+            let below = _mm_set1_ps(magnified_below);
+            let ok = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(ax, below), _mm_cmple_ps(ay, below)));
+            let need = (if live & 0x33 != 0 { 0b0001 } else { 0 })
+                | (if live & 0xCC != 0 { 0b0100 } else { 0 });
+            if ok & need != need {
+                return None;
+            }
+        }
+        let tex = filter8_regs(level, linear, s, t)?;
+        Some(shade8_regs(tail, primary, &tex, dst, live, after))
+    }
+
+    #[target_feature(enable = "avx2")]
+    pub fn depth8(
+        z: &[f64; 8],
+        stored: &[u32; 8],
+        live: u8,
+        depth_max: u32,
+        func: Option<CompareFunc>,
+    ) -> ([u32; 8], u8) {
+        let maxv = _mm256_set1_pd(depth_max as f64);
+        let half = |z: __m256d| {
+            let v = _mm256_add_pd(_mm256_mul_pd(z, maxv), _mm256_set1_pd(0.5));
+            // max_pd answers its second operand (0) when v is NaN.
+            _mm256_cvttpd_epi32(_mm256_min_pd(_mm256_max_pd(v, _mm256_setzero_pd()), maxv))
+        };
+        // SAFETY: `z` holds eight f64, `stored` eight u32; unaligned loads.
+        let (lo, hi, old) = unsafe {
+            (
+                _mm256_loadu_pd(z.as_ptr()),
+                _mm256_loadu_pd(z.as_ptr().add(4)),
+                _mm256_loadu_si256(stored.as_ptr() as *const __m256i),
+            )
+        };
+        let d = _mm256_set_m128i(half(hi), half(lo));
+        let mut depth = [0u32; 8];
+        // SAFETY: `depth` holds eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(depth.as_mut_ptr() as *mut __m256i, d) };
+        // Unsigned order through signed comparisons: both sides with the top bit flipped.
+        let flip = _mm256_set1_epi32(i32::MIN);
+        let (a, b) = (_mm256_xor_si256(d, flip), _mm256_xor_si256(old, flip));
+        let all = _mm256_set1_epi32(-1);
+        let ok = match func {
+            None | Some(CompareFunc::Always) => all,
+            Some(CompareFunc::Never) => _mm256_setzero_si256(),
+            Some(CompareFunc::Less) => _mm256_cmpgt_epi32(b, a),
+            Some(CompareFunc::LessEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), all),
+            Some(CompareFunc::Equal) => _mm256_cmpeq_epi32(a, b),
+            Some(CompareFunc::Greater) => _mm256_cmpgt_epi32(a, b),
+            Some(CompareFunc::GreaterEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), all),
+            Some(CompareFunc::NotEqual) => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), all),
+        };
+        let pass = _mm256_movemask_ps(_mm256_castsi256_ps(ok)) as u8;
+        (depth, live & pass)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fragment::span::depth_to_fixed;
+    use crate::state::snapshot::{fog_exp, FogDraw};
+
+    /// `fog_factors8` gives `FogDraw::factor`'s values bit for bit, for every mode, several
+    /// parameter sets (start == end included) and coordinates from negative through huge to
+    /// infinite and NaN.
+    #[test]
+    fn fog_factors8_match_the_scalar_factor() {
+        if !available() {
+            return;
+        }
+        let mut coords = vec![0.0, -0.0, 1e-30, -3.0, f32::INFINITY, f32::NEG_INFINITY];
+        coords.extend([f32::NAN, 1e30, 87.0, 700.0, 0.5, 12.25]);
+        let mut x = 0.001f32;
+        while x < 2000.0 {
+            coords.push(x);
+            x *= 1.013;
+        }
+        let params = [
+            (0.07, 1.0, 30.0),
+            (0.3, 0.5, 7.0),
+            (2.5, 4.0, 4.0),
+            (0.0, -2.0, 9.0),
+        ];
+        for mode in [FogMode::Linear, FogMode::Exp, FogMode::Exp2] {
+            for (density, start, end) in params {
+                let f = FogDraw {
+                    mode,
+                    density,
+                    start,
+                    end,
+                    color: [0.0; 3],
+                    coord_from_vertex: false,
+                };
+                for chunk in coords.chunks(8) {
+                    let mut c = [0f32; 8];
+                    c[..chunk.len()].copy_from_slice(chunk);
+                    let k = fog_factors8(mode, density, end, f.linear_scale(), &c).unwrap();
+                    for j in 0..8 {
+                        assert_eq!(
+                            k[j].to_bits(),
+                            f.factor(c[j]).to_bits(),
+                            "{mode:?} {density} {start} {end}: c = {}",
+                            c[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// `fog_exp` is e^x within 1.5e-7 absolute for fog's arguments (x <= 0: a factor in [0, 1],
+    /// where an 8-bit step is 4e-3) and within 5e-6 relative (the rounding of x log2(e) to
+    /// f32) where the result is a normal number, and answers a factor of 0 after clamping for
+    /// NaN.
+    #[test]
+    fn fog_exp_is_close_to_exp() {
+        let mut x = -87.0f32;
+        while x < 87.0 {
+            let (got, want) = (fog_exp(x) as f64, (x as f64).exp());
+            assert!(
+                ((got - want) / want).abs() < 5e-6,
+                "x = {x}: {got} vs {want}"
+            );
+            if x <= 0.0 {
+                assert!((got - want).abs() < 1.5e-7, "x = {x}: {got} vs {want}");
+            }
+            x += 0.0137;
+        }
+        assert!(fog_exp(f32::NAN) < 1e-37);
+        assert!(fog_exp(f32::NEG_INFINITY) < 1e-37);
+        assert_eq!(fog_exp(0.0), 1.0);
+    }
+
+    /// `depth8` rounds and tests as `depth_to_fixed` and `CompareFunc::test` do one by one, for
+    /// every function, several depth ranges, stored values around the fragments' and z from far
+    /// outside [0, 1] to NaN.
+    #[test]
+    fn depth8_matches_the_scalar_depth_test() {
+        if !available() {
+            return;
+        }
+        let funcs = [
+            None,
+            Some(CompareFunc::Never),
+            Some(CompareFunc::Less),
+            Some(CompareFunc::Equal),
+            Some(CompareFunc::LessEqual),
+            Some(CompareFunc::Greater),
+            Some(CompareFunc::NotEqual),
+            Some(CompareFunc::GreaterEqual),
+            Some(CompareFunc::Always),
+        ];
+        let specials = [
+            0.0,
+            -0.0,
+            1.0,
+            -1e30,
+            1e30,
+            f64::NAN,
+            f64::INFINITY,
+            0.5,
+            1.0 - 1e-9,
+        ];
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || crate::test_support::xorshift(&mut seed);
+        for case in 0..3000 {
+            let max = [0xFFFFu32, 0xFF_FFFF, (1 << 31) - 1][case % 3];
+            let mut z = [0f64; 8];
+            let mut stored = [0u32; 8];
+            for j in 0..8 {
+                let r = next();
+                z[j] = if r % 5 == 0 {
+                    specials[(r >> 8) as usize % specials.len()]
+                } else {
+                    (r >> 11) as f64 / (1u64 << 53) as f64 * 1.2 - 0.1
+                };
+                // Often equal to the fragment's own depth, otherwise near it or anywhere.
+                let own = depth_to_fixed(z[j], max);
+                stored[j] = match next() % 3 {
+                    0 => own,
+                    1 => own
+                        .saturating_add((next() % 3) as u32)
+                        .min(max)
+                        .saturating_sub(1),
+                    _ => (next() % (max as u64 + 1)) as u32,
+                };
+            }
+            let live = (next() & 0xFF) as u8;
+            let func = funcs[case % funcs.len()];
+            let (depth, pass) = depth8(&z, &stored, live, max, func).expect("AVX2, 31 bits");
+            for j in 0..8 {
+                let d = depth_to_fixed(z[j], max);
+                assert_eq!(depth[j], d, "case {case} lane {j}: z {}", z[j]);
+                let ok = match func {
+                    None | Some(CompareFunc::Always) => true,
+                    Some(f) => f.test(d, stored[j]),
+                };
+                let want = ok && live & (1 << j) != 0;
+                assert_eq!(pass & (1 << j) != 0, want, "case {case} lane {j} {func:?}");
+            }
+        }
+    }
+}

@@ -1,0 +1,222 @@
+//! Span functions: shade the covered pixels `x0..x1` of one row of a tile. The general path
+//! reads the key at run time; specialised paths are the same code monomorphised on the key,
+//! so a disabled stage is compiled out instead of skipped by a branch.
+//!
+//! A map for reading (`fragment/cache.rs` picks one row function and, for some keys, one
+//! two-row function per draw):
+//! - per fragment, in the specification's order: [`span_general`] (every key), its
+//!   monomorphised forms [`span_specialised`] and [`span_fogged`], and [`span_sampled`]
+//!   (texels eight at a time, the rest per fragment); all of them run `shade` /
+//!   `finish_fragment`;
+//! - eight fragments at a time through one tail (`tail8`, `simd::shade8`: environment, alpha
+//!   test, blending, colour mask): [`span_textured`] (one `REPLACE`/`MODULATE` unit),
+//!   [`span_sampled8`] (any units, the cascade eight at a time), [`span_untextured8`];
+//! - two rows at a time in 4x2 blocks for the eight-lane textured keys: [`pair_textured`] and
+//!   [`pair_sampled8`] over `for_each_block` (triangles only; `raster/tri.rs` pairs the rows).
+//!
+//! Every fast path computes each value as the general path does, so pictures are identical
+//! (twin tests in `tests/raster.rs` and `tests/state_combinations.rs`). Texture coordinates and
+//! their per-quad derivatives come from `unit_coords` (one fragment) or `Perspective8` (eight).
+
+use std::cell::Cell;
+
+use super::blend::{blend, blend_alpha_over};
+use super::key::{FragmentKey, Uniforms};
+use super::texenv::{self, CombineInputs};
+use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
+use crate::fragment::simd::{self, After8, Sampling8, Tail8};
+use crate::framebuffer::Tile;
+use crate::raster::setup::Plane;
+use crate::state::snapshot::{attr, FogDraw, TextureUnitDraw};
+use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+use crate::state::DrawState;
+use crate::texture::format::BaseFormat;
+use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
+use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
+
+mod affine;
+mod coords;
+mod general;
+mod paths;
+mod perspective8;
+mod tail;
+pub use affine::*;
+use coords::*;
+use general::*;
+pub use paths::*;
+use perspective8::*;
+pub use tail::*;
+
+/// The interpolants of one primitive for the fragment stage.
+#[derive(Clone, Debug)]
+pub struct Interpolants<'a> {
+    /// Window z in [0, 1].
+    pub z: Plane,
+    /// 1/w_clip, for perspective correction.
+    pub inv_w: Plane,
+    /// Attribute planes: attribute/w when `perspective`, else the attribute itself.
+    pub attrs: &'a [Plane],
+    pub perspective: bool,
+    /// The primary colour's planes hold the colour itself, not colour/w: it is the same at
+    /// the three vertices, so it is the same at every fragment (no division by 1/w, which
+    /// would round it).
+    pub constant_primary: bool,
+    /// Antialiasing coverage, multiplied into the alpha after fog (1 for aliased primitives).
+    pub coverage: f32,
+    /// What the primitive's spans share beyond the planes. (A reference: a larger
+    /// `Interpolants` measurably slows the other paths.)
+    pub shared: &'a PrimitiveShared<'a>,
+}
+
+/// What the spans of one primitive share: prepared once, not per span.
+#[derive(Debug)]
+pub struct PrimitiveShared<'a> {
+    /// The fast textured path's level selection where the primitive's 1/w and q are constant
+    /// (then λ is the same at every fragment with finite coordinates): prepared by the first
+    /// span that needs it and reused by the others.
+    pub fast: Cell<Option<AffineSpan<'a>>>,
+    /// The draw's texture levels prepared for the eight-pixel filter.
+    pub levels: &'a UnitLevels<'a>,
+}
+
+impl<'a> PrimitiveShared<'a> {
+    pub fn new(levels: &'a UnitLevels<'a>) -> PrimitiveShared<'a> {
+        PrimitiveShared {
+            fast: Cell::new(None),
+            levels,
+        }
+    }
+}
+
+/// Every level of each unit's texture prepared for the eight-pixel filter ([`Level8`]; `None`
+/// where a level does not take it), by the unit's index in `DrawState::units`. Prepared once
+/// per tile and draw state ([`UnitLevels::prepare`]) instead of in every span: the spans of
+/// small triangles are a few pixels long. Empty (and not allocated) for draws without
+/// eight-pixel samplers.
+#[derive(Clone, Debug, Default)]
+pub struct UnitLevels<'a> {
+    units: Vec<[Option<Level8<'a>>; MAX_FAST_LEVELS]>,
+    /// `pair_textured`'s tail for the draw (one REPLACE/MODULATE unit on the fast 2D path,
+    /// fragments finishing eight at a time), built once here instead of per row pair.
+    textured_tail: Option<Tail8>,
+}
+
+impl<'a> UnitLevels<'a> {
+    /// Replaces the table with the levels of `ds`'s units (none unless the draw's key has
+    /// `simd_units`, which the eight-pixel samplers require).
+    pub fn prepare(&mut self, ds: &'a DrawState) {
+        self.units.clear();
+        self.textured_tail = None;
+        if !ds.key.simd_units || !crate::common::cpu::available() {
+            return;
+        }
+        if let (Some(layout), Some(unit)) = (ds.key.fast_texture, ds.units.first()) {
+            if tail8_applies(&ds.key) {
+                let modulate = unit.env.mode == TexEnvMode::Modulate;
+                let rgb = layout == super::key::FastTexture::Rgb;
+                self.textured_tail = Some(tail8(ds, modulate, false, rgb));
+            }
+        }
+        for unit in &ds.units {
+            let tex = &unit.texture;
+            let (wrap, base) = (tex.wrap_st(), tex.base_format());
+            let mut levels = [None; MAX_FAST_LEVELS];
+            for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
+                *level = tex.fast_level(l).and_then(|f| Level8::new(&f, wrap, base));
+            }
+            self.units.push(levels);
+        }
+    }
+}
+
+/// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
+pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
+
+/// Converts window z to a stored depth value (round to nearest, clamped): `z * max + 0.5`
+/// truncated, NaN and negatives as 0, at most `depth_max` (Rust's `as` saturates, without
+/// branches).
+#[inline(always)]
+pub fn depth_to_fixed(z: f64, depth_max: u32) -> u32 {
+    ((z * depth_max as f64 + 0.5) as u32).min(depth_max)
+}
+
+/// Converts a colour component to 8 bits (section 2.14.9: round to nearest after clamping):
+/// `c * 255 + 0.5` truncated, NaN and negatives as 0, at most 255 (Rust's `as` saturates).
+#[inline(always)]
+pub fn color_to_u8(c: f32) -> u8 {
+    (c * 255.0 + 0.5) as u8
+}
+
+/// [`color_to_u8`] of four components at once, with SSE2 (part of every x86-64 processor):
+/// the fragment paths convert every fragment's colour.
+#[inline(always)]
+pub fn color4_to_u8(c: [f32; 4]) -> [u8; 4] {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE and SSE2 are part of the x86-64 baseline; no memory is accessed.
+    unsafe {
+        use std::arch::x86_64::*;
+        let v = _mm_add_ps(
+            _mm_mul_ps(_mm_setr_ps(c[0], c[1], c[2], c[3]), _mm_set1_ps(255.0)),
+            _mm_set1_ps(0.5),
+        );
+        // max_ps answers its second operand (0) when v is NaN.
+        let v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(255.0));
+        let i = _mm_cvttps_epi32(v);
+        let bytes = _mm_packus_epi16(_mm_packs_epi32(i, i), _mm_setzero_si128());
+        (_mm_cvtsi128_si32(bytes) as u32).to_le_bytes()
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        c.map(color_to_u8)
+    }
+}
+
+/// Depth handling chosen at compile time: `DYNAMIC` reads the key, others are fixed.
+pub mod depth_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const NONE: u8 = 1;
+    pub const LESS_WRITE: u8 = 2;
+    pub const LEQUAL_WRITE: u8 = 3;
+}
+
+/// Texturing chosen at compile time: `DYNAMIC` reads the key (every unit through the general
+/// sampler); `FAST_RGB` and `FAST_RGBA` are the one-unit fast 2D path for keys with
+/// `fast_texture` (texels of 3 or 4 unsigned bytes).
+pub mod tex_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const FAST_RGB: u8 = 3;
+    pub const FAST_RGBA: u8 = 4;
+}
+
+/// Blending chosen at compile time: `DYNAMIC` reads the key; `ALPHA_OVER` is a key whose
+/// blending `BlendKey::is_alpha_over`.
+pub mod blend_mode {
+    pub const DYNAMIC: u8 = 0;
+    pub const ALPHA_OVER: u8 = 1;
+}
+
+/// Applies a stencil action to `old` under the write mask (section 4.1.5; 8-bit buffer).
+#[inline(always)]
+pub fn apply_stencil_op(op: StencilOp, old: u8, u: &Uniforms) -> u8 {
+    let v = match op {
+        StencilOp::Keep => return old,
+        StencilOp::Zero => 0,
+        StencilOp::Replace => u.stencil_ref,
+        StencilOp::Incr => old.saturating_add(1),
+        StencilOp::Decr => old.saturating_sub(1),
+        StencilOp::Invert => !old,
+        StencilOp::IncrWrap => old.wrapping_add(1),
+        StencilOp::DecrWrap => old.wrapping_sub(1),
+    };
+    (old & !u.stencil_write_mask) | (v & u.stencil_write_mask)
+}
+
+/// Fog (section 3.10) on a fragment's colour: the factor for its fog coordinate `c`, and
+/// the blend towards the fog colour.
+#[inline(always)]
+fn fog_fragment(f: &FogDraw, c: f32, color: &mut [f32; 4]) {
+    let k = f.factor(c);
+    for ch in 0..3 {
+        color[ch] = k * color[ch].clamp(0.0, 1.0) + (1.0 - k) * f.color[ch];
+    }
+}

@@ -1,0 +1,579 @@
+//! The span and row-pair functions `fragment/cache.rs` chooses from: the general path, its
+//! monomorphised forms and the eight-lane paths.
+
+use super::*;
+
+/// The general path: every decision read from the key at run time.
+pub fn span_general<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<{ depth_mode::DYNAMIC }, false, false, false, false>(ds, tile, y, x0, x1, it)
+}
+
+/// The general path with every texture unit sampled eight pixels at a time (keys with
+/// `simd_units`): the same texels, hence the same pictures.
+pub fn span_sampled<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<{ depth_mode::DYNAMIC }, false, false, true, false>(ds, tile, y, x0, x1, it)
+}
+
+/// The textured path: one unit on the fast 2D sampler (`TEX`), blending fixed by `BLEND`,
+/// the colour mask by `FULL_MASK`; everything else read from the key (which must have
+/// `fast_texture` of `TEX`'s layout, no stencil test and no logic op).
+pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade_textured::<{ depth_mode::DYNAMIC }, FULL_MASK, false, TEX, BLEND>(ds, tile, y, x0, x1, it)
+}
+
+/// Two rows of a primitive: `y` (even) and `y + 1`, `rows[r]` the covered pixels `x0..x1`
+/// of row `y + r` (empty when `x0 >= x1`; not both).
+pub type RowPair = (i32, [(i32, i32); 2]);
+
+/// Shades row pairs of one primitive in a tile (distinct rows: within a primitive no pixel is
+/// covered twice, so their order does not matter). One call per primitive and tile, so that
+/// what does not depend on the rows is prepared once (a tiny triangle has one to three pairs).
+pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, &[RowPair], &Interpolants<'a>);
+
+/// The rows of the pairs one by one, by the draw's span function.
+pub(super) fn pair_by_rows<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants<'a>,
+) {
+    for &(y, rows) in pairs {
+        for (r, (x0, x1)) in (0..).zip(rows) {
+            if x0 < x1 {
+                (ds.span)(ds, tile, y + r, x0, x1, it);
+            }
+        }
+    }
+}
+
+/// Runs the 4x2 blocks of a row pair (two whole quads each, from the even column at or left
+/// of the first covered pixel): lanes 0..4 are columns `gx..gx + 4` of row `y`, lanes 4..8
+/// the same columns of row `y + 1`. Each row's colour and depth are stepped from its own first
+/// pixel, as on the row alone. `shade(gx, group)` gets the covered lanes' inputs when one of
+/// them passes the depth test (the others change nothing: no stencil on these paths) and
+/// answers the colour words and the lanes that passed every test, which are stored.
+#[inline(always)]
+pub(super) fn for_each_block(
+    ds: &DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    mut shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+) {
+    // Unfogged draws step no fog coordinate.
+    if lane_fog(ds).is_some() {
+        blocks::<true>(ds, tile, pairs, it, &mut shade)
+    } else {
+        blocks::<false>(ds, tile, pairs, it, &mut shade)
+    }
+}
+
+/// [`for_each_block`] for a fogged draw (`FOG`) or not.
+#[inline(always)]
+pub(super) fn blocks<const FOG: bool>(
+    ds: &DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+) {
+    let depth_max = group_depth_max(ds);
+    let fog = if FOG { lane_fog(ds) } else { None };
+    // With the colour sum the secondary colour is stepped too (no constant shortcut).
+    let colors = lane_colors(ds);
+    // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
+    // every pixel has the first one's) leaves only z to step per pixel (unless fogged: then
+    // the fog coordinate and 1/w are stepped too, by `SpanRun::next`); the lanes' depths are
+    // then rounded and tested eight at a time, and the colour written to the lanes whole.
+    let constant = (it.constant_primary && fog.is_none() && colors == 4).then(|| {
+        let (y, rows) = pairs.first().copied().unwrap_or_default();
+        let run = SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4);
+        [0, 1, 2, 3].map(|c| [run.color[c]; 8])
+    });
+    // With a constant colour every lane's inputs are written for each block (the colour
+    // once): lanes outside a block's covered ones keep stale values, which nothing reads.
+    let mut group = GroupInputs::EMPTY;
+    if let Some(primary) = constant {
+        group.primary = primary;
+    }
+    let mut lane_z = [0f64; 8];
+    let mut stored = [0u32; 8];
+    for &(y, rows) in pairs {
+        let mut runs = [
+            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, colors),
+            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, colors),
+        ];
+        if FOG {
+            for (r, run) in runs.iter_mut().enumerate() {
+                let (xc0, yc) = (rows[r].0 as f64 + 0.5, y as f64 + 0.5 + r as f64);
+                run.fog = Some(SpanRun::fog_at(it, xc0, yc));
+            }
+        }
+        let covered = |r: usize| rows[r].0 < rows[r].1;
+        let (first, end) = match (covered(0), covered(1)) {
+            (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
+            (true, false) => rows[0],
+            (false, true) => rows[1],
+            (false, false) => continue,
+        };
+        let mut z = [runs[0].z, runs[1].z];
+        let mut gx = first & !1;
+        while gx < end {
+            let mut live = 0u8;
+            if constant.is_some() {
+                for (r, &(x0, x1)) in rows.iter().enumerate() {
+                    let row = tile.index(gx, y + r as i32);
+                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                        let (lane, j) = (4 * r + j as usize, j as usize);
+                        // As `SpanRun::next` steps it.
+                        lane_z[lane] = z[r];
+                        z[r] += runs[r].dz;
+                        stored[lane] = tile.depth[row + j];
+                        group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
+                        live |= 1 << lane;
+                    }
+                }
+                (group.depth, group.pass) = match depth_max {
+                    None => ([0; 8], live),
+                    Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
+                        .unwrap_or_else(|| {
+                            let mut depth = [0u32; 8];
+                            let mut pass = 0u8;
+                            for lane in (0..8).filter(|j| live & (1 << j) != 0) {
+                                depth[lane] = depth_to_fixed(lane_z[lane], max);
+                                let ok = depth_passes(ds, depth[lane], stored[lane]);
+                                pass |= u8::from(ok) << lane;
+                            }
+                            (depth, pass)
+                        }),
+                };
+            } else {
+                // (Not `after`: a whole copy of `EMPTY` is a call to memset, and a lane's
+                // secondary colour and fog are read only when it is live.)
+                group.primary = GroupInputs::EMPTY.primary;
+                group.depth = [0; 8];
+                group.pass = 0;
+                group.dst = [0; 8];
+                for (r, &(x0, x1)) in rows.iter().enumerate() {
+                    let row = tile.index(gx, y + r as i32);
+                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
+                        let (lane, j) = (4 * r + j as usize, j as usize);
+                        group.add(ds, tile, lane, row + j, runs[r].next::<FOG>(depth_max));
+                        live |= 1 << lane;
+                    }
+                }
+            }
+            if group.pass != 0 {
+                group.fog_factors(fog);
+                if let Some((words, passed)) = shade(y, gx, &group) {
+                    for lane in 0..8 {
+                        if live & (1 << lane) != 0 {
+                            let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                            store_lane(ds, tile, lane, index, &words, passed, &group.depth);
+                        }
+                    }
+                }
+            }
+            gx += 4;
+        }
+    }
+}
+
+/// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
+#[inline(always)]
+pub(super) fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
+    let lane = lane as i32;
+    ((gx + lane % 4) as f64 + 0.5, (y + lane / 4) as f64 + 0.5)
+}
+
+/// `span_textured`'s eight-lane perspective path on two rows at once, in 4x2 blocks (two
+/// whole quads): the spans of small triangles are two or three pixels long, so a block holds
+/// about as many fragments as two eight-pixel row groups, and its texture coordinates give
+/// the quads' derivatives without evaluating other rows. Every value is computed as on the
+/// rows one by one (`for_each_block`, texels by `Perspective8::texels_block`), so the
+/// pixels are the same; affine primitives and keys without the eight-lane tail take the rows
+/// one by one.
+pub fn pair_textured<'a, const TEX: u8>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants<'a>,
+) {
+    let (Some(unit), Some(&(first_y, _))) = (ds.units.first(), pairs.first()) else {
+        return pair_by_rows(ds, tile, pairs, it);
+    };
+    let q = &it.attrs[attr::TEX + 4 * unit.unit + 3];
+    // Constant 1/w and q: the affine path of the rows (`FastUnit::affine`).
+    let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
+    // The tail (prepared with the levels) exists where the eight-fragment tail applies.
+    let tail = it.shared.levels.textured_tail;
+    let sampler = match tail {
+        Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, first_y),
+        _ => None,
+    };
+    let (Some(mut sampler), Some(tail)) = (sampler, tail) else {
+        return pair_by_rows(ds, tile, pairs, it);
+    };
+    let mut sampler_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != sampler_y {
+            // The same unit and levels as the first pair's: only the rows' planes move.
+            if let Some(s) = Perspective8::block(unit, 0, it, y) {
+                sampler = s;
+            }
+            sampler_y = y;
+        }
+        if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
+            return Some(shaded);
+        }
+        let mut tex = [[0f32; 8]; 4];
+        if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+            // Not affine: the fast unit samples one by one as the rows' fallback does.
+            let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = if TEX == tex_mode::FAST_RGB {
+                    f.texel::<3>(it, x, yc)
+                } else {
+                    f.texel::<4>(it, x, yc)
+                };
+                for c in 0..4 {
+                    tex[c][lane] = t[c];
+                }
+            }
+        }
+        simd::shade8(
+            &tail,
+            &group.primary,
+            &tex,
+            &group.dst,
+            group.pass,
+            &group.after,
+        )
+    });
+}
+
+/// [`span_sampled8`] on two rows at once, in 4x2 blocks (`for_each_block`): every unit
+/// sampled by its block sampler (`Perspective8::texels_block`; one by one where it does not
+/// apply), the cascade, then the eight-fragment tail. The same pixels as the rows one by one.
+pub fn pair_sampled8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants<'a>,
+) {
+    let Some(&(first_y, _)) = pairs.first() else {
+        return;
+    };
+    if it.coverage != 1.0 {
+        return pair_by_rows(ds, tile, pairs, it);
+    }
+    let Sampled8 {
+        mut samplers,
+        single,
+        tail,
+        mut by_unit,
+    } = Sampled8::new(ds, it, first_y, true);
+    let mut samplers_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != samplers_y {
+            Sampled8::place_samplers(&mut samplers, ds, it, y, true);
+            samplers_y = y;
+        }
+        for (k, unit) in ds.units.iter().enumerate() {
+            let Some(out) = by_unit[unit.unit].as_mut() else {
+                continue;
+            };
+            if samplers[k]
+                .as_ref()
+                .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
+            {
+                continue;
+            }
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = unit_texel(unit, it, x, yc);
+                for c in 0..4 {
+                    out[c][lane] = t[c];
+                }
+            }
+        }
+        sampled8_shade(ds, single, &tail, group, &by_unit)
+    });
+}
+
+/// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
+/// mode and full colour mask fixed at compile time.
+pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<DEPTH, FULL_MASK, true, false, false>(ds, tile, y, x0, x1, it)
+}
+
+/// [`span_specialised`] with fog: keys that are simple but for fog (a fogged, untextured,
+/// unblended scene).
+pub fn span_fogged<'a, const DEPTH: u8, const FULL_MASK: bool>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    shade::<DEPTH, FULL_MASK, true, false, true>(ds, tile, y, x0, x1, it)
+}
+
+/// Whether [`span_untextured8`] may shade a key: untextured, and after the primary colour only
+/// the alpha test, the depth test, blending (any equation and factors) and the colour mask
+/// apply.
+pub fn untextured8_applies(key: &FragmentKey) -> bool {
+    !key.texturing && tail8_applies(key)
+}
+
+/// Untextured spans eight fragments at a time for keys with [`untextured8_applies`]: the
+/// primary colours enter the eight-fragment tail ([`simd::shade8`]) as replacing texels, so
+/// the alpha test, blending, colour mask and writes run on eight at once with the general
+/// path's arithmetic (the same pixels). Partly covered pixels take the general path.
+pub fn span_untextured8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    if it.coverage != 1.0 {
+        return span_general(ds, tile, y, x0, x1, it);
+    }
+    let row = tile.index(x0, y);
+    let (xc0, yc) = (x0 as f64 + 0.5, y as f64 + 0.5);
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
+    let tail = tail8(ds, false, false, false);
+    let depth_max = group_depth_max(ds);
+    let fog = lane_fog(ds);
+    let fogged = fog.is_some();
+    let mut gx = x0;
+    while gx < x1 {
+        let n = ((x1 - gx) as usize).min(8);
+        let base = row + (gx - x0) as usize;
+        let mut group = GroupInputs::gather(ds, tile, base, 0..n, |_| {
+            if fogged {
+                run.next::<true>(depth_max)
+            } else {
+                run.next::<false>(depth_max)
+            }
+        });
+        group.fog_factors(fog);
+        let GroupInputs {
+            primary,
+            depth,
+            pass,
+            dst,
+            after,
+        } = group;
+        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass, &after) {
+            store_group(ds, tile, base, 0..n, &words, passed, &depth);
+        }
+        gx += 8;
+    }
+}
+
+/// Draws nothing (a key whose fragments change no buffer).
+pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
+
+/// Whether [`span_sampled8`] may shade a key: every unit takes the eight-pixel sampler
+/// (`simd_units`), and after the texture environment only the alpha test, the depth test,
+/// blending (any equation and factors) and the colour mask apply.
+pub fn sampled8_applies(key: &FragmentKey) -> bool {
+    key.simd_units && tail8_applies(key)
+}
+
+/// Textured spans eight pixels at a time for keys with [`sampled8_applies`]: every unit
+/// sampled by its eight-pixel sampler, the environment cascade per pixel, then the alpha test,
+/// blending and colour mask of eight fragments at once ([`simd::shade8`] with the environment's
+/// result as a replacing texel). The same arithmetic as the general path, so the same pixels.
+pub fn span_sampled8<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    let yc = y as f64 + 0.5;
+    let row = tile.index(x0, y);
+    let xc0 = x0 as f64 + 0.5;
+    if it.coverage != 1.0 {
+        return span_sampled(ds, tile, y, x0, x1, it);
+    }
+    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
+    let fog = lane_fog(ds);
+    let Sampled8 {
+        mut samplers,
+        single,
+        tail,
+        mut by_unit,
+    } = Sampled8::new(ds, it, y, false);
+    let depth_max = group_depth_max(ds);
+    let mut gx = x0 & !1;
+    while gx < x1 {
+        let lo = (x0 - gx).max(0) as usize;
+        let hi = ((x1 - gx) as usize).min(8);
+        let first = (gx - x0) as isize;
+        let base = (row as isize + first) as usize;
+        let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |_| {
+            if fog.is_some() {
+                run.next::<true>(depth_max)
+            } else {
+                run.next::<false>(depth_max)
+            }
+        });
+        // Lanes failing the depth test change nothing (no stencil here): only passing lanes
+        // are sampled.
+        if group.pass == 0 {
+            gx += 8;
+            continue;
+        }
+        group.fog_factors(fog);
+        for (k, unit) in ds.units.iter().enumerate() {
+            if let Some(out) = by_unit[unit.unit].as_mut() {
+                sampled_texels(samplers[k].as_mut(), unit, it, gx, yc, group.pass, out);
+            }
+        }
+        if let Some((words, passed)) = sampled8_shade(ds, single, &tail, &group, &by_unit) {
+            store_group(ds, tile, base, lo..hi, &words, passed, &group.depth);
+        }
+        gx += 8;
+    }
+}
+
+/// One REPLACE or MODULATE unit: (`MODULATE`, the base format has colour, has alpha).
+pub(super) type SingleUnit = Option<(bool, bool, bool)>;
+
+/// What the eight-lane paths of a [`sampled8_applies`] draw set up for a row or a row pair:
+/// each unit's sampler (by index in `DrawState::units`), the tail, and each unit's texels of
+/// the current group by unit number (as the cascade reads them).
+pub(super) struct Sampled8<'a> {
+    pub(super) samplers: [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
+    pub(super) single: SingleUnit,
+    pub(super) tail: Tail8,
+    pub(super) by_unit: [Option<Texels8>; MAX_TEXTURE_UNITS],
+}
+
+impl<'a> Sampled8<'a> {
+    /// For row `y`, or with `block` the 4x2 blocks of rows `y` and `y + 1`. (Inlined: built
+    /// in place, not copied out, it costs nothing per row pair.)
+    #[inline(always)]
+    pub(super) fn new(
+        ds: &'a DrawState,
+        it: &Interpolants<'a>,
+        y: i32,
+        block: bool,
+    ) -> Sampled8<'a> {
+        let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
+        Self::place_samplers(&mut samplers, ds, it, y, block);
+        let (single, tail) = sampled8_tail(ds);
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        for unit in &ds.units {
+            by_unit[unit.unit] = Some([[0f32; 8]; 4]);
+        }
+        Sampled8 {
+            samplers,
+            single,
+            tail,
+            by_unit,
+        }
+    }
+
+    /// Each unit's sampler for row `y`, or with `block` the 4x2 blocks of rows `y` and `y + 1`.
+    #[inline(always)]
+    pub(super) fn place_samplers(
+        samplers: &mut [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
+        ds: &'a DrawState,
+        it: &Interpolants<'a>,
+        y: i32,
+        block: bool,
+    ) {
+        for (k, (slot, unit)) in samplers.iter_mut().zip(&ds.units).enumerate() {
+            *slot = if block {
+                Perspective8::block(unit, k, it, y)
+            } else {
+                Perspective8::new(unit, k, it, y)
+            };
+        }
+    }
+}
+
+/// The eight-fragment tail of a [`sampled8_applies`] draw. With one unit under REPLACE or
+/// MODULATE ([`SingleUnit`]) the environment itself runs eight fragments at a time in the
+/// tail (with the base format's table: which of colour and alpha the texture has); otherwise
+/// the cascade runs per fragment and enters the tail as a replacing texel.
+pub(super) fn sampled8_tail(ds: &DrawState) -> (SingleUnit, Tail8) {
+    let single = match ds.units.as_slice() {
+        [unit] if matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate) => {
+            let (has_color, has_alpha) = match unit.base {
+                BaseFormat::Alpha => (false, true),
+                BaseFormat::Luminance | BaseFormat::Rgb => (true, false),
+                _ => (true, true),
+            };
+            Some((unit.env.mode == TexEnvMode::Modulate, has_color, has_alpha))
+        }
+        _ => None,
+    };
+    let tail = tail8(
+        ds,
+        single.is_some_and(|s| s.0),
+        single.is_some_and(|s| !s.1),
+        single.is_some_and(|s| !s.2),
+    );
+    (single, tail)
+}
+
+/// The environment (cascade or tail) and the tail of a group of a [`sampled8_applies`]
+/// draw, given each unit's texels by unit number.
+#[inline(always)]
+pub(super) fn sampled8_shade(
+    ds: &DrawState,
+    single: SingleUnit,
+    tail: &Tail8,
+    group: &GroupInputs,
+    by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
+) -> Option<([u32; 8], u8)> {
+    let color = match single {
+        Some(_) => group.primary,
+        None => environment8(ds, &group.primary, by_unit),
+    };
+    // With one REPLACE/MODULATE unit `color` is the primary colour and the tail applies the
+    // environment; otherwise it is the cascade's result, entering as a replacing texel.
+    let tex = match single.and(ds.units.first()) {
+        Some(unit) => by_unit[unit.unit].as_ref().unwrap_or(&color),
+        None => &color,
+    };
+    simd::shade8(tail, &color, tex, &group.dst, group.pass, &group.after)
+}

@@ -1,0 +1,311 @@
+//! One RGBA8 unit along a perspective span eight pixels at a time with AVX2 (`Perspective8`),
+//! and its 4x2 block form for row pairs.
+
+use super::*;
+
+/// Most mipmap levels a fast texture can have (sizes below 2^16).
+pub(super) const MAX_FAST_LEVELS: usize = 17;
+
+/// One RGBA8 unit over one row of a perspective span, eight pixels at a time with AVX2: the
+/// s, t and q planes on the pixel's row and on the other row of its 2x2 quads, and the
+/// levels prepared for [`texture_simd::filter8`] (on first use). Texels equal those of [`FastUnit::texel`] (the
+/// general path): the same coordinates, the same per-quad derivatives, λ and level plan
+/// (computed per quad by the sampler's own functions), the same filter arithmetic.
+pub(super) struct Perspective8<'a> {
+    /// `[row][s, t, q] = [a, b * y, c]`: row 0 is the pixel's row, row 1 the quad's other.
+    pub(super) planes: [[[f64; 3]; 3]; 2],
+    /// Whether the pixel's row is the upper row of its quads.
+    pub(super) own_is_upper: bool,
+    /// The level and filter when they do not depend on λ (which is then not computed).
+    pub(super) fixed_plan: Option<(usize, bool)>,
+    /// λ and level selection, gathered once for the draw.
+    pub(super) lod: &'a LodSelect,
+    /// The texture's levels prepared for the filter ([`UnitLevels`]).
+    pub(super) levels: &'a [Option<Level8<'a>>; MAX_FAST_LEVELS],
+}
+
+impl<'a> Perspective8<'a> {
+    /// The eight-pixel sampler on row `y` of the unit at index `k` of the draw's units, when
+    /// every level of its texture takes the eight-pixel filter (the draw's key has
+    /// `simd_units`: every unit's texture passes `BoundTexture::simd_2d`).
+    #[inline(always)]
+    pub(super) fn new(
+        unit: &'a TextureUnitDraw,
+        k: usize,
+        it: &Interpolants<'a>,
+        y: i32,
+    ) -> Option<Perspective8<'a>> {
+        let yc = y as f64 + 0.5;
+        // Quads start on even rows (`quad_origin`): an odd row is the upper one.
+        let own_is_upper = y & 1 != 0;
+        let other = if own_is_upper { yc - 1.0 } else { yc + 1.0 };
+        Self::on_rows(unit, k, it, [yc, other], own_is_upper)
+    }
+
+    /// The sampler with its planes on rows (centres) `rows`; `own_is_upper` says whether the
+    /// first is the upper row of its quads.
+    #[inline(always)]
+    pub(super) fn on_rows(
+        unit: &'a TextureUnitDraw,
+        k: usize,
+        it: &Interpolants<'a>,
+        rows: [f64; 2],
+        own_is_upper: bool,
+    ) -> Option<Perspective8<'a>> {
+        // No table (no `simd_units` or no AVX2), or a base level that does not take the
+        // filter: sampled one by one.
+        let levels = it.shared.levels.units.get(k)?;
+        levels[0]?;
+        let base = attr::TEX + 4 * unit.unit;
+        let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
+        let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
+        Some(Perspective8 {
+            planes: [row(rows[0]), row(rows[1])],
+            own_is_upper,
+            lod: &unit.lod,
+            fixed_plan: unit.fixed_plan,
+            levels,
+        })
+    }
+
+    /// Level `l` prepared for the eight-pixel filter, or `None` when it does not take it.
+    #[inline(always)]
+    pub(super) fn level(&self, l: usize) -> Option<&'a Level8<'a>> {
+        // A reference into the table, not a copy: the filter reads the level right away, and
+        // a fresh copy's stores would not forward to its wider loads.
+        self.levels.get(l)?.as_ref()
+    }
+
+    /// The texels of the eight pixels centred at `x + j`, `x - 0.5` even (so lanes 2k and
+    /// 2k + 1 form a quad's row), written into `out`; only lanes whose bit is set in `live`
+    /// matter. False when a coordinate is beyond the filter's range (the caller samples one by
+    /// one).
+    pub(super) fn texels_into(&mut self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        let Some(rows) = texture_simd::perspective_rows8(&self.planes, x) else {
+            return false;
+        };
+        self.texels_at(&rows, live, out).is_some()
+    }
+
+    pub(super) fn texels_at(
+        &self,
+        rows: &[[[f64; 8]; 2]; 2],
+        live: u8,
+        out: &mut Texels8,
+    ) -> Option<()> {
+        let (upper, lower) = if self.own_is_upper {
+            (&rows[0], &rows[1])
+        } else {
+            (&rows[1], &rows[0])
+        };
+        let fix = |v: f64| finite_or_zero(v as f32);
+        let mut s = [0f32; 8];
+        let mut t = [0f32; 8];
+        for j in 0..8 {
+            s[j] = fix(rows[0][0][j]);
+            t[j] = fix(rows[0][1][j]);
+        }
+        // Quad k is lanes 2k and 2k + 1; its derivatives from its upper row and left column.
+        let derivatives = |k: usize| {
+            let (l, r) = (2 * k, 2 * k + 1);
+            let dx = [
+                fix(upper[0][r] - upper[0][l]),
+                fix(upper[1][r] - upper[1][l]),
+                0.0,
+            ];
+            let dy = [
+                fix(upper[0][l] - lower[0][l]),
+                fix(upper[1][l] - lower[1][l]),
+                0.0,
+            ];
+            (dx, dy)
+        };
+        self.filter_quads(&s, &t, [0x03, 0x0C, 0x30, 0xC0], derivatives, live, out)
+    }
+
+    /// The sampler of the 4x2 blocks of rows `y` (even) and `y + 1` of the unit at index `k`
+    /// of the draw's units ([`Perspective8::texels_block`]), when [`Perspective8::new`] would
+    /// give one. (Inlined: built in place, the sampler is not copied through memory, whose
+    /// stores the block kernels' loads of the planes would wait for.)
+    #[inline(always)]
+    pub(super) fn block(
+        unit: &'a TextureUnitDraw,
+        k: usize,
+        it: &Interpolants<'a>,
+        y: i32,
+    ) -> Option<Perspective8<'a>> {
+        // Row 0 is row y, row 1 row y + 1 (the upper row of the block's quads).
+        Self::on_rows(unit, k, it, [y as f64 + 0.5, y as f64 + 1.5], false)
+    }
+
+    /// The texels of a 4x2 block from a sampler made by [`Perspective8::block`]: lanes 0..4 are
+    /// the pixels centred at `x + j` on the lower row, lanes 4..8 the same columns on the upper
+    /// row, `x - 0.5` even (two whole quads). The same texels as [`Perspective8::texels_into`]
+    /// gives each pixel on its own row. False when a coordinate is beyond the filter's range.
+    pub(super) fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        // A 2D texture (or a fixed plan) in one go: the same texels.
+        let levels: &[Option<Level8>] = self.levels;
+        if texture_simd::block_texels8(
+            &self.planes,
+            x,
+            live,
+            self.fixed_plan,
+            self.lod,
+            levels,
+            out,
+        )
+        .is_some()
+        {
+            return true;
+        }
+        let Some([vs, vt]) = texture_simd::perspective_block8(&self.planes, x) else {
+            return false;
+        };
+        let fix = |v: f64| finite_or_zero(v as f32);
+        let mut s = [0f32; 8];
+        let mut t = [0f32; 8];
+        for j in 0..8 {
+            s[j] = fix(vs[j]);
+            t[j] = fix(vt[j]);
+        }
+        // Quad q is columns 2q and 2q + 1 of both rows: lanes 2q, 2q + 1, 2q + 4 and 2q + 5.
+        let derivatives = |q: usize| {
+            let (l, r) = (2 * q, 2 * q + 1);
+            let dx = [fix(vs[4 + r] - vs[4 + l]), fix(vt[4 + r] - vt[4 + l]), 0.0];
+            let dy = [fix(vs[4 + l] - vs[l]), fix(vt[4 + l] - vt[l]), 0.0];
+            (dx, dy)
+        };
+        self.filter_quads(&s, &t, [0x33, 0xCC], derivatives, live, out)
+            .is_some()
+    }
+
+    /// [`Perspective8::texels_block`] and the tail in one go ([`simd::block_shaded8`]) for a
+    /// block whose live quads take one level: the draw's fixed plan, or magnification of a 2D
+    /// texture. `None` otherwise (the caller takes the usual route: the same pixels).
+    #[inline(always)]
+    pub(super) fn shaded_block(
+        &self,
+        x: f64,
+        group: &GroupInputs,
+        tail: &Tail8,
+    ) -> Option<([u32; 8], u8)> {
+        let (level, linear, lod) = match self.fixed_plan {
+            Some((level, linear)) => (level, linear, None),
+            None => (0, self.lod.mag_linear(), Some(self.lod.magnified_test()?)),
+        };
+        simd::block_shaded8(
+            &self.planes,
+            x,
+            self.level(level)?,
+            linear,
+            lod,
+            group.pass,
+            tail,
+            &group.primary,
+            &group.dst,
+            &group.after,
+        )
+    }
+
+    /// The texels at lane coordinates `s`, `t` into `out` (lanes set in `live`), quad k (lanes
+    /// `quads[k]`, x and y derivatives `derivatives(k)`, asked only when λ is needed) with its
+    /// own λ and level plan, quads of one plan filtered together.
+    #[inline(always)]
+    pub(super) fn filter_quads<const N: usize>(
+        &self,
+        s: &[f32; 8],
+        t: &[f32; 8],
+        quads: [u8; N],
+        derivatives: impl Fn(usize) -> ([f32; 3], [f32; 3]),
+        live: u8,
+        out: &mut Texels8,
+    ) -> Option<()> {
+        // Per quad: the level plan; per lane: its weight between the plan's two levels.
+        let mut plan = [(0usize, 0usize, false); N];
+        let mut weight = [0f32; 8];
+        let fixed = self.fixed_plan;
+        for (k, (pl, &lanes)) in plan.iter_mut().zip(&quads).enumerate() {
+            if let Some((level, linear)) = fixed {
+                *pl = (level, level, linear);
+                continue;
+            }
+            if live & lanes == 0 {
+                continue;
+            }
+            let (dx, dy) = derivatives(k);
+            let plan = if self.lod.surely_magnified(dx, dy) {
+                self.lod.magnification()
+            } else {
+                self.lod.plan(self.lod.isotropic_lambda(dx, dy))
+            };
+            *pl = match plan {
+                LevelPlan::One { level, linear } => (level, level, linear),
+                LevelPlan::Two {
+                    levels,
+                    linear,
+                    weight: w,
+                } => {
+                    let mut m = lanes;
+                    while m != 0 {
+                        weight[m.trailing_zeros() as usize] = w;
+                        m &= m - 1;
+                    }
+                    (levels[0], levels[1], linear)
+                }
+            };
+        }
+        let mut done = !live;
+        for (k, &quad_lanes) in quads.iter().enumerate() {
+            if done & quad_lanes == quad_lanes {
+                continue;
+            }
+            let (d1, d2, linear) = plan[k];
+            // The lanes of every quad with this plan.
+            let mut lanes = 0u8;
+            for (other, &m) in plan.iter().zip(&quads) {
+                if *other == plan[k] {
+                    lanes |= m;
+                }
+            }
+            lanes &= !done;
+            done |= lanes;
+            let all = done == 0xFF && lanes == live;
+            let t1 = texture_simd::filter8(self.level(d1)?, linear, s, t)?;
+            let texels = if d2 == d1 {
+                t1
+            } else {
+                let t2 = texture_simd::filter8(self.level(d2)?, linear, s, t)?;
+                let mut mixed = [[0f32; 8]; 4];
+                for c in 0..4 {
+                    for j in 0..8 {
+                        mixed[c][j] = t1[c][j] + (t2[c][j] - t1[c][j]) * weight[j];
+                    }
+                }
+                mixed
+            };
+            // One plan for every live lane (the usual case): no merging.
+            if all {
+                *out = texels;
+                return Some(());
+            }
+            for j in 0..8 {
+                if lanes & (1 << j) != 0 {
+                    for c in 0..4 {
+                        out[c][j] = texels[c][j];
+                    }
+                }
+            }
+        }
+        Some(())
+    }
+}
+
+#[inline(always)]
+pub(super) fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+    [
+        a[0] + (b[0] - a[0]) * w,
+        a[1] + (b[1] - a[1]) * w,
+        a[2] + (b[2] - a[2]) * w,
+        a[3] + (b[3] - a[3]) * w,
+    ]
+}

@@ -1,0 +1,392 @@
+//! Texture image specification (`glTexImage*`, `glTexSubImage*`) and reading images back
+//! (`glGetTexImage`).
+
+use super::*;
+
+impl Context {
+    pub(super) fn tex_image(
+        &mut self,
+        dims: usize,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        size: [GLsizei; 3],
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        if let Err(e) = self.tex_image_checked(
+            dims,
+            target,
+            level,
+            internalformat,
+            size,
+            border,
+            format,
+            type_,
+            pixels,
+        ) {
+            self.record_error(e);
+        }
+    }
+
+    pub(super) fn tex_image_checked(
+        &mut self,
+        dims: usize,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        size: [GLsizei; 3],
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) -> Check<()> {
+        let target = convert::tex_image_target_for(target, dims, true).ok_or(GL_INVALID_ENUM)?;
+        let (pf, pt) = pixel_format_type(format, type_)?;
+        let level = check_level(target.texture_target(), level)?;
+        let ifmt = check_internal_format(internalformat, dims)?;
+        let stored = match check_size(target, size, border) {
+            Ok(s) => s,
+            Err(Some(e)) => return Err(e),
+            Err(None) if target.is_proxy() => {
+                self.image_object_mut(target).images[0][level] = None;
+                return Ok(());
+            }
+            Err(None) => return Err(GL_INVALID_VALUE),
+        };
+        if ifmt.compressed.is_some() && border != 0 {
+            return Err(GL_INVALID_OPERATION);
+        }
+        check_format_type(pf, pt)?;
+        if (pf == TexPixelFormat::DepthComponent) != ifmt.is_depth() {
+            return Err(GL_INVALID_OPERATION);
+        }
+        check_depth_target(target, ifmt)?;
+        let usize3 = stored.map(|s| s as usize);
+        let layout = pixels::layout(&self.unpack, dims, usize3, pf, pt).ok_or(GL_INVALID_VALUE)?;
+        if let Some(data) = pixels {
+            if data.len() < layout.end {
+                return Err(GL_INVALID_VALUE);
+            }
+        }
+        let mut img = TexImage::new(dims as u8, stored, border, ifmt, target.is_proxy())
+            .map_err(|_| GL_OUT_OF_MEMORY)?;
+        if let (Some(data), false) = (pixels, target.is_proxy()) {
+            let swap = self.unpack.swap_bytes;
+            // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
+            let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            let depth = pf == TexPixelFormat::DepthComponent;
+            // Bytes that are already the stored texels are copied row by row.
+            if xfer.is_some()
+                || !pixels::copy_bytes(&mut img, [0; 3], data, &layout, usize3, pf, pt)
+            {
+                pixels::unpack_image(data, &layout, usize3, pf, pt, swap, |x, y, z, rgba| {
+                    let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                    img.store(x as i32, y as i32, z as i32, rgba)
+                });
+            }
+            img.encode_region(0, 0, img.width, img.height);
+        }
+        self.install_image(target, level, img);
+        Ok(())
+    }
+
+    pub(super) fn tex_sub_image(
+        &mut self,
+        dims: usize,
+        target: GLenum,
+        level: GLint,
+        offset: [GLint; 3],
+        size: [GLsizei; 3],
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        let r = (|| -> Check<()> {
+            let target =
+                convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
+            let (pf, pt) = pixel_format_type(format, type_)?;
+            let level = check_level(target.texture_target(), level)?;
+            if size[..dims].iter().any(|&s| s < 0) {
+                return Err(GL_INVALID_VALUE);
+            }
+            let img = self
+                .image_object(target)
+                .image(target.face(), level)
+                .ok_or(GL_INVALID_OPERATION)?;
+            let (b, inner) = (img.borders(), img.inner_size());
+            check_sub_region(dims, offset, size, b, inner)?;
+            check_format_type(pf, pt)?;
+            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+                return Err(GL_INVALID_OPERATION);
+            }
+            check_compressed_alignment(img, offset, size)?;
+            let mut n = [1usize; 3];
+            for d in 0..dims {
+                n[d] = size[d] as usize;
+            }
+            let layout = pixels::layout(&self.unpack, dims, n, pf, pt).ok_or(GL_INVALID_VALUE)?;
+            let Some(data) = pixels else {
+                return Ok(());
+            };
+            if data.len() < layout.end {
+                return Err(GL_INVALID_VALUE);
+            }
+            let swap = self.unpack.swap_bytes;
+            let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            let depth = pf == TexPixelFormat::DepthComponent;
+            let face = target.face();
+            let obj = self.image_object_mut(target);
+            if let Some(img) = obj.image_mut(face, level) {
+                let o = [
+                    offset[0] + b[0],
+                    if dims >= 2 { offset[1] + b[1] } else { 0 },
+                    if dims >= 3 { offset[2] + b[2] } else { 0 },
+                ];
+                // Bytes that are already the stored texels are copied row by row.
+                if xfer.is_some() || !pixels::copy_bytes(img, o, data, &layout, n, pf, pt) {
+                    pixels::unpack_image(data, &layout, n, pf, pt, swap, |x, y, z, rgba| {
+                        let rgba = xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba));
+                        img.store(o[0] + x as i32, o[1] + y as i32, o[2] + z as i32, rgba)
+                    });
+                }
+                img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
+            }
+            self.after_image_change(target, level);
+            Ok(())
+        })();
+        if let Err(e) = r {
+            self.record_error(e);
+        }
+    }
+
+    pub(crate) fn tex_image_1d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_image(
+            1,
+            target,
+            level,
+            internalformat,
+            [width, 1, 1],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    pub(crate) fn tex_image_2d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_image(
+            2,
+            target,
+            level,
+            internalformat,
+            [width, height, 1],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    pub(crate) fn tex_image_3d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        internalformat: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        depth: GLsizei,
+        border: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_image(
+            3,
+            target,
+            level,
+            internalformat,
+            [width, height, depth],
+            border,
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    pub(crate) fn tex_sub_image_1d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        width: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_sub_image(
+            1,
+            target,
+            level,
+            [xoffset, 0, 0],
+            [width, 1, 1],
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    pub(crate) fn tex_sub_image_2d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_sub_image(
+            2,
+            target,
+            level,
+            [xoffset, yoffset, 0],
+            [width, height, 1],
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    pub(crate) fn tex_sub_image_3d(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        xoffset: GLint,
+        yoffset: GLint,
+        zoffset: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        depth: GLsizei,
+        format: GLenum,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        self.tex_sub_image(
+            3,
+            target,
+            level,
+            [xoffset, yoffset, zoffset],
+            [width, height, depth],
+            format,
+            type_,
+            pixels,
+        );
+    }
+
+    // ----- reading images back
+
+    /// The image `glGetTexImage(target, level, ..)` reads: its dimensions and stored size.
+    pub(super) fn image_for_get(
+        &self,
+        target: GLenum,
+        level: GLint,
+    ) -> Check<Option<(TexImageTarget, usize)>> {
+        let target = convert::tex_image_target(target)
+            .filter(|t| !t.is_proxy())
+            .ok_or(GL_INVALID_ENUM)?;
+        let level = check_level(target.texture_target(), level)?;
+        Ok(self
+            .image_object(target)
+            .image(target.face(), level)
+            .map(|_| (target, level)))
+    }
+
+    /// Dimensions and size of the image at `target`/`level`, if there is one.
+    pub(crate) fn texture_image_size(
+        &self,
+        target: GLenum,
+        level: GLint,
+    ) -> Option<(usize, [usize; 3])> {
+        let (target, level) = self.image_for_get(target, level).ok()??;
+        let img = self.image_object(target).image(target.face(), level)?;
+        let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
+        Some((target.dims(), size))
+    }
+
+    /// Bytes of the compressed blocks of the image at `target`/`level`, if it is compressed.
+    pub(crate) fn texture_image_blocks_len(&self, target: GLenum, level: GLint) -> Option<usize> {
+        let (target, level) = self.image_for_get(target, level).ok()??;
+        let img = self.image_object(target).image(target.face(), level)?;
+        img.blocks.as_ref().map(|b| b.len())
+    }
+
+    pub(crate) fn get_tex_image(
+        &mut self,
+        target: GLenum,
+        level: GLint,
+        format: GLenum,
+        type_: GLenum,
+        pixels: &mut [u8],
+    ) {
+        let r = (|| -> Check<()> {
+            let target = convert::tex_image_target(target)
+                .filter(|t| !t.is_proxy())
+                .ok_or(GL_INVALID_ENUM)?;
+            let (pf, pt) = pixel_format_type(format, type_)?;
+            let level = check_level(target.texture_target(), level)?;
+            check_format_type(pf, pt)?;
+            let Some(img) = self.image_object(target).image(target.face(), level) else {
+                return Ok(());
+            };
+            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+                return Err(GL_INVALID_OPERATION);
+            }
+            let dims = target.dims();
+            let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
+            let layout = pixels::layout(&self.pack, dims, size, pf, pt).ok_or(GL_INVALID_VALUE)?;
+            if pixels.len() < layout.end {
+                return Err(GL_INVALID_VALUE);
+            }
+            let swap = self.pack.swap_bytes;
+            for z in 0..size[2] {
+                for y in 0..size[1] {
+                    let row = layout.start + z * layout.image_stride + y * layout.row_stride;
+                    for x in 0..size[0] {
+                        let v = img.fetch(x as i32, y as i32, z as i32);
+                        pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
+                    }
+                }
+            }
+            Ok(())
+        })();
+        if let Err(e) = r {
+            self.record_error(e);
+        }
+    }
+}

@@ -1,0 +1,384 @@
+//! Texture entry points (`glTexImage*`, `glTexParameter*`, `glBindTexture`, ...).
+//!
+//! Every call validates in the order of its error rules and changes nothing when it records an
+//! error. Images are unpacked by `texture::pixels`; objects, completeness and sampling live in
+//! `texture`.
+#![allow(clippy::too_many_arguments)]
+
+use super::Context;
+use crate::api::convert::{
+    self, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType, TextureTarget,
+};
+use crate::api::enums::*;
+use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
+use crate::texture::image::{clamp01, TexImage};
+use crate::texture::object::{level_count, max_size, TextureObject, MAX_TEXTURE_MAX_ANISOTROPY};
+use crate::texture::{mipmap, pixels};
+
+mod compressed;
+mod copy;
+mod image;
+mod params;
+
+/// The texture entry points `impl Gl for Context` forwards (see `gl_forward_all!`).
+macro_rules! texture_entry_points {
+    () => {
+        gl_forward_all!(
+            gen_textures,
+            bind_texture,
+            delete_textures,
+            is_texture,
+            prioritize_textures,
+            are_textures_resident,
+            tex_image_1d,
+            tex_image_2d,
+            tex_image_3d,
+            tex_sub_image_1d,
+            tex_sub_image_2d,
+            tex_sub_image_3d,
+            copy_tex_image_1d,
+            copy_tex_image_2d,
+            copy_tex_sub_image_1d,
+            copy_tex_sub_image_2d,
+            copy_tex_sub_image_3d,
+            get_tex_image,
+            tex_parameterf,
+            tex_parameterfv,
+            tex_parameteri,
+            tex_parameteriv,
+            get_tex_parameterfv,
+            get_tex_parameteriv,
+            get_tex_level_parameterfv,
+            get_tex_level_parameteriv,
+            compressed_tex_image_1d,
+            compressed_tex_image_2d,
+            compressed_tex_image_3d,
+            compressed_tex_sub_image_1d,
+            compressed_tex_sub_image_2d,
+            compressed_tex_sub_image_3d,
+            get_compressed_tex_image,
+        );
+    };
+}
+
+/// A validation failure: the error to record.
+type Check<T> = Result<T, GLenum>;
+
+/// Parameter values as given to `glTexParameter{i,f}[v]`.
+#[derive(Clone, Copy)]
+enum Values<'a> {
+    F(&'a [GLfloat]),
+    I(&'a [GLint]),
+}
+
+impl Values<'_> {
+    fn len(&self) -> usize {
+        match self {
+            Values::F(v) => v.len(),
+            Values::I(v) => v.len(),
+        }
+    }
+
+    /// Value `i` as a float (integers converted directly).
+    fn float(&self, i: usize) -> f32 {
+        match self {
+            Values::F(v) => v.get(i).copied().unwrap_or(0.0),
+            Values::I(v) => v.get(i).copied().unwrap_or(0) as f32,
+        }
+    }
+
+    /// Value `i` as an enum (floats truncated to an integer; NaN is 0).
+    fn enumv(&self, i: usize) -> GLenum {
+        match self {
+            Values::F(v) => v.get(i).copied().unwrap_or(0.0) as i32 as GLenum,
+            Values::I(v) => v.get(i).copied().unwrap_or(0) as GLenum,
+        }
+    }
+
+    /// Value `i` as an integer (floats rounded to nearest, saturating).
+    fn int(&self, i: usize) -> i32 {
+        match self {
+            Values::F(v) => v.get(i).copied().unwrap_or(0.0).round() as i32,
+            Values::I(v) => v.get(i).copied().unwrap_or(0),
+        }
+    }
+
+    /// Value `i` as a colour component: integers map by table 2.9 ((2c + 1) / (2^32 - 1)).
+    fn color(&self, i: usize) -> f32 {
+        match self {
+            Values::F(v) => v.get(i).copied().unwrap_or(0.0),
+            Values::I(v) => {
+                ((2.0 * v.get(i).copied().unwrap_or(0) as f64 + 1.0) / u32::MAX as f64) as f32
+            }
+        }
+    }
+}
+
+/// Checks a packed type against a format (`GL_INVALID_OPERATION`).
+fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
+    match ty {
+        TexPixelType::Packed(p) if !p.accepts(format) => Err(GL_INVALID_OPERATION),
+        _ => Ok(()),
+    }
+}
+
+fn pixel_format_type(format: GLenum, type_: GLenum) -> Check<(TexPixelFormat, TexPixelType)> {
+    let f = convert::tex_pixel_format(format).ok_or(GL_INVALID_ENUM)?;
+    let t = convert::tex_pixel_type(type_).ok_or(GL_INVALID_ENUM)?;
+    Ok((f, t))
+}
+
+fn check_level(target: TextureTarget, level: GLint) -> Check<usize> {
+    if level < 0 || level as usize >= level_count(target) {
+        Err(GL_INVALID_VALUE)
+    } else {
+        Ok(level as usize)
+    }
+}
+
+/// Whether a value names a specific S3TC format (for the compressed entry points).
+fn s3tc(e: GLenum) -> Option<S3tcFormat> {
+    convert::s3tc_format(e)
+}
+
+/// The internal format of a `glTexImage`/`glCopyTexImage` call.
+fn check_internal_format(value: GLint, dims: usize) -> Check<InternalFormat> {
+    match convert::internal_format(value, dims) {
+        Some(f) => Ok(f),
+        None if convert::is_internal_format(value) => Err(GL_INVALID_ENUM),
+        None => Err(GL_INVALID_VALUE),
+    }
+}
+
+/// Size checks of a `glTexImage`-style call: border 0 or 1, sizes (borders included) at
+/// least 2 * border, inner sizes at most the target's maximum, cube faces square. Returns the
+/// stored size `[w, h, d]` (1 for unused dimensions). `Err(None)` means "too large" (a proxy
+/// records no error for it).
+fn check_size(
+    target: TexImageTarget,
+    size: [GLsizei; 3],
+    border: GLint,
+) -> Result<[i32; 3], Option<GLenum>> {
+    let dims = target.dims();
+    // Rectangle textures have no border (ARB_texture_rectangle).
+    let rectangle = target.texture_target() == TextureTarget::Rectangle;
+    if border != 0 && (border != 1 || rectangle) {
+        return Err(Some(GL_INVALID_VALUE));
+    }
+    let mut out = [1; 3];
+    for d in 0..dims {
+        let inner = size[d] as i64 - 2 * border as i64;
+        if size[d] < 0 || inner < 0 {
+            return Err(Some(GL_INVALID_VALUE));
+        }
+        out[d] = size[d];
+    }
+    if matches!(
+        target,
+        TexImageTarget::CubeFace(_) | TexImageTarget::ProxyCube
+    ) && size[0] != size[1]
+    {
+        return Err(Some(GL_INVALID_VALUE));
+    }
+    let max = max_size(target.texture_target()) as i64;
+    for &s in &size[..dims] {
+        if s as i64 - 2 * border as i64 > max {
+            return Err(None);
+        }
+    }
+    Ok(out)
+}
+
+/// Whether an internal format may be used on a target (depth textures: 1D and 2D only).
+fn check_depth_target(target: TexImageTarget, f: InternalFormat) -> Check<()> {
+    if f.is_depth()
+        && !matches!(
+            target.texture_target(),
+            TextureTarget::T1D | TextureTarget::T2D
+        )
+    {
+        return Err(GL_INVALID_OPERATION);
+    }
+    Ok(())
+}
+
+impl Context {
+    /// The texture snapshot unit `unit` samples for the next draw: the object bound to its
+    /// highest-precedence enabled target, or `None` when no target is enabled or the texture
+    /// is incomplete (see [`crate::texture::TextureState::bound_for_unit`]).
+    pub fn bound_texture(&self, unit: usize) -> Option<crate::texture::BoundTexture> {
+        self.textures.bound_for_unit(unit)
+    }
+
+    // ----- objects
+
+    pub(crate) fn gen_textures(&mut self, n: GLsizei, textures: &mut [GLuint]) {
+        if n < 0 || textures.len() < n as usize {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.textures.gen_names(&mut textures[..n as usize]);
+    }
+
+    pub(crate) fn bind_texture(&mut self, target: GLenum, texture: GLuint) {
+        let Some(t) = convert::texture_target(target) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        if !self.textures.bind(self.active_texture, t, texture) {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.invalidate();
+    }
+
+    pub(crate) fn delete_textures(&mut self, n: GLsizei, textures: &[GLuint]) {
+        if n < 0 || textures.len() < n as usize {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        for &name in &textures[..n as usize] {
+            self.textures.delete(name);
+        }
+        self.invalidate();
+    }
+
+    pub(crate) fn is_texture(&mut self, texture: GLuint) -> GLboolean {
+        self.textures.is_texture(texture) as GLboolean
+    }
+
+    pub(crate) fn prioritize_textures(
+        &mut self,
+        n: GLsizei,
+        textures: &[GLuint],
+        priorities: &[GLfloat],
+    ) {
+        if n < 0 || textures.len() < n as usize || priorities.len() < n as usize {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        for (&name, &p) in textures.iter().zip(priorities).take(n as usize) {
+            if let Some(o) = self.textures.object_mut(name) {
+                o.priority = clamp01(p);
+            }
+        }
+    }
+
+    pub(crate) fn are_textures_resident(
+        &mut self,
+        n: GLsizei,
+        textures: &[GLuint],
+        residences: &mut [GLboolean],
+    ) -> GLboolean {
+        if n < 0 || textures.len() < n as usize {
+            self.record_error(GL_INVALID_VALUE);
+            return GL_FALSE as GLboolean;
+        }
+        if textures[..n as usize]
+            .iter()
+            .any(|&t| !self.textures.is_texture(t))
+        {
+            self.record_error(GL_INVALID_VALUE);
+            return GL_FALSE as GLboolean;
+        }
+        // Every texture is resident: GL_TRUE and `residences` untouched.
+        let _ = residences;
+        GL_TRUE as GLboolean
+    }
+
+    // ----- helpers
+
+    /// The object a (non-proxy or proxy) image target addresses on the active unit.
+    fn image_object_mut(&mut self, target: TexImageTarget) -> &mut TextureObject {
+        let t = target.texture_target();
+        if target.is_proxy() {
+            self.textures.proxy_mut(t)
+        } else {
+            self.textures.bound_mut(self.active_texture, t)
+        }
+    }
+
+    fn image_object(&self, target: TexImageTarget) -> &TextureObject {
+        let t = target.texture_target();
+        if target.is_proxy() {
+            self.textures.proxy(t)
+        } else {
+            self.textures.bound(self.active_texture, t)
+        }
+    }
+
+    /// Stores a new image and regenerates mipmaps when it is the base level of an object with
+    /// `GL_GENERATE_MIPMAP`.
+    fn install_image(&mut self, target: TexImageTarget, level: usize, img: TexImage) {
+        let face = target.face();
+        let obj = self.image_object_mut(target);
+        obj.images[face][level] = Some(img);
+        if !target.is_proxy() {
+            self.after_image_change(target, level);
+        }
+    }
+
+    /// Generates mipmaps if needed and marks the draw state stale.
+    fn after_image_change(&mut self, target: TexImageTarget, level: usize) {
+        let face = target.face();
+        let tt = target.texture_target();
+        let obj = self.image_object_mut(target);
+        if obj.params.generate_mipmap && level == obj.params.base_level.max(0) as usize {
+            let mut oom = false;
+            if let Some(base) = obj.image(face, level) {
+                let last = obj
+                    .last_level(tt, level, base.inner_size())
+                    .min(level_count(tt) - 1);
+                for l in level + 1..=last {
+                    let Some(parent) = obj.image(face, l - 1) else {
+                        break;
+                    };
+                    match mipmap::downsample(parent) {
+                        Ok(child) => obj.images[face][l] = Some(child),
+                        Err(_) => {
+                            oom = true;
+                            break;
+                        }
+                    }
+                }
+            }
+            if oom {
+                self.record_error(GL_OUT_OF_MEMORY);
+            }
+        }
+        self.invalidate();
+    }
+}
+
+/// Sub-image bounds (section 3.8.2): `-b <= offset` and `offset + size <= inner + b` on every
+/// dimension used, else `GL_INVALID_VALUE`.
+fn check_sub_region(
+    dims: usize,
+    offset: [GLint; 3],
+    size: [GLsizei; 3],
+    b: [i32; 3],
+    inner: [i32; 3],
+) -> Check<()> {
+    for d in 0..dims {
+        let (o, s) = (offset[d] as i64, size[d] as i64);
+        if o < -(b[d] as i64) || o + s > inner[d] as i64 + b[d] as i64 {
+            return Err(GL_INVALID_VALUE);
+        }
+    }
+    Ok(())
+}
+
+/// EXT_texture_compression_s3tc: sub-image updates of an S3TC image start on a multiple of 4
+/// and cover whole blocks unless they reach the image's edge, else `GL_INVALID_OPERATION`.
+fn check_compressed_alignment(img: &TexImage, offset: [GLint; 3], size: [GLsizei; 3]) -> Check<()> {
+    if img.format.compressed.is_none() {
+        return Ok(());
+    }
+    let full = [img.width, img.height];
+    for d in 0..2 {
+        if offset[d] % 4 != 0 || (size[d] % 4 != 0 && offset[d] + size[d] != full[d]) {
+            return Err(GL_INVALID_OPERATION);
+        }
+    }
+    Ok(())
+}
