@@ -5,6 +5,8 @@
 use super::enums::*;
 use super::types::GLenum;
 
+pub use crate::common::values::*;
+
 mod arrays;
 mod eval;
 mod state_ext;
@@ -16,21 +18,6 @@ pub use eval::*;
 pub use state_ext::*;
 #[allow(unused_imports)]
 pub use texture::*;
-
-/// The ten primitive modes of `glBegin`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PrimitiveMode {
-    Points,
-    Lines,
-    LineLoop,
-    LineStrip,
-    Triangles,
-    TriangleStrip,
-    TriangleFan,
-    Quads,
-    QuadStrip,
-    Polygon,
-}
 
 pub fn primitive_mode(e: GLenum) -> Option<PrimitiveMode> {
     use PrimitiveMode::*;
@@ -49,35 +36,7 @@ pub fn primitive_mode(e: GLenum) -> Option<PrimitiveMode> {
     })
 }
 
-/// Comparison functions of the depth, alpha and stencil tests (and texture compare).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CompareFunc {
-    Never,
-    Less,
-    Equal,
-    LessEqual,
-    Greater,
-    NotEqual,
-    GreaterEqual,
-    Always,
-}
-
 impl CompareFunc {
-    /// Applies the function as `incoming OP stored`.
-    #[inline(always)]
-    pub fn test<T: PartialOrd>(self, incoming: T, stored: T) -> bool {
-        match self {
-            CompareFunc::Never => false,
-            CompareFunc::Less => incoming < stored,
-            CompareFunc::Equal => incoming == stored,
-            CompareFunc::LessEqual => incoming <= stored,
-            CompareFunc::Greater => incoming > stored,
-            CompareFunc::NotEqual => incoming != stored,
-            CompareFunc::GreaterEqual => incoming >= stored,
-            CompareFunc::Always => true,
-        }
-    }
-
     pub fn to_gl(self) -> GLenum {
         match self {
             CompareFunc::Never => GL_NEVER,
@@ -107,14 +66,6 @@ pub fn compare_func(e: GLenum) -> Option<CompareFunc> {
     })
 }
 
-/// `glMatrixMode` targets.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum MatrixMode {
-    ModelView,
-    Projection,
-    Texture,
-}
-
 impl MatrixMode {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -132,14 +83,6 @@ pub fn matrix_mode(e: GLenum) -> Option<MatrixMode> {
         GL_TEXTURE => MatrixMode::Texture,
         _ => return None,
     })
-}
-
-/// Which faces a setting applies to (`glCullFace`, `glPolygonMode`, `glMaterial`, ...).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Face {
-    Front,
-    Back,
-    FrontAndBack,
 }
 
 impl Face {
@@ -161,13 +104,6 @@ pub fn face(e: GLenum) -> Option<Face> {
     })
 }
 
-/// `glFrontFace`: which winding is front-facing.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Winding {
-    Ccw,
-    Cw,
-}
-
 impl Winding {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -183,13 +119,6 @@ pub fn winding(e: GLenum) -> Option<Winding> {
         GL_CW => Winding::Cw,
         _ => return None,
     })
-}
-
-/// `glShadeModel`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ShadeModel {
-    Flat,
-    Smooth,
 }
 
 impl ShadeModel {
@@ -209,17 +138,6 @@ pub fn shade_model(e: GLenum) -> Option<ShadeModel> {
     })
 }
 
-/// Texture targets that can be enabled and bound.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TextureTarget {
-    T1D = 0,
-    T2D = 1,
-    T3D = 2,
-    CubeMap = 3,
-    /// ARB_texture_rectangle: one level, coordinates in texels.
-    Rectangle = 4,
-}
-
 pub fn texture_target(e: GLenum) -> Option<TextureTarget> {
     Some(match e {
         GL_TEXTURE_1D => TextureTarget::T1D,
@@ -229,47 +147,6 @@ pub fn texture_target(e: GLenum) -> Option<TextureTarget> {
         GL_TEXTURE_RECTANGLE_ARB => TextureTarget::Rectangle,
         _ => return None,
     })
-}
-
-/// Capabilities of `glEnable`/`glDisable`/`glIsEnabled` that tilegl implements.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Capability {
-    DepthTest,
-    CullFace,
-    ScissorTest,
-    ClipPlane(usize),
-    Dither,
-    Normalize,
-    RescaleNormal,
-    /// A texture target on the active unit.
-    Texture(TextureTarget),
-    AlphaTest,
-    StencilTest,
-    Blend,
-    ColorLogicOp,
-    IndexLogicOp,
-    Lighting,
-    Light(usize),
-    ColorMaterial,
-    ColorSum,
-    /// `GL_TEXTURE_GEN_S` .. `Q` of the active unit.
-    TexGen(usize),
-    Fog,
-    PointSmooth,
-    LineSmooth,
-    PolygonSmooth,
-    LineStipple,
-    PolygonStipple,
-    PolygonOffsetFill,
-    PolygonOffsetLine,
-    PolygonOffsetPoint,
-    /// `GL_MULTISAMPLE` and the sample coverage enables (`convert::state_ext`).
-    Multisample(MultisampleCap),
-    /// `GL_MAP1_*` evaluator enables.
-    Map1(EvalTarget),
-    /// `GL_MAP2_*` evaluator enables.
-    Map2(EvalTarget),
-    AutoNormal,
 }
 
 pub fn capability(e: GLenum) -> Option<Capability> {
@@ -317,18 +194,6 @@ pub fn capability(e: GLenum) -> Option<Capability> {
     })
 }
 
-/// `glHint` targets and modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum HintTarget {
-    PerspectiveCorrection,
-    PointSmooth,
-    LineSmooth,
-    PolygonSmooth,
-    Fog,
-    GenerateMipmap,
-    TextureCompression,
-}
-
 pub fn hint_target(e: GLenum) -> Option<HintTarget> {
     use HintTarget::*;
     Some(match e {
@@ -347,15 +212,6 @@ pub fn hint_mode(e: GLenum) -> Option<GLenum> {
     matches!(e, GL_FASTEST | GL_NICEST | GL_DONT_CARE).then_some(e)
 }
 
-/// `glGetString` names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum StringName {
-    Vendor,
-    Renderer,
-    Version,
-    Extensions,
-}
-
 pub fn string_name(e: GLenum) -> Option<StringName> {
     Some(match e {
         GL_VENDOR => StringName::Vendor,
@@ -364,35 +220,6 @@ pub fn string_name(e: GLenum) -> Option<StringName> {
         GL_EXTENSIONS => StringName::Extensions,
         _ => return None,
     })
-}
-
-/// Pixel formats accepted by `glReadPixels` so far.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelFormat {
-    Red,
-    Green,
-    Blue,
-    Alpha,
-    Rgb,
-    Rgba,
-    Bgr,
-    Bgra,
-    Luminance,
-    LuminanceAlpha,
-    DepthComponent,
-    StencilIndex,
-}
-
-impl PixelFormat {
-    pub fn components(self) -> usize {
-        use PixelFormat::*;
-        match self {
-            Red | Green | Blue | Alpha | Luminance | DepthComponent | StencilIndex => 1,
-            LuminanceAlpha => 2,
-            Rgb | Bgr => 3,
-            Rgba | Bgra => 4,
-        }
-    }
 }
 
 pub fn pixel_format(e: GLenum) -> Option<PixelFormat> {
@@ -414,29 +241,6 @@ pub fn pixel_format(e: GLenum) -> Option<PixelFormat> {
     })
 }
 
-/// Component types of pixel transfers (the unpacked ones; packed types come with texturing).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelType {
-    UnsignedByte,
-    Byte,
-    UnsignedShort,
-    Short,
-    UnsignedInt,
-    Int,
-    Float,
-}
-
-impl PixelType {
-    pub fn size(self) -> usize {
-        use PixelType::*;
-        match self {
-            UnsignedByte | Byte => 1,
-            UnsignedShort | Short => 2,
-            UnsignedInt | Int | Float => 4,
-        }
-    }
-}
-
 pub fn pixel_type(e: GLenum) -> Option<PixelType> {
     use PixelType::*;
     Some(match e {
@@ -449,19 +253,6 @@ pub fn pixel_type(e: GLenum) -> Option<PixelType> {
         GL_FLOAT => Float,
         _ => return None,
     })
-}
-
-/// `glPixelStore` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelStoreParam {
-    Alignment { pack: bool },
-    RowLength { pack: bool },
-    SkipPixels { pack: bool },
-    SkipRows { pack: bool },
-    SkipImages { pack: bool },
-    ImageHeight { pack: bool },
-    SwapBytes { pack: bool },
-    LsbFirst { pack: bool },
 }
 
 pub fn pixel_store_param(e: GLenum) -> Option<PixelStoreParam> {
@@ -487,15 +278,6 @@ pub fn pixel_store_param(e: GLenum) -> Option<PixelStoreParam> {
     })
 }
 
-/// Buffers cleared by `glClear`, from its bit mask. `None` when undefined bits are set.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
-pub struct ClearMask {
-    pub color: bool,
-    pub depth: bool,
-    pub stencil: bool,
-    pub accum: bool,
-}
-
 pub fn clear_mask(mask: u32) -> Option<ClearMask> {
     let known =
         GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
@@ -508,119 +290,6 @@ pub fn clear_mask(mask: u32) -> Option<ClearMask> {
         stencil: mask & GL_STENCIL_BUFFER_BIT != 0,
         accum: mask & GL_ACCUM_BUFFER_BIT != 0,
     })
-}
-
-/// State readable with `glGet*` so far.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Query {
-    Enabled(Capability),
-    Viewport,
-    DepthRange,
-    ModelviewMatrix,
-    ProjectionMatrix,
-    TextureMatrix,
-    TransposeModelviewMatrix,
-    TransposeProjectionMatrix,
-    TransposeTextureMatrix,
-    ModelviewStackDepth,
-    ProjectionStackDepth,
-    TextureStackDepth,
-    MaxModelviewStackDepth,
-    MaxProjectionStackDepth,
-    MaxTextureStackDepth,
-    MaxViewportDims,
-    MaxClipPlanes,
-    MaxTextureUnits,
-    ColorClearValue,
-    AccumClearValue,
-    DepthClearValue,
-    StencilClearValue,
-    DepthFunc,
-    DepthWritemask,
-    ColorWritemask,
-    StencilWritemask,
-    ScissorBox,
-    CullFaceMode,
-    FrontFace,
-    ShadeModel,
-    MatrixMode,
-    CurrentColor,
-    CurrentSecondaryColor,
-    CurrentNormal,
-    CurrentTextureCoords,
-    CurrentFogCoord,
-    EdgeFlag,
-    RedBits,
-    GreenBits,
-    BlueBits,
-    AlphaBits,
-    DepthBits,
-    StencilBits,
-    AccumRedBits,
-    AccumGreenBits,
-    AccumBlueBits,
-    AccumAlphaBits,
-    IndexBits,
-    SubpixelBits,
-    AuxBuffers,
-    Hint(HintTarget),
-    PixelStore(PixelStoreParam),
-    Doublebuffer,
-    Stereo,
-    DrawBuffer,
-    ReadBuffer,
-    RgbaMode,
-    IndexMode,
-    PointSize,
-    PointSizeRange,
-    PointSizeGranularity,
-    LineWidth,
-    LineWidthRange,
-    LineWidthGranularity,
-    ActiveTexture,
-    ClientActiveTexture,
-    MaxAttribStackDepth,
-    SampleBuffers,
-    Samples,
-    AlphaTestFunc,
-    AlphaTestRef,
-    StencilFunc,
-    StencilValueMask,
-    StencilRef,
-    StencilFail,
-    StencilPassDepthFail,
-    StencilPassDepthPass,
-    BlendSrcRgb,
-    BlendDstRgb,
-    BlendSrcAlpha,
-    BlendDstAlpha,
-    BlendEquationRgb,
-    BlendEquationAlpha,
-    BlendColor,
-    LogicOpMode,
-    MaxLights,
-    LightModelAmbient,
-    LightModelLocalViewer,
-    LightModelTwoSide,
-    LightModelColorControl,
-    ColorMaterialFace,
-    ColorMaterialParameter,
-    Fog(FogParam),
-    PolygonMode,
-    PolygonOffsetFactor,
-    PolygonOffsetUnits,
-    LineStipplePattern,
-    LineStippleRepeat,
-    AliasedPointSizeRange,
-    AliasedLineWidthRange,
-    PointParam(PointParam),
-    PixelRect(PixelRectQuery),
-    /// Vertex arrays, buffer bindings and display lists (`convert::arrays`).
-    Arrays(ArrayQuery),
-    /// Attribute stack, multisample, selection and feedback (`convert::state_ext`).
-    StateExt(StateExtQuery),
-    /// Evaluator grids and limits (`convert::eval`).
-    Eval(EvalQuery),
 }
 
 /// The `glGet*` query for `pname`.
@@ -754,19 +423,6 @@ pub fn texture_unit_enum(unit: usize) -> GLenum {
     GL_TEXTURE0 + unit as GLenum
 }
 
-/// `glStencilOp` actions (section 4.1.5), including the wrapping ones of GL 1.4.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum StencilOp {
-    Keep,
-    Zero,
-    Replace,
-    Incr,
-    Decr,
-    Invert,
-    IncrWrap,
-    DecrWrap,
-}
-
 impl StencilOp {
     pub fn to_gl(self) -> GLenum {
         use StencilOp::*;
@@ -796,26 +452,6 @@ pub fn stencil_op(e: GLenum) -> Option<StencilOp> {
         GL_DECR_WRAP => DecrWrap,
         _ => return None,
     })
-}
-
-/// Blend factors (tables 4.1 and 4.2), including the constant-colour factors.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BlendFactor {
-    Zero,
-    One,
-    SrcColor,
-    OneMinusSrcColor,
-    DstColor,
-    OneMinusDstColor,
-    SrcAlpha,
-    OneMinusSrcAlpha,
-    DstAlpha,
-    OneMinusDstAlpha,
-    ConstantColor,
-    OneMinusConstantColor,
-    ConstantAlpha,
-    OneMinusConstantAlpha,
-    SrcAlphaSaturate,
 }
 
 impl BlendFactor {
@@ -865,16 +501,6 @@ pub fn blend_factor(e: GLenum, source: bool) -> Option<BlendFactor> {
     })
 }
 
-/// Blend equations (`glBlendEquation`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BlendEquation {
-    Add,
-    Subtract,
-    ReverseSubtract,
-    Min,
-    Max,
-}
-
 impl BlendEquation {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -898,52 +524,7 @@ pub fn blend_equation(e: GLenum) -> Option<BlendEquation> {
     })
 }
 
-/// The sixteen logic operations (table 4.3).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum LogicOp {
-    Clear,
-    And,
-    AndReverse,
-    Copy,
-    AndInverted,
-    Noop,
-    Xor,
-    Or,
-    Nor,
-    Equiv,
-    Invert,
-    OrReverse,
-    CopyInverted,
-    OrInverted,
-    Nand,
-    Set,
-}
-
 impl LogicOp {
-    /// Applies the operation to source `s` and destination `d`.
-    #[inline(always)]
-    pub fn apply(self, s: u8, d: u8) -> u8 {
-        use LogicOp::*;
-        match self {
-            Clear => 0,
-            And => s & d,
-            AndReverse => s & !d,
-            Copy => s,
-            AndInverted => !s & d,
-            Noop => d,
-            Xor => s ^ d,
-            Or => s | d,
-            Nor => !(s | d),
-            Equiv => !(s ^ d),
-            Invert => !d,
-            OrReverse => s | !d,
-            CopyInverted => !s,
-            OrInverted => !s | d,
-            Nand => !(s & d),
-            Set => 0xFF,
-        }
-    }
-
     pub fn to_gl(self) -> GLenum {
         GL_CLEAR + self as GLenum
     }
@@ -974,41 +555,6 @@ pub fn logic_op(e: GLenum) -> Option<LogicOp> {
         .and_then(|i| OPS.get(i as usize).copied())
 }
 
-/// `glLight` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LightParam {
-    Ambient,
-    Diffuse,
-    Specular,
-    Position,
-    SpotDirection,
-    SpotExponent,
-    SpotCutoff,
-    ConstantAttenuation,
-    LinearAttenuation,
-    QuadraticAttenuation,
-}
-
-impl LightParam {
-    /// Values the parameter takes.
-    pub fn count(self) -> usize {
-        use LightParam::*;
-        match self {
-            Ambient | Diffuse | Specular | Position => 4,
-            SpotDirection => 3,
-            _ => 1,
-        }
-    }
-
-    /// Whether integer forms map the values like colours (table 2.6 style).
-    pub fn is_color(self) -> bool {
-        matches!(
-            self,
-            LightParam::Ambient | LightParam::Diffuse | LightParam::Specular
-        )
-    }
-}
-
 pub fn light_param(e: GLenum) -> Option<LightParam> {
     use LightParam::*;
     Some(match e {
@@ -1030,28 +576,6 @@ pub fn light_param(e: GLenum) -> Option<LightParam> {
 pub fn light_index(e: GLenum) -> Option<usize> {
     let i = e.checked_sub(GL_LIGHT0)? as usize;
     (i < 8).then_some(i)
-}
-
-/// `glMaterial` parameters (colour indexes are accepted and ignored: no index mode).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum MaterialParam {
-    Ambient,
-    Diffuse,
-    Specular,
-    Emission,
-    Shininess,
-    AmbientAndDiffuse,
-    ColorIndexes,
-}
-
-impl MaterialParam {
-    pub fn count(self) -> usize {
-        match self {
-            MaterialParam::Shininess => 1,
-            MaterialParam::ColorIndexes => 3,
-            _ => 4,
-        }
-    }
 }
 
 pub fn material_param(e: GLenum) -> Option<MaterialParam> {
@@ -1096,15 +620,6 @@ impl MaterialParam {
     }
 }
 
-/// `glLightModel` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LightModelParam {
-    Ambient,
-    LocalViewer,
-    TwoSide,
-    ColorControl,
-}
-
 pub fn light_model_param(e: GLenum) -> Option<LightModelParam> {
     Some(match e {
         GL_LIGHT_MODEL_AMBIENT => LightModelParam::Ambient,
@@ -1122,19 +637,6 @@ pub fn separate_specular(e: GLenum) -> Option<bool> {
         GL_SEPARATE_SPECULAR_COLOR => Some(true),
         _ => None,
     }
-}
-
-/// `GL_TEXTURE_ENV_MODE` values (section 3.8.13).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TexEnvMode {
-    Replace,
-    Modulate,
-    Decal,
-    Blend,
-    Add,
-    Combine,
-    /// NV_texture_env_combine4: `GL_COMBINE` with a fourth argument.
-    Combine4,
 }
 
 impl TexEnvMode {
@@ -1162,19 +664,6 @@ pub fn tex_env_mode(e: GLenum) -> Option<TexEnvMode> {
         GL_COMBINE4_NV => TexEnvMode::Combine4,
         _ => return None,
     })
-}
-
-/// `GL_COMBINE_RGB` / `GL_COMBINE_ALPHA` functions (DOT3 only for RGB).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CombineFunc {
-    Replace,
-    Modulate,
-    Add,
-    AddSigned,
-    Interpolate,
-    Subtract,
-    Dot3Rgb,
-    Dot3Rgba,
 }
 
 impl CombineFunc {
@@ -1208,18 +697,6 @@ pub fn combine_func(e: GLenum, rgb: bool) -> Option<CombineFunc> {
     })
 }
 
-/// Combiner sources: `TEXTURE`, `TEXTUREn` (crossbar), `CONSTANT`, `PRIMARY_COLOR`, `PREVIOUS`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CombineSource {
-    Texture,
-    TextureUnit(u8),
-    Constant,
-    PrimaryColor,
-    Previous,
-    /// `GL_ZERO` (NV_texture_env_combine4).
-    Zero,
-}
-
 impl CombineSource {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -1247,15 +724,6 @@ pub fn combine_source(e: GLenum) -> Option<CombineSource> {
     })
 }
 
-/// Combiner operands: the value, its complement, or (for RGB) the alpha or its complement.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum CombineOperand {
-    SrcColor,
-    OneMinusSrcColor,
-    SrcAlpha,
-    OneMinusSrcAlpha,
-}
-
 impl CombineOperand {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -1275,28 +743,6 @@ pub fn combine_operand(e: GLenum, rgb: bool) -> Option<CombineOperand> {
         GL_ONE_MINUS_SRC_ALPHA => CombineOperand::OneMinusSrcAlpha,
         _ => return None,
     })
-}
-
-/// `glTexEnv` targets and parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TexEnvParam {
-    Mode,
-    Color,
-    LodBias,
-    CombineRgb,
-    CombineAlpha,
-    /// `GL_SOURCEn_RGB` / `GL_SOURCEn_ALPHA`.
-    Source {
-        rgb: bool,
-        n: usize,
-    },
-    /// `GL_OPERANDn_RGB` / `GL_OPERANDn_ALPHA`.
-    Operand {
-        rgb: bool,
-        n: usize,
-    },
-    RgbScale,
-    AlphaScale,
 }
 
 /// `glTexEnv(target, pname)`: target `GL_TEXTURE_ENV` takes the environment parameters,
@@ -1340,16 +786,6 @@ pub fn texture_unit(e: GLenum) -> Option<usize> {
     (i < 8).then_some(i)
 }
 
-/// `glTexGen` modes (section 2.11.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TexGenMode {
-    ObjectLinear,
-    EyeLinear,
-    SphereMap,
-    ReflectionMap,
-    NormalMap,
-}
-
 impl TexGenMode {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -1386,14 +822,6 @@ pub fn tex_gen_coord(e: GLenum) -> Option<usize> {
     })
 }
 
-/// `glTexGen` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TexGenParam {
-    Mode,
-    ObjectPlane,
-    EyePlane,
-}
-
 pub fn tex_gen_param(e: GLenum) -> Option<TexGenParam> {
     Some(match e {
         GL_TEXTURE_GEN_MODE => TexGenParam::Mode,
@@ -1401,14 +829,6 @@ pub fn tex_gen_param(e: GLenum) -> Option<TexGenParam> {
         GL_EYE_PLANE => TexGenParam::EyePlane,
         _ => return None,
     })
-}
-
-/// Fog equations (section 3.10).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum FogMode {
-    Linear,
-    Exp,
-    Exp2,
 }
 
 impl FogMode {
@@ -1428,18 +848,6 @@ pub fn fog_mode(e: GLenum) -> Option<FogMode> {
         GL_EXP2 => FogMode::Exp2,
         _ => return None,
     })
-}
-
-/// `glFog` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FogParam {
-    Mode,
-    Density,
-    Start,
-    End,
-    Index,
-    Color,
-    CoordSource,
 }
 
 pub fn fog_param(e: GLenum) -> Option<FogParam> {
@@ -1465,14 +873,6 @@ pub fn fog_coord_source(e: GLenum) -> Option<bool> {
     }
 }
 
-/// `glPolygonMode` modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PolygonMode {
-    Point,
-    Line,
-    Fill,
-}
-
 impl PolygonMode {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -1492,15 +892,6 @@ pub fn polygon_mode(e: GLenum) -> Option<PolygonMode> {
     })
 }
 
-/// `glPointParameter` parameters (GL 1.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PointParam {
-    SizeMin,
-    SizeMax,
-    FadeThresholdSize,
-    DistanceAttenuation,
-}
-
 pub fn point_param(e: GLenum) -> Option<PointParam> {
     Some(match e {
         GL_POINT_SIZE_MIN => PointParam::SizeMin,
@@ -1509,23 +900,6 @@ pub fn point_param(e: GLenum) -> Option<PointParam> {
         GL_POINT_DISTANCE_ATTENUATION => PointParam::DistanceAttenuation,
         _ => return None,
     })
-}
-
-/// The colour buffer names of `glDrawBuffer` / `glReadBuffer` (table 4.4 of the GL 1.5 spec).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ColorBufferName {
-    None,
-    FrontLeft,
-    FrontRight,
-    BackLeft,
-    BackRight,
-    Front,
-    Back,
-    Left,
-    Right,
-    FrontAndBack,
-    /// `GL_AUXi`.
-    Aux(u32),
 }
 
 pub fn color_buffer_name(e: GLenum) -> Option<ColorBufferName> {
@@ -1546,16 +920,6 @@ pub fn color_buffer_name(e: GLenum) -> Option<ColorBufferName> {
     })
 }
 
-/// `glAccum` operations (section 4.2.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AccumOp {
-    Accum,
-    Load,
-    Return,
-    Mult,
-    Add,
-}
-
 pub fn accum_op(op: GLenum) -> Option<AccumOp> {
     Some(match op {
         GL_ACCUM => AccumOp::Accum,
@@ -1565,20 +929,6 @@ pub fn accum_op(op: GLenum) -> Option<AccumOp> {
         GL_ADD => AccumOp::Add,
         _ => return None,
     })
-}
-
-/// `glPixelTransfer` parameters (section 3.6.3, table 3.2; the imaging subset is absent).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelTransferParam {
-    MapColor,
-    MapStencil,
-    IndexShift,
-    IndexOffset,
-    /// RGBA component index.
-    Scale(usize),
-    Bias(usize),
-    DepthScale,
-    DepthBias,
 }
 
 pub fn pixel_transfer_param(e: GLenum) -> Option<PixelTransferParam> {
@@ -1602,58 +952,6 @@ pub fn pixel_transfer_param(e: GLenum) -> Option<PixelTransferParam> {
     })
 }
 
-/// The ten pixel maps of `glPixelMap` (table 3.3), in this order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelMap {
-    IToI,
-    SToS,
-    IToR,
-    IToG,
-    IToB,
-    IToA,
-    RToR,
-    GToG,
-    BToB,
-    AToA,
-}
-
-impl PixelMap {
-    pub const ALL: [PixelMap; 10] = [
-        PixelMap::IToI,
-        PixelMap::SToS,
-        PixelMap::IToR,
-        PixelMap::IToG,
-        PixelMap::IToB,
-        PixelMap::IToA,
-        PixelMap::RToR,
-        PixelMap::GToG,
-        PixelMap::BToB,
-        PixelMap::AToA,
-    ];
-
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// Maps indexed by a colour or stencil index: their size must be a power of two.
-    pub fn indexed_by_index(self) -> bool {
-        matches!(
-            self,
-            PixelMap::IToI
-                | PixelMap::SToS
-                | PixelMap::IToR
-                | PixelMap::IToG
-                | PixelMap::IToB
-                | PixelMap::IToA
-        )
-    }
-
-    /// Maps whose values are indices (integers) rather than colour components.
-    pub fn holds_indices(self) -> bool {
-        matches!(self, PixelMap::IToI | PixelMap::SToS)
-    }
-}
-
 pub fn pixel_map(e: GLenum) -> Option<PixelMap> {
     use PixelMap::*;
     Some(match e {
@@ -1669,22 +967,6 @@ pub fn pixel_map(e: GLenum) -> Option<PixelMap> {
         GL_PIXEL_MAP_A_TO_A => AToA,
         _ => return None,
     })
-}
-
-/// Pixel-rectangle state queries (tables 6.5, 6.17, 6.18).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelRectQuery {
-    Transfer(PixelTransferParam),
-    MapSize(PixelMap),
-    MaxPixelMapTable,
-    ZoomX,
-    ZoomY,
-    RasterPosition,
-    RasterPositionValid,
-    RasterColor,
-    RasterTextureCoords,
-    RasterDistance,
-    RasterIndex,
 }
 
 pub fn pixel_rect_query(e: GLenum) -> Option<PixelRectQuery> {
@@ -1716,14 +998,6 @@ pub fn pixel_rect_query(e: GLenum) -> Option<PixelRectQuery> {
     })
 }
 
-/// `glCopyPixels` types (section 4.3.3).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CopyPixelsType {
-    Color,
-    Depth,
-    Stencil,
-}
-
 pub fn copy_pixels_type(e: GLenum) -> Option<CopyPixelsType> {
     Some(match e {
         GL_COLOR => CopyPixelsType::Color,
@@ -1731,15 +1005,6 @@ pub fn copy_pixels_type(e: GLenum) -> Option<CopyPixelsType> {
         GL_STENCIL => CopyPixelsType::Stencil,
         _ => return None,
     })
-}
-
-/// Client data of `glDrawPixels`: a colour/depth format the texture path unpacks, or indices.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DrawPixelsFormat {
-    Color(texture::TexPixelFormat),
-    Depth,
-    StencilIndex,
-    ColorIndex,
 }
 
 pub fn draw_pixels_format(e: GLenum) -> Option<DrawPixelsFormat> {
@@ -1751,19 +1016,12 @@ pub fn draw_pixels_format(e: GLenum) -> Option<DrawPixelsFormat> {
     })
 }
 
-/// Component types of index data (`GL_BITMAP` is one bit per index).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PixelIndexType {
-    Bitmap,
-    Plain(texture::TexPixelType),
-}
-
 pub fn pixel_index_type(e: GLenum) -> Option<PixelIndexType> {
     if e == GL_BITMAP {
         return Some(PixelIndexType::Bitmap);
     }
     match texture::tex_pixel_type(e)? {
-        texture::TexPixelType::Packed(_) => None,
+        TexPixelType::Packed(_) => None,
         t => Some(PixelIndexType::Plain(t)),
     }
 }

@@ -1,8 +1,8 @@
 //! Blending (section 4.1.8) and the logic operation (4.1.10) on 8-bit colour.
 
 use super::key::BlendKey;
-use super::span::color_to_u8;
-use crate::api::convert::{BlendEquation, BlendFactor};
+use crate::common::fixed::color_to_u8;
+use crate::common::values::{BlendEquation, BlendFactor};
 
 /// The factor for one channel; `alpha` selects the alpha channel's rule.
 #[inline(always)]

@@ -8,7 +8,7 @@ use super::span::{
     span_specialised, span_textured, span_untextured8, tail8_applies, tex_mode,
     untextured8_applies, PairFn, SpanFn,
 };
-use crate::api::convert::CompareFunc;
+use crate::common::values::CompareFunc;
 
 /// The span function for `key`; `force_general` always answers the general path.
 pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {

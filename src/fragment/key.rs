@@ -2,7 +2,7 @@
 //! a span function is chosen for it; `Uniforms`: the per-draw values (references, masks,
 //! constant colour) that change no code path.
 
-use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp, StencilOp};
+use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp, StencilOp};
 use crate::state::tables::FragmentOpsState;
 
 /// The stencil test and its three actions.

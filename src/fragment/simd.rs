@@ -5,8 +5,8 @@
 //! does the arithmetic of the general fragment path in the same order and precision, so the
 //! pixels are identical (twin tests in `tests/raster.rs`).
 
-use crate::api::convert::{CompareFunc, FogMode};
 use crate::common::cpu::available;
+use crate::common::values::{CompareFunc, FogMode};
 use crate::fragment::key::BlendKey;
 use crate::texture::simd::{Level8, Texels8};
 
@@ -215,7 +215,7 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{After8, Sampling8, Tail8};
-    use crate::api::convert::{BlendEquation, BlendFactor, CompareFunc, FogMode};
+    use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
     use crate::state::snapshot::EXP2_TAYLOR;
     use crate::texture::simd::x86::{block_coords8, coords8, filter8, filter8_regs, lane_mask};
     use crate::texture::simd::{Level8, Texels8};
@@ -592,7 +592,7 @@ mod x86 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fragment::span::depth_to_fixed;
+    use crate::common::fixed::depth_to_fixed;
     use crate::state::snapshot::{fog_exp, FogDraw};
 
     /// `fog_factors8` gives `FogDraw::factor`'s values bit for bit, for every mode, several

@@ -2,7 +2,7 @@
 //! previous unit (the primary colour for the first) with its texel, by the unit's mode, or by
 //! the programmable `GL_COMBINE` functions (table 3.24, with ARB_texture_env_crossbar sources).
 
-use crate::api::convert::{CombineFunc, CombineOperand, CombineSource, TexEnvMode};
+use crate::common::values::{CombineFunc, CombineOperand, CombineSource, TexEnvMode};
 use crate::state::texenv::{Combine, TexEnv};
 use crate::texture::format::BaseFormat;
 
@@ -378,7 +378,7 @@ pub fn combine<L: Lanes>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::convert::{CombineFunc as F, CombineOperand as O, CombineSource as S};
+    use crate::common::values::{CombineFunc as F, CombineOperand as O, CombineSource as S};
 
     /// A small deterministic generator (values in [-0.25, 1.25], to reach the clamps).
     struct Gen(u64);

@@ -4,9 +4,10 @@
 //! nearest; results outside [-1, 1] saturate, which is where the spec leaves overflow
 //! undefined). `glAccum` works immediately on the flushed framebuffer, inside the scissor box.
 
-use crate::api::convert::{self, AccumOp};
+use crate::api::convert;
 use crate::api::enums::*;
-use crate::fragment::span::color_to_u8;
+use crate::common::fixed::color_to_u8;
+use crate::common::values::AccumOp;
 use crate::state::Context;
 
 /// Scale of the fixed-point accumulation values.

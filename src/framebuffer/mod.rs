@@ -38,9 +38,9 @@ impl Tile {
     }
 
     /// The window pixels the tile covers.
-    pub fn rect(&self) -> crate::raster::setup::Rect {
+    pub fn rect(&self) -> crate::common::rect::Rect {
         let t = TILE as i32;
-        crate::raster::setup::Rect {
+        crate::common::rect::Rect {
             x0: self.x0,
             y0: self.y0,
             x1: self.x0 + t,

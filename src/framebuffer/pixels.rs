@@ -1,8 +1,9 @@
 //! `glClear` recording and `glReadPixels`.
 
-use crate::api::convert::{self, ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
+use crate::api::convert;
 use crate::api::enums::*;
-use crate::fragment::span::{color_to_u8, depth_to_fixed};
+use crate::common::fixed::{color_to_u8, depth_to_fixed};
+use crate::common::values::{ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
 use crate::raster::scene::{ClearCommand, Command};
 use crate::state::Context;
 use crate::texture::pixels as texpix;

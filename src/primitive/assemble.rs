@@ -1,7 +1,7 @@
 //! Splits a vertex sequence of one of the ten primitive modes into points, lines and
 //! triangles, with the provoking vertex of each for flat shading (OpenGL 1.5 table 2.9).
 
-use crate::api::convert::PrimitiveMode;
+use crate::common::values::PrimitiveMode;
 
 /// One assembled primitive: vertex indices and the provoking vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,6 +1,6 @@
 //! Facing and culling (section 3.5.1): the sign of the window-space area decides the face.
 
-use crate::api::convert::{Face, Winding};
+use crate::common::values::{Face, Winding};
 
 /// Twice the signed area of a polygon given in fixed-point window coordinates (y up):
 /// positive for counter-clockwise.

@@ -1,7 +1,7 @@
 //! Perspective division and the viewport transformation (section 2.11.1).
 
 use super::clip::ClipVertex;
-use crate::raster::setup::to_fixed;
+use crate::common::fixed::to_fixed;
 use crate::state::DrawState;
 
 /// A vertex in window coordinates.
@@ -67,7 +67,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use super::{ClipVertex, DrawState, WindowVertex};
-    use crate::raster::setup::SUBPIXEL;
+    use crate::common::fixed::SUBPIXEL;
     use std::arch::x86_64::*;
 
     /// [`super::guard_band_windows`] of four vertices (`clip` and `out` hold four), without

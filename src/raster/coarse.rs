@@ -9,10 +9,11 @@
 //! The block maxima live with the worker shading one tile of one scene (the tile is its alone
 //! then), are computed on first use and forgotten for the blocks a command may write depth to.
 
-use super::setup::{Plane, Rect};
-use crate::api::convert::CompareFunc;
+use super::setup::Plane;
+use crate::common::fixed::depth_to_fixed;
+use crate::common::rect::Rect;
+use crate::common::values::CompareFunc;
 use crate::fragment::key::FragmentKey;
-use crate::fragment::span::depth_to_fixed;
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
 

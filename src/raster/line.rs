@@ -16,11 +16,11 @@
 //! Attributes are interpolated perspective-correctly along the line.
 
 use super::point::{add_constant_planes, bin_rect, emit_rect};
-use super::setup::SUBPIXEL;
+use crate::common::fixed::SUBPIXEL;
+use crate::common::limits;
 use crate::primitive::viewport::WindowVertex;
 use crate::raster::scene::Scene;
 use crate::state::snapshot::MAX_ATTRS;
-use crate::state::tables::limits;
 use crate::state::DrawState;
 
 /// Whether the stipple lets fragment number `counter` through.

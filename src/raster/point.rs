@@ -10,10 +10,12 @@
 use glam::DVec4;
 
 use super::scene::{Command, RectCommand, Scene};
-use super::setup::{Plane, Rect, SUBPIXEL};
+use super::setup::Plane;
+use crate::common::fixed::SUBPIXEL;
+use crate::common::limits;
+use crate::common::rect::Rect;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::RasterDraw;
-use crate::state::tables::limits;
 use crate::state::DrawState;
 
 /// The derived point size for a vertex at eye position `eye` (section 3.3.1): `size *

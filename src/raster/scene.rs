@@ -4,7 +4,8 @@
 use std::sync::Arc;
 
 use super::prefetch;
-use super::setup::{Edge, Plane, Rect};
+use super::setup::{Edge, Plane};
+use crate::common::rect::Rect;
 use crate::framebuffer::{Framebuffer, TILE};
 use crate::state::DrawState;
 

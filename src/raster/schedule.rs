@@ -549,8 +549,8 @@ fn clear_tile(c: &ClearCommand, tile: &mut Tile) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::common::rect::Rect;
     use crate::framebuffer::{Framebuffer, FramebufferConfig};
-    use crate::raster::setup::Rect;
 
     /// A scene that clears the whole `fb` to `color`.
     fn clear_scene(fb: &Framebuffer, color: [u8; 4]) -> Scene {

@@ -1,34 +1,7 @@
 //! Primitive setup: fixed-point window coordinates (8 sub-pixel bits), 64-bit edge functions
 //! and attribute planes.
 
-use crate::state::tables::limits::SUBPIXEL_BITS;
-
-/// Sub-pixel units per pixel.
-pub const SUBPIXEL: i64 = 1 << SUBPIXEL_BITS;
-
-/// A pixel rectangle `[x0, x1) x [y0, y1)` in window coordinates.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Rect {
-    pub x0: i32,
-    pub y0: i32,
-    pub x1: i32,
-    pub y1: i32,
-}
-
-impl Rect {
-    pub fn intersect(&self, o: &Rect) -> Rect {
-        Rect {
-            x0: self.x0.max(o.x0),
-            y0: self.y0.max(o.y0),
-            x1: self.x1.min(o.x1),
-            y1: self.y1.min(o.y1),
-        }
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.x0 >= self.x1 || self.y0 >= self.y1
-    }
-}
+use crate::common::fixed::SUBPIXEL;
 
 /// A linear function of window position: `a*x + b*y + c`, evaluated at pixel centres.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -122,21 +95,6 @@ impl Edge {
             c: dy * p[0] - dx * p[1],
         };
         (edge, u8::from(!top_left))
-    }
-}
-
-/// Snaps a window coordinate to fixed point. Callers pass clipped coordinates, which are finite
-/// and bounded by the viewport.
-#[inline]
-pub fn to_fixed(v: f64) -> i64 {
-    // `f64::round` (halves away from zero) without the libm call it becomes on x86-64
-    // without SSE4.1: shift by a half towards the sign, then truncate. Exact for |t| < 2^52,
-    // which clipping guarantees.
-    let t = v * SUBPIXEL as f64;
-    if t >= 0.0 {
-        (t + 0.5) as i64
-    } else {
-        (t - 0.5) as i64
     }
 }
 

@@ -2,7 +2,8 @@
 //! three edge functions directly (triangles are convex), then handed to the span function.
 
 use super::scene::TriangleCommand;
-use super::setup::{Edge, Plane, SUBPIXEL};
+use super::setup::{Edge, Plane};
+use crate::common::fixed::SUBPIXEL;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{Tile, TILE};
 use crate::state::DrawState;
@@ -269,8 +270,9 @@ fn stippled_row<'a>(
 }
 
 use super::scene::{Command, Scene};
-use super::setup::{centre_range, PlaneSetup, Rect};
-use crate::api::convert::PolygonMode;
+use super::setup::{centre_range, PlaneSetup};
+use crate::common::rect::Rect;
+use crate::common::values::PolygonMode;
 use crate::primitive::cull::triangle_area2;
 use crate::primitive::viewport::WindowVertex;
 use crate::state::snapshot::{attr, MAX_ATTRS};

@@ -8,8 +8,9 @@
 //! The defaults are `GL_BACK` for a double-buffered context and `GL_FRONT` otherwise.
 
 use super::Context;
-use crate::api::convert::{self, ColorBufferName};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::ColorBufferName;
 use crate::framebuffer::{ColorBuffer, DrawTarget};
 
 /// The `glDrawBuffer` and `glReadBuffer` settings as given (what the queries return).

@@ -27,8 +27,9 @@ use glam::{Vec3, Vec4};
 
 use super::get::StateValue;
 use super::Context;
-use crate::api::convert::{self, AnyMap, EvalMeshMode, EvalQuery, EvalTarget, GetMapQuery};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{AnyMap, EvalMeshMode, EvalQuery, EvalTarget, GetMapQuery};
 
 /// `GL_MAX_EVAL_ORDER` (the specification asks for at least 8; Mesa has 30).
 pub const MAX_EVAL_ORDER: i32 = 30;

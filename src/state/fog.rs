@@ -1,8 +1,9 @@
 //! Fog state and entry points (section 3.10): `glFog*`, `glFogCoord*`.
 
 use super::Context;
-use crate::api::convert::{self, FogMode, FogParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{FogMode, FogParam};
 
 /// Table 6.14.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,8 +2,9 @@
 
 use super::tables::limits;
 use super::Context;
-use crate::api::convert::{self, PixelStoreParam, Query};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{PixelStoreParam, Query};
 use glam::Mat4;
 
 /// A state value in its natural type, before conversion to the requested one.
@@ -185,7 +186,7 @@ impl Context {
             Query::SubpixelBits => int1(limits::SUBPIXEL_BITS as i64),
             Query::AuxBuffers => int1(0),
             Query::Hint(h) => {
-                use crate::api::convert::HintTarget::*;
+                use crate::common::values::HintTarget::*;
                 let hs = &self.hints;
                 Enum(match h {
                     PerspectiveCorrection => hs.perspective_correction,
@@ -262,7 +263,7 @@ impl Context {
                 GL_SINGLE_COLOR
             }),
             Query::Fog(p) => {
-                use crate::api::convert::FogParam;
+                use crate::common::values::FogParam;
                 let f = &self.fog;
                 match p {
                     FogParam::Mode => Enum(f.mode.to_gl()),
@@ -290,7 +291,7 @@ impl Context {
                 Floats(limits::LINE_WIDTH_RANGE.map(|v| v as f64).to_vec())
             }
             Query::PointParam(p) => {
-                use crate::api::convert::PointParam;
+                use crate::common::values::PointParam;
                 let r = &self.raster;
                 match p {
                     PointParam::SizeMin => Floats(vec![r.point_size_min as f64]),

@@ -5,8 +5,9 @@
 use glam::{Mat3, Vec3, Vec4};
 
 use super::Context;
-use crate::api::convert::{self, Face, LightModelParam, LightParam, MaterialParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{Face, LightModelParam, LightParam, MaterialParam};
 
 /// One light source (table 6.10); position and spot direction in eye coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]

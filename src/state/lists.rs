@@ -32,8 +32,9 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use super::Context;
-use crate::api::convert::{self, ListNameType};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::ListNameType;
 
 /// `GL_MAX_LIST_NESTING`.
 pub const MAX_LIST_NESTING: u32 = 64;

@@ -6,8 +6,9 @@ use glam::{DMat4, DVec4, Mat4, Vec3};
 
 use super::tables::{limits, Viewport};
 use super::Context;
-use crate::api::convert::{self, MatrixMode};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::MatrixMode;
 
 /// Inverse of `m`, or the identity when `m` is singular or not finite (Mesa does the same;
 /// the specification leaves it undefined).

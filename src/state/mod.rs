@@ -28,10 +28,11 @@ use std::collections::HashMap;
 use std::ffi::CString;
 use std::sync::Arc;
 
-use crate::api::convert::{self, Capability, HintTarget, PixelStoreParam, StringName};
+use crate::api::convert;
 use crate::api::enums::*;
 use crate::api::error::ErrorFlag;
 use crate::api::*;
+use crate::common::values::{Capability, HintTarget, PixelStoreParam, StringName};
 use crate::framebuffer::{Framebuffer, FramebufferConfig};
 use crate::raster::scene::Scene;
 use crate::vertex::immediate::ImmediateBatch;

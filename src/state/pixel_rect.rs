@@ -10,17 +10,18 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert::{
-    self, CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery,
-    PixelTransferParam, TexPixelFormat, TexPixelType,
-};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::values::{
+    CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery, PixelTransferParam,
+    TexPixelFormat, TexPixelType,
+};
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::primitive::clip::point_visible;
 use crate::raster::setup::Plane;
 use crate::state::get::StateValue;
 use crate::state::snapshot::{attr, DrawState};
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::texture::pixels as texpix;
 use crate::vertex::immediate::ImmVertex;
 use crate::vertex::transform;

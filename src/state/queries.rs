@@ -10,8 +10,9 @@
 use std::collections::{HashMap, HashSet};
 
 use super::Context;
-use crate::api::convert::{self, QueryObjectParam, QueryParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{QueryObjectParam, QueryParam};
 
 /// `GL_QUERY_COUNTER_BITS`: results are kept in 64 bits.
 pub const QUERY_COUNTER_BITS: i32 = 64;

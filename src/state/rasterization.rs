@@ -2,8 +2,9 @@
 //! stipple, polygon mode, offset and stipple, edge flags.
 
 use super::Context;
-use crate::api::convert::{self, Face, PointParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{Face, PointParam};
 
 impl Context {
     pub(crate) fn point_size(&mut self, size: GLfloat) {

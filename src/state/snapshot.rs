@@ -7,13 +7,13 @@ use std::sync::Arc;
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::{Face, PolygonMode, ShadeModel, Winding};
-use crate::api::convert::{FogMode, TexEnvMode, TexGenMode};
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::rect::Rect;
+use crate::common::values::{Face, PolygonMode, ShadeModel, Winding};
+use crate::common::values::{FogMode, TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
 use crate::fragment::span::{PairFn, SpanFn};
-use crate::raster::setup::Rect;
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{BoundTexture, LevelPlan, LodSelect};
@@ -24,7 +24,7 @@ use crate::vertex::texgen::GenCoord;
 /// `attr_count` of them; the back-face colours travel only through clipping and are swapped in
 /// for back-facing polygons under two-sided lighting.
 pub mod attr {
-    use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+    use crate::common::limits::MAX_TEXTURE_UNITS;
     /// Primary colour RGBA.
     pub const COLOR0: usize = 0;
     /// Fog coordinate (right after the primary colour, so that a fogged draw without colour

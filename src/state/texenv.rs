@@ -4,10 +4,9 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert::{
-    self, CombineFunc, CombineOperand, CombineSource, TexEnvMode, TexEnvParam,
-};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{CombineFunc, CombineOperand, CombineSource, TexEnvMode, TexEnvParam};
 use crate::vertex::immediate::norm_i32;
 
 /// The environment of one texture unit (table 6.21).

@@ -5,8 +5,9 @@
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert::{self, TexGenMode, TexGenParam};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{TexGenMode, TexGenParam};
 
 /// Generation for one coordinate of one unit (table 6.16).
 #[derive(Clone, Copy, Debug, PartialEq)]

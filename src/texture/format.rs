@@ -1,8 +1,6 @@
 //! Internal formats (OpenGL 1.5 tables 3.15-3.17): the base format a texture behaves as, and
 //! the storage tilegl picks to keep at least the precision asked for.
 
-use crate::api::types::GLint;
-
 /// Base internal formats (table 3.15) plus depth (ARB_depth_texture).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum BaseFormat {
@@ -109,7 +107,7 @@ pub enum Storage {
 pub struct InternalFormat {
     /// The value the application gave (reported by `GL_TEXTURE_INTERNAL_FORMAT`, except for
     /// generic compressed formats, which report the specific format chosen).
-    pub requested: GLint,
+    pub requested: i32,
     pub base: BaseFormat,
     /// Bits per component requested (the largest component of a sized format; 8 for generic
     /// formats, 24 for generic depth).
@@ -119,7 +117,7 @@ pub struct InternalFormat {
 }
 
 impl InternalFormat {
-    pub fn new(requested: GLint, base: BaseFormat, bits: u8) -> InternalFormat {
+    pub fn new(requested: i32, base: BaseFormat, bits: u8) -> InternalFormat {
         InternalFormat {
             requested,
             base,
@@ -128,7 +126,7 @@ impl InternalFormat {
         }
     }
 
-    pub fn s3tc(requested: GLint, f: S3tcFormat) -> InternalFormat {
+    pub fn s3tc(requested: i32, f: S3tcFormat) -> InternalFormat {
         InternalFormat {
             requested,
             base: f.base(),
@@ -161,9 +159,9 @@ impl InternalFormat {
     }
 
     /// The value `GL_TEXTURE_INTERNAL_FORMAT` reports.
-    pub fn reported(self) -> GLint {
+    pub fn reported(self) -> i32 {
         match self.compressed {
-            Some(f) => f.to_gl() as GLint,
+            Some(f) => f.to_gl() as i32,
             None => self.requested,
         }
     }

@@ -22,8 +22,8 @@ pub mod simd;
 
 use std::collections::{HashMap, HashSet};
 
-use crate::api::convert::TextureTarget;
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::values::TextureTarget;
 
 pub use format::{BaseFormat, InternalFormat, S3tcFormat};
 pub use image::TexImage;

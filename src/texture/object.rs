@@ -6,7 +6,7 @@ use std::sync::Arc;
 use super::format::BaseFormat;
 use super::image::TexImage;
 use super::sample::{BoundInner, BoundTexture};
-use crate::api::convert::{
+use crate::common::values::{
     CompareFunc, DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
 };
 

@@ -8,7 +8,7 @@
 
 use std::sync::Arc;
 
-use crate::api::convert::{TexPixelFormat, TexPixelType};
+use crate::common::values::{TexPixelFormat, TexPixelType};
 use crate::state::tables::PixelStore;
 use crate::texture::image::{TexImage, Texels};
 
@@ -342,7 +342,7 @@ pub fn pack_group(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::api::convert::PackedType;
+    use crate::common::values::PackedType;
 
     #[test]
     fn packed_layouts_by_hand() {

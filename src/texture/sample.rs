@@ -18,7 +18,7 @@ use std::sync::Arc;
 use super::format::{BaseFormat, InternalFormat};
 use super::image::{TexImage, Texels};
 use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
-use crate::api::convert::{
+use crate::common::values::{
     DepthTextureMode, MagFilter, MinFilter, SwizzleSource, TextureTarget, WrapMode,
 };
 

@@ -7,8 +7,8 @@
 
 use super::format::BaseFormat;
 use super::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::api::convert::WrapMode;
 use crate::common::cpu::available;
+use crate::common::values::WrapMode;
 
 /// Eight pixels' texels as four channel arrays (R, G, B, A).
 pub type Texels8 = [[f32; 8]; 4];

@@ -7,9 +7,10 @@
 
 use glam::{Vec3, Vec4};
 
-use crate::api::convert::{self, PrimitiveMode};
+use crate::api::convert;
 use crate::api::enums::*;
-use crate::state::tables::limits;
+use crate::common::limits;
+use crate::common::values::PrimitiveMode;
 use crate::state::Context;
 use crate::vertex::lighting::{LitLanes, VertexLanes};
 

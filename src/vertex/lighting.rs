@@ -2,7 +2,7 @@
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
-use crate::api::convert::{Face, MaterialParam};
+use crate::common::values::{Face, MaterialParam};
 use crate::state::lighting::{Light, LightingState, Material};
 
 /// Object-space normals to eye space (section 2.11.3): the inverse transpose of the modelview's

@@ -6,7 +6,7 @@ pub mod lighting;
 pub mod texgen;
 pub mod transform;
 
-use crate::api::convert::{PolygonMode, PrimitiveMode};
+use crate::common::values::{PolygonMode, PrimitiveMode};
 use crate::primitive::assemble::{self, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex};
 use crate::primitive::cull::{is_culled, is_front, signed_area2, triangle_area2};
@@ -46,7 +46,7 @@ impl Context {
         if verts.is_empty() {
             return;
         }
-        if self.select.mode != crate::api::convert::RenderMode::Render {
+        if self.select.mode != crate::common::values::RenderMode::Render {
             return self.select_feedback_vertices(mode, verts);
         }
         let ds = self.snapshot();

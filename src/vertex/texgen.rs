@@ -2,7 +2,7 @@
 
 use glam::{Vec3, Vec4};
 
-use crate::api::convert::TexGenMode;
+use crate::common::values::TexGenMode;
 
 /// Generation of one coordinate in a draw: the mode and the plane it uses (the object plane
 /// for OBJECT_LINEAR, the eye plane for EYE_LINEAR).

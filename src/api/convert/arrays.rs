@@ -1,22 +1,9 @@
 //! GLenum conversions of vertex arrays, buffer objects and display lists (part of `convert`).
 
+use crate::common::values::*;
+
 use crate::api::enums::*;
 use crate::api::types::GLenum;
-
-/// The client arrays of `glEnableClientState` (section 2.8). The texture-coordinate array is
-/// the one of the client active texture unit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ClientArray {
-    Vertex,
-    Normal,
-    Color,
-    SecondaryColor,
-    FogCoord,
-    TexCoord,
-    EdgeFlag,
-    /// Colour indices: state only in RGBA mode (sets the current index).
-    Index,
-}
 
 pub fn client_array(e: GLenum) -> Option<ClientArray> {
     use ClientArray::*;
@@ -33,43 +20,7 @@ pub fn client_array(e: GLenum) -> Option<ClientArray> {
     })
 }
 
-/// Component types of vertex arrays (table 2.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ArrayType {
-    Byte,
-    UnsignedByte,
-    Short,
-    UnsignedShort,
-    Int,
-    UnsignedInt,
-    Float,
-    Double,
-}
-
 impl ArrayType {
-    /// Every component type (what colour arrays accept).
-    pub const ALL: [ArrayType; 8] = [
-        ArrayType::Byte,
-        ArrayType::UnsignedByte,
-        ArrayType::Short,
-        ArrayType::UnsignedShort,
-        ArrayType::Int,
-        ArrayType::UnsignedInt,
-        ArrayType::Float,
-        ArrayType::Double,
-    ];
-
-    /// Bytes per component.
-    pub fn size(self) -> usize {
-        use ArrayType::*;
-        match self {
-            Byte | UnsignedByte => 1,
-            Short | UnsignedShort => 2,
-            Int | UnsignedInt | Float => 4,
-            Double => 8,
-        }
-    }
-
     pub fn to_gl(self) -> GLenum {
         use ArrayType::*;
         match self {
@@ -100,24 +51,6 @@ pub fn array_type(e: GLenum) -> Option<ArrayType> {
     })
 }
 
-/// Index types of `glDrawElements` and friends.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum IndexType {
-    UnsignedByte,
-    UnsignedShort,
-    UnsignedInt,
-}
-
-impl IndexType {
-    pub fn size(self) -> usize {
-        match self {
-            IndexType::UnsignedByte => 1,
-            IndexType::UnsignedShort => 2,
-            IndexType::UnsignedInt => 4,
-        }
-    }
-}
-
 pub fn index_type(e: GLenum) -> Option<IndexType> {
     Some(match e {
         GL_UNSIGNED_BYTE => IndexType::UnsignedByte,
@@ -125,25 +58,6 @@ pub fn index_type(e: GLenum) -> Option<IndexType> {
         GL_UNSIGNED_INT => IndexType::UnsignedInt,
         _ => return None,
     })
-}
-
-/// Formats of `glInterleavedArrays` (table 2.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum InterleavedFormat {
-    V2f,
-    V3f,
-    C4ubV2f,
-    C4ubV3f,
-    C3fV3f,
-    N3fV3f,
-    C4fN3fV3f,
-    T2fV3f,
-    T4fV4f,
-    T2fC4ubV3f,
-    T2fC3fV3f,
-    T2fN3fV3f,
-    T2fC4fN3fV3f,
-    T4fC4fN3fV4f,
 }
 
 pub fn interleaved_format(e: GLenum) -> Option<InterleavedFormat> {
@@ -165,13 +79,6 @@ pub fn interleaved_format(e: GLenum) -> Option<InterleavedFormat> {
         GL_T4F_C4F_N3F_V4F => T4fC4fN3fV4f,
         _ => return None,
     })
-}
-
-/// Buffer object binding targets (section 2.9).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BufferTarget {
-    Array,
-    ElementArray,
 }
 
 pub fn buffer_target(e: GLenum) -> Option<BufferTarget> {
@@ -199,14 +106,6 @@ pub fn buffer_usage(e: GLenum) -> Option<GLenum> {
     .then_some(e)
 }
 
-/// `glMapBuffer` access modes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BufferAccess {
-    ReadOnly,
-    WriteOnly,
-    ReadWrite,
-}
-
 impl BufferAccess {
     pub fn to_gl(self) -> GLenum {
         match self {
@@ -224,15 +123,6 @@ pub fn buffer_access(e: GLenum) -> Option<BufferAccess> {
         GL_READ_WRITE => BufferAccess::ReadWrite,
         _ => return None,
     })
-}
-
-/// `glGetBufferParameteriv` names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BufferParam {
-    Size,
-    Usage,
-    Access,
-    Mapped,
 }
 
 pub fn buffer_param(e: GLenum) -> Option<BufferParam> {
@@ -260,29 +150,6 @@ pub fn pointer_name(e: GLenum) -> Option<ClientArray> {
         GL_INDEX_ARRAY_POINTER => Index,
         _ => return None,
     })
-}
-
-/// What a vertex-array, buffer or display-list `glGet` asks (table 6.8, 6.9, 6.37).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ArrayQuery {
-    Enabled(ClientArray),
-    Size(ClientArray),
-    Type(ClientArray),
-    Stride(ClientArray),
-    BufferBinding(ClientArray),
-    ArrayBufferBinding,
-    ElementArrayBufferBinding,
-    MaxElementsVertices,
-    MaxElementsIndices,
-    ClientAttribStackDepth,
-    MaxClientAttribStackDepth,
-    ListBase,
-    ListIndex,
-    ListMode,
-    MaxListNesting,
-    /// EXT_compiled_vertex_array.
-    LockFirst,
-    LockCount,
 }
 
 pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
@@ -341,33 +208,6 @@ pub fn list_mode(e: GLenum) -> Option<bool> {
         GL_COMPILE => Some(false),
         GL_COMPILE_AND_EXECUTE => Some(true),
         _ => None,
-    }
-}
-
-/// The name types of `glCallLists`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ListNameType {
-    Byte,
-    UnsignedByte,
-    Short,
-    UnsignedShort,
-    Int,
-    UnsignedInt,
-    Float,
-    /// `GL_2_BYTES`, `GL_3_BYTES`, `GL_4_BYTES`: big-endian unsigned names of this many bytes.
-    Bytes(usize),
-}
-
-impl ListNameType {
-    /// Bytes per name.
-    pub fn size(self) -> usize {
-        use ListNameType::*;
-        match self {
-            Byte | UnsignedByte => 1,
-            Short | UnsignedShort => 2,
-            Int | UnsignedInt | Float => 4,
-            Bytes(n) => n,
-        }
     }
 }
 

@@ -1,51 +1,9 @@
 //! GLenum conversions of the evaluators (section 5.1; part of `convert`).
 
+use crate::common::values::*;
+
 use crate::api::enums::*;
 use crate::api::types::GLenum;
-
-/// What a map produces (the part of a `GL_MAP1_*`/`GL_MAP2_*` target after the dimension).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum EvalTarget {
-    Vertex3,
-    Vertex4,
-    Index,
-    Color4,
-    Normal,
-    TexCoord1,
-    TexCoord2,
-    TexCoord3,
-    TexCoord4,
-}
-
-impl EvalTarget {
-    /// Every target, in the order of [`EvalTarget::index`].
-    pub const ALL: [EvalTarget; 9] = [
-        EvalTarget::Vertex3,
-        EvalTarget::Vertex4,
-        EvalTarget::Index,
-        EvalTarget::Color4,
-        EvalTarget::Normal,
-        EvalTarget::TexCoord1,
-        EvalTarget::TexCoord2,
-        EvalTarget::TexCoord3,
-        EvalTarget::TexCoord4,
-    ];
-
-    /// Position in [`EvalTarget::ALL`] (the per-target state arrays).
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// k of table 5.1: values per control point.
-    pub fn components(self) -> usize {
-        match self {
-            EvalTarget::Index | EvalTarget::TexCoord1 => 1,
-            EvalTarget::TexCoord2 => 2,
-            EvalTarget::Vertex3 | EvalTarget::Normal | EvalTarget::TexCoord3 => 3,
-            EvalTarget::Vertex4 | EvalTarget::Color4 | EvalTarget::TexCoord4 => 4,
-        }
-    }
-}
 
 /// `GL_MAP1_*` targets.
 pub fn map1_target(e: GLenum) -> Option<EvalTarget> {
@@ -79,25 +37,10 @@ pub fn map2_target(e: GLenum) -> Option<EvalTarget> {
     })
 }
 
-/// A map of either dimension (`glGetMap*` targets).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum AnyMap {
-    Map1(EvalTarget),
-    Map2(EvalTarget),
-}
-
 pub fn any_map_target(e: GLenum) -> Option<AnyMap> {
     map1_target(e)
         .map(AnyMap::Map1)
         .or_else(|| map2_target(e).map(AnyMap::Map2))
-}
-
-/// The `query` of `glGetMap*`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum GetMapQuery {
-    Coeff,
-    Order,
-    Domain,
 }
 
 pub fn get_map_query(e: GLenum) -> Option<GetMapQuery> {
@@ -109,14 +52,6 @@ pub fn get_map_query(e: GLenum) -> Option<GetMapQuery> {
     })
 }
 
-/// Modes of `glEvalMesh1` (`fill` false) and `glEvalMesh2` (`fill` true also takes `GL_FILL`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum EvalMeshMode {
-    Point,
-    Line,
-    Fill,
-}
-
 pub fn eval_mesh_mode(e: GLenum, fill: bool) -> Option<EvalMeshMode> {
     Some(match e {
         GL_POINT => EvalMeshMode::Point,
@@ -124,16 +59,6 @@ pub fn eval_mesh_mode(e: GLenum, fill: bool) -> Option<EvalMeshMode> {
         GL_FILL if fill => EvalMeshMode::Fill,
         _ => return None,
     })
-}
-
-/// Evaluator state of `glGet*` (table 6.24 and the implementation limit).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum EvalQuery {
-    MaxEvalOrder,
-    Map1GridDomain,
-    Map1GridSegments,
-    Map2GridDomain,
-    Map2GridSegments,
 }
 
 pub fn eval_query(e: GLenum) -> Option<EvalQuery> {

@@ -1,35 +1,10 @@
 //! Enums of the server attribute stack (`glPushAttrib`), occlusion queries, multisample state,
 //! selection and feedback.
 
+use crate::common::values::*;
+
 use super::super::enums::*;
 use super::super::types::GLenum;
-
-/// The attribute groups of a `glPushAttrib` mask (table 6.x "attribute" column). Unknown bits
-/// are ignored, as `GL_ALL_ATTRIB_BITS` sets them all.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct AttribGroups {
-    pub current: bool,
-    pub point: bool,
-    pub line: bool,
-    pub polygon: bool,
-    pub polygon_stipple: bool,
-    pub pixel_mode: bool,
-    pub lighting: bool,
-    pub fog: bool,
-    pub depth_buffer: bool,
-    pub accum_buffer: bool,
-    pub stencil_buffer: bool,
-    pub viewport: bool,
-    pub transform: bool,
-    pub enable: bool,
-    pub color_buffer: bool,
-    pub hint: bool,
-    pub eval: bool,
-    pub list: bool,
-    pub texture: bool,
-    pub scissor: bool,
-    pub multisample: bool,
-}
 
 pub fn attrib_groups(mask: u32) -> AttribGroups {
     let has = |bit: u32| mask & bit != 0;
@@ -58,15 +33,6 @@ pub fn attrib_groups(mask: u32) -> AttribGroups {
     }
 }
 
-/// The multisample enables (GL 1.3, section 3.2.1).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum MultisampleCap {
-    Multisample,
-    AlphaToCoverage,
-    AlphaToOne,
-    Coverage,
-}
-
 pub fn multisample_cap(e: GLenum) -> Option<MultisampleCap> {
     Some(match e {
         GL_MULTISAMPLE => MultisampleCap::Multisample,
@@ -75,29 +41,6 @@ pub fn multisample_cap(e: GLenum) -> Option<MultisampleCap> {
         GL_SAMPLE_COVERAGE => MultisampleCap::Coverage,
         _ => return None,
     })
-}
-
-/// `glGet*` queries of this module's state.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum StateExtQuery {
-    AttribStackDepth,
-    SampleCoverageValue,
-    SampleCoverageInvert,
-    RenderMode,
-    NameStackDepth,
-    MaxNameStackDepth,
-    FeedbackBufferSize,
-    FeedbackBufferType,
-    SelectionBufferSize,
-    /// `GL_TEXTURE_BINDING_*` of the active unit.
-    TextureBinding(super::TextureTarget),
-    /// `GL_MAX_TEXTURE_SIZE`, `GL_MAX_3D_TEXTURE_SIZE`, `GL_MAX_CUBE_MAP_TEXTURE_SIZE`,
-    /// `GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB`: the largest side for the target.
-    MaxTextureSize(super::TextureTarget),
-    MaxTextureLodBias,
-    MaxTextureMaxAnisotropy,
-    NumCompressedTextureFormats,
-    CompressedTextureFormats,
 }
 
 pub fn state_ext_query(e: GLenum) -> Option<StateExtQuery> {
@@ -143,13 +86,6 @@ pub fn query_target(e: GLenum) -> Option<()> {
     (e == GL_SAMPLES_PASSED).then_some(())
 }
 
-/// `glGetQueryiv` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum QueryParam {
-    CurrentQuery,
-    CounterBits,
-}
-
 pub fn query_param(e: GLenum) -> Option<QueryParam> {
     Some(match e {
         GL_CURRENT_QUERY => QueryParam::CurrentQuery,
@@ -158,28 +94,12 @@ pub fn query_param(e: GLenum) -> Option<QueryParam> {
     })
 }
 
-/// `glGetQueryObject*v` parameters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum QueryObjectParam {
-    Result,
-    ResultAvailable,
-}
-
 pub fn query_object_param(e: GLenum) -> Option<QueryObjectParam> {
     Some(match e {
         GL_QUERY_RESULT => QueryObjectParam::Result,
         GL_QUERY_RESULT_AVAILABLE => QueryObjectParam::ResultAvailable,
         _ => return None,
     })
-}
-
-/// `glRenderMode` modes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum RenderMode {
-    #[default]
-    Render,
-    Select,
-    Feedback,
 }
 
 pub fn render_mode(e: GLenum) -> Option<RenderMode> {
@@ -199,16 +119,6 @@ impl RenderMode {
             RenderMode::Feedback => GL_FEEDBACK,
         }
     }
-}
-
-/// `glFeedbackBuffer` types (table 5.2).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FeedbackType {
-    T2D,
-    T3D,
-    T3DColor,
-    T3DColorTexture,
-    T4DColorTexture,
 }
 
 pub fn feedback_type(e: GLenum) -> Option<FeedbackType> {
@@ -232,19 +142,6 @@ impl FeedbackType {
             FeedbackType::T4DColorTexture => GL_4D_COLOR_TEXTURE,
         }
     }
-}
-
-/// The feedback tokens (table 5.3), as the float values written to the buffer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FeedbackToken {
-    Point,
-    Line,
-    LineReset,
-    Polygon,
-    Bitmap,
-    DrawPixel,
-    CopyPixel,
-    PassThrough,
 }
 
 impl FeedbackToken {

@@ -23,16 +23,18 @@ use std::cell::Cell;
 use super::blend::{blend, blend_alpha_over};
 use super::key::{FragmentKey, Uniforms};
 use super::texenv::{self, CombineInputs};
-use crate::api::convert::{CompareFunc, StencilOp, TexEnvMode};
+use crate::common::limits::MAX_TEXTURE_UNITS;
+use crate::common::values::{CompareFunc, StencilOp, TexEnvMode};
 use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
 use crate::raster::setup::Plane;
 use crate::state::snapshot::{attr, FogDraw, TextureUnitDraw};
-use crate::state::tables::limits::MAX_TEXTURE_UNITS;
 use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
 use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
+
+use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 
 mod affine;
 mod coords;
@@ -131,45 +133,6 @@ impl<'a> UnitLevels<'a> {
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
 pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
-
-/// Converts window z to a stored depth value (round to nearest, clamped): `z * max + 0.5`
-/// truncated, NaN and negatives as 0, at most `depth_max` (Rust's `as` saturates, without
-/// branches).
-#[inline(always)]
-pub fn depth_to_fixed(z: f64, depth_max: u32) -> u32 {
-    ((z * depth_max as f64 + 0.5) as u32).min(depth_max)
-}
-
-/// Converts a colour component to 8 bits (section 2.14.9: round to nearest after clamping):
-/// `c * 255 + 0.5` truncated, NaN and negatives as 0, at most 255 (Rust's `as` saturates).
-#[inline(always)]
-pub fn color_to_u8(c: f32) -> u8 {
-    (c * 255.0 + 0.5) as u8
-}
-
-/// [`color_to_u8`] of four components at once, with SSE2 (part of every x86-64 processor):
-/// the fragment paths convert every fragment's colour.
-#[inline(always)]
-pub fn color4_to_u8(c: [f32; 4]) -> [u8; 4] {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: SSE and SSE2 are part of the x86-64 baseline; no memory is accessed.
-    unsafe {
-        use std::arch::x86_64::*;
-        let v = _mm_add_ps(
-            _mm_mul_ps(_mm_setr_ps(c[0], c[1], c[2], c[3]), _mm_set1_ps(255.0)),
-            _mm_set1_ps(0.5),
-        );
-        // max_ps answers its second operand (0) when v is NaN.
-        let v = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(255.0));
-        let i = _mm_cvttps_epi32(v);
-        let bytes = _mm_packus_epi16(_mm_packs_epi32(i, i), _mm_setzero_si128());
-        (_mm_cvtsi128_si32(bytes) as u32).to_le_bytes()
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        c.map(color_to_u8)
-    }
-}
 
 /// Depth handling chosen at compile time: `DYNAMIC` reads the key, others are fixed.
 pub mod depth_mode {

@@ -6,10 +6,11 @@
 #![allow(clippy::too_many_arguments)]
 
 use super::Context;
-use crate::api::convert::{
-    self, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType, TextureTarget,
-};
+use crate::api::convert;
 use crate::api::enums::*;
+use crate::common::values::{
+    TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType, TextureTarget,
+};
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
 use crate::texture::object::{level_count, max_size, TextureObject, MAX_TEXTURE_MAX_ANISOTROPY};
