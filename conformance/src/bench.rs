@@ -1463,11 +1463,28 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
     (child_out, all)
 }
 
-/// The benchmark's command line: `[--workload triangles|sprites|fog|all] [--frames N]
-/// [--triangles N] [--budget SECONDS] [--min-time SECONDS] [--threads N] [--no-mesa]`. Prints one table per workload and returns the process
-/// exit code.
+/// What `--help` prints.
+pub const USAGE: &str = "bench [--workload NAME|all|toggles|ladder|lighting] [--no-ladder] \
+[--frames N] [--min-time SECONDS] [--budget SECONDS] [--threads N] [--toggle K] [--quality K] \
+[--no-mesa] [--no-xcore] [--scaling]
+
+Times each workload at 1024x768 on tilegl (through its C exports; --threads N: through the \
+Rust API with N threads) and Mesa (llvmpipe with LP_NUM_THREADS=2 in this process, softpipe in \
+a child), tilegl and llvmpipe in alternating rounds, and prints a ratio table with each \
+workload's picture error beside its times. Workloads: triangles sprites fog overdraw horizon \
+lightmap spheremap tunnel tunnel-nofog objects objects-nofog lit-triangles combine4 cubemap \
+lines shadow text uploads accum; toggles: the state-toggle matrix; ladder: texture quality \
+against time; lighting: lighting cost against triangle count; --scaling: time against pixels \
+and triangles.";
+
+/// The benchmark's command line ([`USAGE`]). Prints one table per workload, then the ratio
+/// table, and returns the process exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        println!("{USAGE}");
+        return 0;
+    }
     if args.iter().any(|a| a == "--scaling") {
         let with_mesa =
             !args.iter().any(|a| a == "--no-mesa") && crate::mesa::mesa_available().is_ok();
