@@ -210,6 +210,39 @@ fn bitmap_draws_set_bits_in_the_raster_colour_and_moves_the_raster_position() {
     assert!((pos[0] - 10.2).abs() < 1e-5 && (pos[1] - 7.95).abs() < 1e-5);
 }
 
+/// Under a window-sized ortho projection a whole raster position comes out of the projection
+/// and viewport a rounding error below the integer (y = 26 of 768 gives 25.99999); the glyph
+/// still lands on that row, as Mesa draws it (llvmpipe and softpipe put every row of the bench's
+/// `text` workload on its integer row).
+#[test]
+fn bitmaps_at_whole_raster_positions_land_on_that_row() {
+    let mut gl = Context::new(1024, 768);
+    window_ortho(&mut gl);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.color_3f(1.0, 0.0, 0.0);
+    let mut hit = 0;
+    for y in (12..760).step_by(14) {
+        gl.raster_pos_2i(4, y);
+        let mut pos = [0f32; 4];
+        gl.get_floatv(GL_CURRENT_RASTER_POSITION, &mut pos);
+        hit += usize::from(pos[1] != y as f32);
+        gl.bitmap(1, 1, 0.0, 0.0, 0.0, 0.0, &[0x80]);
+        assert_eq!(
+            pixel(&mut gl, 4, y),
+            [255, 0, 0, 255],
+            "row {y} ({})",
+            pos[1]
+        );
+        assert_eq!(pixel(&mut gl, 4, y - 1), [0, 0, 0, 0], "row {y}");
+    }
+    // The case this guards: some rows' positions are not exact.
+    assert!(
+        hit > 0,
+        "every raster position was exact: the test checks nothing"
+    );
+}
+
 #[test]
 fn bitmaps_at_whole_pixel_raster_positions_start_there() {
     // piglit's scissor-bitmap: an orthographic projection of a 400-pixel window, raster

@@ -1417,3 +1417,115 @@ fn constant_colours_stay_exact_under_perspective() {
         );
     }
 }
+
+/// Keys that write no colour and run no alpha test take the depth-and-stencil span, which
+/// skips the colour, texturing and fog the general path computes and then does not write:
+/// shadow-volume passes (both cull faces, `INCR`/`DECR` and the wrapping forms, depth writes
+/// off), stencil with every fail action and depth writes on, depth-only passes with textures
+/// and fog, and a disabled depth test; the depth and stencil values after the pass are the
+/// general path's, and so is the picture of a final pass that shows the stencil values.
+#[test]
+fn depth_stencil_spans_match_the_general_path() {
+    type Setup = (&'static str, fn(&mut Context));
+    let states: [Setup; 5] = [
+        ("z-pass volumes", |gl| {
+            gl.depth_mask(0);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_ALWAYS, 0, 0xFF);
+            gl.enable(GL_CULL_FACE);
+            gl.cull_face(GL_BACK);
+            gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
+            random_strip(gl, 31, false);
+            gl.cull_face(GL_FRONT);
+            gl.stencil_op(GL_KEEP, GL_KEEP, GL_DECR);
+            random_strip(gl, 31, false);
+            gl.disable(GL_CULL_FACE);
+        }),
+        ("z-fail volumes, wrapping", |gl| {
+            gl.depth_mask(0);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_ALWAYS, 0, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+            random_strip(gl, 32, false);
+            gl.stencil_op(GL_KEEP, GL_INCR_WRAP, GL_INVERT);
+            random_strip(gl, 33, false);
+        }),
+        ("stencil test failing, depth writes", |gl| {
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_LESS, 0x21, 0x3F);
+            gl.stencil_mask(0xF7);
+            gl.stencil_op(GL_REPLACE, GL_INCR, GL_ZERO);
+            random_strip(gl, 34, false);
+            random_strip(gl, 35, false);
+        }),
+        ("depth-only pass, textured and fogged, LEQUAL", |gl| {
+            random_texture(gl, &mut Rng(5), GL_RGBA, 16, 16);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_FOG);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.depth_func(GL_LEQUAL);
+            random_strip(gl, 36, true);
+            gl.disable(GL_TEXTURE_2D);
+            gl.disable(GL_FOG);
+            gl.disable(GL_BLEND);
+        }),
+        ("no depth test, stencil counting", |gl| {
+            gl.disable(GL_DEPTH_TEST);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_ALWAYS, 0, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
+            random_strip(gl, 37, false);
+            gl.enable(GL_DEPTH_TEST);
+        }),
+    ];
+    for (name, state) in states {
+        let render = |general: bool| {
+            let mut gl = Context::new(96, 96);
+            gl.set_force_general_path(general);
+            busy_scene(&mut gl);
+            gl.clear_stencil(0x10);
+            gl.clear(GL_STENCIL_BUFFER_BIT);
+            gl.color_mask(0, 0, 0, 0);
+            state(&mut gl);
+            gl.color_mask(1, 1, 1, 1);
+            gl.depth_mask(1);
+            gl.stencil_mask(0xFF);
+            let depth = read_depth(&mut gl);
+            let mut stencil = vec![0u8; 96 * 96];
+            gl.read_pixels(
+                0,
+                0,
+                96,
+                96,
+                GL_STENCIL_INDEX,
+                GL_UNSIGNED_BYTE,
+                &mut stencil,
+            );
+            // The stencil values shown: a quad over the window wherever they are not 0x10.
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_NOTEQUAL, 0x10, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_KEEP, GL_KEEP);
+            gl.disable(GL_DEPTH_TEST);
+            gl.color_3f(1.0, 1.0, 1.0);
+            gl.begin(GL_QUADS);
+            for (x, y) in [(-9.0, -9.0), (9.0, -9.0), (9.0, 9.0), (-9.0, 9.0)] {
+                gl.vertex_3f(x, y, -1.5);
+            }
+            gl.end();
+            assert_eq!(gl.get_error(), GL_NO_ERROR, "{name}");
+            (depth, stencil, read_rgba(&mut gl))
+        };
+        let general = render(true);
+        let fast = render(false);
+        assert!(general.0 == fast.0, "{name}: depth");
+        assert!(general.1 == fast.1, "{name}: stencil");
+        assert!(general.2 == fast.2, "{name}: picture");
+        // The pass did something: the stencil or the depth moved.
+        let mut plain = Context::new(96, 96);
+        busy_scene(&mut plain);
+        let moved = general.1.iter().any(|&s| s != 0x10) || general.0 != read_depth(&mut plain);
+        assert!(moved, "{name}: the pass changed nothing");
+    }
+}

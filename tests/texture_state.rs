@@ -1562,3 +1562,102 @@ fn byte_uploads_into_8_bit_images_keep_every_byte() {
         }
     }
 }
+
+/// Byte uploads whose groups are the stored components (RGBA into RGBA8, RGB into RGB8,
+/// LUMINANCE, ALPHA, LUMINANCE_ALPHA into their own) are copied row by row; the texels are the
+/// ones the per-texel route stores, for whole images and sub-images under row lengths,
+/// alignments and skips: checked against the client bytes picked out by the unpack rules in
+/// the test, and against the same data sent through the per-texel route (the same upload with
+/// a pixel-transfer scale of 1.0001, which stores the same bytes but cannot take the copy).
+#[test]
+fn byte_uploads_copied_by_rows_store_what_the_general_path_stores() {
+    let cases = [
+        (GL_RGBA, GL_RGBA8, 4),
+        (GL_RGB, GL_RGB8, 3),
+        (GL_LUMINANCE, GL_LUMINANCE8, 1),
+        (GL_ALPHA, GL_ALPHA8, 1),
+        (GL_LUMINANCE_ALPHA, GL_LUMINANCE8_ALPHA8, 2),
+    ];
+    let (w, h) = (13usize, 7usize);
+    let (sub_x, sub_y, sw, sh) = (3usize, 2usize, 9usize, 4usize);
+    for (format, internal, c) in cases {
+        for (align, row_length, skip_px, skip_rows) in [(1, 0, 0, 0), (4, 17, 2, 1), (8, 0, 1, 3)] {
+            // Bytes per client row of an image `width` texels wide (section 3.6.4).
+            let row = |width: usize| {
+                let px = if row_length > 0 { row_length } else { width };
+                (px * c).div_ceil(align) * align
+            };
+            let len = (skip_rows + h + 1) * row(w) + 64;
+            let data: Vec<u8> = (0..len).map(|i| (i * 37 + 11) as u8).collect();
+            // The bytes of texel (x, y) of a `width`-wide image unpacked from `data`.
+            let texel = |width: usize, x: usize, y: usize| {
+                let at = (skip_rows + y) * row(width) + (skip_px + x) * c;
+                data[at..at + c].to_vec()
+            };
+            let read = |transfer_scale: f32| {
+                let mut gl = ctx();
+                gl.pixel_storei(GL_UNPACK_ALIGNMENT, align as i32);
+                gl.pixel_storei(GL_UNPACK_ROW_LENGTH, row_length as i32);
+                gl.pixel_storei(GL_UNPACK_SKIP_PIXELS, skip_px as i32);
+                gl.pixel_storei(GL_UNPACK_SKIP_ROWS, skip_rows as i32);
+                for scale in [GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE] {
+                    gl.pixel_transferf(scale, transfer_scale);
+                }
+                gl.tex_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    internal as i32,
+                    w as i32,
+                    h as i32,
+                    0,
+                    format,
+                    GL_UNSIGNED_BYTE,
+                    Some(&data),
+                );
+                let whole = get_bytes(&mut gl, format, w * h * c);
+                // A sub-image from the same client bytes (its own rows start at the skips).
+                gl.tex_sub_image_2d(
+                    GL_TEXTURE_2D,
+                    0,
+                    sub_x as i32,
+                    sub_y as i32,
+                    sw as i32,
+                    sh as i32,
+                    format,
+                    GL_UNSIGNED_BYTE,
+                    Some(&data),
+                );
+                let after = get_bytes(&mut gl, format, w * h * c);
+                assert_eq!(gl.get_error(), GL_NO_ERROR);
+                (whole, after)
+            };
+            let (whole, after) = read(1.0);
+            let mut expect_whole = Vec::new();
+            let mut expect_after = Vec::new();
+            for y in 0..h {
+                for x in 0..w {
+                    expect_whole.extend(texel(w, x, y));
+                    let inside =
+                        (sub_x..sub_x + sw).contains(&x) && (sub_y..sub_y + sh).contains(&y);
+                    expect_after.extend(if inside {
+                        texel(sw, x - sub_x, y - sub_y)
+                    } else {
+                        texel(w, x, y)
+                    });
+                }
+            }
+            let case =
+                format!("format {format:#x}, unpack {align} {row_length} {skip_px} {skip_rows}");
+            assert_eq!(whole, expect_whole, "{case}: whole image");
+            assert_eq!(after, expect_after, "{case}: after the sub-image");
+            assert_eq!(read(1.0001), (whole, after), "{case}: per-texel route");
+        }
+    }
+}
+
+fn get_bytes(gl: &mut Context, format: GLenum, n: usize) -> Vec<u8> {
+    gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    let mut out = vec![0u8; n];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, format, GL_UNSIGNED_BYTE, &mut out);
+    out
+}

@@ -32,8 +32,10 @@
 use std::time::{Duration, Instant};
 
 use tilegl::enums::*;
-use tilegl::{Context, ContextConfig, Gl};
+use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
 
+use crate::bench_scenes::{self, LitVertex, Pixels, Segment};
+use crate::c_route::CAbiContext;
 use crate::compare::{diff, Image};
 use crate::machine::cross_core_round_trip_ns;
 use crate::mesa::{self, MesaContext, Oracle, OracleInfo};
@@ -62,7 +64,8 @@ pub struct BenchConfig {
     /// timed frame always runs).
     pub budget: Duration,
     pub seed: u64,
-    /// tilegl's thread counts to time (`--threads N` keeps one, e.g. for profiling).
+    /// Empty: time tilegl through its C exports with its default threads (one per core);
+    /// `--threads N`: through the Rust API with N threads (for profiling without the C layer).
     pub tilegl_threads: Vec<usize>,
     /// The `tunnel` workloads with one feature of [`TOGGLES`] turned on (`--toggle N`).
     pub toggle: Option<usize>,
@@ -83,7 +86,7 @@ impl Default for BenchConfig {
             min_time: Duration::from_millis(1500),
             budget: Duration::from_secs(15),
             seed: 0x5EED_1234_ABCD_0001,
-            tilegl_threads: vec![1, 2],
+            tilegl_threads: Vec::new(),
             toggle: None,
             toggles_only: false,
         }
@@ -104,12 +107,20 @@ pub enum Workload {
     TunnelNoFog,
     Objects,
     ObjectsNoFog,
+    LitTriangles,
+    Combine4,
+    Cubemap,
+    Lines,
+    Shadow,
+    Text,
+    Uploads,
+    Accum,
     /// The lit sphere of the `lighting` measurement (not in [`Workload::ALL`]).
     Lighting,
 }
 
 impl Workload {
-    pub const ALL: [Workload; 11] = [
+    pub const ALL: [Workload; 19] = [
         Workload::Triangles,
         Workload::Sprites,
         Workload::Fog,
@@ -121,6 +132,14 @@ impl Workload {
         Workload::TunnelNoFog,
         Workload::Objects,
         Workload::ObjectsNoFog,
+        Workload::LitTriangles,
+        Workload::Combine4,
+        Workload::Cubemap,
+        Workload::Lines,
+        Workload::Shadow,
+        Workload::Text,
+        Workload::Uploads,
+        Workload::Accum,
     ];
 
     pub fn name(self) -> &'static str {
@@ -136,6 +155,14 @@ impl Workload {
             Workload::TunnelNoFog => "tunnel-nofog",
             Workload::Objects => "objects",
             Workload::ObjectsNoFog => "objects-nofog",
+            Workload::LitTriangles => "lit-triangles",
+            Workload::Combine4 => "combine4",
+            Workload::Cubemap => "cubemap",
+            Workload::Lines => "lines",
+            Workload::Shadow => "shadow",
+            Workload::Text => "text",
+            Workload::Uploads => "uploads",
+            Workload::Accum => "accum",
             Workload::Lighting => "lighting",
         }
     }
@@ -180,6 +207,22 @@ pub enum WorkData {
     Tunnel(usize, usize),
     /// The display-list objects: columns and rows of the grid.
     Objects(usize, usize),
+    /// Small lit triangles (`lit-triangles`).
+    LitTriangles(Vec<LitVertex>),
+    /// The four-unit corridor: wall segments along its length.
+    Combine4(usize),
+    /// The cube-mapped torus: rings and sides.
+    Cubemap(usize, usize),
+    /// Line segments.
+    Lines(Vec<Segment>),
+    /// The shadow-volume scene.
+    Shadow,
+    /// The glyphs and picture, and the window height.
+    Text(Box<Pixels>, i32),
+    /// The upload frames, and the window size.
+    Uploads(Box<Pixels>, i32, i32),
+    /// The horizon, jittered passes summed in the accumulation buffer.
+    Accum(usize),
 }
 
 /// Sides around and segments along the `tunnel` workload's tube.
@@ -241,6 +284,20 @@ pub fn work_data(cfg: &BenchConfig) -> WorkData {
         Workload::Lighting => WorkData::Sphere(32, 32, true),
         Workload::Tunnel | Workload::TunnelNoFog => WorkData::Tunnel(TUNNEL.0, TUNNEL.1),
         Workload::Objects | Workload::ObjectsNoFog => WorkData::Objects(OBJECTS.0, OBJECTS.1),
+        Workload::LitTriangles => {
+            WorkData::LitTriangles(bench_scenes::lit_triangles(cfg.width, cfg.height, cfg.seed))
+        }
+        Workload::Combine4 => WorkData::Combine4(CORRIDOR_SEGMENTS),
+        Workload::Cubemap => WorkData::Cubemap(TORUS.0, TORUS.1),
+        Workload::Lines => WorkData::Lines(bench_scenes::segments(cfg.width, cfg.height, cfg.seed)),
+        Workload::Shadow => WorkData::Shadow,
+        Workload::Text => WorkData::Text(Box::new(bench_scenes::pixels(cfg.seed)), cfg.height),
+        Workload::Uploads => WorkData::Uploads(
+            Box::new(bench_scenes::pixels(cfg.seed)),
+            cfg.width,
+            cfg.height,
+        ),
+        Workload::Accum => WorkData::Accum(bench_scenes::ACCUM_PASSES),
     }
 }
 
@@ -250,7 +307,7 @@ pub type Toggle = (&'static str, fn(&mut dyn Gl));
 /// The state-toggle matrix's toggles: a name and the state it turns on over the
 /// `tunnel-nofog` scene (textured, perspective, depth-tested; the first entry changes
 /// nothing).
-pub const TOGGLES: [Toggle; 16] = [
+pub const TOGGLES: [Toggle; 43] = [
     ("base (tunnel-nofog)", |_| {}),
     ("fog LINEAR", |gl| fog_toggle(gl, GL_LINEAR)),
     ("fog EXP", |gl| fog_toggle(gl, GL_EXP)),
@@ -258,6 +315,10 @@ pub const TOGGLES: [Toggle; 16] = [
     ("fog EXP2, hint NICEST", |gl| {
         fog_toggle(gl, GL_EXP2);
         gl.hint(GL_FOG_HINT, GL_NICEST);
+    }),
+    ("fog EXP2, hint FASTEST", |gl| {
+        fog_toggle(gl, GL_EXP2);
+        gl.hint(GL_FOG_HINT, GL_FASTEST);
     }),
     ("alpha test GREATER 0.5", |gl| {
         gl.enable(GL_ALPHA_TEST);
@@ -275,7 +336,14 @@ pub const TOGGLES: [Toggle; 16] = [
         gl.enable(GL_BLEND);
         gl.blend_func(GL_DST_COLOR, GL_ZERO);
     }),
+    ("blend ONE, 1-SRC_ALPHA", |gl| {
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }),
     ("lighting, 1 light", light_toggle),
+    ("lighting, 2 lights", |gl| lights_toggle(gl, 2)),
+    ("lighting, 4 lights", |gl| lights_toggle(gl, 4)),
+    ("lighting, 8 lights", |gl| lights_toggle(gl, 8)),
     ("lighting, separate specular", |gl| {
         light_toggle(gl);
         gl.light_modeli(
@@ -283,14 +351,49 @@ pub const TOGGLES: [Toggle; 16] = [
             GL_SEPARATE_SPECULAR_COLOR as i32,
         );
     }),
-    ("second unit (MODULATE)", |gl| {
-        gl.active_texture(GL_TEXTURE1);
-        bench_texture_setup(gl, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1.0);
-        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
-        // Unit 1 has no coordinates of its own: its current coordinate is constant.
-        gl.active_texture(GL_TEXTURE0);
+    ("lighting, two-sided", |gl| {
+        light_toggle(gl);
+        gl.light_modeli(GL_LIGHT_MODEL_TWO_SIDE, 1);
+        gl.materialfv(GL_BACK, GL_DIFFUSE, &[0.5, 0.7, 0.9, 1.0]);
     }),
-    ("flat shading", |gl| gl.shade_model(GL_FLAT)),
+    ("lighting, colour material", |gl| {
+        light_toggle(gl);
+        gl.color_material(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+        gl.enable(GL_COLOR_MATERIAL);
+    }),
+    ("texgen OBJECT_LINEAR", |gl| {
+        texgen_toggle(gl, GL_OBJECT_LINEAR)
+    }),
+    ("texgen EYE_LINEAR", |gl| texgen_toggle(gl, GL_EYE_LINEAR)),
+    ("texgen SPHERE_MAP", |gl| texgen_toggle(gl, GL_SPHERE_MAP)),
+    ("texgen REFLECTION_MAP", |gl| {
+        texgen_toggle(gl, GL_REFLECTION_MAP)
+    }),
+    ("texgen NORMAL_MAP", |gl| texgen_toggle(gl, GL_NORMAL_MAP)),
+    ("second unit (MODULATE)", |gl| units_toggle(gl, 2)),
+    ("fourth unit (3 more, MODULATE)", |gl| units_toggle(gl, 4)),
+    ("COMBINE REPLACE", |gl| combine_toggle(gl, GL_REPLACE)),
+    ("COMBINE MODULATE", |gl| combine_toggle(gl, GL_MODULATE)),
+    ("COMBINE ADD", |gl| combine_toggle(gl, GL_ADD)),
+    ("COMBINE ADD_SIGNED", |gl| combine_toggle(gl, GL_ADD_SIGNED)),
+    ("COMBINE INTERPOLATE", |gl| {
+        combine_toggle(gl, GL_INTERPOLATE)
+    }),
+    ("COMBINE SUBTRACT", |gl| combine_toggle(gl, GL_SUBTRACT)),
+    ("COMBINE DOT3_RGB", |gl| combine_toggle(gl, GL_DOT3_RGB)),
+    ("stencil (ALWAYS, REPLACE)", |gl| {
+        gl.enable(GL_STENCIL_TEST);
+        gl.stencil_func(GL_ALWAYS, 1, 0xFF);
+        gl.stencil_op(GL_KEEP, GL_KEEP, GL_REPLACE);
+    }),
+    ("polygon offset fill", |gl| {
+        gl.enable(GL_POLYGON_OFFSET_FILL);
+        gl.polygon_offset(1.0, 2.0);
+    }),
+    ("logic op XOR", |gl| {
+        gl.enable(GL_COLOR_LOGIC_OP);
+        gl.logic_op(GL_XOR);
+    }),
     ("polygon stipple", |gl| {
         let pattern: Vec<u8> = (0..128)
             .map(|i| if (i / 4) % 2 == 0 { 0xAA } else { 0x55 })
@@ -298,6 +401,7 @@ pub const TOGGLES: [Toggle; 16] = [
         gl.polygon_stipple(&pattern);
         gl.enable(GL_POLYGON_STIPPLE);
     }),
+    ("flat shading", |gl| gl.shade_model(GL_FLAT)),
     ("fog EXP2 + alpha test", |gl| {
         fog_toggle(gl, GL_EXP2);
         gl.enable(GL_ALPHA_TEST);
@@ -308,7 +412,90 @@ pub const TOGGLES: [Toggle; 16] = [
         gl.enable(GL_BLEND);
         gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }),
+    ("alpha test + blend SRC_ALPHA", |gl| {
+        gl.enable(GL_ALPHA_TEST);
+        gl.alpha_func(GL_GREATER, 0.2);
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }),
+    ("lighting + fog LINEAR", |gl| {
+        light_toggle(gl);
+        fog_toggle(gl, GL_LINEAR);
+    }),
+    ("second unit + fog EXP2", |gl| {
+        units_toggle(gl, 2);
+        fog_toggle(gl, GL_EXP2);
+    }),
+    ("lighting + texgen SPHERE_MAP", |gl| {
+        light_toggle(gl);
+        texgen_toggle(gl, GL_SPHERE_MAP);
+    }),
 ];
+
+/// Toggles that leave the picture as it is: they change only the stencil values, or compute
+/// the base scene's `MODULATE` through `GL_COMBINE`. (The polygon offset changes which of the
+/// tunnel's far, nearly edge-on fragments win the depth test.)
+pub const PICTURE_NEUTRAL_TOGGLES: [&str; 2] = ["stencil (ALWAYS, REPLACE)", "COMBINE MODULATE"];
+
+/// Lighting with `n` lights: light 0 as in [`light_toggle`], the others alternately
+/// positional (attenuated) and directional, each in its own colour.
+fn lights_toggle(gl: &mut dyn Gl, n: usize) {
+    light_toggle(gl);
+    for i in 1..n {
+        let light = GL_LIGHT0 + i as GLenum;
+        let a = i as f32 * 0.8;
+        let w = if i % 2 == 1 { 1.0 } else { 0.0 };
+        gl.enable(light);
+        gl.lightfv(light, GL_POSITION, &[a.cos(), a.sin(), -4.0 * w, w]);
+        let c = [
+            0.3 + 0.1 * (i % 3) as f32,
+            0.25,
+            0.35 - 0.04 * i as f32,
+            1.0,
+        ];
+        gl.lightfv(light, GL_DIFFUSE, &c);
+        gl.lightfv(light, GL_SPECULAR, &c);
+        if w == 1.0 {
+            gl.lightf(light, GL_LINEAR_ATTENUATION, 0.15);
+        }
+    }
+}
+
+/// Texture coordinates generated on s and t of unit 0 in `mode` (planes for the linear modes:
+/// about one repeat per two units, as the tunnel's own coordinates).
+fn texgen_toggle(gl: &mut dyn Gl, mode: GLenum) {
+    for (c, cap, plane) in [
+        (GL_S, GL_TEXTURE_GEN_S, [0.5f32, 0.0, 0.5, 0.0]),
+        (GL_T, GL_TEXTURE_GEN_T, [0.0, 0.5, 0.5, 0.0]),
+    ] {
+        gl.tex_geni(c, GL_TEXTURE_GEN_MODE, mode as i32);
+        gl.tex_genfv(c, GL_OBJECT_PLANE, &plane);
+        gl.tex_genfv(c, GL_EYE_PLANE, &plane);
+        gl.enable(cap);
+    }
+}
+
+/// `units` texture units in all: the units after 0 each with the bench texture (trilinear),
+/// `MODULATE`, and their own constant coordinate.
+fn units_toggle(gl: &mut dyn Gl, units: usize) {
+    for u in 1..units {
+        gl.active_texture(GL_TEXTURE0 + u as GLenum);
+        bench_texture_setup(gl, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1.0);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    }
+    gl.active_texture(GL_TEXTURE0);
+}
+
+/// Unit 0 through `GL_COMBINE` with `func` on RGB: the texture, the vertex colour and a
+/// constant colour as its arguments.
+fn combine_toggle(gl: &mut dyn Gl, func: GLenum) {
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, func as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_PRIMARY_COLOR as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_CONSTANT as i32);
+    gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.6, 0.5, 0.4, 0.5]);
+}
 
 /// Fog of `mode` with the `tunnel` workload's parameters.
 fn fog_toggle(gl: &mut dyn Gl, mode: GLenum) {
@@ -418,7 +605,7 @@ fn environment_texture() -> Vec<u8> {
 }
 
 /// A torus about the y axis (`big` and `small` radii) as triangle strips with normals.
-fn torus(gl: &mut dyn Gl, rings: usize, sides: usize, big: f32, small: f32) {
+pub(crate) fn torus(gl: &mut dyn Gl, rings: usize, sides: usize, big: f32, small: f32) {
     use std::f32::consts::TAU;
     for i in 0..rings {
         gl.begin(GL_TRIANGLE_STRIP);
@@ -578,7 +765,12 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
     gl.clear_color(0.0, 0.0, 0.0, 1.0);
     gl.clear_depth(1.0);
     match cfg.workload {
-        Workload::Triangles | Workload::Sprites => {
+        Workload::Triangles
+        | Workload::Sprites
+        | Workload::LitTriangles
+        | Workload::Lines
+        | Workload::Text
+        | Workload::Uploads => {
             gl.matrix_mode(GL_PROJECTION);
             gl.ortho(0.0, cfg.width as f64, 0.0, cfg.height as f64, -1.0, 1.0);
             gl.matrix_mode(GL_MODELVIEW);
@@ -591,10 +783,14 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
         | Workload::TunnelNoFog
         | Workload::Objects
         | Workload::ObjectsNoFog
+        | Workload::Combine4
+        | Workload::Cubemap
+        | Workload::Shadow
+        | Workload::Accum
         | Workload::Lighting => {
             gl.matrix_mode(GL_PROJECTION);
             let aspect = cfg.width as f64 / cfg.height as f64;
-            let far = if cfg.workload == Workload::Horizon {
+            let far = if matches!(cfg.workload, Workload::Horizon | Workload::Accum) {
                 2000.0
             } else {
                 40.0
@@ -608,12 +804,37 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
             gl.matrix_mode(GL_MODELVIEW);
         }
     }
-    if matches!(cfg.workload, Workload::Overdraw | Workload::Horizon) {
+    if matches!(
+        cfg.workload,
+        Workload::Overdraw | Workload::Horizon | Workload::Accum
+    ) {
         let (_, min, mag, aniso) = LADDER[cfg.quality.min(LADDER.len() - 1)];
         bench_texture_setup(gl, min, mag, aniso);
         gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
-        gl.disable(GL_DEPTH_TEST);
+        // The overdraw layers are depth-tested (each nearer than the last, so all are drawn).
+        if cfg.workload != Workload::Overdraw {
+            gl.disable(GL_DEPTH_TEST);
+        }
         gl.clear_color(0.55, 0.7, 0.9, 1.0);
+    }
+    match cfg.workload {
+        Workload::LitTriangles => bench_scenes::setup_lit_triangles(gl, cfg.width, cfg.height),
+        Workload::Combine4 => bench_scenes::setup_combine4(
+            gl,
+            &bench_texture(),
+            &light_map_texture(),
+            &environment_texture(),
+        ),
+        Workload::Cubemap => bench_scenes::setup_cubemap(gl),
+        Workload::Lines => bench_scenes::setup_lines(gl, cfg.width, cfg.height),
+        Workload::Shadow => bench_scenes::setup_shadow(gl),
+        Workload::Text => bench_scenes::setup_text(gl, cfg.width, cfg.height),
+        Workload::Uploads => {
+            if let WorkData::Uploads(px, _, _) = work_data(cfg) {
+                bench_scenes::setup_uploads(gl, cfg.width, cfg.height, &px);
+            }
+        }
+        _ => {}
     }
     if cfg.workload == Workload::Sprites {
         let mut name = [0u32];
@@ -782,6 +1003,51 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
     }
 }
 
+/// Segment `k` of the `lightmap` corridor (4 wide, 3 high, 2 long): floor, ceiling and two
+/// walls, each a quad.
+pub(crate) fn corridor_walls(k: usize) -> [[[f32; 3]; 4]; 4] {
+    let (z0, z1) = (-2.0 * k as f32, -2.0 * (k + 1) as f32);
+    [
+        [
+            [-2.0, -1.5, z0],
+            [2.0, -1.5, z0],
+            [2.0, -1.5, z1],
+            [-2.0, -1.5, z1],
+        ],
+        [
+            [-2.0, 1.5, z1],
+            [2.0, 1.5, z1],
+            [2.0, 1.5, z0],
+            [-2.0, 1.5, z0],
+        ],
+        [
+            [-2.0, -1.5, z1],
+            [-2.0, -1.5, z0],
+            [-2.0, 1.5, z0],
+            [-2.0, 1.5, z1],
+        ],
+        [
+            [2.0, -1.5, z0],
+            [2.0, -1.5, z1],
+            [2.0, 1.5, z1],
+            [2.0, 1.5, z0],
+        ],
+    ]
+}
+
+/// The `horizon` ground plane: 800 wide, from 0.3 to 1500 units deep, the texture repeating
+/// every 4 units.
+fn horizon_plane(gl: &mut dyn Gl) {
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.begin(GL_QUADS);
+    let (w, near, far) = (400.0f32, -0.3f32, -1500.0f32);
+    for (x, z) in [(-w, near), (w, near), (w, far), (-w, far)] {
+        gl.tex_coord_2f(x / 4.0, z / 4.0);
+        gl.vertex_3f(x, -1.0, z);
+    }
+    gl.end();
+}
+
 /// One frame: clear, the workload in immediate mode, glFinish.
 pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
     let sprites = matches!(data, WorkData::Sprites(_));
@@ -852,9 +1118,11 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
                 let a = 0.2 * k as f32;
                 let (c, s) = (a.cos() * scale, a.sin() * scale);
                 gl.color_4f(1.0, 1.0 - 0.05 * k as f32, 0.8 + 0.02 * k as f32, 1.0);
+                // Back to front: each layer nearer than the last passes the depth test.
+                let z = -0.9 + 0.2 * k as f32;
                 for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
                     gl.tex_coord_2f(c * x - s * y, s * x + c * y);
-                    gl.vertex_2f(x, y);
+                    gl.vertex_3f(x, y, z);
                 }
             }
             gl.end();
@@ -862,14 +1130,31 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
         WorkData::Horizon => {
             gl.load_identity();
             gl.rotatef(6.0, 1.0, 0.0, 0.0);
-            gl.color_3f(1.0, 1.0, 1.0);
-            gl.begin(GL_QUADS);
-            let (w, near, far) = (400.0f32, -0.3f32, -1500.0f32);
-            for (x, z) in [(-w, near), (w, near), (w, far), (-w, far)] {
-                gl.tex_coord_2f(x / 4.0, z / 4.0);
-                gl.vertex_3f(x, -1.0, z);
+            horizon_plane(gl);
+        }
+        WorkData::Accum(passes) => {
+            // Motion blur: the horizon turning a little between passes, averaged.
+            for p in 0..*passes {
+                if p > 0 {
+                    gl.clear(GL_COLOR_BUFFER_BIT);
+                }
+                gl.load_identity();
+                gl.rotatef(6.0, 1.0, 0.0, 0.0);
+                gl.rotatef(1.5 * p as f32, 0.0, 1.0, 0.0);
+                horizon_plane(gl);
+                let op = if p == 0 { GL_LOAD } else { GL_ACCUM };
+                gl.accum(op, 1.0 / *passes as f32);
             }
-            gl.end();
+            gl.accum(GL_RETURN, 1.0);
+        }
+        WorkData::LitTriangles(verts) => bench_scenes::frame_lit_triangles(gl, verts),
+        WorkData::Combine4(segments) => bench_scenes::frame_combine4(gl, *segments),
+        WorkData::Cubemap(rings, sides) => bench_scenes::frame_cubemap(gl, *rings, *sides),
+        WorkData::Lines(segs) => bench_scenes::frame_lines(gl, segs),
+        WorkData::Shadow => bench_scenes::frame_shadow(gl),
+        WorkData::Text(px, height) => bench_scenes::frame_text(gl, px, *height),
+        WorkData::Uploads(px, width, height) => {
+            bench_scenes::frame_uploads(gl, px, *width, *height)
         }
         WorkData::Lightmap(segments) => {
             gl.load_identity();
@@ -879,33 +1164,7 @@ pub fn frame(gl: &mut dyn Gl, data: &WorkData) {
             // each segment its own quad with its own light-map square.
             gl.begin(GL_QUADS);
             for k in 0..*segments {
-                let (z0, z1) = (-2.0 * k as f32, -2.0 * (k + 1) as f32);
-                let walls: [[[f32; 3]; 4]; 4] = [
-                    [
-                        [-2.0, -1.5, z0],
-                        [2.0, -1.5, z0],
-                        [2.0, -1.5, z1],
-                        [-2.0, -1.5, z1],
-                    ],
-                    [
-                        [-2.0, 1.5, z1],
-                        [2.0, 1.5, z1],
-                        [2.0, 1.5, z0],
-                        [-2.0, 1.5, z0],
-                    ],
-                    [
-                        [-2.0, -1.5, z1],
-                        [-2.0, -1.5, z0],
-                        [-2.0, 1.5, z0],
-                        [-2.0, 1.5, z1],
-                    ],
-                    [
-                        [2.0, -1.5, z0],
-                        [2.0, -1.5, z1],
-                        [2.0, 1.5, z1],
-                        [2.0, 1.5, z0],
-                    ],
-                ];
+                let walls = corridor_walls(k);
                 for w in walls {
                     for (c, v) in w.iter().enumerate() {
                         let (u, t) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][c];
@@ -1033,7 +1292,10 @@ pub fn run_tilegl(cfg: &BenchConfig, data: &WorkData, threads: usize) -> BenchRe
         width: cfg.width,
         height: cfg.height,
         threads,
-        ..ContextConfig::default()
+        framebuffer: FramebufferConfig {
+            accum_bits: 16,
+            ..FramebufferConfig::default()
+        },
     });
     run_frames(&format!("tilegl {threads}T"), &mut ctx, cfg, data)
 }
@@ -1201,15 +1463,37 @@ fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<String>, bool) 
     (child_out, all)
 }
 
-/// The benchmark's command line: `[--workload triangles|sprites|fog|all] [--frames N]
-/// [--triangles N] [--budget SECONDS] [--min-time SECONDS] [--threads N] [--no-mesa]`. Prints one table per workload and returns the process
-/// exit code.
+/// What `--help` prints.
+pub const USAGE: &str = "bench [--workload NAME|all|toggles|ladder|lighting] [--no-ladder] \
+[--frames N] [--min-time SECONDS] [--budget SECONDS] [--threads N] [--toggle K] [--quality K] \
+[--no-mesa] [--no-xcore] [--scaling]
+
+Times each workload at 1024x768 on tilegl (through its C exports; --threads N: through the \
+Rust API with N threads) and Mesa (llvmpipe with LP_NUM_THREADS=2 in this process, softpipe in \
+a child), tilegl and llvmpipe in alternating rounds, and prints a ratio table with each \
+workload's picture error beside its times. Workloads: triangles sprites fog overdraw horizon \
+lightmap spheremap tunnel tunnel-nofog objects objects-nofog lit-triangles combine4 cubemap \
+lines shadow text uploads accum; toggles: the state-toggle matrix; ladder: texture quality \
+against time; lighting: lighting cost against triangle count; --scaling: time against pixels \
+and triangles.";
+
+/// The benchmark's command line ([`USAGE`]). Prints one table per workload, then the ratio
+/// table, and returns the process exit code.
 pub fn run_cli() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        println!("{USAGE}");
+        return 0;
+    }
     if args.iter().any(|a| a == "--scaling") {
         let with_mesa =
             !args.iter().any(|a| a == "--no-mesa") && crate::mesa::mesa_available().is_ok();
         return crate::scaling::run(std::path::Path::new("target/bench"), with_mesa);
+    }
+    if std::env::var_os("LP_NUM_THREADS").is_none() {
+        // llvmpipe with two rendering threads (the issue's reference), set before Mesa's
+        // first context reads it.
+        std::env::set_var("LP_NUM_THREADS", "2");
     }
     let mut cfg = BenchConfig::default();
     let (child_out, all) = parse_args(&args, &mut cfg);
@@ -1245,11 +1529,21 @@ pub fn run_cli() -> i32 {
         run_lighting_scaling(&cfg);
         return 0;
     }
+    let mut rows = Vec::new();
     for w in workloads {
         cfg.workload = w;
-        run_workload(&cfg, &args);
+        rows.extend(run_workload(&cfg, &args));
     }
-    if all || cfg.ladder_only {
+    if !rows.is_empty() {
+        println!();
+        println!(
+            "== ratio table ({}x{}; vs: the Mesa driver's ms over tilegl's, above 1 tilegl is \
+             faster; error: tilegl's picture against the driver's)",
+            cfg.width, cfg.height
+        );
+        print!("{}", ratio_table(&rows));
+    }
+    if (all && !args.iter().any(|a| a == "--no-ladder")) || cfg.ladder_only {
         run_ladder(&cfg);
     }
     0
@@ -1331,68 +1625,121 @@ pub fn run_lighting_scaling(cfg: &BenchConfig) {
 }
 
 /// The state-toggle matrix: the `tunnel-nofog` scene with each of [`TOGGLES`] on tilegl
-/// (1 and 2 threads, or `--threads`) and Mesa in this process, alternating per toggle; each
-/// toggle's added cost on each, and tilegl's against Mesa's, with tilegl's picture error
-/// against Mesa's.
+/// (through the C exports, or `--threads`) and Mesa in this process, in two alternating rounds
+/// per toggle; the base scene is timed first and again last (its figure is the mean of the two).
+/// Prints each toggle's added cost on both, tilegl's over Mesa's, whether that is within the
+/// issue's 1.5x, and tilegl's picture error against Mesa's; then the same as a Markdown table.
 pub fn run_toggles(cfg: &BenchConfig) {
     let mut c = cfg.clone();
     c.workload = Workload::TunnelNoFog;
     let data = work_data(&c);
     println!();
     println!(
-        "== toggles: {} at {}x{}, each feature turned on alone (medians over at least {} \
-         frames and {:.1} s)",
+        "== toggles: {} at {}x{}, each feature turned on alone or in a pair (medians over two \
+         alternating rounds of at least {} frames and {:.1} s each)",
         describe(&c),
         c.width,
         c.height,
-        c.frames,
-        c.min_time.as_secs_f64()
+        c.frames.div_ceil(2),
+        c.min_time.as_secs_f64() / 2.0
     );
-    let threads = c.tilegl_threads.clone();
-    let mut header = format!("{:<32}", "toggle");
-    for t in &threads {
-        header += &format!(" {:>9} {:>8}", format!("{t}T ms"), "added");
-    }
-    header += &format!(
-        " {:>9} {:>8} {:>10}  picture vs Mesa (last tilegl)",
-        "mesa ms", "added", "ratio"
-    );
-    println!("{header}");
-    let mut base: Option<(Vec<f64>, f64)> = None;
+    let (half, budget) = (c.min_time / 2, c.budget / 2);
+    let frames = c.frames.div_ceil(2);
+    let time = |c: &BenchConfig| -> Option<(BenchResult, Option<BenchResult>)> {
+        let mut t = open_tilegl(c, &data).ok()?;
+        let mut m = open_mesa(c, &data).ok().map(|(m, _)| m);
+        t.round(&data, frames, half, budget);
+        if let Some(m) = &mut m {
+            m.round(&data, frames, half, budget);
+            m.round(&data, frames, half, budget);
+        }
+        t.round(&data, frames, half, budget);
+        Some((t.finish(c), m.map(|m| m.finish(c))))
+    };
+    let mut rows: Vec<(&str, f64, f64, Option<tilegl::compare::Diff>)> = Vec::new();
     for (k, (name, _)) in TOGGLES.iter().enumerate() {
         c.toggle = Some(k);
-        let runs: Vec<BenchResult> = threads.iter().map(|&t| run_tilegl(&c, &data, t)).collect();
-        let mesa = run_mesa(&c, &data).ok().map(|(r, _)| r);
-        let times: Vec<f64> = runs.iter().map(|r| r.median_ms()).collect();
-        let mesa_ms = mesa.as_ref().map_or(f64::NAN, |m| m.median_ms());
-        if base.is_none() {
-            base = Some((times.clone(), mesa_ms));
+        let Some((t, m)) = time(&c) else {
+            println!("tilegl: no context");
+            return;
+        };
+        let mesa_ms = m.as_ref().map_or(f64::NAN, BenchResult::median_ms);
+        let d = m.as_ref().map(|m| diff(&t.image, &m.image, 8));
+        println!(
+            "{:<34} tilegl {:>7.1} ms  mesa {:>7.1} ms{}{}",
+            name,
+            t.median_ms(),
+            mesa_ms,
+            d.as_ref().map_or(String::new(), |d| format!("  {d}")),
+            if t.error != 0 {
+                format!("  glError {:#x}", t.error)
+            } else {
+                String::new()
+            }
+        );
+        rows.push((name, t.median_ms(), mesa_ms, d));
+    }
+    // The base again, after the toggles: the machine's drift over the run shows in the two.
+    c.toggle = Some(0);
+    let again = time(&c);
+    let (t0, m0) = (rows[0].1, rows[0].2);
+    let (bt, bm) = match &again {
+        Some((t, m)) => {
+            let m1 = m.as_ref().map_or(f64::NAN, BenchResult::median_ms);
+            println!(
+                "{:<34} tilegl {:>7.1} ms  mesa {:>7.1} ms (the base again)",
+                TOGGLES[0].0,
+                t.median_ms(),
+                m1
+            );
+            ((t0 + t.median_ms()) / 2.0, (m0 + m1) / 2.0)
         }
-        let (bt, bm) = base.clone().unwrap_or_default();
-        let mut line = format!("{name:<32}");
-        for (t, b) in times.iter().zip(&bt) {
-            line += &format!(" {t:>9.1} {:>+8.1}", t - b);
-        }
-        let mesa_added = mesa_ms - bm;
-        let tilegl_added =
-            times.last().copied().unwrap_or(f64::NAN) - bt.last().copied().unwrap_or(f64::NAN);
+        None => (t0, m0),
+    };
+    let tilegl = open_tilegl(&c, &data).map_or("tilegl".to_string(), |s| s.name);
+    println!();
+    println!(
+        "| toggle | {tilegl} ms | added | llvmpipe ms | added | tilegl's added / llvmpipe's | \
+         within 1.5x | error vs llvmpipe (>8, mean) |"
+    );
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: |");
+    for (k, (name, t, m, d)) in rows.iter().enumerate() {
+        let (ta, ma) = (t - bt, m - bm);
         let ratio = if k == 0 {
             "-".to_string()
-        } else if mesa_added.abs() < 0.3 {
-            format!("{tilegl_added:+.1} ms")
+        } else if ma.abs() < 0.3 {
+            format!("{ta:+.1} ms vs {ma:+.1} ms")
         } else {
-            format!("{:.2}x", tilegl_added / mesa_added)
+            format!("{:.2}", ta / ma)
         };
-        line += &format!(" {mesa_ms:>9.1} {mesa_added:>+8.1} {ratio:>10}");
-        if let (Some(m), Some(t)) = (&mesa, runs.last()) {
-            line += &format!("  {}", diff(&t.image, &m.image, 8));
-        }
-        println!("{line}");
+        let within = if k == 0 {
+            "-"
+        } else if toggle_within(ta, ma, bt) {
+            "yes"
+        } else {
+            "**no**"
+        };
+        println!(
+            "| {name} | {t:.1} | {ta:+.1} | {m:.1} | {ma:+.1} | {ratio} | {within} | {} |",
+            d.as_ref().map_or("-".to_string(), |d| format!(
+                "{:.3} % / {:.3}",
+                d.bad_share * 100.0,
+                d.mean
+            ))
+        );
     }
     println!(
-        "added: the toggle's time minus the base scene's; ratio: tilegl's added time over \
-         Mesa's (its added ms when Mesa's is below 0.3 ms)"
+        "base: the mean of the first and last base runs; added: the toggle's time minus the \
+         base's; within 1.5x: tilegl's added time is at most 1.5 times llvmpipe's, or within \
+         the noise (5 % of tilegl's base time)"
     );
+}
+
+/// Whether a toggle adding `tilegl_added` ms to tilegl and `mesa_added` ms to Mesa is within
+/// the issue's bound (at most 1.5 times Mesa's added cost); differences under 5 % of tilegl's
+/// base time `tilegl_base` are within the noise of the shared machine.
+pub fn toggle_within(tilegl_added: f64, mesa_added: f64, tilegl_base: f64) -> bool {
+    tilegl_added <= (1.5 * mesa_added).max(0.05 * tilegl_base)
 }
 
 /// " (phases differ: ...)" when two runs' cross-core round trips (`machine`) differ by more
@@ -1573,6 +1920,39 @@ fn describe(cfg: &BenchConfig) -> String {
             2 * TORUS.0 * TORUS.1
         ),
         Workload::Lighting => "a lit sphere".to_string(),
+        Workload::LitTriangles => format!(
+            "{} small lit triangles/frame through glNormal3f/glVertex3f, one light, specular",
+            bench_scenes::LIT_TRIANGLES
+        ),
+        Workload::Combine4 => format!(
+            "the lightmap corridor through GL_COMBINE on 4 units (base trilinear x colour, light \
+             map x2, signed detail trilinear, interpolated environment), {} quads",
+            4 * CORRIDOR_SEGMENTS
+        ),
+        Workload::Cubemap => format!(
+            "a lit torus of {} triangles reflecting a cube map (GL_REFLECTION_MAP on s, t, r)",
+            2 * TORUS.0 * TORUS.1
+        ),
+        Workload::Lines => format!(
+            "{} segments/frame: half smooth (width 2.5, blended), half wide (width 3)",
+            bench_scenes::LINES
+        ),
+        Workload::Shadow => format!(
+            "a lit floor and {} plates, their shadow volumes counted in the stencil buffer \
+             (z-pass, two passes), a blended darkening quad",
+            bench_scenes::PLATES.0 * bench_scenes::PLATES.1
+        ),
+        Workload::Text => format!(
+            "4 glDrawPixels of 256x192 RGBA and {} glBitmap glyphs of 8x13/frame",
+            bench_scenes::TEXT.0 * bench_scenes::TEXT.1
+        ),
+        Workload::Uploads => "4 glTexSubImage2D of 256x256 RGBA and 1 glTexImage2D of 512x512 \
+                              RGB per frame, each drawn (bilinear)"
+            .to_string(),
+        Workload::Accum => format!(
+            "the horizon drawn {} times with a turn, averaged with glAccum (LOAD, ACCUM, RETURN)",
+            bench_scenes::ACCUM_PASSES
+        ),
         Workload::Tunnel | Workload::TunnelNoFog => format!(
             "a perspective tunnel of {} quads, {} walls MODULATEd by a smooth colour, depth \
              test{}",
@@ -1598,12 +1978,148 @@ fn describe(cfg: &BenchConfig) -> String {
     }
 }
 
-fn run_workload(cfg: &BenchConfig, args: &[String]) {
+/// A context under test: tilegl through its C exports (`OSMesaCreateContextExt`, every call
+/// through the function `OSMesaGetProcAddress` returns, as Mesa is driven), tilegl through
+/// the Rust API with a thread count (`--threads N`, for profiling without the C layer), or Mesa
+/// in this process.
+pub enum Subject {
+    CAbi(CAbiContext),
+    Rust(Box<Context>),
+    Mesa(MesaContext),
+}
+
+impl Subject {
+    pub fn gl(&mut self) -> &mut dyn Gl {
+        match self {
+            Subject::CAbi(c) => &mut **c,
+            Subject::Rust(c) => &mut **c,
+            Subject::Mesa(m) => &mut **m,
+        }
+    }
+}
+
+/// A subject with its workload set up and one warm-up frame drawn, collecting frame times over
+/// rounds that alternate with the other subjects' (a slow spell of the shared machine then
+/// falls on both sides instead of one).
+pub struct Session {
+    pub name: String,
+    subject: Subject,
+    frame_ms: Vec<f64>,
+    spent: Duration,
+}
+
+impl Session {
+    pub fn open(name: String, mut subject: Subject, cfg: &BenchConfig, data: &WorkData) -> Self {
+        setup(subject.gl(), cfg);
+        frame(subject.gl(), data);
+        Session {
+            name,
+            subject,
+            frame_ms: Vec::new(),
+            spent: Duration::ZERO,
+        }
+    }
+
+    /// Times frames until this round has at least `frames` of them and `min_time`, stopping
+    /// early once the session has spent `budget` (at least one frame per round).
+    pub fn round(&mut self, data: &WorkData, frames: usize, min_time: Duration, budget: Duration) {
+        let start = Instant::now();
+        let mut n = 0;
+        while n < frames.max(1) || start.elapsed() < min_time {
+            let t = Instant::now();
+            frame(self.subject.gl(), data);
+            let dt = t.elapsed();
+            self.frame_ms.push(dt.as_secs_f64() * 1000.0);
+            self.spent += dt;
+            n += 1;
+            if self.spent > budget {
+                break;
+            }
+        }
+    }
+
+    /// The GL error after the frames and the final picture.
+    pub fn finish(mut self, cfg: &BenchConfig) -> BenchResult {
+        let gl = self.subject.gl();
+        let error = gl.get_error();
+        let image = Image::read(gl, cfg.width, cfg.height);
+        BenchResult {
+            name: self.name,
+            frame_ms: self.frame_ms,
+            image,
+            error,
+        }
+    }
+}
+
+/// tilegl as programs reach it (the C exports, default threads: one per core), or through the
+/// Rust API with `cfg.tilegl_threads[0]` threads when `--threads` was given.
+pub fn open_tilegl(cfg: &BenchConfig, data: &WorkData) -> Result<Session, String> {
+    match cfg.tilegl_threads.first() {
+        Some(&threads) => {
+            let ctx = Context::with_config(ContextConfig {
+                width: cfg.width,
+                height: cfg.height,
+                threads,
+                framebuffer: FramebufferConfig {
+                    accum_bits: 16,
+                    ..FramebufferConfig::default()
+                },
+            });
+            Ok(Session::open(
+                format!("tilegl {threads}T rs"),
+                Subject::Rust(Box::new(ctx)),
+                cfg,
+                data,
+            ))
+        }
+        None => {
+            let ctx = CAbiContext::create(cfg.width, cfg.height, 16)
+                .ok_or("the C ABI refused the context")?;
+            let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+            Ok(Session::open(
+                format!("tilegl {threads}T"),
+                Subject::CAbi(ctx),
+                cfg,
+                data,
+            ))
+        }
+    }
+}
+
+/// Mesa in this process (llvmpipe unless `GALLIUM_DRIVER` says otherwise).
+pub fn open_mesa(cfg: &BenchConfig, data: &WorkData) -> Result<(Session, OracleInfo), String> {
+    let mesa = MesaContext::create(cfg.width, cfg.height).map_err(|e| e.to_string())?;
+    let info = mesa.info().clone();
+    let name = format!("mesa {}", info.driver());
+    Ok((Session::open(name, Subject::Mesa(mesa), cfg, data), info))
+}
+
+/// One line of the ratio table.
+#[derive(Clone, Debug)]
+pub struct SummaryRow {
+    pub workload: Workload,
+    pub tilegl_name: String,
+    pub tilegl_ms: f64,
+    pub llvmpipe_ms: Option<f64>,
+    pub softpipe_ms: Option<f64>,
+    /// tilegl's picture against llvmpipe's and softpipe's.
+    pub vs_llvmpipe: Option<tilegl::compare::Diff>,
+    pub vs_softpipe: Option<tilegl::compare::Diff>,
+    /// A GL error reported by any implementation after the frames.
+    pub errors: Vec<String>,
+}
+
+/// Times one workload: tilegl and Mesa in this process in two alternating rounds (tilegl,
+/// Mesa; then Mesa, tilegl), the other Mesa driver in a child process between them; prints
+/// each implementation's figures and every pair's picture difference, and returns the row of
+/// the ratio table.
+fn run_workload(cfg: &BenchConfig, args: &[String]) -> Option<SummaryRow> {
     let data = work_data(cfg);
     println!();
     println!(
-        "== {}: {} at {}x{}, median of at least {} frames and {:.1} s (after 1 warm-up; at \
-         most {:.0} s), each ending in glFinish",
+        "== {}: {} at {}x{}, median of at least {} frames and {:.1} s over two alternating \
+         rounds (after 1 warm-up; at most {:.0} s), each ending in glFinish",
         cfg.workload.name(),
         describe(cfg),
         cfg.width,
@@ -1612,54 +2128,83 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
         cfg.min_time.as_secs_f64(),
         cfg.budget.as_secs_f64()
     );
-    // The cross-core round trip just before each implementation's run (`machine`); not with
-    // `--no-xcore` (under valgrind its two spinning threads take minutes).
+    // The cross-core round trip just before each implementation's first round (`machine`);
+    // not with `--no-xcore` (under valgrind its two spinning threads take minutes).
     let measure = !args.iter().any(|a| a == "--no-xcore");
     let cross_core_round_trip_ns = || measure.then(cross_core_round_trip_ns).flatten();
-    let mut round_trip = Vec::new();
-    let mut results: Vec<BenchResult> = Vec::new();
-    for &t in &cfg.tilegl_threads {
-        round_trip.push(cross_core_round_trip_ns());
-        results.push(run_tilegl(cfg, &data, t));
-    }
-    let mesa = if args.iter().any(|a| a == "--no-mesa") {
+    let frames = cfg.frames.div_ceil(2);
+    let (half, budget) = (cfg.min_time / 2, cfg.budget / 2);
+    let mut tile = match open_tilegl(cfg, &data) {
+        Ok(t) => t,
+        Err(e) => {
+            println!("tilegl: {e}");
+            return None;
+        }
+    };
+    let mut mesa = if args.iter().any(|a| a == "--no-mesa") {
         Err("--no-mesa".to_string())
     } else {
-        round_trip.push(cross_core_round_trip_ns());
-        run_mesa(cfg, &data)
+        open_mesa(cfg, &data)
     };
-    match mesa {
-        Ok((r, info)) => {
+    let trip_tile = cross_core_round_trip_ns();
+    tile.round(&data, frames, half, budget);
+    let trip_mesa = cross_core_round_trip_ns();
+    if let Ok((m, _)) = &mut mesa {
+        m.round(&data, frames, half, budget);
+    }
+    // The other driver in a child between the rounds (softpipe takes about a second a frame:
+    // three frames).
+    let child = match &mesa {
+        Ok((_, info)) => {
             let other = if info.driver() == "softpipe" {
                 "llvmpipe"
             } else {
                 "softpipe"
             };
-            println!("Mesa in this process: {info}");
-            results.push(r);
             // cargo bench passes --bench; keep it so the child parses args the same way.
             let extra: Vec<&str> = args
                 .iter()
                 .filter(|a| a.as_str() == "--bench")
                 .map(|s| s.as_str())
                 .collect();
+            let mut c = cfg.clone();
+            c.frames = 3;
+            c.min_time = half;
             let before = cross_core_round_trip_ns();
-            match run_mesa_subprocess(other, cfg, &extra) {
-                Ok(r) => {
-                    results.push(r);
-                    round_trip.push(before);
-                }
-                Err(e) => println!("mesa {other}: unavailable ({e})"),
-            }
+            Some((other, run_mesa_subprocess(other, &c, &extra), before))
+        }
+        Err(_) => None,
+    };
+    if let Ok((m, _)) = &mut mesa {
+        m.round(&data, frames, half, budget);
+    }
+    tile.round(&data, frames, half, budget);
+
+    let mut results = vec![tile.finish(cfg)];
+    let mut round_trip = vec![trip_tile];
+    match mesa {
+        Ok((m, info)) => {
+            println!("Mesa in this process: {info}");
+            results.push(m.finish(cfg));
+            round_trip.push(trip_mesa);
         }
         Err(e) => println!("Mesa: unavailable ({e}); tilegl figures only"),
+    }
+    if let Some((other, r, before)) = child {
+        match r {
+            Ok(r) => {
+                results.push(r);
+                round_trip.push(before);
+            }
+            Err(e) => println!("mesa {other}: unavailable ({e})"),
+        }
     }
 
     let base = results[0].median_ms();
     println!(
         "{:<16} {:>10} {:>10} {:>8} {:>7}  timed frames: count, fastest, 90th percentile, \
          slowest (ms)",
-        "implementation", "ms/frame", "vs tilegl1", "glError", "xcore"
+        "implementation", "ms/frame", "vs tilegl", "glError", "xcore"
     );
     for (r, trip) in results.iter().zip(&round_trip) {
         let trip = trip.map_or("-".to_string(), |ns| format!("{ns:.0} ns"));
@@ -1689,27 +2234,21 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
          (machine::cross_core_round_trip_ns; the development VM has phases of ~100 and ~400 ns, \
          and multi-threaded renderers are slower in the second)"
     );
-    // The issues' targets are speeds relative to Mesa's drivers: each tilegl run's speed
-    // against each Mesa run's (above 1: tilegl is faster).
-    // A ratio of two runs timed in different phases of the machine is marked.
-    let trip_of = |r: &BenchResult| {
-        results
-            .iter()
-            .position(|x| std::ptr::eq(x, r))
-            .and_then(|i| round_trip.get(i).copied().flatten())
-    };
-    for t in results.iter().filter(|r| r.name.starts_with("tilegl")) {
-        let speeds: Vec<String> = results
-            .iter()
-            .filter(|r| r.name.starts_with("mesa"))
-            .map(|m| {
-                let note = phase_note(trip_of(t), trip_of(m));
-                format!("{:.2}x {}{note}", m.median_ms() / t.median_ms(), m.name)
-            })
-            .collect();
-        if !speeds.is_empty() {
-            println!("speed of {}: {}", t.name, speeds.join(", "));
-        }
+    // The issues' targets are speeds relative to Mesa's drivers: tilegl's speed against each
+    // Mesa run's (above 1: tilegl is faster). A ratio of two runs timed in different phases of
+    // the machine is marked.
+    let t = &results[0];
+    let speeds: Vec<String> = results
+        .iter()
+        .zip(&round_trip)
+        .skip(1)
+        .map(|(m, trip)| {
+            let note = phase_note(round_trip[0], *trip);
+            format!("{:.2}x {}{note}", m.median_ms() / t.median_ms(), m.name)
+        })
+        .collect();
+    if !speeds.is_empty() {
+        println!("speed of {}: {}", t.name, speeds.join(", "));
     }
     if let Some(dir) = std::env::var_os("TILEGL_BENCH_DUMP") {
         // Pictures for a closer look: DIR/WORKLOAD-IMPLEMENTATION.ppm.
@@ -1729,6 +2268,61 @@ fn run_workload(cfg: &BenchConfig, args: &[String]) {
             println!("  {:<14} vs {:<14} {}", results[i].name, results[j].name, d);
         }
     }
+    let find = |driver: &str| results.iter().find(|r| r.name == format!("mesa {driver}"));
+    let (llvmpipe, softpipe) = (find("llvmpipe"), find("softpipe"));
+    Some(SummaryRow {
+        workload: cfg.workload,
+        tilegl_name: t.name.clone(),
+        tilegl_ms: t.median_ms(),
+        llvmpipe_ms: llvmpipe.map(BenchResult::median_ms),
+        softpipe_ms: softpipe.map(BenchResult::median_ms),
+        vs_llvmpipe: llvmpipe.map(|m| diff(&t.image, &m.image, 8)),
+        vs_softpipe: softpipe.map(|m| diff(&t.image, &m.image, 8)),
+        errors: results
+            .iter()
+            .filter(|r| r.error != 0)
+            .map(|r| format!("{} {:#x}", r.name, r.error))
+            .collect(),
+    })
+}
+
+/// The ratio table of a run as Markdown: each workload's median ms on tilegl, llvmpipe and
+/// softpipe, tilegl's speed against each (above 1: faster), and beside the times tilegl's
+/// picture error against each (share of pixels with a channel off by more than 8, mean
+/// channel difference).
+pub fn ratio_table(rows: &[SummaryRow]) -> String {
+    let ms = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.1}"));
+    let speed = |t: f64, m: Option<f64>| m.map_or("-".to_string(), |m| format!("{:.2}x", m / t));
+    let err = |d: &Option<tilegl::compare::Diff>| {
+        d.as_ref().map_or("-".to_string(), |d| {
+            format!("{:.3} % / {:.3}", d.bad_share * 100.0, d.mean)
+        })
+    };
+    let tilegl = rows.first().map_or("tilegl", |r| r.tilegl_name.as_str());
+    let mut out = format!(
+        "| workload | {tilegl} ms | llvmpipe ms | softpipe ms | vs llvmpipe | vs softpipe | \
+         error vs llvmpipe (>8, mean) | error vs softpipe (>8, mean) |\n\
+         | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n"
+    );
+    for r in rows {
+        out += &format!(
+            "| `{}` | {:.1} | {} | {} | {} | {} | {} | {} |{}\n",
+            r.workload.name(),
+            r.tilegl_ms,
+            ms(r.llvmpipe_ms),
+            ms(r.softpipe_ms),
+            speed(r.tilegl_ms, r.llvmpipe_ms),
+            speed(r.tilegl_ms, r.softpipe_ms),
+            err(&r.vs_llvmpipe),
+            err(&r.vs_softpipe),
+            if r.errors.is_empty() {
+                String::new()
+            } else {
+                format!(" GL errors: {}", r.errors.join(", "))
+            }
+        );
+    }
+    out
 }
 
 #[cfg(test)]

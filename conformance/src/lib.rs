@@ -3,6 +3,7 @@
 //! known-failures list ([`known_failures`]) and the triangle benchmark ([`bench`]).
 
 pub mod bench;
+pub mod bench_scenes;
 pub mod c_route;
 pub mod compare;
 pub mod example_support;

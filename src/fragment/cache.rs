@@ -3,9 +3,10 @@
 
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
-    blend_mode, depth_mode, pair_sampled8, pair_textured, sampled8_applies, span_fogged,
-    span_general, span_nothing, span_sampled, span_sampled8, span_specialised, span_textured,
-    span_untextured8, tail8_applies, tex_mode, untextured8_applies, PairFn, SpanFn,
+    blend_mode, depth_mode, depth_stencil_applies, pair_sampled8, pair_textured, sampled8_applies,
+    span_depth_stencil, span_fogged, span_general, span_nothing, span_sampled, span_sampled8,
+    span_specialised, span_textured, span_untextured8, tail8_applies, tex_mode,
+    untextured8_applies, PairFn, SpanFn,
 };
 use crate::common::values::CompareFunc;
 
@@ -16,6 +17,9 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
     }
     if force_general {
         return span_general;
+    }
+    if depth_stencil_applies(key) {
+        return span_depth_stencil;
     }
     if let Some(layout) = key.fast_texture {
         // The textured span neither tests stencil, runs logic ops nor counts samples for an

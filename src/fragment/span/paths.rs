@@ -404,6 +404,61 @@ pub fn span_untextured8<'a>(
     }
 }
 
+/// Whether [`span_depth_stencil`] may shade a key: no colour is written and no alpha test
+/// reads one (a stencil shadow-volume pass, a depth-only pass), so only the fragments' depths
+/// matter.
+pub fn depth_stencil_applies(key: &FragmentKey) -> bool {
+    key.color_mask == [false; 4] && key.alpha_func.is_none()
+}
+
+/// Spans of a key with [`depth_stencil_applies`]: the stencil and depth tests with their
+/// updates and the occlusion count, per fragment and in [`finish_fragment`]'s order, without
+/// the colour, texturing and fog it would compute and then not write (the depth stepped as
+/// every span path steps it).
+pub fn span_depth_stencil<'a>(
+    ds: &'a DrawState,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+) {
+    let key = &ds.key;
+    let u = &ds.uniforms;
+    let row = tile.index(x0, y);
+    let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 0);
+    for idx in row..row + (x1 - x0).max(0) as usize {
+        let depth = depth_to_fixed(run.z, ds.depth_max);
+        run.step();
+        let depth_pass = match key.depth_func {
+            None | Some(CompareFunc::Always) => true,
+            Some(f) => f.test(depth, tile.depth[idx]),
+        };
+        if let Some(st) = key.stencil {
+            let old = tile.stencil[idx];
+            let mask = u.stencil_value_mask;
+            let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
+                tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
+                continue;
+            } else if depth_pass {
+                st.depth_pass
+            } else {
+                st.depth_fail
+            };
+            tile.stencil[idx] = apply_stencil_op(action, old, u);
+        }
+        if !depth_pass {
+            continue;
+        }
+        if key.count_samples {
+            tile.samples_passed += 1;
+        }
+        if key.depth_write {
+            tile.depth[idx] = depth;
+        }
+    }
+}
+
 /// Draws nothing (a key whose fragments change no buffer).
 pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
 
