@@ -295,7 +295,9 @@ fn slivers_with_large_plane_terms_are_not_dropped() {
             gl.begin(GL_TRIANGLES);
             gl.vertex_3f(x[0], yc, 0.0);
             gl.vertex_3f(x[1], yc, 0.8);
-            gl.vertex_3f(far, yc - 1.0 / 256.0, 0.0);
+            // Above the edge through the row's pixel centres, which is then the sliver's
+            // bottom edge, one the fill rule includes (the top edge it would exclude).
+            gl.vertex_3f(far, yc + 1.0 / 256.0, 0.0);
             gl.end();
         };
         gl.depth_func(GL_ALWAYS);

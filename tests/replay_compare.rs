@@ -4,7 +4,7 @@
 //! pixels off by more than 8 in some channel, or the llvmpipe-vs-softpipe spread of that
 //! picture (`NAME.frames/softpipe/`).
 //!
-//! Captures that need features tilegl does not have yet are listed in [`KNOWN_FAILURES`] with
+//! Captures that need features tilegl does not have yet are listed in `KNOWN_FAILURES.tsv` (in the captures' folder) with
 //! the feature. Their test checks that they still fail, and fails when one passes, so that the
 //! list stays true: remove the entry then.
 
@@ -12,53 +12,13 @@ use std::path::PathBuf;
 
 mod common;
 
-/// Captures that do not match yet, and why (from the unknown calls and GL errors the replay
-/// reports, and from the figures), and captures whose reference cannot check anything (it
-/// shows only the clear colour, which fails the comparison whatever the replay draws).
-const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "piglit-gl-1.0-rendermode-feedback",
-        "the reference shows only the clear colour (green): in GL_FEEDBACK mode nothing is \
-         drawn, so the picture cannot check the replay",
-    ),
-    (
-        "piglit-polygon-mode",
-        "polygon outlines (glPolygonMode GL_LINE): in the second and third pictures Mesa \
-         draws horizontal outline edges that tilegl leaves out (220 pixels, 0.44 %, e.g. the \
-         red row at picture row 25 from x = 56)",
-    ),
-    (
-        "piglit-select",
-        "the reference shows only the clear colour (grey): in GL_SELECT mode nothing is \
-         drawn, so the picture cannot check the replay",
-    ),
-    (
-        "xss-quasicrystal",
-        "seventeen 1D-textured layers blended with alpha 1/17, then COLOR_LOGIC_OP and \
-         DST_COLOR/SRC_COLOR blending, which amplify each layer's rounding: frames 7, 8, 9 have \
-         22.0 %, 24.5 %, 20.6 % of the pixels off by up to 48. The three implementations all \
-         differ: llvmpipe vs softpipe 19.1 %, 19.5 %, 17.7 % (more than the 5 % cap, \
-         compare::SPREAD_CAP), tilegl vs softpipe 13.1 %, 12.8 %, 11.9 %; llvmpipe blends in \
-         8-bit fixed point, softpipe and tilegl in floating point",
-    ),
-    (
-        "xss-vigilance",
-        "one far grid line of a lit, EXP2-fogged, depth-tested scene (smooth GL_LINES of width \
-         2, blended, meeting end to end near the horizon): at each joint, every 3-4 pixels, \
-         Mesa's pixel is about twice as bright (35 vs 18), covered by both segments there and \
-         by one in tilegl: 0.233 % of the pixels off by up to 19 in frames 7, 8, 9. The same \
-         joints in window space match (differential scene smooth_line_joints), so the second \
-         segment's depth test at the horizon's depth is where the two differ",
-    ),
-];
-
 /// The repository's copy of the shared captures (the test fails when it is missing).
 fn traces_dir() -> PathBuf {
     common::shared_traces()
 }
 
 fn check_capture(name: &str) {
-    common::check_capture(&traces_dir(), name, KNOWN_FAILURES);
+    common::check_capture(&traces_dir(), name);
 }
 
 macro_rules! captures {
@@ -121,5 +81,5 @@ captures! {
 
 #[test]
 fn every_shared_capture_has_a_test_and_every_known_failure_a_capture() {
-    common::assert_every_capture_listed(&traces_dir(), ALL, KNOWN_FAILURES);
+    common::assert_every_capture_listed(&traces_dir(), ALL);
 }

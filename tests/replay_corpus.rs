@@ -6,49 +6,12 @@
 //! llvmpipe-vs-softpipe spread of that picture, capped), exactly as `tests/replay_compare.rs`
 //! does for the shared captures.
 //!
-//! Captures that do not match yet are listed in [`KNOWN_FAILURES`] with their figures; their
+//! Captures that do not match yet are listed in `KNOWN_FAILURES.tsv` (in the captures' folder) with their figures; their
 //! test checks that they still fail, so the list stays true. A missing capture fails its test.
 
 use std::path::PathBuf;
 
 mod common;
-
-/// Captures that do not match yet, with the figures of the replay (share of the pixels off by
-/// more than 8 in each failing picture) and what the capture exercises.
-const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "piglit-dlist-fdo31590",
-        "a MAP1_VERTEX_3 evaluator line strip compiled into a display list: call 110 has 0.229 % of the pixels off (allowed 0.1 %). Mesa's deviation: the list sets glColor3f(1, 1, 0) after its glBegin and before the glEvalCoord1f calls, and Mesa 22 draws the strip white, the colour set before glCallList; executed in order (section 5.4) the strip is yellow, as tilegl draws it (tests/display_lists.rs evaluated_strip_in_a_list_takes_the_lists_colour)",
-    ),
-    (
-        "piglit-gl-1.0-scissor-bitmap",
-        "glBitmap under SCISSOR_TEST: call 62 has 1.336 % of the pixels off (allowed 0.1 %)",
-    ),
-    (
-        "piglit-gl-1.5-normal3b3s-invariance",
-        "glEnable(GL_VERTEX_ARRAY) and glEnable(GL_NORMAL_ARRAY) (calls 64, 65) raise GL_INVALID_ENUM in tilegl, as the specification says (client arrays are enabled with glEnableClientState), while Mesa's compatibility context takes them as glEnableClientState; the lit strips from buffer objects are then not drawn: call 78 has 13.9 % of the pixels off",
-    ),
-    (
-        "piglit-line-flat-clip-color",
-        "flat-shaded smooth lines clipped at the window edge, glProvokingVertex (EXT_provoking_vertex) not replayed and glEnable(GL_VERTEX_ARRAY/GL_COLOR_ARRAY) raising GL_INVALID_ENUM: calls 505, 517, 528 have 3.1 %, 3.8 %, 3.8 % of the pixels off (allowed 1.26 %, 0.1 %, 0.1 %)",
-    ),
-    (
-        "piglit-point-line-no-cull",
-        "smooth points and lines under CULL_FACE, POLYGON_STIPPLE and glPolygonMode: calls 171, 181, 188 have 2.36 %, 2.36 %, 2.44 % of the pixels off (allowed 1.37 %, the softpipe spread)",
-    ),
-    (
-        "piglit-polygon-offset",
-        "POLYGON_OFFSET_POINT/LINE/FILL with points, lines and strips (piglit's verdict on Mesa itself is fail): calls 553, 577, 601 each have 7.96 % of the pixels off (allowed 0.2 %)",
-    ),
-    (
-        "piglit-provoking-vertex",
-        "glProvokingVertex (EXT_provoking_vertex) is not implemented (unknown call, not replayed): flat-shaded triangles take the last vertex's colour where Mesa takes the first: call 382 has 1.04 % of the pixels off (allowed 0.167 %)",
-    ),
-    (
-        "xss-starwars",
-        "smooth points and lines with alpha test and textured text (blended): frames 17, 18, 19 have 0.37 %, 0.38 %, 0.38 % of the pixels off (allowed 0.1 %). The differences are rings around the stars, smooth points of sizes 0.5 to 3 from a display list: the antialiased edge of tilegl's points (box-filtered distance to the disc) is not the falloff Mesa's draw module gives its smooth points",
-    ),
-];
 
 /// The corpus folder (the test fails, naming it, when it is missing).
 fn traces_dir() -> PathBuf {
@@ -56,7 +19,7 @@ fn traces_dir() -> PathBuf {
 }
 
 fn check_capture(name: &str) {
-    common::check_capture(&traces_dir(), name, KNOWN_FAILURES);
+    common::check_capture(&traces_dir(), name);
 }
 
 macro_rules! captures {
@@ -187,7 +150,7 @@ captures! {
 
 #[test]
 fn every_corpus_capture_has_a_test_and_every_known_failure_a_capture() {
-    common::assert_every_capture_listed(&traces_dir(), ALL, KNOWN_FAILURES);
+    common::assert_every_capture_listed(&traces_dir(), ALL);
 }
 
 /// Each capture (trace and pictures) stays under 2 MB, and the corpus under 60 MB.

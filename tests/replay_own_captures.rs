@@ -4,29 +4,19 @@
 //! tolerance rule (0.1 % of pixels off by more than 8, or the llvmpipe-vs-softpipe spread of
 //! that picture from `NAME.frames/softpipe/`).
 //!
-//! Captures that need features tilegl does not have yet are listed in [`KNOWN_FAILURES`] with
+//! Captures that need features tilegl does not have yet are listed in `KNOWN_FAILURES.tsv` (in the captures' folder) with
 //! the feature; their test checks that they still fail, so the list stays true.
 
 use std::path::PathBuf;
 
 mod common;
 
-/// Captures that do not match yet, and why, and captures whose reference cannot check
-/// anything (it shows nothing drawn, which fails the comparison whatever the replay draws).
-const KNOWN_FAILURES: &[(&str, &str)] = &[(
-    "piglit-polygon-mode",
-    "the three reference pictures (calls 1596, 1611, 1631) are all black: nothing is drawn \
-     at those calls, so they checked nothing (it passed while tilegl drew nothing there \
-     either); the shared capture of the same program (conformance/traces/shared/\
-     piglit-polygon-mode) has drawn pictures",
-)];
-
 fn traces_dir() -> PathBuf {
     common::own_traces()
 }
 
 fn check_capture(name: &str) {
-    common::check_capture(&traces_dir(), name, KNOWN_FAILURES);
+    common::check_capture(&traces_dir(), name);
 }
 
 macro_rules! captures {
@@ -58,7 +48,7 @@ captures! {
 
 #[test]
 fn every_own_capture_has_a_test_and_every_known_failure_a_capture() {
-    common::assert_every_capture_listed(&traces_dir(), ALL, KNOWN_FAILURES);
+    common::assert_every_capture_listed(&traces_dir(), ALL);
 }
 
 #[test]

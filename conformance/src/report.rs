@@ -297,12 +297,32 @@ pub fn run_captures(
     progress: &mut Progress,
 ) -> Vec<Entry> {
     let mut entries = Vec::new();
+    // The folder's KNOWN_FAILURES.tsv, the list the capture tests hold it to.
+    let (known, list_error) = match tilegl::replay::reference::known_failures(traces) {
+        Ok(k) => (k, None),
+        Err(e) => (Vec::new(), Some(e)),
+    };
     for trace in capture_files(traces, filter) {
         let stem = trace
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
         progress.step(&stem);
+        let known_why = known.iter().find(|(n, _)| *n == stem).map(|(_, w)| w);
+        // A failing picture of a listed capture is a known failure, with the list's reason.
+        let verdict_of = |ok: bool, note: &mut String| match (ok, known_why) {
+            (true, _) => Verdict::Pass,
+            (false, Some(why)) => {
+                note.push_str(&format!(" known failure: {why}"));
+                Verdict::KnownFailure
+            }
+            (false, None) => {
+                if let Some(e) = &list_error {
+                    note.push_str(&format!(" ({e})"));
+                }
+                Verdict::Fail
+            }
+        };
         let frames = traces.join(format!("{stem}.frames"));
         let out = dir.join(format!("capture-{stem}"));
         let _ = std::fs::create_dir_all(&out);
@@ -321,16 +341,16 @@ pub fn run_captures(
             });
         let ms = start.elapsed().as_secs_f64() * 1000.0;
         match report {
-            Err(e) => entries.push(Entry {
+            Err(mut note) => entries.push(Entry {
                 area: "captures",
                 name: stem.clone(),
                 diff: None,
                 spread: None,
                 limit: tilegl::compare::PROJECT,
-                verdict: Verdict::Fail,
+                verdict: verdict_of(false, &mut note),
                 times: [Some(ms), None, None],
                 pictures: Default::default(),
-                note: e,
+                note,
             }),
             Ok(r) => {
                 let n = r.pictures.len().max(1) as f64;
@@ -342,13 +362,15 @@ pub fn run_captures(
                     let softpipe = format!("softpipe-{}", p.file);
                     let has_sp = std::fs::copy(&sp, out.join(&softpipe)).is_ok();
                     let ours = out.join(&p.file).is_file().then(|| rel(&p.file));
+                    let mut note = p.note;
+                    let verdict = verdict_of(p.ok, &mut note);
                     entries.push(Entry {
                         area: "captures",
                         name: format!("{stem}/{}", p.file),
                         diff: p.diff,
                         spread: p.softpipe,
                         limit: p.tolerance,
-                        verdict: if p.ok { Verdict::Pass } else { Verdict::Fail },
+                        verdict,
                         times: [Some(ms / n), None, None],
                         pictures: [
                             ours,
@@ -356,7 +378,7 @@ pub fn run_captures(
                             has_sp.then(|| rel(&softpipe)),
                             None,
                         ],
-                        note: p.note,
+                        note,
                     });
                 }
             }

@@ -73,6 +73,10 @@ pub fn bin_line(
     // `PERTURBATION` up for an x-major line rising to the right, down otherwise; llvmpipe
     // breaks these ties the same way. (Along the major axis llvmpipe keeps the end points
     // where they are, and so does this.)
+    // The end point as given decides whether the segment ends inside a diamond: llvmpipe
+    // moves the segment only for its crossings (an end point exactly on a diamond's edge, as
+    // (300.6, 190.1) is on pixel (300, 190)'s in sub-pixel units, keeps its pixel there).
+    let end = [x1, y1];
     if dx.abs() >= dy.abs() {
         let up = if dy / dx > 0.0 { 1.0 } else { -1.0 };
         y0 += up * PERTURBATION;
@@ -136,7 +140,7 @@ pub fn bin_line(
         } else {
             [unshifted + 0.5, c + 0.5]
         };
-        if !exits_diamond([x0, y0], [x1, y1], diamond) {
+        if !exits_diamond([x0, y0], [x1, y1], end, diamond) {
             continue;
         }
         let minor = m.floor();
@@ -334,18 +338,18 @@ impl SmoothLineQuad {
     }
 }
 
-/// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the segment from `p0` to
-/// `p1` produces the fragment when it meets the diamond `|x - cx| + |y - cy| < 1/2` and its end
-/// point lies outside it (it leaves the diamond).
 /// The tiny move of section 3.4.1's perturbed end points, across the major axis: far below
 /// the smallest distance (2^-29 pixel) at which a segment between sub-pixel positions of a
 /// 2^13-pixel window can pass a diamond without touching it, far above the rounding error
 /// (2^-39) of the positions along it.
 const PERTURBATION: f64 = 1.0 / (1u64 << 36) as f64;
 
-fn exits_diamond(p0: [f64; 2], p1: [f64; 2], c: [f64; 2]) -> bool {
+/// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the (perturbed) segment from
+/// `p0` to `p1` produces the fragment when it meets the diamond `|x - cx| + |y - cy| < 1/2` and
+/// the unperturbed end point `end` lies outside it (it leaves the diamond).
+fn exits_diamond(p0: [f64; 2], p1: [f64; 2], end: [f64; 2], c: [f64; 2]) -> bool {
     let l1 = |p: [f64; 2]| (p[0] - c[0]).abs() + (p[1] - c[1]).abs();
-    if l1(p1) < 0.5 {
+    if l1(end) < 0.5 {
         return false;
     }
     // The L1 distance is convex and piecewise linear along the segment: its minimum is at an

@@ -35,6 +35,41 @@ pub struct RefEntry {
     pub snapshot_of: String,
 }
 
+/// The file of a capture folder that lists its known failures.
+pub const KNOWN_FAILURES_FILE: &str = "KNOWN_FAILURES.tsv";
+
+/// The captures of folder `dir` that do not match their references yet, each with why:
+/// `DIR/KNOWN_FAILURES.tsv`, one `NAME<TAB>reason` per line (`#` starts a comment line). The
+/// capture tests and the conformance report read the same list; a folder without the file
+/// has no known failures. A malformed line is an error naming the file and line.
+pub fn known_failures(dir: &Path) -> Result<Vec<(String, String)>, String> {
+    let path = dir.join(KNOWN_FAILURES_FILE);
+    let text = match std::fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => return Err(format!("{}: {e}", path.display())),
+    };
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        if line.trim().is_empty() || line.starts_with('#') {
+            continue;
+        }
+        match line.split_once('\t') {
+            Some((name, why)) if !name.is_empty() && !why.trim().is_empty() => {
+                out.push((name.to_string(), why.trim().to_string()))
+            }
+            _ => {
+                return Err(format!(
+                    "{}:{}: expected NAME<TAB>reason",
+                    path.display(),
+                    i + 1
+                ))
+            }
+        }
+    }
+    Ok(out)
+}
+
 /// Reads `DIR/frames.tsv`.
 pub fn read_frames_tsv(dir: &Path) -> Result<Vec<RefEntry>, String> {
     let path = dir.join("frames.tsv");

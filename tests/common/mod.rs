@@ -128,9 +128,9 @@ pub fn require(path: &std::path::Path) -> std::path::PathBuf {
 
 /// Replays capture `dir/NAME.trace` and compares it with Mesa's pictures in `dir/NAME.frames`
 /// (the shared tolerance rule), printing one line per picture. Panics when it does not match,
-/// unless `known_failures` lists it (with the reason), and when a listed capture now matches,
-/// so that the list stays true.
-pub fn check_capture(dir: &std::path::Path, name: &str, known_failures: &[(&str, &str)]) {
+/// unless the folder's `KNOWN_FAILURES.tsv` lists it (with the reason), and when a listed
+/// capture now matches, so that the list stays true.
+pub fn check_capture(dir: &std::path::Path, name: &str) {
     use tilegl::replay::player::Player;
     use tilegl::replay::reference::compare_replay;
     use tilegl::replay::trace::TraceReader;
@@ -155,12 +155,13 @@ pub fn check_capture(dir: &std::path::Path, name: &str, known_failures: &[(&str,
     }
     text.push_str(&format!("  {}\n", report.summary()));
     eprintln!("{name}:\n{text}");
-    let known = known_failures.iter().find(|(n, _)| *n == name);
+    let known_failures = tilegl::replay::reference::known_failures(dir).unwrap();
+    let known = known_failures.iter().find(|(n, _)| n == name);
     match (report.all_ok(), known) {
         (true, None) | (false, Some(_)) => {}
         (true, Some((_, why))) => panic!(
             "{name} now matches the reference (listed as a known failure: {why}); \
-             remove it from KNOWN_FAILURES\n{text}"
+             remove it from KNOWN_FAILURES.tsv\n{text}"
         ),
         (false, None) => panic!("{name} does not match the reference:\n{text}"),
     }
@@ -203,12 +204,8 @@ pub fn random_texture(gl: &mut Context, rng: &mut Rng, format: GLenum, w: i32, h
 }
 
 /// Asserts that the captures (`NAME.trace`) in `dir` are exactly `all`, and that every known
-/// failure names one of them.
-pub fn assert_every_capture_listed(
-    dir: &std::path::Path,
-    all: &[&str],
-    known_failures: &[(&str, &str)],
-) {
+/// failure (the folder's `KNOWN_FAILURES.tsv`) names one of them.
+pub fn assert_every_capture_listed(dir: &std::path::Path, all: &[&str]) {
     let mut on_disk: Vec<String> = std::fs::read_dir(dir)
         .unwrap_or_else(|e| panic!("test input missing: {}: {e}", dir.display()))
         .filter_map(|e| {
@@ -226,7 +223,10 @@ pub fn assert_every_capture_listed(
         on_disk, listed,
         "add a line to captures! for each new capture"
     );
-    for (name, _) in known_failures {
-        assert!(all.contains(name), "known failure {name} is not a capture");
+    for (name, _) in tilegl::replay::reference::known_failures(dir).unwrap() {
+        assert!(
+            all.contains(&name.as_str()),
+            "known failure {name} is not a capture"
+        );
     }
 }
