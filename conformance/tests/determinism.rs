@@ -4,7 +4,9 @@
 //! them on. Binned tiles replay their commands in submission
 //! order whichever thread takes them (DESIGN.md, "How a draw call flows" step 6), and every
 //! AVX2 route does the arithmetic of its scalar twin in the same order and precision
-//! (`src/texture/simd.rs`, `src/fragment/simd.rs`), so nothing may differ, not even by one step.
+//! (`src/texture/simd.rs`, `src/fragment/simd.rs`), and spans restart their stepped values
+//! at fixed columns that every tile size honours (`RESTART` in `src/fragment/span/tail.rs`),
+//! so nothing may differ, not even by one step.
 //!
 //! The SIMD switch and the tile size are read once per process, so the scalar pictures and
 //! those of the other tile sizes come from child processes of this test binary started with
@@ -105,30 +107,6 @@ fn parse_all(mut b: &[u8]) -> Option<Vec<Rendered>> {
     Some(out)
 }
 
-/// Scenes whose pictures depend on the tile size by one step of a colour channel in a few
-/// pixels: a span steps its interpolants from the first pixel of the row inside the tile, so
-/// where a row crosses a tile boundary differs with the side, and the running sums round
-/// differently (found by the tile-size matrix; a span started from positions that do not
-/// depend on the tiles would remove it). Every other scene must be bit-identical.
-const TILE_DEPENDENT: [&str; 4] = [
-    "near_plane_clip",
-    "ex_hsv_lookup",
-    "ex_csg_stencil",
-    "quad_splits",
-];
-
-/// The largest difference of one channel between two pictures of the same size.
-fn largest_step(a: &Image, b: &Image) -> Option<u8> {
-    (a.pixels.len() == b.pixels.len()).then(|| {
-        a.pixels
-            .iter()
-            .zip(&b.pixels)
-            .map(|(p, q)| p.abs_diff(*q))
-            .max()
-            .unwrap_or(0)
-    })
-}
-
 /// The pictures of every scene ([`render_all`]) from a child process of this test binary that
 /// runs only the test `name`, with the environment variable `var` set to `value`.
 fn child_pictures(name: &str, var: &str, value: &str) -> Vec<Rendered> {
@@ -178,13 +156,6 @@ fn every_scene_is_bit_identical_for_tiles_of_16_32_64_and_128_pixels() {
     for side in TILE_SIZES.into_iter().filter(|&s| s != TILE) {
         let other = child_pictures(NAME, TILE_ENV, &side.to_string());
         for (scene, (a, b)) in SCENES.iter().zip(reference.iter().zip(&other)) {
-            let known = TILE_DEPENDENT.contains(&scene.name);
-            if known
-                && a.error == b.error
-                && matches!(largest_step(&a.image, &b.image), Some(0..=1))
-            {
-                continue;
-            }
             if !same(a, b) {
                 failures.push(format!(
                     "{}: tiles of {side} vs {TILE}: {}",
@@ -194,11 +165,7 @@ fn every_scene_is_bit_identical_for_tiles_of_16_32_64_and_128_pixels() {
             }
         }
     }
-    println!(
-        "{} scenes x tiles of {TILE_SIZES:?} pixels; {} of them within one step: {TILE_DEPENDENT:?}",
-        SCENES.len(),
-        TILE_DEPENDENT.len()
-    );
+    println!("{} scenes x tiles of {TILE_SIZES:?} pixels", SCENES.len());
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 

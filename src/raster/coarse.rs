@@ -106,11 +106,12 @@ impl CoarseDepth {
             return false;
         }
         // The plane is smallest at a corner of the rectangle of pixel centres. The spans
-        // evaluate it at each row's first pixel and step z by `a` along the row (at most a
-        // tile), so their depths differ from the corners' by rounding: each evaluation by a
-        // few ulps of its largest term, each step by an ulp of the running value. The margin
-        // bounds that with room to spare; it must scale with the terms (a vertex thousands
-        // of pixels away makes `b * y` and `c` large while z stays in [0, 1]).
+        // evaluate it at each row's first pixel and at every 16th column and step z by `a`
+        // in between (fewer than 16 steps, bounded here by a tile's side), so their depths
+        // differ from the corners' by rounding: each evaluation by a few ulps of its largest
+        // term, each step by an ulp of the running value. The margin bounds that with room to
+        // spare; it must scale with the terms (a vertex thousands of pixels away makes
+        // `b * y` and `c` large while z stays in [0, 1]).
         let (xa, xb) = (rect.x0 as f64 + 0.5, rect.x1 as f64 - 0.5);
         let (ya, yb) = (rect.y0 as f64 + 0.5, rect.y1 as f64 - 0.5);
         let zmin = lowest_corner(z, xa, xb, ya, yb);

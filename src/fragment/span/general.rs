@@ -144,14 +144,13 @@ pub(super) fn shade<
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
     let n = (x1 - x0) as usize;
-    let xc0 = x0 as f64 + 0.5;
     // Primary colour, then the secondary colour when the colour sum needs it.
     let colors = if !SIMPLE && (key.color_sum || key.texturing) {
         8
     } else {
         4
     };
-    let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
+    let mut run = SpanRun::new(it, x0, yc, colors).with_fog(ds);
     // The sampled path: per unit, its eight-pixel sampler and the texels of the current
     // group of eight pixels (groups start on even columns, as quads do).
     let mut samplers: [Option<Perspective8>; MAX_TEXTURE_UNITS] = Default::default();
@@ -237,7 +236,7 @@ pub(super) fn shade_textured<
     // Primary colour, then the secondary colour when the colour sum needs it (the eight-lane
     // route steps it only then: `SpanRun::next`).
     let colors = if !SIMPLE && key.color_sum { 8 } else { 4 };
-    let mut run = SpanRun::new(it, xc0, yc, colors).with_fog(ds, it, xc0, yc);
+    let mut run = SpanRun::new(it, x0, yc, colors).with_fog(ds);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
             ds.units.first().map(|u| FastUnit::new(u, it, xc0, yc))
@@ -257,16 +256,16 @@ pub(super) fn shade_textured<
             };
             if sampling.is_some() || perspective.is_some() {
                 let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
-                // With zero steps for z, 1/w and the colour (a flat, facing primitive), the
-                // values from the second pixel on are those of the second pixel (adding a zero
-                // changes at most the sign of a zero, and only once): two pixels are stepped.
+                // With zero steps for z, 1/w and the colour (a flat, facing primitive), every
+                // pixel has the first pixel's values where they are evaluated (the first pixel
+                // and the restart columns) and the second pixel's elsewhere (adding a zero
+                // changes at most the sign of a zero, and only once).
                 let steady = run.is_steady();
-                let mut steady_values = [([0f32; 4], 0u32, 0f32, None); 2];
-                if steady {
-                    for v in &mut steady_values {
-                        *v = run.next::<true>(Some(ds.depth_max));
-                    }
-                }
+                let steady_values = if steady {
+                    run.steady_values::<true>(Some(ds.depth_max))
+                } else {
+                    [([0f32; 4], 0u32, 0f32, None); 2]
+                };
                 let depth_max = group_depth_max(ds);
                 let fog = lane_fog(ds);
                 let fogged = fog.is_some();
@@ -281,7 +280,9 @@ pub(super) fn shade_textured<
                     let base = (row as isize + first) as usize;
                     let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
                         if steady {
-                            steady_values[((first + j as isize) as usize).min(1)]
+                            let i = first + j as isize;
+                            let evaluated = i == 0 || (gx + j as i32) % RESTART == 0;
+                            steady_values[usize::from(!evaluated)]
                         } else if fogged {
                             run.next::<true>(depth_max)
                         } else {

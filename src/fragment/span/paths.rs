@@ -70,9 +70,10 @@ pub(super) fn pair_by_rows<'a>(
 /// Runs the 4x2 blocks of a row pair (two whole quads each, from the even column at or left
 /// of the first covered pixel): lanes 0..4 are columns `gx..gx + 4` of row `y`, lanes 4..8
 /// the same columns of row `y + 1`. Each row's colour and depth are stepped from its own first
-/// pixel, as on the row alone. `shade(gx, group)` gets the covered lanes' inputs when one of
-/// them passes the depth test (the others change nothing: no stencil on these paths) and
-/// answers the colour words and the lanes that passed every test, which are stored.
+/// pixel and restarted at the same columns as on the row alone (`SpanRun`). `shade(gx,
+/// group)` gets the covered lanes' inputs when one of them passes the depth test (the others
+/// change nothing: no stencil on these paths) and answers the colour words and the lanes that
+/// passed every test, which are stored.
 #[inline(always)]
 pub(super) fn for_each_block(
     ds: &DrawState,
@@ -108,7 +109,7 @@ pub(super) fn blocks<const FOG: bool>(
     // then rounded and tested eight at a time, and the colour written to the lanes whole.
     let constant = (it.constant_primary && fog.is_none() && colors == 4).then(|| {
         let (y, rows) = pairs.first().copied().unwrap_or_default();
-        let run = SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, 4);
+        let run = SpanRun::new(it, rows[0].0, y as f64 + 0.5, 4);
         [0, 1, 2, 3].map(|c| [run.color[c]; 8])
     });
     // With a constant colour every lane's inputs are written for each block (the colour
@@ -121,13 +122,12 @@ pub(super) fn blocks<const FOG: bool>(
     let mut stored = [0u32; 8];
     for &(y, rows) in pairs {
         let mut runs = [
-            SpanRun::new(it, rows[0].0 as f64 + 0.5, y as f64 + 0.5, colors),
-            SpanRun::new(it, rows[1].0 as f64 + 0.5, y as f64 + 1.5, colors),
+            SpanRun::new(it, rows[0].0, y as f64 + 0.5, colors),
+            SpanRun::new(it, rows[1].0, y as f64 + 1.5, colors),
         ];
         if FOG {
-            for (r, run) in runs.iter_mut().enumerate() {
-                let (xc0, yc) = (rows[r].0 as f64 + 0.5, y as f64 + 0.5 + r as f64);
-                run.fog = Some(SpanRun::fog_at(it, xc0, yc));
+            for run in &mut runs {
+                run.fog_on();
             }
         }
         let covered = |r: usize| rows[r].0 < rows[r].1;
@@ -137,7 +137,6 @@ pub(super) fn blocks<const FOG: bool>(
             (false, true) => rows[1],
             (false, false) => continue,
         };
-        let mut z = [runs[0].z, runs[1].z];
         let mut gx = first & !1;
         while gx < end {
             let mut live = 0u8;
@@ -146,9 +145,7 @@ pub(super) fn blocks<const FOG: bool>(
                     let row = tile.index(gx, y + r as i32);
                     for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
                         let (lane, j) = (4 * r + j as usize, j as usize);
-                        // As `SpanRun::next` steps it.
-                        lane_z[lane] = z[r];
-                        z[r] += runs[r].dz;
+                        lane_z[lane] = runs[r].next_z();
                         stored[lane] = tile.depth[row + j];
                         group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
                         live |= 1 << lane;
@@ -372,8 +369,8 @@ pub fn span_untextured8<'a>(
         return span_general(ds, tile, y, x0, x1, it);
     }
     let row = tile.index(x0, y);
-    let (xc0, yc) = (x0 as f64 + 0.5, y as f64 + 0.5);
-    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
+    let yc = y as f64 + 0.5;
+    let mut run = SpanRun::new(it, x0, yc, lane_colors(ds)).with_fog(ds);
     let tail = tail8(ds, false, false, false);
     let depth_max = group_depth_max(ds);
     let fog = lane_fog(ds);
@@ -426,7 +423,7 @@ pub fn span_depth_stencil<'a>(
     let key = &ds.key;
     let u = &ds.uniforms;
     let row = tile.index(x0, y);
-    let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 0);
+    let mut run = SpanRun::new(it, x0, y as f64 + 0.5, 0);
     for idx in row..row + (x1 - x0).max(0) as usize {
         let depth = depth_to_fixed(run.z, ds.depth_max);
         run.step();
@@ -483,11 +480,10 @@ pub fn span_sampled8<'a>(
 ) {
     let yc = y as f64 + 0.5;
     let row = tile.index(x0, y);
-    let xc0 = x0 as f64 + 0.5;
     if it.coverage != 1.0 {
         return span_sampled(ds, tile, y, x0, x1, it);
     }
-    let mut run = SpanRun::new(it, xc0, yc, lane_colors(ds)).with_fog(ds, it, xc0, yc);
+    let mut run = SpanRun::new(it, x0, yc, lane_colors(ds)).with_fog(ds);
     let fog = lane_fog(ds);
     let Sampled8 {
         mut samplers,

@@ -3,9 +3,17 @@
 
 use super::*;
 
-/// The window depth, 1/w and colours along a span, stepped pixel by pixel from its first
-/// pixel: every span path steps them this way, so all see the same values.
-pub(super) struct SpanRun {
+/// Columns between the restarts of a span's stepping: every pixel whose x is a multiple of
+/// this (from window x = 0) has its values evaluated from the planes, not stepped. Each tile's
+/// side is a multiple of it, so a span cut at a tile boundary restarts where the uncut span
+/// would: the pictures do not depend on the tile size (`conformance/tests/determinism.rs`).
+pub const RESTART: i32 = 16;
+
+/// The window depth, 1/w and colours along a span, evaluated from the planes at its first
+/// pixel and at every pixel whose x is a multiple of [`RESTART`], and stepped pixel by pixel
+/// in between: every span path does it this way, so all see the same values.
+#[derive(Clone)]
+pub(super) struct SpanRun<'i> {
     pub(super) z: f64,
     pub(super) dz: f64,
     pub(super) inv_w: f32,
@@ -20,15 +28,27 @@ pub(super) struct SpanRun {
     pub(super) primary_perspective: bool,
     /// The fog coordinate (divided by w under perspective), when the draw is fogged.
     pub(super) fog: Option<(f32, f32)>,
+    /// The planes, for the restarts: z, 1/w, and the attributes'.
+    z_plane: Plane,
+    inv_w_plane: Plane,
+    attrs: &'i [Plane],
+    constant_primary: bool,
+    /// Steps left before the current pixel is a restart column.
+    left: u32,
+    /// The centre of the next restart column, and of the row.
+    restart_x: f64,
+    yc: f64,
 }
 
-impl SpanRun {
+impl<'i> SpanRun<'i> {
+    /// The run from pixel `x0` of the row centred at `yc`.
     #[inline(always)]
-    pub(super) fn new(it: &Interpolants, xc0: f64, yc: f64, count: usize) -> SpanRun {
+    pub(super) fn new(it: &Interpolants<'i>, x0: i32, yc: f64, count: usize) -> SpanRun<'i> {
+        let into = x0.rem_euclid(RESTART);
         let mut run = SpanRun {
-            z: it.z.at(xc0, yc),
+            z: 0.0,
             dz: it.z.a,
-            inv_w: it.inv_w.at(xc0, yc) as f32,
+            inv_w: 0.0,
             dinv_w: it.inv_w.a as f32,
             color: [0.0; 8],
             dcolor: [0.0; 8],
@@ -36,43 +56,93 @@ impl SpanRun {
             perspective: it.perspective,
             primary_perspective: it.perspective && !it.constant_primary,
             fog: None,
+            z_plane: it.z,
+            inv_w_plane: it.inv_w,
+            attrs: it.attrs,
+            constant_primary: it.constant_primary,
+            left: (RESTART - into) as u32,
+            restart_x: (x0 - into + RESTART) as f64 + 0.5,
+            yc,
         };
         // A constant primary colour's planes are 0 x + 0 y + c, which is c + 0 at any pixel
-        // centre (x and y finite and positive): no evaluation needed.
-        let evaluated = if it.constant_primary {
+        // centre (x and y finite and positive): no evaluation needed, and its steps are 0.
+        if it.constant_primary {
             for c in 0..count.min(4) {
                 run.color[c] = (it.attrs[attr::color(c)].c + 0.0) as f32;
             }
-            count.min(4)..count
         } else {
-            0..count
-        };
-        for c in evaluated {
-            run.color[c] = it.attrs[attr::color(c)].at(xc0, yc) as f32;
+            for c in 0..count.min(4) {
+                run.dcolor[c] = it.attrs[attr::color(c)].a as f32;
+            }
+        }
+        for c in 4..count {
             run.dcolor[c] = it.attrs[attr::color(c)].a as f32;
         }
+        run.evaluate(x0 as f64 + 0.5);
         run
+    }
+
+    /// The values at the pixel centred at (`xc`, the row's centre) from the planes.
+    #[inline(always)]
+    fn evaluate(&mut self, xc: f64) {
+        let yc = self.yc;
+        self.z = self.z_plane.at(xc, yc);
+        self.inv_w = self.inv_w_plane.at(xc, yc) as f32;
+        let first = if self.constant_primary {
+            self.count.min(4)
+        } else {
+            0
+        };
+        for c in first..self.count {
+            self.color[c] = self.attrs[attr::color(c)].at(xc, yc) as f32;
+        }
+        if self.fog.is_some() {
+            self.fog = Some(Self::fog_at(self.attrs, xc, yc));
+        }
+    }
+
+    /// Moves to the next pixel by a restart (returns true: the values are set) or not (the
+    /// caller steps them).
+    #[inline(always)]
+    fn restarts(&mut self) -> bool {
+        self.left -= 1;
+        if self.left != 0 {
+            return false;
+        }
+        self.restart();
+        true
+    }
+
+    /// The restart column's values, from the planes.
+    #[inline(never)]
+    fn restart(&mut self) {
+        let x = self.restart_x;
+        self.evaluate(x);
+        self.restart_x = x + RESTART as f64;
+        self.left = RESTART as u32;
     }
 
     /// Steps the fog coordinate too (for a fogged draw).
     #[inline(always)]
-    pub(super) fn with_fog(
-        mut self,
-        ds: &DrawState,
-        it: &Interpolants,
-        xc0: f64,
-        yc: f64,
-    ) -> SpanRun {
+    pub(super) fn with_fog(mut self, ds: &DrawState) -> SpanRun<'i> {
         if ds.key.fog.is_some() && ds.fog.is_some() {
-            self.fog = Some(Self::fog_at(it, xc0, yc));
+            self.fog_on();
         }
         self
     }
 
+    /// Steps the fog coordinate too, from the current pixel (at the start of the run).
+    #[inline(always)]
+    pub(super) fn fog_on(&mut self) {
+        // The next restart column is `left` pixels on.
+        let xc = self.restart_x - self.left as f64;
+        self.fog = Some(Self::fog_at(self.attrs, xc, self.yc));
+    }
+
     /// The fog coordinate's plane value at (`xc0`, `yc`) and its step along the row.
     #[inline(always)]
-    pub(super) fn fog_at(it: &Interpolants, xc0: f64, yc: f64) -> (f32, f32) {
-        let p = &it.attrs[attr::FOG];
+    fn fog_at(attrs: &[Plane], xc0: f64, yc: f64) -> (f32, f32) {
+        let p = &attrs[attr::FOG];
         (p.at(xc0, yc) as f32, p.a as f32)
     }
 
@@ -87,12 +157,24 @@ impl SpanRun {
     }
 
     /// Whether z, 1/w and the primary colour do not change along the span (a flat, facing
-    /// primitive).
+    /// primitive): their planes are constant along rows.
     pub(super) fn is_steady(&self) -> bool {
-        self.dz == 0.0
-            && self.dinv_w == 0.0
-            && self.dcolor[..self.count].iter().all(|&d| d == 0.0)
-            && self.fog.is_none_or(|(_, dc)| dc == 0.0)
+        let flat = |p: &Plane| p.a == 0.0;
+        let color = |c: usize| flat(&self.attrs[attr::color(c)]);
+        flat(&self.z_plane)
+            && flat(&self.inv_w_plane)
+            && (self.constant_primary || (0..self.count.min(4)).all(color))
+            && (4..self.count).all(color)
+            && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
+    }
+
+    /// For a run with [`Self::is_steady`]: the inputs ([`Self::next`]) of the pixels where
+    /// the run is evaluated (its first pixel and the restart columns), then of the others
+    /// (the evaluation plus a step of zero, which changes at most the sign of a zero).
+    pub(super) fn steady_values<const FOG: bool>(&self, depth_max: Option<u32>) -> [Lane; 2] {
+        let mut run = self.clone();
+        run.left = u32::MAX;
+        [run.next::<FOG>(depth_max), run.next::<FOG>(depth_max)]
     }
 
     /// w at the current pixel (1 without perspective).
@@ -126,6 +208,9 @@ impl SpanRun {
     /// Moves to the next pixel.
     #[inline(always)]
     pub(super) fn step(&mut self) {
+        if self.restarts() {
+            return;
+        }
         self.z += self.dz;
         self.inv_w += self.dinv_w;
         for c in 0..self.count {
@@ -136,19 +221,36 @@ impl SpanRun {
         }
     }
 
+    /// The current pixel's depth, then a move to the next pixel (for runs whose other
+    /// values are not read: a constant colour, no fog).
+    #[inline(always)]
+    pub(super) fn next_z(&mut self) -> f64 {
+        let z = self.z;
+        if !self.restarts() {
+            self.z += self.dz;
+        }
+        z
+    }
+
     /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
     /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (`None` unless the run
-    /// has it: a count of 8), then a step of z, 1/w, the primary colour (a fixed four, which
-    /// keeps the loop unrolled), the secondary colour when there is one, and with `FOG` the
-    /// fog coordinate (without it the coordinate is neither read nor stepped: the lanes' fog
-    /// is then unused). The values and steps are those of `step`, `primary`, `secondary`
-    /// and `fog_coord`, which must not follow on the same run.
+    /// has it: a count of 8), then a move to the next pixel: a step of z, 1/w, the primary
+    /// colour (a fixed four, which keeps the loop unrolled), the secondary colour when there
+    /// is one, and with `FOG` the fog coordinate (without it the coordinate is neither read
+    /// nor stepped: the lanes' fog is then unused), or a restart. The values and steps are
+    /// those of `step`, `primary`, `secondary` and `fog_coord`, which must not follow on the
+    /// same run.
     #[inline(always)]
     pub(super) fn next<const FOG: bool>(&mut self, depth_max: Option<u32>) -> Lane {
         let w = self.w();
         let color = self.primary(w);
         let fog = if FOG { self.fog_coord(w) } else { 0.0 };
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
+        // The secondary colour, when the run has it (the colour sum).
+        let secondary = (self.count == 8).then(|| self.secondary(w));
+        if self.restarts() {
+            return (color, depth, fog, secondary);
+        }
         self.z += self.dz;
         self.inv_w += self.dinv_w;
         for c in 0..4 {
@@ -159,10 +261,7 @@ impl SpanRun {
                 *c += *dc;
             }
         }
-        // The secondary colour, when the run has it (the colour sum).
-        let mut secondary = None;
         if self.count == 8 {
-            secondary = Some(self.secondary(w));
             for c in 4..8 {
                 self.color[c] += self.dcolor[c];
             }
