@@ -161,7 +161,7 @@ pub(super) fn shade<
             *slot = Perspective8::new(u, k, it, y);
         }
     }
-    for i in 0..n {
+    run.each_pixel(n, |i, run| {
         let idx = row + i;
         let w = run.w();
         let mut color = run.primary(w);
@@ -199,11 +199,10 @@ pub(super) fn shade<
         };
         let z_here = run.z;
         let fog_coord = run.fog_coord(w);
-        run.step();
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, FOG, { blend_mode::DYNAMIC }>(
             ds, tile, it, idx, fog_coord, color, secondary, z_here,
         );
-    }
+    });
 }
 
 /// [`shade`] with the texturing and blending fixed at compile time ([`tex_mode`],
@@ -339,7 +338,7 @@ pub(super) fn shade_textured<
         }
     }
     let mut texel_buf = [[0f32; 4]; 8];
-    for i in 0..n {
+    run.each_pixel(n, |i, run| {
         let idx = row + i;
         let w = run.w();
         let mut color = run.primary(w);
@@ -367,9 +366,8 @@ pub(super) fn shade_textured<
         };
         let z_here = run.z;
         let fog_coord = run.fog_coord(w);
-        run.step();
         finish_fragment::<DEPTH, FULL_MASK, SIMPLE, false, BLEND>(
             ds, tile, it, idx, fog_coord, color, secondary, z_here,
         );
-    }
+    });
 }

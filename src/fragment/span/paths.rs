@@ -424,9 +424,9 @@ pub fn span_depth_stencil<'a>(
     let u = &ds.uniforms;
     let row = tile.index(x0, y);
     let mut run = SpanRun::new(it, x0, y as f64 + 0.5, 0);
-    for idx in row..row + (x1 - x0).max(0) as usize {
+    run.each_pixel((x1 - x0).max(0) as usize, |i, run| {
+        let idx = row + i;
         let depth = depth_to_fixed(run.z, ds.depth_max);
-        run.step();
         let depth_pass = match key.depth_func {
             None | Some(CompareFunc::Always) => true,
             Some(f) => f.test(depth, tile.depth[idx]),
@@ -436,7 +436,7 @@ pub fn span_depth_stencil<'a>(
             let mask = u.stencil_value_mask;
             let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
                 tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
-                continue;
+                return;
             } else if depth_pass {
                 st.depth_pass
             } else {
@@ -445,7 +445,7 @@ pub fn span_depth_stencil<'a>(
             tile.stencil[idx] = apply_stencil_op(action, old, u);
         }
         if !depth_pass {
-            continue;
+            return;
         }
         if key.count_samples {
             tile.samples_passed += 1;
@@ -453,7 +453,7 @@ pub fn span_depth_stencil<'a>(
         if key.depth_write {
             tile.depth[idx] = depth;
         }
-    }
+    });
 }
 
 /// Draws nothing (a key whose fragments change no buffer).
