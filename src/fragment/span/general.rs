@@ -265,6 +265,8 @@ pub(super) fn shade_textured<
                 } else {
                     [([0f32; 4], 0u32, 0f32, None); 2]
                 };
+                // Almost always the two are the same bits (no value is -0): then one for all.
+                let one_value = steady && same_bits(&steady_values[0], &steady_values[1]);
                 let depth_max = group_depth_max(ds);
                 let fog = lane_fog(ds);
                 let fogged = fog.is_some();
@@ -278,7 +280,9 @@ pub(super) fn shade_textured<
                     let first = (gx - x0) as isize;
                     let base = (row as isize + first) as usize;
                     let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
-                        if steady {
+                        if one_value {
+                            steady_values[0]
+                        } else if steady {
                             let i = first + j as isize;
                             let evaluated = i == 0 || (gx + j as i32) % RESTART == 0;
                             steady_values[usize::from(!evaluated)]

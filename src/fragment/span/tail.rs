@@ -291,6 +291,24 @@ impl<'i> SpanRun<'i> {
     }
 }
 
+/// Whether two lanes' inputs are the same bits.
+pub(super) fn same_bits(a: &Lane, b: &Lane) -> bool {
+    let bits = |l: &Lane| {
+        let mut v = [0u32; 10];
+        for c in 0..4 {
+            v[c] = l.0[c].to_bits();
+        }
+        v[4] = l.1;
+        v[5] = l.2.to_bits();
+        for (c, s) in l.3.unwrap_or([0.0; 3]).iter().enumerate() {
+            v[6 + c] = s.to_bits();
+        }
+        v[9] = u32::from(l.3.is_some());
+        v
+    };
+    bits(a) == bits(b)
+}
+
 /// One fragment's inputs to the eight-lane paths: primary colour, stored depth, fog
 /// coordinate, secondary colour ([`SpanRun::next`]).
 pub(super) type Lane = ([f32; 4], u32, f32, Option<[f32; 3]>);
