@@ -113,8 +113,8 @@ impl<'i> SpanRun<'i> {
     }
 
     /// The restart column's values, from the planes. (Inlined: an out-of-line call taking
-    /// the run by reference kept the whole run in memory, five times the stepping's
-    /// instructions on small triangles.)
+    /// the run by reference kept the whole run in memory, twice the instructions per span of
+    /// small triangles; docs/performance.md.)
     #[inline(always)]
     fn restart(&mut self) {
         let x = self.restart_x;
