@@ -274,12 +274,13 @@ pub(super) fn shade_textured<
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
                 let mut gx = if perspective.is_some() { x0 & !1 } else { x0 };
+                let mut group = GroupInputs::EMPTY;
                 while gx < x1 {
                     let lo = (x0 - gx).max(0) as usize;
                     let hi = ((x1 - gx) as usize).min(8);
                     let first = (gx - x0) as isize;
                     let base = (row as isize + first) as usize;
-                    let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
+                    group.refill(ds, tile, base, lo..hi, |j| {
                         if steady {
                             steady_values[((first + j as isize) as usize).min(1)]
                         } else if fogged {
@@ -302,18 +303,19 @@ pub(super) fn shade_textured<
                         pass,
                         dst,
                         after,
-                    } = group;
+                    } = &group;
+                    let pass = *pass;
                     let x = gx as f64 + 0.5;
                     let live = pass;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => {
-                            simd::textured8(sm, x, hi, &tail, &primary, &dst, pass, &after)
+                            simd::textured8(sm, x, hi, &tail, primary, dst, pass, after)
                         }
                         (None, Some(p)) => {
                             let mut tex = [[0f32; 8]; 4];
                             if p.texels_into(x, live, &mut tex) {
-                                simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
+                                simd::shade8(&tail, primary, &tex, dst, pass, after)
                             } else {
                                 None
                             }
@@ -326,10 +328,10 @@ pub(super) fn shade_textured<
                         } else {
                             f.texels_scalar::<4>(it, x, yc, hi)
                         };
-                        simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
+                        simd::shade8(&tail, primary, &tex, dst, pass, after)
                     });
                     if let Some((words, passed)) = shaded {
-                        store_group(ds, tile, base, lo..hi, &words, passed, &depth);
+                        store_group(ds, tile, base, lo..hi, &words, passed, depth);
                     }
                     gx += 8;
                 }
