@@ -365,3 +365,51 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
     ];
     twins(&states);
 }
+
+/// Quads facing the viewer: z, 1/w, the colour and the fog coordinate are the same along
+/// every row, so the one-unit textured span fills its groups from one set of inputs (fog
+/// factors made once); over the scene, with fog, blending and depth tests that pass and fail.
+fn facing_quads(gl: &mut Context, rng: &mut Rng) {
+    random_texture(gl, rng, GL_RGBA, 16, 16);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.enable(GL_TEXTURE_2D);
+    for k in 0..6 {
+        let z = -1.5 - 1.3 * k as f32;
+        let (x, y) = (rng.range(-2.0, 1.0), rng.range(-2.0, 1.0));
+        gl.color_4f(rng.range(0.3, 1.0), rng.range(0.3, 1.0), rng.range(0.3, 1.0), 0.6);
+        gl.begin(GL_QUADS);
+        for (i, (dx, dy)) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)].iter().enumerate() {
+            gl.tex_coord_2f(dx * 1.7, dy * 1.3 + i as f32 * 0.01);
+            gl.vertex_3f(x + dx * 2.5, y + dy * 2.5, z);
+        }
+        gl.end();
+    }
+}
+
+#[test]
+fn facing_textured_quads_match_the_general_path() {
+    let states: [Setup; 3] = [
+        ("EXP2 fog", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.25);
+            gl.fogfv(GL_FOG_COLOR, &[0.1, 0.6, 0.9, 1.0]);
+            facing_quads(gl, rng);
+        }),
+        ("LINEAR fog, over, depth writes off", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 1.0);
+            gl.fogf(GL_FOG_END, 9.0);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.depth_mask(0);
+            facing_quads(gl, rng);
+        }),
+        ("no fog, GREATER depth", |gl, rng| {
+            gl.depth_func(GL_GREATER);
+            facing_quads(gl, rng);
+        }),
+    ];
+    twins(&states);
+}

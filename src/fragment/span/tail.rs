@@ -281,6 +281,15 @@ impl GroupInputs {
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
     #[inline(always)]
     pub(super) fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: Lane) {
+        let d = value.1;
+        self.set_inputs(j, value);
+        self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
+        self.dst[j] = u32::from_le_bytes(tile.color[index]);
+    }
+
+    /// Lane `j`'s colours, depth and fog coordinate.
+    #[inline(always)]
+    pub(super) fn set_inputs(&mut self, j: usize, value: Lane) {
         let (color, d, fog, secondary) = value;
         if let Some(secondary) = secondary {
             for c in 0..3 {
@@ -292,8 +301,38 @@ impl GroupInputs {
         }
         self.depth[j] = d;
         self.after.fog[j] = fog;
-        self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
-        self.dst[j] = u32::from_le_bytes(tile.color[index]);
+    }
+
+    /// A group whose eight lanes all have the inputs `value`, fog factors made (for the
+    /// groups of a steady run: see `shade_textured`); it neither passes nor has stored colours
+    /// until [`GroupInputs::retest`].
+    pub(super) fn uniform(value: Lane, fog: Option<&FogDraw>) -> GroupInputs {
+        let mut g = GroupInputs::EMPTY;
+        for j in 0..8 {
+            g.set_inputs(j, value);
+        }
+        g.pass = 0xFF;
+        g.fog_factors(fog);
+        g.pass = 0;
+        g
+    }
+
+    /// Keeps the lanes' inputs and reads lanes `lanes` (pixel `base + j`) afresh: their stored
+    /// colours and the depth test against their stored depths.
+    #[inline(always)]
+    pub(super) fn retest(
+        &mut self,
+        ds: &DrawState,
+        tile: &Tile,
+        base: usize,
+        lanes: std::ops::Range<usize>,
+    ) {
+        self.pass = 0;
+        for j in lanes {
+            let index = base + j;
+            self.pass |= u8::from(depth_passes(ds, self.depth[j], tile.depth[index])) << j;
+            self.dst[j] = u32::from_le_bytes(tile.color[index]);
+        }
     }
 }
 
