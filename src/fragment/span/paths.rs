@@ -185,11 +185,7 @@ pub(super) fn blocks<const FOG: bool>(
                 }
             }
             if ds.key.stencil.is_some() {
-                // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
-                let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
-                group.pass = stencil_lanes(ds, tile, live, group.pass, |lane| {
-                    row0 + lane / 4 * stride + lane % 4
-                });
+                group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
             }
             if group.pass != 0 {
                 group.fog_factors(fog);
@@ -205,6 +201,15 @@ pub(super) fn blocks<const FOG: bool>(
             gx += 4;
         }
     }
+}
+
+/// [`stencil_lanes`] for the live lanes of the 4x2 block at column `gx` of the row pair from
+/// `y` (kept out of the block loop, which draws without stencil far more often).
+#[inline(never)]
+fn block_stencil(ds: &DrawState, tile: &mut Tile, gx: i32, y: i32, live: u8, pass: u8) -> u8 {
+    // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
+    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
+    stencil_lanes(ds, tile, live, pass, |lane| row0 + lane / 4 * stride + lane % 4)
 }
 
 /// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
