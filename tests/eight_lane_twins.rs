@@ -28,9 +28,17 @@ fn scene(gl: &mut Context, rng: &mut Rng) {
     gl.stencil_op(GL_KEEP, GL_INCR, GL_REPLACE);
     gl.begin(GL_TRIANGLES);
     for _ in 0..300 {
-        let c = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), rng.range(-9.0, -0.5)];
+        let c = [
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        ];
         for _ in 0..3 {
-            gl.color_3f(rng.range(0.0, 1.0), rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+            gl.color_3f(
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
             gl.vertex_3f(
                 c[0] + rng.range(-1.5, 1.5),
                 c[1] + rng.range(-1.5, 1.5),
@@ -51,13 +59,29 @@ fn strip(gl: &mut Context, rng: &mut Rng, translucent: bool, constant: bool) {
     gl.begin(GL_TRIANGLE_STRIP);
     for _ in 0..120 {
         if !constant {
-            let (r, g, b) = (rng.range(0.0, 1.0), rng.range(0.0, 1.0), rng.range(0.0, 1.0));
-            let a = if translucent { rng.range(0.0, 1.0) } else { 1.0 };
+            let (r, g, b) = (
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
+            let a = if translucent {
+                rng.range(0.0, 1.0)
+            } else {
+                1.0
+            };
             gl.color_4f(r, g, b, a);
         }
-        gl.normal_3f(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
+        gl.normal_3f(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        );
         gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
-        gl.vertex_3f(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), rng.range(-9.0, -0.5));
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
     }
     gl.end();
 }
@@ -66,7 +90,15 @@ fn strip(gl: &mut Context, rng: &mut Rng, translucent: bool, constant: bool) {
 fn buffers(gl: &mut Context) -> (Vec<[u8; 4]>, Vec<u8>, Vec<u8>) {
     let depth = read_depth(gl);
     let mut stencil = vec![0u8; (SIZE * SIZE) as usize];
-    gl.read_pixels(0, 0, SIZE, SIZE, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &mut stencil);
+    gl.read_pixels(
+        0,
+        0,
+        SIZE,
+        SIZE,
+        GL_STENCIL_INDEX,
+        GL_UNSIGNED_BYTE,
+        &mut stencil,
+    );
     (read_rgba(gl), depth, stencil)
 }
 
@@ -90,7 +122,12 @@ fn twins(states: &[Setup]) {
         let general = render(true, true);
         let fast = render(false, true);
         let count = |a: &[u8], b: &[u8]| a.iter().zip(b).filter(|(x, y)| x != y).count();
-        let off = general.0.iter().zip(&fast.0).filter(|(a, b)| a != b).count();
+        let off = general
+            .0
+            .iter()
+            .zip(&fast.0)
+            .filter(|(a, b)| a != b)
+            .count();
         assert_eq!(off, 0, "{name}: {off} pixels differ");
         assert_eq!(count(&general.1, &fast.1), 0, "{name}: depth");
         assert_eq!(count(&general.2, &fast.2), 0, "{name}: stencil");
@@ -113,15 +150,18 @@ fn stencil_on_eight_lane_paths_matches_the_general_path() {
             gl.stencil_op(GL_INVERT, GL_DECR, GL_INCR);
             strip(gl, rng, false, false);
         }),
-        ("untextured, over, NOTEQUAL, no depth test (the shadow quad)", |gl, rng| {
-            gl.enable(GL_STENCIL_TEST);
-            gl.stencil_func(GL_NOTEQUAL, 0x10, 0xFF);
-            gl.stencil_op(GL_KEEP, GL_KEEP, GL_KEEP);
-            gl.disable(GL_DEPTH_TEST);
-            gl.enable(GL_BLEND);
-            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-            strip(gl, rng, true, false);
-        }),
+        (
+            "untextured, over, NOTEQUAL, no depth test (the shadow quad)",
+            |gl, rng| {
+                gl.enable(GL_STENCIL_TEST);
+                gl.stencil_func(GL_NOTEQUAL, 0x10, 0xFF);
+                gl.stencil_op(GL_KEEP, GL_KEEP, GL_KEEP);
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                strip(gl, rng, true, false);
+            },
+        ),
         ("untextured, write mask, colour mask, GREATER", |gl, rng| {
             gl.enable(GL_STENCIL_TEST);
             gl.stencil_func(GL_GREATER, 0x12, 0x1F);
@@ -261,14 +301,23 @@ fn texgen(gl: &mut Context, mode: GLenum) {
 #[test]
 fn cube_maps_on_eight_lane_paths_match_the_general_path() {
     let states: [Setup; 7] = [
-        ("RGB, bilinear, reflection map, lit (the workload)", |gl, rng| {
-            cube_map(gl, rng, GL_RGB, 32, [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE]);
-            texgen(gl, GL_REFLECTION_MAP);
-            gl.enable(GL_LIGHTING);
-            gl.enable(GL_LIGHT0);
-            gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
-            strip(gl, rng, false, false);
-        }),
+        (
+            "RGB, bilinear, reflection map, lit (the workload)",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_RGB,
+                    32,
+                    [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+                );
+                texgen(gl, GL_REFLECTION_MAP);
+                gl.enable(GL_LIGHTING);
+                gl.enable(GL_LIGHT0);
+                gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
+                strip(gl, rng, false, false);
+            },
+        ),
         ("RGBA, trilinear, normal map, blended", |gl, rng| {
             cube_map(
                 gl,
@@ -282,41 +331,55 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
             gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             strip(gl, rng, true, false);
         }),
-        ("LUMINANCE, nearest mipmaps, linear magnification", |gl, rng| {
-            cube_map(
-                gl,
-                rng,
-                GL_LUMINANCE,
-                64,
-                [GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE],
-            );
-            texgen(gl, GL_REFLECTION_MAP);
-            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
-            strip(gl, rng, false, false);
-        }),
-        ("LUMINANCE_ALPHA, explicit directions with q, nearest", |gl, rng| {
-            cube_map(
-                gl,
-                rng,
-                GL_LUMINANCE_ALPHA,
-                8,
-                [GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT],
-            );
-            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL as i32);
-            gl.begin(GL_TRIANGLE_STRIP);
-            for _ in 0..120 {
-                gl.color_3f(rng.range(0.0, 1.0), rng.range(0.0, 1.0), rng.range(0.0, 1.0));
-                let q = rng.range(0.3, 2.0);
-                gl.tex_coord_4f(
-                    rng.range(-1.0, 1.0),
-                    rng.range(-1.0, 1.0),
-                    rng.range(-1.0, 1.0),
-                    q,
+        (
+            "LUMINANCE, nearest mipmaps, linear magnification",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_LUMINANCE,
+                    64,
+                    [GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE],
                 );
-                gl.vertex_3f(rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), rng.range(-9.0, -0.5));
-            }
-            gl.end();
-        }),
+                texgen(gl, GL_REFLECTION_MAP);
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+                strip(gl, rng, false, false);
+            },
+        ),
+        (
+            "LUMINANCE_ALPHA, explicit directions with q, nearest",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_LUMINANCE_ALPHA,
+                    8,
+                    [GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT],
+                );
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL as i32);
+                gl.begin(GL_TRIANGLE_STRIP);
+                for _ in 0..120 {
+                    gl.color_3f(
+                        rng.range(0.0, 1.0),
+                        rng.range(0.0, 1.0),
+                        rng.range(0.0, 1.0),
+                    );
+                    let q = rng.range(0.3, 2.0);
+                    gl.tex_coord_4f(
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        q,
+                    );
+                    gl.vertex_3f(
+                        rng.range(-3.0, 3.0),
+                        rng.range(-3.0, 3.0),
+                        rng.range(-9.0, -0.5),
+                    );
+                }
+                gl.end();
+            },
+        ),
         ("2D unit and a cube map, LINEAR fog", |gl, rng| {
             random_texture(gl, rng, GL_RGBA, 16, 16);
             gl.tex_parameteri(
@@ -326,7 +389,13 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
             );
             gl.enable(GL_TEXTURE_2D);
             gl.active_texture(GL_TEXTURE1);
-            cube_map(gl, rng, GL_RGB, 16, [GL_LINEAR, GL_NEAREST, GL_CLAMP_TO_EDGE]);
+            cube_map(
+                gl,
+                rng,
+                GL_RGB,
+                16,
+                [GL_LINEAR, GL_NEAREST, GL_CLAMP_TO_EDGE],
+            );
             texgen(gl, GL_REFLECTION_MAP);
             gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD as i32);
             gl.active_texture(GL_TEXTURE0);
@@ -337,7 +406,13 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
             strip(gl, rng, false, false);
         }),
         ("RGB cube map, stencil, constant colour", |gl, rng| {
-            cube_map(gl, rng, GL_RGB, 16, [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE]);
+            cube_map(
+                gl,
+                rng,
+                GL_RGB,
+                16,
+                [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+            );
             texgen(gl, GL_NORMAL_MAP);
             gl.enable(GL_STENCIL_TEST);
             gl.stencil_func(GL_NOTEQUAL, 0x11, 0xFF);
@@ -355,7 +430,10 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
             texgen(gl, GL_REFLECTION_MAP);
             gl.enable(GL_LIGHTING);
             gl.enable(GL_LIGHT0);
-            gl.light_modeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR as i32);
+            gl.light_modeli(
+                GL_LIGHT_MODEL_COLOR_CONTROL,
+                GL_SEPARATE_SPECULAR_COLOR as i32,
+            );
             gl.materialfv(GL_FRONT, GL_SPECULAR, &[0.8, 0.8, 0.8, 1.0]);
             gl.materialf(GL_FRONT, GL_SHININESS, 20.0);
             gl.enable(GL_ALPHA_TEST);
@@ -376,9 +454,17 @@ fn facing_quads(gl: &mut Context, rng: &mut Rng) {
     for k in 0..6 {
         let z = -1.5 - 1.3 * k as f32;
         let (x, y) = (rng.range(-2.0, 1.0), rng.range(-2.0, 1.0));
-        gl.color_4f(rng.range(0.3, 1.0), rng.range(0.3, 1.0), rng.range(0.3, 1.0), 0.6);
+        gl.color_4f(
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            0.6,
+        );
         gl.begin(GL_QUADS);
-        for (i, (dx, dy)) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)].iter().enumerate() {
+        for (i, (dx, dy)) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .iter()
+            .enumerate()
+        {
             gl.tex_coord_2f(dx * 1.7, dy * 1.3 + i as f32 * 0.01);
             gl.vertex_3f(x + dx * 2.5, y + dy * 2.5, z);
         }

@@ -147,7 +147,9 @@ impl<'a> UnitLevels<'a> {
     #[inline(always)]
     fn faces(&self, k: usize) -> Option<&[[Option<Level8<'a>>; MAX_FAST_LEVELS]]> {
         let &(first, count) = self.first.get(k)?;
-        self.units.get(first..first + count).filter(|f| !f.is_empty())
+        self.units
+            .get(first..first + count)
+            .filter(|f| !f.is_empty())
     }
 }
 

@@ -209,7 +209,9 @@ pub(super) fn blocks<const FOG: bool>(
 fn block_stencil(ds: &DrawState, tile: &mut Tile, gx: i32, y: i32, live: u8, pass: u8) -> u8 {
     // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
     let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
-    stencil_lanes(ds, tile, live, pass, |lane| row0 + lane / 4 * stride + lane % 4)
+    stencil_lanes(ds, tile, live, pass, |lane| {
+        row0 + lane / 4 * stride + lane % 4
+    })
 }
 
 /// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
@@ -457,8 +459,8 @@ pub fn span_depth_stencil<'a>(
             z[j] = run.next_z();
             stored[j] = tile.depth[start + j];
         }
-        let (depth, depth_pass) =
-            simd::depth8(&z, &stored, live, ds.depth_max, key.depth_func).unwrap_or_else(|| {
+        let (depth, depth_pass) = simd::depth8(&z, &stored, live, ds.depth_max, key.depth_func)
+            .unwrap_or_else(|| {
                 let mut depth = [0u32; 8];
                 let mut pass = 0u8;
                 for j in 0..n {

@@ -440,7 +440,8 @@ impl Perspective8<'_> {
             plan[j] = match self.fixed_plan {
                 Some((level, linear)) => (face, level, level, linear),
                 None => {
-                    let (dx, dy) = cube_face_derivatives(face, st, coords[j], grads[j].0, grads[j].1);
+                    let (dx, dy) =
+                        cube_face_derivatives(face, st, coords[j], grads[j].0, grads[j].1);
                     match self.lod.plan(self.lod.isotropic_lambda(dx, dy)) {
                         LevelPlan::One { level, linear } => (face, level, level, linear),
                         LevelPlan::Two {

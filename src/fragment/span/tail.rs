@@ -624,7 +624,16 @@ mod tests {
     fn stencil8_is_the_per_lane_stencil() {
         use CompareFunc::*;
         use StencilOp::*;
-        let funcs = [Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always];
+        let funcs = [
+            Never,
+            Less,
+            Equal,
+            LessEqual,
+            Greater,
+            NotEqual,
+            GreaterEqual,
+            Always,
+        ];
         let ops = [Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap];
         let mut seed = 0x9E37_79B9_7F4A_7C15u64;
         let mut checked = 0;
