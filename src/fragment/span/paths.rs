@@ -190,9 +190,11 @@ pub(super) fn blocks<const FOG: bool>(
             if group.pass != 0 {
                 group.fog_factors(fog);
                 if let Some((words, passed)) = shade(y, gx, &group) {
+                    // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
+                    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
                     for lane in 0..8 {
                         if live & (1 << lane) != 0 {
-                            let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                            let index = row0 + lane / 4 * stride + lane % 4;
                             store_lane(ds, tile, lane, index, &words, passed, &group.depth);
                         }
                     }
