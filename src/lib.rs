@@ -45,6 +45,7 @@ pub mod common;
 pub mod compare;
 pub mod fragment;
 pub mod framebuffer;
+pub mod gl;
 pub mod primitive;
 pub mod raster;
 pub mod replay;

@@ -27,14 +27,15 @@ const RANKS: &[(&str, u32)] = &[
     ("replay", 0),
     ("api", 1),
     ("state", 2),
-    ("vertex", 3),
-    ("primitive", 4),
-    ("raster", 5),
-    ("fragment", 6),
-    ("texture", 7),
-    ("framebuffer", 8),
-    ("compare", 9),
-    ("common", 10),
+    ("gl", 3),
+    ("vertex", 4),
+    ("primitive", 5),
+    ("raster", 6),
+    ("fragment", 7),
+    ("texture", 8),
+    ("framebuffer", 9),
+    ("compare", 10),
+    ("common", 11),
 ];
 
 /// Upward edges that exist today (from, to). Remove an entry when its edge is gone.
@@ -42,7 +43,6 @@ const UPWARD_EDGES: &[(&str, &str)] = &[
     ("fragment", "state"),
     ("primitive", "state"),
     ("raster", "state"),
-    ("state", "api"),
     ("state", "capi"),
     ("vertex", "state"),
 ];

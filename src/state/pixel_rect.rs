@@ -10,14 +10,14 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
     CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery, PixelTransferParam,
     TexPixelFormat, TexPixelType,
 };
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::primitive::clip::point_visible;
 use crate::raster::setup::Plane;
 use crate::state::get::StateValue;

@@ -12,11 +12,11 @@
 //! [`Context::feedback_buffer_contents`].
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::capi::client_memory::write_client_bytes;
 use crate::common::values::{FeedbackToken, FeedbackType, PrimitiveMode, RenderMode};
 use crate::common::values::{PolygonMode, StateExtQuery};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::primitive::assemble::{self, assemble, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex, EXACT};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};

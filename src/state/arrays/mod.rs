@@ -29,14 +29,14 @@ use glam::{Vec3, Vec4};
 
 use super::tables::PixelStore;
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::capi::client_memory;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
     ArrayQuery, ArrayType, BufferAccess, BufferParam, BufferTarget, ClientArray, IndexType,
     InterleavedFormat,
 };
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::state::get::StateValue;
 use crate::vertex::immediate::{norm_i16, norm_i32, norm_i8, norm_u16, norm_u32, norm_u8};
 
