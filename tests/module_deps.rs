@@ -43,7 +43,6 @@ const UPWARD_EDGES: &[(&str, &str)] = &[
     ("fragment", "state"),
     ("primitive", "state"),
     ("raster", "state"),
-    ("state", "capi"),
     ("vertex", "state"),
 ];
 

@@ -184,14 +184,14 @@ fn array_element_sets_what_the_typed_immediate_calls_set() {
                 let bytes = raw_bytes(ty, size);
                 // Route 1: a buffer-object array and glArrayElement (outside glBegin/glEnd:
                 // only the current values change).
-                let mut a = Context::new(8, 8);
+                let mut a = client_context(8, 8);
                 buffer(&mut a, GL_ARRAY_BUFFER, &bytes);
                 set_pointer(&mut a, what, size as i32, ty, ClientPtr(0));
                 a.enable_client_state(what);
                 a.array_element(0);
                 no_error(&mut a);
                 // Route 2: the same bytes from client memory.
-                let mut c = Context::new(8, 8);
+                let mut c = client_context(8, 8);
                 set_pointer(
                     &mut c,
                     what,
@@ -203,7 +203,7 @@ fn array_element_sets_what_the_typed_immediate_calls_set() {
                 c.array_element(0);
                 no_error(&mut c);
                 // Route 3: the typed immediate-mode call.
-                let mut b = Context::new(8, 8);
+                let mut b = client_context(8, 8);
                 immediate_call(&mut b, what, ty, size, &bytes);
                 no_error(&mut b);
                 let (ra, rb, rc) = (
@@ -318,7 +318,7 @@ fn immediate_vertex(gl: &mut Context, m: &Mesh, i: usize) {
 
 /// The reference: immediate mode, vertices in `order`.
 fn immediate_picture(m: &Mesh, order: &[usize]) -> Vec<[u8; 4]> {
-    let mut gl = Context::new(64, 64);
+    let mut gl = client_context(64, 64);
     setup(&mut gl);
     gl.begin(GL_TRIANGLES);
     for &i in order {
@@ -383,7 +383,7 @@ fn buffer_arrays(gl: &mut Context, m: &Mesh) {
 
 fn arrays_picture(draw: impl FnOnce(&mut Context)) -> Vec<[u8; 4]> {
     let m = mesh();
-    let mut gl = Context::new(64, 64);
+    let mut gl = client_context(64, 64);
     setup(&mut gl);
     buffer_arrays(&mut gl, &m);
     draw(&mut gl);
@@ -512,7 +512,7 @@ fn client_memory_arrays_equal_buffer_arrays() {
         .map(|&c| (c * 255.0).round() as u8)
         .collect();
     // Client memory vertex and ubyte colour arrays against immediate glColor4ubv.
-    let mut gl = Context::new(64, 64);
+    let mut gl = client_context(64, 64);
     setup(&mut gl);
     gl.disable(GL_LIGHTING);
     gl.vertex_pointer(3, GL_FLOAT, 0, ClientPtr(pos.as_ptr() as usize));
@@ -522,7 +522,7 @@ fn client_memory_arrays_equal_buffer_arrays() {
     gl.draw_arrays(GL_TRIANGLES, 0, N as i32);
     no_error(&mut gl);
     let p = read_rgba(&mut gl);
-    let mut gl = Context::new(64, 64);
+    let mut gl = client_context(64, 64);
     setup(&mut gl);
     gl.disable(GL_LIGHTING);
     gl.begin(GL_TRIANGLES);
@@ -579,7 +579,7 @@ fn every_interleaved_format_equals_immediate_mode() {
             }
             rec.extend(f32_bytes(&pos4(i)[..vs]));
         }
-        let mut a = Context::new(64, 64);
+        let mut a = client_context(64, 64);
         setup(&mut a);
         // Stale state that glInterleavedArrays must disable.
         a.enable_client_state(GL_SECONDARY_COLOR_ARRAY);
@@ -607,7 +607,7 @@ fn every_interleaved_format_equals_immediate_mode() {
             assert_eq!(a.is_enabled(arr) != 0, on, "{fmt:#x} enable of {arr:#x}");
         }
 
-        let mut b = Context::new(64, 64);
+        let mut b = client_context(64, 64);
         setup(&mut b);
         b.begin(GL_TRIANGLES);
         for i in 0..N {
@@ -641,7 +641,7 @@ fn every_interleaved_format_equals_immediate_mode() {
 
 #[test]
 fn interleaved_arrays_with_explicit_stride_set_offsets_and_queries() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     let mut b = [0u32];
     gl.gen_buffers(1, &mut b);
     gl.bind_buffer(GL_ARRAY_BUFFER, b[0]);
@@ -684,7 +684,7 @@ fn interleaved_arrays_with_explicit_stride_set_offsets_and_queries() {
 
 #[test]
 fn array_state_defaults_match_table_6_8() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     let expect: &[(GLenum, i32)] = &[
         (GL_VERTEX_ARRAY, 0),
         (GL_VERTEX_ARRAY_SIZE, 4),
@@ -1127,7 +1127,7 @@ fn error_cases() -> Vec<(&'static str, Call, Call, GLenum)> {
 #[test]
 fn every_array_and_buffer_error_is_recorded_and_changes_nothing() {
     for (what, setup, call, expected) in error_cases() {
-        let mut gl = Context::new(8, 8);
+        let mut gl = client_context(8, 8);
         setup(&mut gl);
         assert_eq!(gl.get_error(), GL_NO_ERROR, "{what}: set-up failed");
         let inside = what.contains("in begin");
@@ -1148,7 +1148,7 @@ fn every_array_and_buffer_error_is_recorded_and_changes_nothing() {
 
 #[test]
 fn buffer_objects_store_map_and_report() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     let mut names = [0u32; 2];
     gl.gen_buffers(2, &mut names);
     assert!(names[0] != 0 && names[1] != 0 && names[0] != names[1]);
@@ -1215,7 +1215,7 @@ fn buffer_objects_store_map_and_report() {
 
 #[test]
 fn push_and_pop_client_attrib_restore_their_groups() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     gl.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
     gl.enable_client_state(GL_COLOR_ARRAY);
     gl.color_pointer(3, GL_UNSIGNED_BYTE, 12, ClientPtr(64));
@@ -1257,7 +1257,7 @@ fn push_and_pop_client_attrib_restore_their_groups() {
 /// `glArrayElement` sets it.
 #[test]
 fn disabled_vertex_array_draws_nothing_and_leaves_current_values() {
-    let mut gl = Context::new(16, 16);
+    let mut gl = client_context(16, 16);
     window_ortho(&mut gl);
     gl.clear(GL_COLOR_BUFFER_BIT);
     let col: [f32; 4] = [0.25, 0.5, 0.75, 1.0];
@@ -1302,7 +1302,7 @@ fn enable_of_an_array_name_enables_the_client_array() {
         &via_client_state,
         "arrays enabled with glEnable",
     );
-    let mut gl = Context::new(4, 4);
+    let mut gl = client_context(4, 4);
     for a in [
         GL_VERTEX_ARRAY,
         GL_COLOR_ARRAY,
@@ -1319,7 +1319,7 @@ fn enable_of_an_array_name_enables_the_client_array() {
 
 #[test]
 fn edge_flag_and_second_unit_texture_coordinate_arrays_set_their_current_values() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     let flags: [u8; 2] = [1, 0];
     let tex: [f32; 6] = [9.0, 9.0, 9.0, 0.5, -2.0, 7.0];
     gl.edge_flag_pointer(0, ClientPtr(flags.as_ptr() as usize));
@@ -1342,7 +1342,7 @@ fn edge_flag_and_second_unit_texture_coordinate_arrays_set_their_current_values(
     gl.get_floatv(GL_CURRENT_TEXTURE_COORDS, &mut t);
     assert_eq!(t, [0.0, 0.0, 0.0, 1.0]);
     // The same through the immediate-mode call.
-    let mut b = Context::new(8, 8);
+    let mut b = client_context(8, 8);
     b.edge_flag(0);
     b.multi_tex_coord_3fv(GL_TEXTURE1, &[0.5, -2.0, 7.0]);
     b.active_texture(GL_TEXTURE1);
@@ -1356,7 +1356,7 @@ fn edge_flag_and_second_unit_texture_coordinate_arrays_set_their_current_values(
 fn buffer_access_survives_unmap_and_buffer_data_resets_it() {
     // GL 1.5 section 2.9: glMapBuffer sets GL_BUFFER_ACCESS; glUnmapBuffer only clears the
     // mapping; glBufferData creates a store with access GL_READ_WRITE.
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     buffer(&mut gl, GL_ARRAY_BUFFER, &[1, 2, 3, 4]);
     let access = |gl: &mut Context| {
         let mut v = [0];
@@ -1401,7 +1401,7 @@ fn a_draw_larger_than_one_fetch_chunk_equals_immediate_mode() {
         .flat_map(|_| [r.range(0.0, 64.0), r.range(0.0, 64.0)])
         .collect();
     let col: Vec<u8> = (0..n * 4).map(|_| (r.next_u64() >> 56) as u8).collect();
-    let mut a = Context::new(64, 64);
+    let mut a = client_context(64, 64);
     window_ortho(&mut a);
     buffer(&mut a, GL_ARRAY_BUFFER, &f32_bytes(&pos));
     a.vertex_pointer(2, GL_FLOAT, 0, ClientPtr(0));
@@ -1411,7 +1411,7 @@ fn a_draw_larger_than_one_fetch_chunk_equals_immediate_mode() {
     a.enable_client_state(GL_COLOR_ARRAY);
     a.draw_arrays(GL_TRIANGLES, 0, n as i32);
     no_error(&mut a);
-    let mut b = Context::new(64, 64);
+    let mut b = client_context(64, 64);
     window_ortho(&mut b);
     b.begin(GL_TRIANGLES);
     for i in 0..n {
@@ -1429,7 +1429,7 @@ fn a_draw_larger_than_one_fetch_chunk_equals_immediate_mode() {
 /// INVALID_OPERATION and changes nothing; the size query returns `GL_BGRA`.
 #[test]
 fn bgra_colour_and_secondary_colour_arrays_swap_red_and_blue() {
-    let mut gl = Context::new(8, 8);
+    let mut gl = client_context(8, 8);
     let bytes = [10u8, 60, 200, 255, 255, 128, 0, 64];
     buffer(&mut gl, GL_ARRAY_BUFFER, &bytes);
     for (what, query, pname, type_pname) in [
@@ -1482,4 +1482,13 @@ fn bgra_colour_and_secondary_colour_arrays_swap_red_and_blue() {
         );
         gl.disable_client_state(what);
     }
+}
+
+/// A context that reads the client arrays and writes the buffers these tests name by address.
+fn client_context(width: i32, height: i32) -> Context {
+    let mut gl = Context::new(width, height);
+    // SAFETY: every `ClientPtr` these tests pass names a live local array or variable, valid
+    // for as long as the calls that read or write it, or an offset into a bound buffer object.
+    unsafe { tilegl::capi::client_memory::attach(&mut gl) };
+    gl
 }

@@ -1288,7 +1288,7 @@ pub fn run_frames(name: &str, gl: &mut dyn Gl, cfg: &BenchConfig, data: &WorkDat
 
 /// tilegl with `threads` worker threads.
 pub fn run_tilegl(cfg: &BenchConfig, data: &WorkData, threads: usize) -> BenchResult {
-    let mut ctx = Context::with_config(ContextConfig {
+    let mut ctx = crate::client_context(ContextConfig {
         width: cfg.width,
         height: cfg.height,
         threads,
@@ -2057,7 +2057,7 @@ impl Session {
 pub fn open_tilegl(cfg: &BenchConfig, data: &WorkData) -> Result<Session, String> {
     match cfg.tilegl_threads.first() {
         Some(&threads) => {
-            let ctx = Context::with_config(ContextConfig {
+            let ctx = crate::client_context(ContextConfig {
                 width: cfg.width,
                 height: cfg.height,
                 threads,

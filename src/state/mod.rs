@@ -5,6 +5,7 @@ pub mod accum;
 pub mod arrays;
 pub mod attrib;
 pub mod clear_read;
+pub mod client_memory;
 mod client_sizes;
 pub mod color_buffers;
 pub mod draw;
@@ -167,6 +168,9 @@ pub struct Context {
     pub(crate) eval: evaluators::EvalState,
     /// How `glEvalMesh2(GL_FILL)` connects the grid (not GL state).
     pub(crate) mesh_fill: evaluators::MeshFill,
+    /// The client memory `ClientPtr`s name (none until the C ABI, or a Rust caller that
+    /// promises the GL client-memory contract, attaches it).
+    pub(crate) client_memory: &'static dyn client_memory::ClientMemory,
 }
 
 impl Context {
@@ -250,6 +254,7 @@ impl Context {
             drawable_check_requested: false,
             force_general_path: false,
             client: Default::default(),
+            client_memory: &client_memory::NoClientMemory,
             lists: Default::default(),
             attrib_stack: Vec::new(),
             multisample: Default::default(),
@@ -258,6 +263,13 @@ impl Context {
             eval: Default::default(),
             mesh_fill: Default::default(),
         }
+    }
+
+    /// Lets the context read and write the client memory its `ClientPtr`s name (client
+    /// arrays, `glGetPointerv`, selection and feedback buffers) through `memory`; the C ABI
+    /// attaches the process's memory to the contexts it creates (`capi::client_memory`).
+    pub fn set_client_memory(&mut self, memory: &'static dyn client_memory::ClientMemory) {
+        self.client_memory = memory;
     }
 
     /// Resizes the framebuffer (contents become undefined; tilegl clears them). Used by the C

@@ -12,7 +12,6 @@
 //! [`Context::feedback_buffer_contents`].
 
 use super::Context;
-use crate::capi::client_memory::write_client_bytes;
 use crate::common::values::{FeedbackToken, FeedbackType, PrimitiveMode, RenderMode};
 use crate::common::values::{PolygonMode, StateExtQuery};
 use crate::gl::convert;
@@ -163,7 +162,7 @@ impl Context {
                 self.write_hit_record();
                 let s = &self.select;
                 let bytes: Vec<u8> = s.select_data.iter().flat_map(|v| v.to_ne_bytes()).collect();
-                write_client_bytes(s.select_ptr, &bytes);
+                self.client_memory.write(s.select_ptr, &bytes);
                 if s.count > s.select_size {
                     -1
                 } else {
@@ -177,7 +176,7 @@ impl Context {
                     .iter()
                     .flat_map(|v| v.to_ne_bytes())
                     .collect();
-                write_client_bytes(s.feedback_ptr, &bytes);
+                self.client_memory.write(s.feedback_ptr, &bytes);
                 if s.count > s.feedback_size {
                     -1
                 } else {
