@@ -265,7 +265,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Rect(r) => Some(r.state),
         };
         if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
-            levels.prepare(&scene.states[state as usize]);
+            levels.prepare(&scene.states[state as usize].fragment);
             levels_state = Some(state);
         }
         match command {
@@ -283,7 +283,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     continue;
                 }
                 raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
-                if ds.key.depth_write {
+                if ds.fragment.key.depth_write {
                     coarse.forget(tile, t.bbox());
                 }
             }
@@ -300,7 +300,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     coverage: r.coverage,
                     shared: &shared,
                 };
-                if ds.key.depth_write {
+                if ds.fragment.key.depth_write {
                     coarse.forget(tile, r.rect);
                 }
                 let t = tile.side();
@@ -308,7 +308,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 let (y0, y1) = (r.rect.y0.max(tile.y0), r.rect.y1.min(tile.y0 + t));
                 if x0 < x1 {
                     for y in y0..y1 {
-                        (ds.span)(ds, tile, y, x0, x1, &it);
+                        (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
                     }
                 }
             }
