@@ -21,7 +21,6 @@ pub mod scenes_arrays;
 pub mod scenes_cascade;
 pub mod scenes_eval;
 pub mod scenes_examples;
-pub mod scenes_extreme;
 pub mod scenes_extremes;
 pub mod scenes_fidelity;
 pub mod scenes_raster;
