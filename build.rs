@@ -49,7 +49,7 @@ const EXTENSIONS: [&str; 2] = [
     "GL_EXT_texture_filter_anisotropic",
     "GL_EXT_texture_compression_s3tc",
 ];
-/// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see README).
+/// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see docs/features.md).
 const EXTRA_EXTENSIONS: [&str; 10] = [
     "GL_NV_texture_env_combine4",
     "GL_ARB_texture_rectangle",
