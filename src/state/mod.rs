@@ -172,6 +172,8 @@ pub struct Context {
     /// The client memory `ClientPtr`s name (none until the C ABI, or a Rust caller that
     /// promises the GL client-memory contract, attaches it).
     pub(crate) client_memory: &'static dyn client_memory::ClientMemory,
+    /// How `GL_POINT_SMOOTH` points are drawn (not GL state).
+    pub(crate) smooth_points: crate::raster::controls::SmoothPoints,
 }
 
 impl Context {
@@ -263,6 +265,7 @@ impl Context {
             select: Default::default(),
             eval: Default::default(),
             mesh_fill: Default::default(),
+            smooth_points: Default::default(),
         }
     }
 
