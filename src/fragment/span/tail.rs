@@ -280,7 +280,14 @@ impl GroupInputs {
 
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
     #[inline(always)]
-    pub(super) fn add(&mut self, ds: &FragmentDraw, tile: &Tile, j: usize, index: usize, value: Lane) {
+    pub(super) fn add(
+        &mut self,
+        ds: &FragmentDraw,
+        tile: &Tile,
+        j: usize,
+        index: usize,
+        value: Lane,
+    ) {
         let d = value.1;
         self.set_inputs(j, value);
         self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
