@@ -9,14 +9,14 @@
 
 use glam::DVec4;
 
-use super::controls::RasterDraw;
+use super::controls::{RasterDraw, SmoothPoints};
+use super::draw::TileDraw;
 use super::scene::{Command, RectCommand, Scene};
 use super::setup::Plane;
 use super::setup::WindowVertex;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::common::rect::Rect;
-use crate::state::DrawState;
 
 /// The derived point size for a vertex at eye position `eye` (section 3.3.1): `size *
 /// sqrt(1 / (a + b d + c d^2))`, clamped to the point-size range. Non-finite or non-positive
@@ -61,7 +61,7 @@ pub fn aliased_width(size: f64) -> i64 {
 /// Bins one point of derived size `size`; `z_offset` is a polygon offset (points of polygons
 /// drawn in point mode).
 pub fn bin_point(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: &WindowVertex,
     size: f64,
@@ -98,6 +98,21 @@ pub fn bin_point(
     // aliased one here).
     let [lo, hi] = limits::POINT_SIZE_RANGE;
     let radius = size.max(lo as f64).min(hi as f64) / 2.0;
+    if ds.raster.smooth_points == SmoothPoints::Discs {
+        // Mesa's smallest disc has radius 1 (measured: sizes up to 2 light the same pixels).
+        let r = radius.max(1.0);
+        let (px0, px1) = ((x - r).floor() as i64, (x + r).floor() as i64);
+        let (py0, py1) = ((y - r).floor() as i64, (y + r).floor() as i64);
+        let offset = add_constant_planes(attrs, scene);
+        for py in py0..=py1 {
+            for px in px0..=px1 {
+                if in_disc(x, y, r, px, py) {
+                    bin_rect(ds, state, [px, py, px + 1, py + 1], z, offset, 1.0, scene);
+                }
+            }
+        }
+        return;
+    }
     let (px0, px1) = ((x - radius).floor() as i64, (x + radius).floor() as i64);
     let (py0, py1) = ((y - radius).floor() as i64, (y + radius).floor() as i64);
     let offset = add_constant_planes(attrs, scene);
@@ -119,7 +134,7 @@ pub fn bin_point(
 /// size.
 #[allow(clippy::too_many_arguments)]
 fn bin_sprite(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     [x, y]: [f64; 2],
     z: f64,
@@ -173,6 +188,13 @@ pub fn disc_coverage(cx: f64, cy: f64, r: f64, px: i64, py: i64) -> f32 {
     ((r + 0.5 - dist).clamp(0.0, 1.0) * full) as f32
 }
 
+/// Whether the centre of pixel `(px, py)` lies in the disc at `(cx, cy)` of radius `r`
+/// ([`SmoothPoints::Discs`]).
+pub fn in_disc(cx: f64, cy: f64, r: f64, px: i64, py: i64) -> bool {
+    let (dx, dy) = (px as f64 + 0.5 - cx, py as f64 + 0.5 - cy);
+    dx * dx + dy * dy <= r * r
+}
+
 /// Stores `attrs` as constant planes; returns their offset.
 pub(crate) fn add_constant_planes(attrs: &[f32], scene: &mut Scene) -> u32 {
     let offset = scene.planes.len() as u32;
@@ -185,7 +207,7 @@ pub(crate) fn add_constant_planes(attrs: &[f32], scene: &mut Scene) -> u32 {
 /// Records the pixels `[x0, x1) x [y0, y1)` (window coordinates, any size) with constant
 /// attributes, limited to the draw rectangle.
 pub(crate) fn emit_rect(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     r: [i64; 4],
     z: f64,
@@ -200,7 +222,7 @@ pub(crate) fn emit_rect(
     bin_rect(ds, state, r, z, offset, coverage, scene);
 }
 
-fn clip_to_draw_rect(ds: &DrawState, r: [i64; 4]) -> Option<Rect> {
+fn clip_to_draw_rect(ds: &TileDraw, r: [i64; 4]) -> Option<Rect> {
     let d = &ds.draw_rect;
     let rect = Rect {
         x0: r[0].max(d.x0 as i64) as i32,
@@ -213,7 +235,7 @@ fn clip_to_draw_rect(ds: &DrawState, r: [i64; 4]) -> Option<Rect> {
 
 /// Records a rectangle whose attribute planes are already stored at `attrs`.
 pub(crate) fn bin_rect(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     r: [i64; 4],
     z: f64,
