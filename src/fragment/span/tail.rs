@@ -162,8 +162,8 @@ impl<'i> SpanRun<'i> {
     pub(super) fn is_steady(&self) -> bool {
         let flat = |p: &Plane| p.a == 0.0;
         let color = |c: usize| flat(&self.attrs[attr::color(c)]);
-        flat(&self.z_plane)
-            && flat(&self.inv_w_plane)
+        flat(self.z_plane)
+            && flat(self.inv_w_plane)
             && (self.constant_primary || (0..self.count.min(4)).all(color))
             && (4..self.count).all(color)
             && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
