@@ -21,17 +21,16 @@
 use std::cell::Cell;
 
 use super::blend::{blend, blend_alpha_over};
-use super::key::{FragmentKey, Uniforms};
+use super::key::{FragmentKey, StencilKey, Uniforms};
 use super::texenv::{self, CombineInputs};
 use crate::common::attr;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{CompareFunc, StencilOp, TexEnvMode};
+use crate::fragment::draw::{FragmentDraw, TextureUnitDraw};
 use crate::fragment::fog::FogDraw;
 use crate::fragment::plane::Plane;
 use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
-use crate::state::snapshot::TextureUnitDraw;
-use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
 use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
@@ -93,13 +92,16 @@ impl<'a> PrimitiveShared<'a> {
 }
 
 /// Every level of each unit's texture prepared for the eight-pixel filter ([`Level8`]; `None`
-/// where a level does not take it), by the unit's index in `DrawState::units`. Prepared once
+/// where a level does not take it), by the unit's index in `FragmentDraw::units`. Prepared once
 /// per tile and draw state ([`UnitLevels::prepare`]) instead of in every span: the spans of
 /// small triangles are a few pixels long. Empty (and not allocated) for draws without
 /// eight-pixel samplers.
 #[derive(Clone, Debug, Default)]
 pub struct UnitLevels<'a> {
+    /// Each face's levels (one face, or a cube map's six from `first[k]`).
     units: Vec<[Option<Level8<'a>>; MAX_FAST_LEVELS]>,
+    /// The index in `units` of each unit's first face, and its face count.
+    first: [(usize, usize); MAX_TEXTURE_UNITS],
     /// `pair_textured`'s tail for the draw (one REPLACE/MODULATE unit on the fast 2D path,
     /// fragments finishing eight at a time), built once here instead of per row pair.
     textured_tail: Option<Tail8>,
@@ -108,8 +110,9 @@ pub struct UnitLevels<'a> {
 impl<'a> UnitLevels<'a> {
     /// Replaces the table with the levels of `ds`'s units (none unless the draw's key has
     /// `simd_units`, which the eight-pixel samplers require).
-    pub fn prepare(&mut self, ds: &'a DrawState) {
+    pub fn prepare(&mut self, ds: &'a FragmentDraw) {
         self.units.clear();
+        self.first = [(0, 0); MAX_TEXTURE_UNITS];
         self.textured_tail = None;
         if !ds.key.simd_units || !crate::common::cpu::available() {
             return;
@@ -121,20 +124,36 @@ impl<'a> UnitLevels<'a> {
                 self.textured_tail = Some(tail8(ds, modulate, false, rgb));
             }
         }
-        for unit in &ds.units {
+        for (k, unit) in ds.units.iter().enumerate() {
             let tex = &unit.texture;
             let (wrap, base) = (tex.wrap_st(), tex.base_format());
-            let mut levels = [None; MAX_FAST_LEVELS];
-            for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
-                *level = tex.fast_level(l).and_then(|f| Level8::new(&f, wrap, base));
+            let faces = tex.face_count();
+            self.first[k] = (self.units.len(), faces);
+            for face in 0..faces {
+                let mut levels = [None; MAX_FAST_LEVELS];
+                for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
+                    *level = tex
+                        .face_fast_level(face, l)
+                        .and_then(|f| Level8::new(&f, wrap, base));
+                }
+                self.units.push(levels);
             }
-            self.units.push(levels);
         }
+    }
+
+    /// The faces of the unit at index `k` of the draw's units (one, or a cube map's six), when
+    /// the table was prepared.
+    #[inline(always)]
+    fn faces(&self, k: usize) -> Option<&[[Option<Level8<'a>>; MAX_FAST_LEVELS]]> {
+        let &(first, count) = self.first.get(k)?;
+        self.units
+            .get(first..first + count)
+            .filter(|f| !f.is_empty())
     }
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
-pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
+pub type SpanFn = for<'a> fn(&'a FragmentDraw, &mut Tile, i32, i32, i32, &Interpolants<'a>);
 
 /// Depth handling chosen at compile time: `DYNAMIC` reads the key, others are fixed.
 pub mod depth_mode {
