@@ -79,9 +79,10 @@ const EXTRA_ENUMS: [&str; 7] = [
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands.
-const COMMAND_EXTENSIONS: [&str; 2] = [
+const COMMAND_EXTENSIONS: [&str; 3] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
+    "GL_EXT_provoking_vertex",
 ];
 
 const KEYWORDS: [&str; 12] = [

@@ -240,6 +240,7 @@ impl Context {
                 self.lighting.color_sum = color_sum;
             }
             r.shade_model = e.raster.shade_model;
+            r.provoking_vertex = e.raster.provoking_vertex;
         }
         if g.fog {
             self.fog = e.fog;

@@ -80,7 +80,7 @@ GL_ARB_texture_rectangle GL_ARB_transpose_matrix GL_ARB_vertex_array_bgra GL_ARB
 GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract \
 GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
-GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color \
+GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_secondary_color \
 GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
@@ -546,6 +546,16 @@ impl Context {
         self.invalidate();
     }
 
+    /// EXT_provoking_vertex.
+    pub(crate) fn provoking_vertex_ext(&mut self, mode: GLenum) {
+        let Some(m) = convert::provoking_vertex(mode) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.raster.provoking_vertex = m;
+        self.invalidate();
+    }
+
     // ----- per-fragment operations and framebuffer control
 
     pub(crate) fn depth_func(&mut self, func: GLenum) {
@@ -753,6 +763,7 @@ impl Gl for Context {
         cull_face,
         front_face,
         shade_model,
+        provoking_vertex_ext,
         depth_func,
         depth_mask,
         color_mask,

@@ -9,7 +9,7 @@ use glam::{DVec4, Mat4};
 use super::Context;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::rect::Rect;
-use crate::common::values::{Face, PolygonMode, ShadeModel, Winding};
+use crate::common::values::{Face, PolygonMode, ProvokingVertex, ShadeModel, Winding};
 use crate::common::values::{TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
 pub use crate::fragment::fog::{fog_exp, FogDraw, EXP2_TAYLOR};
@@ -64,6 +64,8 @@ pub struct DrawState {
     pub cull: Option<Face>,
     pub front_face: Winding,
     pub flat: bool,
+    /// Which vertex provokes under flat shading (EXT_provoking_vertex).
+    pub provoking: ProvokingVertex,
     /// Interpolated attributes per vertex (a prefix of the `attr` layout).
     pub attr_count: usize,
     /// Bit i set when the fragment stage reads attribute i (below `attr_count`): the others'
@@ -235,6 +237,7 @@ impl Context {
             cull: self.raster.cull_enabled.then_some(self.raster.cull_face),
             front_face: self.raster.front_face,
             flat: self.raster.shade_model == ShadeModel::Flat,
+            provoking: self.raster.provoking_vertex,
             attr_count,
             live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },

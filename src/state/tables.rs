@@ -4,8 +4,8 @@
 use crate::api::enums::GL_DONT_CARE;
 use crate::api::GLenum;
 use crate::common::values::{
-    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode, ShadeModel,
-    StencilOp, Winding,
+    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode,
+    ProvokingVertex, ShadeModel, StencilOp, Winding,
 };
 use glam::{DVec4, Mat4, Vec3, Vec4};
 
@@ -75,6 +75,8 @@ pub struct RasterState {
     pub cull_face: Face,
     pub front_face: Winding,
     pub shade_model: ShadeModel,
+    /// EXT_provoking_vertex (in the lighting attribute group, like the shade model).
+    pub provoking_vertex: ProvokingVertex,
     pub point_size: f32,
     pub line_width: f32,
     pub point_smooth: bool,
@@ -110,6 +112,7 @@ impl Default for RasterState {
             cull_face: Face::Back,
             front_face: Winding::Ccw,
             shade_model: ShadeModel::Smooth,
+            provoking_vertex: ProvokingVertex::Last,
             point_size: 1.0,
             line_width: 1.0,
             point_smooth: false,
