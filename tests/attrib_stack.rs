@@ -388,7 +388,12 @@ fn a_group_restores_its_own_state_only() {
         integer(&mut gl, GL_PROVOKING_VERTEX_EXT),
         GL_LAST_VERTEX_CONVENTION_EXT as i32
     );
-    for other in [GL_POLYGON_BIT, GL_TRANSFORM_BIT, GL_ENABLE_BIT, GL_CURRENT_BIT] {
+    for other in [
+        GL_POLYGON_BIT,
+        GL_TRANSFORM_BIT,
+        GL_ENABLE_BIT,
+        GL_CURRENT_BIT,
+    ] {
         gl.push_attrib(other);
         gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
         gl.pop_attrib();

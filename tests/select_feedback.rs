@@ -250,7 +250,12 @@ fn feedback_colours_follow_the_first_vertex_convention() {
     gl.render_mode(GL_FEEDBACK);
     gl.shade_model(GL_FLAT);
     gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
-    let colours = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]];
+    let colours = [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 1.0, 0.0],
+    ];
     let xy = [(1.0, 2.0), (30.0, 4.0), (30.0, 30.0), (5.0, 30.0)];
     for mode in [GL_LINE_STRIP, GL_TRIANGLE_FAN] {
         gl.begin(mode);

@@ -17,7 +17,7 @@ use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
 use crate::api::types::GLsizei;
-use crate::common::values::{DrawPixelsFormat, PixelIndexType, TexPixelFormat, TexPixelType};
+use crate::common::values::{DrawPixelsFormat, TexPixelFormat, TexPixelType};
 use crate::state::tables::PixelStore;
 use crate::texture::object::{MAX_3D_TEXTURE_SIZE, MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
 use crate::texture::pixels as texpix;
@@ -65,14 +65,20 @@ impl Context {
         type_: GLenum,
         size: [GLsizei; 3],
     ) -> usize {
+        let Some(s) = image_size(dims, size, max_image_side()) else {
+            return 0;
+        };
+        if format == GL_COLOR_INDEX {
+            return convert::pixel_index_type(type_)
+                .map_or(0, |t| texpix::index_image_len(&self.unpack, dims, s, t));
+        }
         let (Some(f), Some(t)) = (
             convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;
         };
-        image_size(dims, size, max_image_side())
-            .map_or(0, |s| image_bytes(&self.unpack, dims, f, t, s))
+        image_bytes(&self.unpack, dims, f, t, s)
     }
 
     /// Bytes `glDrawPixels` reads: colour and depth groups as for texture images, colour and
@@ -96,12 +102,8 @@ impl Context {
                 image_bytes(u, 2, TexPixelFormat::DepthComponent, t, [w, h, 1])
             }),
             Some(DrawPixelsFormat::StencilIndex | DrawPixelsFormat::ColorIndex) => {
-                let (bits, size) = match convert::pixel_index_type(type_) {
-                    Some(PixelIndexType::Bitmap) => (1, 1),
-                    Some(PixelIndexType::Plain(t)) => (8 * t.size(), t.size()),
-                    None => return 0,
-                };
-                texpix::index_rows(u, w, h, bits, size).map_or(0, |r| r.end)
+                convert::pixel_index_type(type_)
+                    .map_or(0, |t| texpix::index_image_len(u, 2, [w, h, 1], t))
             }
             None => 0,
         }
