@@ -1839,3 +1839,94 @@ fn color_index_upload_errors() {
     gl.get_tex_image(GL_TEXTURE_2D, 0, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, &mut out);
     assert_eq!(gl.get_error(), GL_INVALID_ENUM);
 }
+
+/// Depth-stencil textures (EXT_packed_depth_stencil, ARB_depth_buffer_float) keep 8 stencil
+/// bits per texel: GL_TEXTURE_STENCIL_SIZE is 8, a GL_DEPTH_STENCIL upload's low byte (through
+/// the index offset, section 3.6.5) reads back through glGetTexImage(GL_DEPTH_STENCIL), also
+/// after a sub-image; a depth-only texture has no stencil to read (INVALID_OPERATION).
+#[test]
+fn depth_stencil_textures_keep_their_stencil() {
+    let mut gl = ctx();
+    let words = |w: &[u32]| -> Vec<u8> { w.iter().flat_map(|v| v.to_ne_bytes()).collect() };
+    let read = |gl: &mut Context| -> Vec<u32> {
+        let mut out = [0u8; 16];
+        gl.get_tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut out,
+        );
+        out.chunks(4)
+            .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+            .collect()
+    };
+    for (internal, depth_bits) in [
+        (GL_DEPTH24_STENCIL8_EXT, 24),
+        (GL_DEPTH32F_STENCIL8, 32),
+        (GL_DEPTH_STENCIL_EXT, 24),
+    ] {
+        let data = words(&[0x0000_0103, 0x8000_00fe, 0xffff_ff40, 0x1234_5600]);
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&data),
+        );
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(
+            level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE_EXT),
+            8
+        );
+        assert_eq!(
+            level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE),
+            depth_bits
+        );
+        assert_eq!(
+            read(&mut gl),
+            [0x0000_0103, 0x8000_00fe, 0xffff_ff40, 0x1234_5600]
+        );
+        // A sub-image of the top row with an index offset of 5 (stencil wraps to 8 bits).
+        gl.pixel_transferi(GL_INDEX_OFFSET, 5);
+        let row = words(&[0x4000_00fd, 0x2000_0010]);
+        gl.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            0,
+            1,
+            2,
+            1,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&row),
+        );
+        gl.pixel_transferi(GL_INDEX_OFFSET, 0);
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        assert_eq!(
+            read(&mut gl),
+            [0x0000_0103, 0x8000_00fe, 0x4000_0002, 0x2000_0015]
+        );
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_DEPTH_COMPONENT24 as i32,
+        2,
+        2,
+        0,
+        GL_DEPTH_COMPONENT,
+        GL_FLOAT,
+        Some(&[0u8; 16]),
+    );
+    assert_eq!(
+        level_param(&mut gl, GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE_EXT),
+        0
+    );
+    read(&mut gl);
+    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+}

@@ -164,8 +164,9 @@ impl Context {
         format: GLenum,
         type_: GLenum,
     ) -> usize {
+        // GL_DEPTH_STENCIL too: depth-stencil images read back packed (24_8).
         let (Some(f), Some(t)) = (
-            convert::tex_pixel_format(format),
+            convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;

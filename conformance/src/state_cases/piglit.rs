@@ -10,12 +10,12 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
             .zip(&b.values)
             .all(|(x, y)| (x - y).abs() <= a.tolerance)
 };
-    piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (8 for the depth-stencil formats, 0 for the others). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_get_tex_image_luminance: "piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
-    piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, depth-stencil textures keeping the stencil indices too (read back as GL_DEPTH_STENCIL, which a depth-only texture refuses), and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
 );
 
 use tilegl::api::GLenum;
@@ -55,7 +55,8 @@ fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
 }
 
 /// piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter
-/// reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil).
+/// reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (8 for the depth-stencil
+/// formats, 0 for the others).
 fn piglit_sized_format_channels(gl: &mut dyn Gl, out: &mut Answers) {
     const SIZES: [GLenum; 8] = [
         GL_TEXTURE_RED_SIZE,
@@ -77,6 +78,9 @@ fn piglit_sized_format_channels(gl: &mut dyn Gl, out: &mut Answers) {
         (GL_R8, GL_RGBA),
         (GL_RG8, GL_RGBA),
         (GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT),
+        (GL_DEPTH24_STENCIL8_EXT, GL_DEPTH_COMPONENT),
+        (GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT),
+        (GL_DEPTH_STENCIL_EXT, GL_DEPTH_COMPONENT),
     ] {
         gl.tex_image_2d(
             GL_TEXTURE_2D,
@@ -284,6 +288,51 @@ fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
                 .collect(),
             tolerance: 1.0,
         });
+        // Depth and stencil packed back, with the stencil indices distinct per texel.
+        let words2: Vec<u8> = [0x1234_5601u32, 0x89ab_cd7f, 0x0000_0080, 0xffff_ffff]
+            .iter()
+            .flat_map(|w| w.to_ne_bytes())
+            .collect();
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words2),
+        );
+        let mut packed = [0u8; 16];
+        gl.get_tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut packed,
+        );
+        err(
+            gl,
+            out,
+            &format!("get_tex_image 0x{internal:04x} as DEPTH_STENCIL"),
+        );
+        if internal == GL_DEPTH24_STENCIL8_EXT {
+            let words: Vec<u32> = packed
+                .chunks(4)
+                .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+                .collect();
+            exact(
+                out,
+                "stencil read back".into(),
+                words.iter().map(|w| (w & 0xff) as f64).collect(),
+            );
+            out.push(Answer {
+                label: "depth read back (24 bits)".into(),
+                values: words.iter().map(|w| (w >> 8) as f64).collect(),
+                tolerance: 1.0,
+            });
+        }
     }
     let data = [0u8; 64];
     for (internal, format, ty) in [

@@ -98,6 +98,14 @@ impl Context {
                     xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
                 });
             }
+            let stencil = StencilUpload {
+                data,
+                layout: &layout,
+                pf,
+                pt,
+                swap,
+            };
+            stencil.store(&mut img, &self.pixel_transfer, [0; 3], usize3);
             img.encode_region(0, 0, img.width, img.height);
         }
         self.install_image(target, level, img);
@@ -166,6 +174,12 @@ impl Context {
             let layout = pixels::layout(&self.unpack, dims, n, pf, pt).ok_or(GL_INVALID_VALUE)?;
             let swap = self.unpack.swap_bytes;
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            // Stencil indices take the index shift, offset and map (not in `xfer`'s test).
+            let transfer = if pf == TexPixelFormat::DepthStencil {
+                self.pixel_transfer.clone()
+            } else {
+                Default::default()
+            };
             let depth = pf.is_depth();
             let face = target.face();
             let mut obj = self.image_object_mut(target);
@@ -184,6 +198,15 @@ impl Context {
                         xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
                     });
                 }
+                let origin = o.map(|v| v.max(0) as usize);
+                let stencil = StencilUpload {
+                    data,
+                    layout: &layout,
+                    pf,
+                    pt,
+                    swap,
+                };
+                stencil.store(img, &transfer, origin, n);
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
             drop(obj);
@@ -388,15 +411,27 @@ impl Context {
             let target = convert::tex_image_target(target)
                 .filter(|t| !t.is_proxy())
                 .ok_or(GL_INVALID_ENUM)?;
-            let (pf, pt) = pixel_format_type(format, type_)?;
+            // GL_DEPTH_STENCIL reads a depth-stencil image's depth and stencil packed as
+            // GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil).
+            let (pf, pt) = if format == GL_DEPTH_STENCIL_EXT {
+                upload_format_type(format, type_)?
+            } else {
+                pixel_format_type(format, type_)?
+            };
             let level = check_level(target.texture_target(), level)?;
             check_format_type(pf, pt)?;
             let Some(img) = self.image_at(target, level) else {
                 return Ok(());
             };
-            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+            let fits = match pf {
+                TexPixelFormat::DepthComponent => img.format.is_depth(),
+                TexPixelFormat::DepthStencil => img.format.stencil,
+                _ => !img.format.is_depth(),
+            };
+            if !fits {
                 return Err(GL_INVALID_OPERATION);
             }
+            let stencil = pf == TexPixelFormat::DepthStencil;
             let dims = target.dims();
             let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
             let layout = pixels::layout(&self.pack, dims, size, pf, pt).ok_or(GL_INVALID_VALUE)?;
@@ -418,6 +453,9 @@ impl Context {
                         let mut v = img.fetch(x as i32, y as i32, z as i32);
                         if luminance {
                             (v[1], v[2]) = (0.0, 0.0);
+                        }
+                        if stencil {
+                            v[3] = img.stencil_at(x as i32, y as i32, z as i32) as f32 / 255.0;
                         }
                         pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
                     }

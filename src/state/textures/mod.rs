@@ -5,6 +5,7 @@
 //! `texture`.
 #![allow(clippy::too_many_arguments)]
 
+use super::pixel_rect::PixelTransfer;
 use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
@@ -218,6 +219,33 @@ impl Context {
         })
         .ok_or(GL_INVALID_VALUE)?;
         Ok(out)
+    }
+}
+
+/// The client data of a `GL_DEPTH_STENCIL` upload, whose stencil indices go into a
+/// depth-stencil image beside the depth.
+pub(super) struct StencilUpload<'a> {
+    pub data: &'a [u8],
+    pub layout: &'a pixels::Layout,
+    pub pf: TexPixelFormat,
+    pub pt: TexPixelType,
+    pub swap: bool,
+}
+
+impl StencilUpload<'_> {
+    /// Stores the indices of the `n` block at `origin` (the packed word's low 8 bits, through
+    /// the index shift and offset and the stencil map, section 3.6.5); nothing for other
+    /// formats or an image without stencil.
+    pub fn store(&self, img: &mut TexImage, t: &PixelTransfer, origin: [usize; 3], n: [usize; 3]) {
+        if self.pf != TexPixelFormat::DepthStencil || img.stencil.is_none() {
+            return;
+        }
+        let l = self.layout;
+        img.store_stencil_block(origin, n, |x, y, z| {
+            let at = l.start + z * l.image_stride + y * l.row_stride + x * l.group;
+            let v = pixels::unpack_group(self.data, at, self.pf, self.pt, self.swap)[3];
+            t.stencil((v * 255.0).round() as i64)
+        });
     }
 }
 
