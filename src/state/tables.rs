@@ -149,6 +149,9 @@ pub struct FragmentOpsState {
     pub color_mask: [bool; 4],
     pub dither: bool,
     pub stencil_writemask: u32,
+    /// `glIndexMask`: colour-index state, kept (and queried) in RGBA mode too, where it
+    /// masks nothing (section 4.2.2 applies it in colour-index mode only).
+    pub index_writemask: u32,
     pub alpha_test: bool,
     pub alpha_func: CompareFunc,
     /// Alpha reference, clamped to [0, 1] at `glAlphaFunc`.
@@ -186,6 +189,7 @@ impl Default for FragmentOpsState {
             color_mask: [true; 4],
             dither: true,
             stencil_writemask: !0,
+            index_writemask: !0,
             alpha_test: false,
             alpha_func: CompareFunc::Always,
             alpha_ref: 0.0,
@@ -219,6 +223,8 @@ pub struct ClearValues {
     pub stencil: i32,
     /// `glClearAccum`, clamped to [-1, 1].
     pub accum: [f32; 4],
+    /// `glClearIndex` (colour-index state; no RGBA buffer uses it).
+    pub index: f32,
 }
 
 impl Default for ClearValues {
@@ -228,6 +234,7 @@ impl Default for ClearValues {
             depth: 1.0,
             stencil: 0,
             accum: [0.0; 4],
+            index: 0.0,
         }
     }
 }
