@@ -15,6 +15,7 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
     piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_beginend_coverage: "piglit's gl-1.0-beginend-coverage: glIndex*, glClearIndex and glIndexMask set colour-index state in an RGBA context without error (glIndex* also between glBegin and glEnd); glTexGenf/glTexGeni with a plane set (param, 0, 0, 0) (section 2.11.4 names no error for the scalar forms); glTexParameterf(GL_TEXTURE_BORDER_COLOR) is GL_INVALID_ENUM; glDrawArrays and glDrawElements from a display list executed between glBegin and glEnd are GL_INVALID_OPERATION. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, depth-stencil textures keeping the stencil indices too (read back as GL_DEPTH_STENCIL, which a depth-only texture refuses), and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
 );
 
@@ -364,6 +365,118 @@ fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
             &format!("tex_image_2d 0x{internal:04x} 0x{format:04x} 0x{ty:04x}"),
         );
     }
+}
+
+/// piglit's gl-1.0-beginend-coverage, the parts where tilegl and Mesa agree (the lighting
+/// commands' scalar forms with vector parameters are GL_INVALID_ENUM by section 2.14.2; Mesa
+/// accepts them, so `tests/state_errors.rs` checks those against the specification).
+fn piglit_beginend_coverage(gl: &mut dyn Gl, out: &mut Answers) {
+    let get_f = |gl: &mut dyn Gl, out: &mut Answers, pname: GLenum, label: &str| {
+        let mut v = [-9.0f32];
+        gl.get_floatv(pname, &mut v);
+        exact(out, label.into(), vec![v[0] as f64]);
+    };
+    gl.indexf(7.5);
+    err(gl, out, "indexf");
+    get_f(gl, out, GL_CURRENT_INDEX, "current index after indexf(7.5)");
+    gl.indexub(200);
+    get_f(
+        gl,
+        out,
+        GL_CURRENT_INDEX,
+        "current index after indexub(200)",
+    );
+    gl.begin(GL_POINTS);
+    gl.indexi(9);
+    gl.indexsv(&[11]);
+    gl.end();
+    err(gl, out, "indexi, indexsv between begin and end");
+    get_f(gl, out, GL_CURRENT_INDEX, "current index after indexsv(11)");
+    gl.clear_index(3.0);
+    gl.index_mask(5);
+    err(gl, out, "clear_index, index_mask");
+    get_f(gl, out, GL_INDEX_CLEAR_VALUE, "index clear value");
+    let mut m = [0];
+    gl.get_integerv(GL_INDEX_WRITEMASK, &mut m);
+    exact(out, "index write mask".into(), vec![m[0] as f64]);
+    gl.begin(GL_POINTS);
+    gl.clear_index(4.0);
+    gl.end();
+    err(gl, out, "clear_index between begin and end");
+    for (pname, f) in [(GL_OBJECT_PLANE, 0.5), (GL_EYE_PLANE, 2.0)] {
+        gl.tex_genf(GL_S, pname, f);
+        err(gl, out, &format!("tex_genf 0x{pname:04x}"));
+        let mut v = [-9.0f32; 4];
+        gl.get_tex_genfv(GL_S, pname, &mut v);
+        exact(
+            out,
+            format!("plane 0x{pname:04x}"),
+            v.map(|x| x as f64).to_vec(),
+        );
+    }
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5);
+    err(gl, out, "tex_parameterf(GL_TEXTURE_BORDER_COLOR)");
+    // Array draws from a list, executed inside glBegin/glEnd.
+    let verts = [0.0f32; 8];
+    gl.vertex_pointer(2, GL_FLOAT, 0, tilegl::ClientPtr(verts.as_ptr() as usize));
+    for enabled in [false, true] {
+        if enabled {
+            gl.enable_client_state(GL_VERTEX_ARRAY);
+        }
+        gl.new_list(5, GL_COMPILE);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end_list();
+        gl.new_list(6, GL_COMPILE);
+        gl.draw_elements(
+            GL_POINTS,
+            1,
+            GL_UNSIGNED_INT,
+            tilegl::ClientPtr([0u32].as_ptr() as usize),
+        );
+        gl.end_list();
+        err(gl, out, "compiling array draws");
+        for list in [5, 6] {
+            gl.begin(GL_POINTS);
+            gl.call_list(list);
+            gl.end();
+            err(
+                gl,
+                out,
+                &format!("list {list} between begin and end, arrays {enabled}"),
+            );
+            gl.new_list(7, GL_COMPILE);
+            gl.begin(GL_POINTS);
+            gl.call_list(list);
+            gl.end();
+            gl.end_list();
+            gl.call_list(7);
+            err(
+                gl,
+                out,
+                &format!("list of begin, list {list}, end, arrays {enabled}"),
+            );
+        }
+        gl.new_list(8, GL_COMPILE);
+        gl.begin(GL_POINTS);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end();
+        gl.end_list();
+        err(gl, out, "compiling begin, draw_arrays, end");
+        gl.call_list(8);
+        err(
+            gl,
+            out,
+            &format!("list of begin, draw_arrays, end, arrays {enabled}"),
+        );
+        gl.new_list(8, GL_COMPILE_AND_EXECUTE);
+        gl.begin(GL_POINTS);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end();
+        gl.end_list();
+        err(gl, out, "compile-and-execute begin, draw_arrays, end");
+    }
+    gl.disable_client_state(GL_VERTEX_ARRAY);
+    gl.delete_lists(5, 4);
 }
 
 /// Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and
