@@ -250,8 +250,19 @@ fn c_ret_type(c: &Command) -> Option<String> {
     }
 }
 
+/// The vertex-array draws, which a display list holds as the vertices they fetch
+/// (`state::arrays` records them, not the generated prologue).
+const SELF_RECORDED_DRAWS: &[&str] = &[
+    "glDrawArrays",
+    "glDrawElements",
+    "glDrawRangeElements",
+    "glMultiDrawArrays",
+    "glMultiDrawElements",
+];
+
 fn allowed_in_begin_end(name: &str) -> bool {
-    if name.contains("Pointer") {
+    // glIndexMask and glIndexPointer share glIndex's prefix but are not vertex commands.
+    if name.contains("Pointer") || name == "glIndexMask" {
         return false;
     }
     let prefixes = [
@@ -954,6 +965,10 @@ fn main() {
         // Forwarding arm.
         let guard = if allowed_in_begin_end(&c.name) {
             String::new()
+        } else if SELF_RECORDED_DRAWS.contains(&c.name.as_str()) {
+            // These record themselves (after the guard): the error goes into the list too, so
+            // that a list compiled with GL_COMPILE_AND_EXECUTE raises it again when called.
+            "if self.reject_inside_begin_end_in_lists() { return Default::default(); } ".into()
         } else {
             "if self.reject_inside_begin_end() { return Default::default(); } ".into()
         };

@@ -333,6 +333,18 @@ impl Context {
         }
     }
 
+    /// [`Context::reject_inside_begin_end`] for the commands that record themselves into
+    /// display lists (the array draws): the error is recorded into the list being compiled
+    /// too, and raised now unless the list is only compiled.
+    pub(crate) fn reject_inside_begin_end_in_lists(&mut self) -> bool {
+        if self.immediate.is_some() {
+            self.list_aware_error(GL_INVALID_OPERATION);
+            true
+        } else {
+            false
+        }
+    }
+
     /// Marks drawing state changed: the next draw builds a new snapshot.
     #[inline]
     pub(crate) fn invalidate(&mut self) {

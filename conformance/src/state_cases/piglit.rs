@@ -403,6 +403,10 @@ fn piglit_beginend_coverage(gl: &mut dyn Gl, out: &mut Answers) {
     gl.clear_index(4.0);
     gl.end();
     err(gl, out, "clear_index between begin and end");
+    gl.begin(GL_POINTS);
+    gl.index_mask(4);
+    gl.end();
+    err(gl, out, "index_mask between begin and end");
     for (pname, f) in [(GL_OBJECT_PLANE, 0.5), (GL_EYE_PLANE, 2.0)] {
         gl.tex_genf(GL_S, pname, f);
         err(gl, out, &format!("tex_genf 0x{pname:04x}"));
@@ -474,6 +478,8 @@ fn piglit_beginend_coverage(gl: &mut dyn Gl, out: &mut Answers) {
         gl.end();
         gl.end_list();
         err(gl, out, "compile-and-execute begin, draw_arrays, end");
+        gl.call_list(8);
+        err(gl, out, "that list called");
     }
     gl.disable_client_state(GL_VERTEX_ARRAY);
     gl.delete_lists(5, 4);
