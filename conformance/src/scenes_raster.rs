@@ -819,10 +819,13 @@ fn blend_equation_separate(gl: &mut dyn Gl) {
     gl.rectf(0.0, 32.0, 64.0, 64.0);
 }
 
+/// Mode, cell index and vertices of one provoking-vertex cell.
+type ProvokingCell = (GLenum, usize, &'static [(f32, f32)]);
+
 /// The provoking-vertex scenes' cells: mode and vertices (pixel offsets in a 16x16 cell;
 /// fractional, so no line or edge passes through a pixel centre), and the cell's index in a
 /// 4x4 grid. Cells 10 and 11 are cut by a user clip plane; 12-15 reach past the window's edges.
-const PROVOKING_CELLS: &[(GLenum, usize, &[(f32, f32)])] = &[
+const PROVOKING_CELLS: &[ProvokingCell] = &[
     (
         GL_LINES,
         0,

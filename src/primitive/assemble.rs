@@ -283,7 +283,7 @@ mod tests {
     #[test]
     fn provoking_vertices_follow_the_extension_table_for_every_mode() {
         use PrimitiveMode::*;
-        assert!(!QUADS_FOLLOW_PROVOKING_VERTEX);
+        const { assert!(!QUADS_FOLLOW_PROVOKING_VERTEX) };
         let modes = [
             Points,
             Lines,
