@@ -86,9 +86,10 @@ const EXTRA_ENUMS: [&str; 7] = [
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands.
-const COMMAND_EXTENSIONS: [&str; 2] = [
+const COMMAND_EXTENSIONS: [&str; 3] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
+    "GL_EXT_provoking_vertex",
 ];
 
 const KEYWORDS: [&str; 12] = [
@@ -256,8 +257,19 @@ fn c_ret_type(c: &Command) -> Option<String> {
     }
 }
 
+/// The vertex-array draws, which a display list holds as the vertices they fetch
+/// (`state::arrays` records them, not the generated prologue).
+const SELF_RECORDED_DRAWS: &[&str] = &[
+    "glDrawArrays",
+    "glDrawElements",
+    "glDrawRangeElements",
+    "glMultiDrawArrays",
+    "glMultiDrawElements",
+];
+
 fn allowed_in_begin_end(name: &str) -> bool {
-    if name.contains("Pointer") {
+    // glIndexMask and glIndexPointer share glIndex's prefix but are not vertex commands.
+    if name.contains("Pointer") || name == "glIndexMask" {
         return false;
     }
     let prefixes = [
@@ -671,6 +683,10 @@ fn main() {
         // Forwarding arm.
         let guard = if allowed_in_begin_end(&c.name) {
             String::new()
+        } else if SELF_RECORDED_DRAWS.contains(&c.name.as_str()) {
+            // These record themselves (after the guard): the error goes into the list too, so
+            // that a list compiled with GL_COMPILE_AND_EXECUTE raises it again when called.
+            "if self.reject_inside_begin_end_in_lists() { return Default::default(); } ".into()
         } else {
             "if self.reject_inside_begin_end() { return Default::default(); } ".into()
         };

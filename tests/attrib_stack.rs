@@ -159,6 +159,7 @@ fn change_everything(gl: &mut Context) {
     gl.materialf(GL_FRONT, GL_SHININESS, 20.0);
     gl.color_material(GL_BACK, GL_SPECULAR);
     gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
     // fog
     gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
     gl.fogf(GL_FOG_DENSITY, 0.5);
@@ -377,9 +378,32 @@ fn a_group_restores_its_own_state_only() {
     gl.push_attrib(GL_LIGHTING_BIT);
     gl.enable(GL_COLOR_SUM);
     gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
     gl.pop_attrib();
     assert_eq!(gl.is_enabled(GL_COLOR_SUM), 1);
     assert_eq!(integer(&mut gl, GL_SHADE_MODEL), GL_SMOOTH as i32);
+    // EXT_provoking_vertex's state table puts the convention in the lighting group (Mesa 22
+    // keeps it out of every group).
+    assert_eq!(
+        integer(&mut gl, GL_PROVOKING_VERTEX_EXT),
+        GL_LAST_VERTEX_CONVENTION_EXT as i32
+    );
+    for other in [
+        GL_POLYGON_BIT,
+        GL_TRANSFORM_BIT,
+        GL_ENABLE_BIT,
+        GL_CURRENT_BIT,
+    ] {
+        gl.push_attrib(other);
+        gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+        gl.pop_attrib();
+        assert_eq!(
+            integer(&mut gl, GL_PROVOKING_VERTEX_EXT),
+            GL_FIRST_VERTEX_CONVENTION_EXT as i32,
+            "group {other:#x} does not hold the convention"
+        );
+        gl.provoking_vertex_ext(GL_LAST_VERTEX_CONVENTION_EXT);
+    }
     gl.push_attrib(GL_FOG_BIT);
     gl.disable(GL_COLOR_SUM);
     gl.pop_attrib();

@@ -241,6 +241,52 @@ fn feedback_tokens_and_vertices() {
     assert_eq!(n as usize, expected.len());
 }
 
+/// EXT_provoking_vertex in feedback mode: under the first-vertex convention a flat line strip's
+/// segments and a flat triangle fan's triangles report their first vertex's colour.
+#[test]
+fn feedback_colours_follow_the_first_vertex_convention() {
+    let mut gl = context();
+    gl.feedback_buffer(200, GL_3D_COLOR, NULL);
+    gl.render_mode(GL_FEEDBACK);
+    gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+    let colours = [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 1.0, 0.0],
+    ];
+    let xy = [(1.0, 2.0), (30.0, 4.0), (30.0, 30.0), (5.0, 30.0)];
+    for mode in [GL_LINE_STRIP, GL_TRIANGLE_FAN] {
+        gl.begin(mode);
+        for (c, &(x, y)) in colours.iter().zip(&xy) {
+            gl.color_3f(c[0], c[1], c[2]);
+            gl.vertex_2f(x, y);
+        }
+        gl.end();
+    }
+    gl.render_mode(GL_RENDER);
+    let c = |i: usize| [colours[i][0], colours[i][1], colours[i][2], 1.0];
+    let v = |i: usize, col: [f32; 4]| [vec![xy[i].0, xy[i].1, 0.5], col.to_vec()].concat();
+    let mut expected = vec![GL_LINE_RESET_TOKEN as f32];
+    // Segment k (vertices k, k+1) takes vertex k's colour (the extension's table: i).
+    expected.extend(v(0, c(0)));
+    expected.extend(v(1, c(0)));
+    for k in 1..3 {
+        expected.push(GL_LINE_TOKEN as f32);
+        expected.extend(v(k, c(k)));
+        expected.extend(v(k + 1, c(k)));
+    }
+    // Fan triangle k (vertices 0, k+1, k+2) takes vertex k+1's colour (table: i + 1).
+    for k in 0..2 {
+        expected.extend([GL_POLYGON_TOKEN as f32, 3.0]);
+        for i in [0, k + 1, k + 2] {
+            expected.extend(v(i, c(k + 1)));
+        }
+    }
+    assert_eq!(gl.feedback_buffer_contents(), &expected[..]);
+}
+
 /// A triangle of zero area (collinear vertices, or two equal) is still a primitive: feedback
 /// reports it, selection counts its hit (section 5.3: what would be rasterized), and the sign
 /// test of section 3.5.1 makes it back-facing (a = 0 is not positive), so culling back faces

@@ -14,6 +14,43 @@ type Call = fn(&mut Context);
 fn cases() -> Vec<(&'static str, Call, Call, GLenum)> {
     fn none(_: &mut Context) {}
     vec![
+        // Section 2.14.2: "In the non-vector versions, param is a value to which to set a
+        // single-valued parameter. (If param corresponds to a multi-valued parameter, the
+        // error INVALID_ENUM results.)" Mesa 22 accepts these (it sets (param, 0, 0, 0));
+        // piglit's gl-1.0-beginend-coverage expects that, docs/piglit.md says why tilegl
+        // keeps the specification.
+        (
+            "materialf multi-valued",
+            none,
+            |g| g.materialf(GL_FRONT, GL_AMBIENT, 0.5),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "materiali multi-valued",
+            none,
+            |g| g.materiali(GL_FRONT_AND_BACK, GL_DIFFUSE, 1),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "lightf multi-valued",
+            none,
+            |g| g.lightf(GL_LIGHT0, GL_POSITION, 0.5),
+            GL_INVALID_ENUM,
+        ),
+        (
+            "lightModelf multi-valued",
+            none,
+            |g| g.light_modelf(GL_LIGHT_MODEL_AMBIENT, 0.5),
+            GL_INVALID_ENUM,
+        ),
+        // Section 3.8.4 describes the scalar forms for single-valued parameters only; Mesa
+        // (and OpenGL 4's explicit rule) make a border colour through them INVALID_ENUM.
+        (
+            "texParameterf border colour",
+            none,
+            |g| g.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5),
+            GL_INVALID_ENUM,
+        ),
         (
             "enable bad cap",
             none,

@@ -388,6 +388,11 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["gl-1.4-polygon-offset", "-auto", "-fbo"],
     &["gl-1.5-normal3b3s-invariance", "GL_BYTE", "-auto", "-fbo"],
     &["gl-1.5-vertex-buffer-offsets", "-auto", "-fbo"],
+    // Fixed later on Dec 2 2026 (docs/piglit.md): colour-index texture uploads, depth-stencil
+    // textures' stencil, and EXT_provoking_vertex (outside the GL 1.x groups).
+    &["gl-1.1-read-pixels-after-display-list", "-auto", "-fbo"],
+    &["sized-texture-format-channels", "-auto", "-fbo"],
+    &["provoking-vertex", "-auto"],
 ];
 
 #[test]

@@ -32,7 +32,7 @@ pub(crate) fn clear(gl: &mut dyn Gl) {
 }
 
 /// A palette of distinct saturated colours.
-const PALETTE: [[f32; 3]; 8] = [
+pub(crate) const PALETTE: [[f32; 3]; 8] = [
     [1.0, 0.0, 0.0],
     [0.0, 1.0, 0.0],
     [0.0, 0.0, 1.0],

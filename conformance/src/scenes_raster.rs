@@ -6,7 +6,7 @@ use crate::compare::Scene;
 use crate::prng::XorShift;
 use crate::scenes::{clear, pal, pixel_space, scene, scene_with, spread};
 use tilegl::enums::*;
-use tilegl::Gl;
+use tilegl::{ClientPtr, Gl};
 
 /// Rasterization-control scenes, in report order.
 pub const RASTER_SCENES: &[Scene] = &[
@@ -43,6 +43,10 @@ pub const RASTER_SCENES: &[Scene] = &[
     scene("additive_faint_layers", additive_faint_layers),
     scene("blend_equation_separate", blend_equation_separate),
     scene("flat_textured_fogged", flat_textured_fogged),
+    scene("provoking_first", provoking_first),
+    scene("provoking_first_list", provoking_first_list),
+    scene("provoking_first_arrays", provoking_first_arrays),
+    scene("provoking_back_to_last", provoking_back_to_last),
     scene("accum_motion_blur", accum_motion_blur),
     scene("accum_ops", accum_ops),
     scene("draw_pixels_color", draw_pixels_color),
@@ -813,4 +817,270 @@ fn blend_equation_separate(gl: &mut dyn Gl) {
     gl.blend_func(GL_DST_ALPHA, GL_ZERO);
     gl.color_4f(1.0, 1.0, 1.0, 1.0);
     gl.rectf(0.0, 32.0, 64.0, 64.0);
+}
+
+/// Mode, cell index and vertices of one provoking-vertex cell.
+type ProvokingCell = (GLenum, usize, &'static [(f32, f32)]);
+
+/// The provoking-vertex scenes' cells: mode and vertices (pixel offsets in a 16x16 cell;
+/// fractional, so no line or edge passes through a pixel centre), and the cell's index in a
+/// 4x4 grid. Cells 10 and 11 are cut by a user clip plane; 12-15 reach past the window's edges.
+const PROVOKING_CELLS: &[ProvokingCell] = &[
+    (
+        GL_LINES,
+        0,
+        &[(1.3, 2.2), (14.6, 5.1), (2.4, 12.7), (13.8, 9.3)],
+    ),
+    (
+        GL_LINE_STRIP,
+        1,
+        &[(1.2, 1.7), (14.3, 4.6), (2.6, 9.2), (13.7, 14.4)],
+    ),
+    (
+        GL_LINE_LOOP,
+        2,
+        &[(1.4, 1.6), (14.2, 3.3), (12.9, 14.1), (2.3, 11.8)],
+    ),
+    (
+        GL_TRIANGLES,
+        3,
+        &[
+            (1.2, 1.3),
+            (14.6, 1.9),
+            (2.1, 7.4),
+            (2.3, 14.6),
+            (13.4, 8.2),
+            (14.7, 14.1),
+        ],
+    ),
+    (
+        GL_TRIANGLE_STRIP,
+        4,
+        &[
+            (1.3, 1.2),
+            (2.1, 14.6),
+            (7.6, 1.9),
+            (8.3, 14.2),
+            (14.7, 2.4),
+            (13.9, 14.7),
+        ],
+    ),
+    (
+        GL_TRIANGLE_FAN,
+        5,
+        &[
+            (1.2, 1.4),
+            (14.7, 1.6),
+            (14.4, 7.3),
+            (12.6, 14.6),
+            (6.2, 14.3),
+            (1.6, 13.1),
+        ],
+    ),
+    (
+        GL_QUADS,
+        6,
+        &[
+            (1.2, 1.3),
+            (7.4, 1.6),
+            (7.1, 14.6),
+            (1.6, 13.9),
+            (8.6, 2.3),
+            (14.7, 1.4),
+            (14.3, 14.4),
+            (8.9, 12.7),
+        ],
+    ),
+    (
+        GL_QUAD_STRIP,
+        7,
+        &[
+            (1.3, 1.2),
+            (1.6, 14.7),
+            (7.7, 2.1),
+            (7.4, 13.6),
+            (14.6, 1.4),
+            (14.2, 14.3),
+        ],
+    ),
+    (
+        GL_POLYGON,
+        8,
+        &[
+            (4.3, 1.2),
+            (12.6, 1.7),
+            (14.7, 8.4),
+            (9.1, 14.6),
+            (1.4, 10.3),
+        ],
+    ),
+    (
+        GL_LINE_STRIP,
+        9,
+        &[(1.6, 1.3), (13.7, 5.2), (1.9, 9.6), (14.4, 14.2)],
+    ),
+    (
+        GL_TRIANGLE_FAN,
+        10,
+        &[
+            (8.2, 1.3),
+            (14.7, 4.6),
+            (14.1, 14.6),
+            (7.7, 14.2),
+            (1.4, 12.3),
+            (1.2, 3.6),
+        ],
+    ),
+    (
+        GL_LINE_LOOP,
+        11,
+        &[(1.4, 1.3), (14.6, 2.2), (13.7, 14.4), (1.7, 13.2)],
+    ),
+    (
+        GL_TRIANGLE_STRIP,
+        12,
+        &[
+            (-6.3, 1.2),
+            (-5.4, 21.6),
+            (7.6, 1.9),
+            (8.3, 20.2),
+            (14.7, 2.4),
+            (13.9, 14.7),
+        ],
+    ),
+    (
+        GL_QUADS,
+        13,
+        &[
+            (1.2, 1.3),
+            (7.4, 1.6),
+            (7.1, 22.6),
+            (1.6, 19.9),
+            (8.6, 2.3),
+            (14.7, 1.4),
+            (14.3, 14.4),
+            (8.9, 12.7),
+        ],
+    ),
+    (
+        GL_LINE_LOOP,
+        14,
+        &[(1.4, 1.6), (14.2, 3.3), (12.9, 23.1), (2.3, 11.8)],
+    ),
+    (
+        GL_POLYGON,
+        15,
+        &[
+            (4.3, 1.2),
+            (22.6, 1.7),
+            (21.7, 8.4),
+            (9.1, 20.6),
+            (1.4, 10.3),
+        ],
+    ),
+];
+
+fn provoking_cell_origin(cell: usize) -> (f32, f32) {
+    ((cell % 4) as f32 * 16.0, (cell / 4) as f32 * 16.0)
+}
+
+/// Clip plane for cells 10 and 11: keeps x + y <= the cell's diagonal (cuts off a corner).
+fn provoking_clip_plane(gl: &mut dyn Gl, cell: usize, on: bool) {
+    if !matches!(cell, 10 | 11) {
+        return;
+    }
+    if on {
+        let (x0, y0) = provoking_cell_origin(cell);
+        gl.clip_plane(GL_CLIP_PLANE0, &[-1.0, -1.0, 0.0, (x0 + y0 + 21.3) as f64]);
+        gl.enable(GL_CLIP_PLANE0);
+    } else {
+        gl.disable(GL_CLIP_PLANE0);
+    }
+}
+
+/// Every cell in immediate mode, each vertex a different colour, flat shading with
+/// `convention`; cell 9's strip is 3 pixels wide.
+fn provoking_cells(gl: &mut dyn Gl) {
+    for &(mode, cell, verts) in PROVOKING_CELLS {
+        let (x0, y0) = provoking_cell_origin(cell);
+        provoking_clip_plane(gl, cell, true);
+        gl.line_width(if cell == 9 { 3.0 } else { 1.0 });
+        gl.begin(mode);
+        for (k, &(x, y)) in verts.iter().enumerate() {
+            pal(gl, k);
+            gl.vertex_2f(x0 + x, y0 + y);
+        }
+        gl.end();
+        provoking_clip_plane(gl, cell, false);
+    }
+    gl.line_width(1.0);
+}
+
+/// EXT_provoking_vertex's first-vertex convention for every primitive type, clipped and not.
+fn provoking_first(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+    provoking_cells(gl);
+}
+
+/// The same cells from a display list compiled under the last-vertex convention and
+/// executed under the first (the convention is read when the list is executed).
+fn provoking_first_list(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.shade_model(GL_FLAT);
+    gl.new_list(1, GL_COMPILE);
+    provoking_cells(gl);
+    gl.end_list();
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+    gl.call_list(1);
+    gl.delete_lists(1, 1);
+}
+
+/// The same cells through glDrawArrays and glDrawElements (alternating) under the first-vertex
+/// convention.
+fn provoking_first_arrays(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+    gl.enable_client_state(GL_VERTEX_ARRAY);
+    gl.enable_client_state(GL_COLOR_ARRAY);
+    for &(mode, cell, verts) in PROVOKING_CELLS {
+        let (x0, y0) = provoking_cell_origin(cell);
+        let pos: Vec<f32> = verts.iter().flat_map(|&(x, y)| [x0 + x, y0 + y]).collect();
+        let col: Vec<f32> = (0..verts.len())
+            .flat_map(|k| crate::scenes::PALETTE[k % crate::scenes::PALETTE.len()])
+            .collect();
+        provoking_clip_plane(gl, cell, true);
+        gl.line_width(if cell == 9 { 3.0 } else { 1.0 });
+        gl.vertex_pointer(2, GL_FLOAT, 0, ClientPtr(pos.as_ptr() as usize));
+        gl.color_pointer(3, GL_FLOAT, 0, ClientPtr(col.as_ptr() as usize));
+        if cell % 2 == 0 {
+            gl.draw_arrays(mode, 0, verts.len() as i32);
+        } else {
+            let idx: Vec<u16> = (0..verts.len() as u16).collect();
+            gl.draw_elements(
+                mode,
+                idx.len() as i32,
+                GL_UNSIGNED_SHORT,
+                ClientPtr(idx.as_ptr() as usize),
+            );
+        }
+        provoking_clip_plane(gl, cell, false);
+    }
+    gl.disable_client_state(GL_VERTEX_ARRAY);
+    gl.disable_client_state(GL_COLOR_ARRAY);
+    gl.line_width(1.0);
+}
+
+/// First, then back to last: the picture is the classic table 2.9 one. (Not through
+/// glPushAttrib(GL_LIGHTING_BIT)/glPopAttrib, which restore the convention per the extension's
+/// state table: Mesa 22 keeps the convention out of every attribute group, so it leaves the
+/// one set between push and pop; `tests/provoking_vertex.rs` checks the spec's rule.)
+fn provoking_back_to_last(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.shade_model(GL_FLAT);
+    gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+    gl.provoking_vertex_ext(GL_LAST_VERTEX_CONVENTION_EXT);
+    provoking_cells(gl);
 }

@@ -24,6 +24,7 @@ pub const TEXTURE_SCENES: &[Scene] = &[
     scene("texgen_eye_linear", texgen_eye_linear),
     scene("multitexture_combine", multitexture_combine),
     scene("texture_rectangle", texture_rectangle),
+    scene("tex_color_index_uploads", tex_color_index_uploads),
 ];
 
 /// An RGBA checkerboard with a colour ramp, `size` x `size`.
@@ -309,4 +310,197 @@ fn texture_rectangle(gl: &mut dyn Gl) {
         }
         gl.end();
     }
+}
+
+/// A texture of `w` x `h` texels drawn with REPLACE, NEAREST, as a rectangle of the window.
+fn index_textured_rect(gl: &mut dyn Gl, target: GLenum, rect: [f32; 4]) {
+    gl.tex_parameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.enable(target);
+    let [x0, y0, x1, y1] = rect;
+    gl.begin(GL_QUADS);
+    for (s, t, x, y) in [
+        (0.0, 0.0, x0, y0),
+        (1.0, 0.0, x1, y0),
+        (1.0, 1.0, x1, y1),
+        (0.0, 1.0, x0, y1),
+    ] {
+        gl.tex_coord_3f(s, t, 0.6);
+        gl.vertex_2f(x, y);
+    }
+    gl.end();
+    gl.disable(target);
+}
+
+/// Colour-index texture images (`GL_COLOR_INDEX` client data, section 3.8.1): indices through
+/// the index shift and offset and the I_TO_R/G/B/A maps, as `GL_BITMAP` bits (LSB first or
+/// not, skipped rows), unsigned bytes, shorts and floats, in glTexImage1D/2D/3D and
+/// glTexSubImage2D.
+fn tex_color_index_uploads(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    // 16-entry maps: distinct colours per index, alpha varying too (shown through blending).
+    let map = |k: usize, i: usize| ((i * (3 + 2 * k) + k * 5) % 16) as f32 / 15.0;
+    for (k, m) in [
+        GL_PIXEL_MAP_I_TO_R,
+        GL_PIXEL_MAP_I_TO_G,
+        GL_PIXEL_MAP_I_TO_B,
+        GL_PIXEL_MAP_I_TO_A,
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let v: Vec<f32> = (0..16).map(|i| map(k, i)).collect();
+        gl.pixel_mapfv(m, 16, &v);
+    }
+    gl.enable(GL_BLEND);
+    gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    // GL_BITMAP: 8x8 bits, MSB first, then LSB first with SKIP_PIXELS 3 and SKIP_ROWS 1.
+    let bits: Vec<u8> = (0..20u8).map(|i| i.wrapping_mul(37) ^ 0xA5).collect();
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        8,
+        8,
+        0,
+        GL_COLOR_INDEX,
+        GL_BITMAP,
+        Some(&bits[..8]),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [0.0, 0.0, 16.0, 16.0]);
+    // (Not with GL_UNPACK_ROW_LENGTH or GL_UNPACK_SKIP_PIXELS: Mesa 22 reads bitmap texture
+    // rows with a row length wrongly, rows 5-7 of an 8-row image with ROW_LENGTH 16 come back
+    // 0 from 20 bytes that hold them, and with SKIP_PIXELS 3 the last row's bits past its
+    // first byte change from run to run; tests/texture_state.rs checks tilegl against
+    // section 3.6.4.)
+    gl.pixel_storei(GL_UNPACK_LSB_FIRST, 1);
+    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        8,
+        8,
+        0,
+        GL_COLOR_INDEX,
+        GL_BITMAP,
+        Some(&bits),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [16.0, 0.0, 32.0, 16.0]);
+    gl.pixel_storei(GL_UNPACK_LSB_FIRST, 0);
+    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 0);
+    // Unsigned bytes with an index shift of 1 and offset 3 (indices wrap through the 16-entry
+    // maps), into an RGB texture.
+    let bytes: Vec<u8> = (0..64u32).map(|i| (i * 7 % 251) as u8).collect();
+    gl.pixel_transferi(GL_INDEX_SHIFT, 1);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 3);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB as i32,
+        8,
+        8,
+        0,
+        GL_COLOR_INDEX,
+        GL_UNSIGNED_BYTE,
+        Some(&bytes),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [32.0, 0.0, 48.0, 16.0]);
+    // A negative shift (right shift), shorts, into a luminance-alpha texture.
+    gl.pixel_transferi(GL_INDEX_SHIFT, -2);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 0);
+    let shorts: Vec<u8> = (0..64u16).flat_map(|i| (i * 13).to_ne_bytes()).collect();
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_LUMINANCE_ALPHA as i32,
+        8,
+        8,
+        0,
+        GL_COLOR_INDEX,
+        GL_UNSIGNED_SHORT,
+        Some(&shorts),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [48.0, 0.0, 64.0, 16.0]);
+    gl.pixel_transferi(GL_INDEX_SHIFT, 0);
+    // A sub-image of float indices into an RGBA texture.
+    let base = vec![200u8; 8 * 8 * 4];
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        8,
+        8,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&base),
+    );
+    let floats: Vec<u8> = (0..15)
+        .flat_map(|i| (i as f32 + 0.25).to_ne_bytes())
+        .collect();
+    gl.tex_sub_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        2,
+        1,
+        5,
+        3,
+        GL_COLOR_INDEX,
+        GL_FLOAT,
+        Some(&floats),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [0.0, 16.0, 16.0, 32.0]);
+    // 1D: 16 byte indices.
+    let line: Vec<u8> = (0..16u8).map(|i| i * 5).collect();
+    gl.tex_image_1d(
+        GL_TEXTURE_1D,
+        0,
+        GL_RGBA as i32,
+        16,
+        0,
+        GL_COLOR_INDEX,
+        GL_UNSIGNED_BYTE,
+        Some(&line),
+    );
+    index_textured_rect(gl, GL_TEXTURE_1D, [16.0, 16.0, 32.0, 32.0]);
+    // 3D: 4x4x4 byte indices with IMAGE_HEIGHT 5, sampled at r = 0.6. (Not with
+    // GL_UNPACK_SKIP_IMAGES: Mesa 22 then stores zeros and stray values for colour-index
+    // volumes; tests/texture_state.rs checks tilegl against section 3.8.1.)
+    gl.pixel_storei(GL_UNPACK_IMAGE_HEIGHT, 5);
+    let vol: Vec<u8> = (0..4 * 5 * 5u32).map(|i| (i * 11 % 97) as u8).collect();
+    gl.tex_image_3d(
+        GL_TEXTURE_3D,
+        0,
+        GL_RGBA as i32,
+        4,
+        4,
+        4,
+        0,
+        GL_COLOR_INDEX,
+        GL_UNSIGNED_BYTE,
+        Some(&vol),
+    );
+    index_textured_rect(gl, GL_TEXTURE_3D, [32.0, 16.0, 48.0, 32.0]);
+    gl.pixel_storei(GL_UNPACK_IMAGE_HEIGHT, 0);
+    // MAP_COLOR on: RGBA-to-RGBA maps do not apply to indices (they are converted by the
+    // I_TO_* maps), so this texture matches the one above drawn at 32..48 x 0..16.
+    gl.pixel_transferi(GL_MAP_COLOR, 1);
+    gl.pixel_mapfv(GL_PIXEL_MAP_R_TO_R, 2, &[1.0, 0.0]);
+    gl.pixel_transferi(GL_INDEX_SHIFT, 1);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 3);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGB as i32,
+        8,
+        8,
+        0,
+        GL_COLOR_INDEX,
+        GL_UNSIGNED_BYTE,
+        Some(&bytes),
+    );
+    index_textured_rect(gl, GL_TEXTURE_2D, [48.0, 16.0, 64.0, 32.0]);
 }

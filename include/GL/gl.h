@@ -1102,6 +1102,7 @@ GLAPI void GLAPIENTRY glPopClientAttrib(void);
 GLAPI void GLAPIENTRY glPopMatrix(void);
 GLAPI void GLAPIENTRY glPopName(void);
 GLAPI void GLAPIENTRY glPrioritizeTextures(GLsizei n, const GLuint *textures, const GLfloat *priorities);
+GLAPI void GLAPIENTRY glProvokingVertexEXT(GLenum mode);
 GLAPI void GLAPIENTRY glPushAttrib(GLbitfield mask);
 GLAPI void GLAPIENTRY glPushClientAttrib(GLbitfield mask);
 GLAPI void GLAPIENTRY glPushMatrix(void);

@@ -287,6 +287,9 @@ extern "C" {
 #ifndef GL_ELEMENT_ARRAY_BUFFER_BINDING_ARB
 #define GL_ELEMENT_ARRAY_BUFFER_BINDING_ARB 0x8895
 #endif
+#ifndef GL_FIRST_VERTEX_CONVENTION_EXT
+#define GL_FIRST_VERTEX_CONVENTION_EXT 0x8E4D
+#endif
 #ifndef GL_FLOAT_32_UNSIGNED_INT_24_8_REV
 #define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD
 #endif
@@ -367,6 +370,9 @@ extern "C" {
 #endif
 #ifndef GL_INTERPOLATE_EXT
 #define GL_INTERPOLATE_EXT 0x8575
+#endif
+#ifndef GL_LAST_VERTEX_CONVENTION_EXT
+#define GL_LAST_VERTEX_CONVENTION_EXT 0x8E4E
 #endif
 #ifndef GL_LIGHT_MODEL_COLOR_CONTROL_EXT
 #define GL_LIGHT_MODEL_COLOR_CONTROL_EXT 0x81F8
@@ -599,6 +605,9 @@ extern "C" {
 #ifndef GL_PRIMARY_COLOR_EXT
 #define GL_PRIMARY_COLOR_EXT 0x8577
 #endif
+#ifndef GL_PROVOKING_VERTEX_EXT
+#define GL_PROVOKING_VERTEX_EXT 0x8E4F
+#endif
 #ifndef GL_PROXY_TEXTURE_1D_EXT
 #define GL_PROXY_TEXTURE_1D_EXT 0x8063
 #endif
@@ -619,6 +628,9 @@ extern "C" {
 #endif
 #ifndef GL_QUADS_EXT
 #define GL_QUADS_EXT 0x7
+#endif
+#ifndef GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT
+#define GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT 0x8E4C
 #endif
 #ifndef GL_QUERY_COUNTER_BITS_ARB
 #define GL_QUERY_COUNTER_BITS_ARB 0x8864
@@ -1756,6 +1768,9 @@ typedef void (APIENTRYP PFNGLPOPNAMEPROC)(void);
 typedef void (APIENTRYP PFNGLPRIORITIZETEXTURESPROC)(GLsizei n, const GLuint *textures, const GLfloat *priorities);
 GLAPI void GLAPIENTRY glPrioritizeTexturesEXT(GLsizei n, const GLuint *textures, const GLfloat *priorities);
 typedef void (APIENTRYP PFNGLPRIORITIZETEXTURESEXTPROC)(GLsizei n, const GLuint *textures, const GLfloat *priorities);
+typedef void (APIENTRYP PFNGLPROVOKINGVERTEXEXTPROC)(GLenum mode);
+GLAPI void GLAPIENTRY glProvokingVertex(GLenum mode);
+typedef void (APIENTRYP PFNGLPROVOKINGVERTEXPROC)(GLenum mode);
 typedef void (APIENTRYP PFNGLPUSHATTRIBPROC)(GLbitfield mask);
 typedef void (APIENTRYP PFNGLPUSHCLIENTATTRIBPROC)(GLbitfield mask);
 typedef void (APIENTRYP PFNGLPUSHMATRIXPROC)(void);

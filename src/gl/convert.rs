@@ -130,6 +130,23 @@ impl ShadeModel {
     }
 }
 
+impl ProvokingVertex {
+    pub fn to_gl(self) -> GLenum {
+        match self {
+            ProvokingVertex::First => GL_FIRST_VERTEX_CONVENTION_EXT,
+            ProvokingVertex::Last => GL_LAST_VERTEX_CONVENTION_EXT,
+        }
+    }
+}
+
+pub fn provoking_vertex(e: GLenum) -> Option<ProvokingVertex> {
+    Some(match e {
+        GL_FIRST_VERTEX_CONVENTION_EXT => ProvokingVertex::First,
+        GL_LAST_VERTEX_CONVENTION_EXT => ProvokingVertex::Last,
+        _ => return None,
+    })
+}
+
 pub fn shade_model(e: GLenum) -> Option<ShadeModel> {
     Some(match e {
         GL_FLAT => ShadeModel::Flat,
@@ -396,6 +413,11 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_BLEND_DST_ALPHA => BlendDstAlpha,
         GL_BLEND_EQUATION => BlendEquationRgb,
         GL_BLEND_EQUATION_ALPHA_EXT => BlendEquationAlpha,
+        GL_PROVOKING_VERTEX_EXT => ProvokingVertex,
+        GL_CURRENT_INDEX => CurrentIndex,
+        GL_INDEX_CLEAR_VALUE => IndexClearValue,
+        GL_INDEX_WRITEMASK => IndexWritemask,
+        GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT => QuadsFollowProvokingVertex,
         GL_BLEND_COLOR => BlendColor,
         GL_LOGIC_OP_MODE => LogicOpMode,
         GL_MAX_LIGHTS => MaxLights,

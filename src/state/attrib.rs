@@ -240,6 +240,7 @@ impl Context {
                 self.lighting.color_sum = color_sum;
             }
             r.shade_model = e.raster.shade_model;
+            r.provoking_vertex = e.raster.provoking_vertex;
         }
         if g.fog {
             self.fog = e.fog;
@@ -340,7 +341,9 @@ impl Context {
             ops.index_logic_op = e.ops.index_logic_op;
             ops.logic_op = e.ops.logic_op;
             ops.color_mask = e.ops.color_mask;
+            ops.index_writemask = e.ops.index_writemask;
             self.clear_values.color = e.clear.color;
+            self.clear_values.index = e.clear.index;
             self.buffers.draw = e.buffers.draw;
         }
         if g.hint {

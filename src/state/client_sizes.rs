@@ -14,7 +14,7 @@
 //! pixel pointer is always client memory (or NULL, "no data").
 
 use super::Context;
-use crate::common::values::{DrawPixelsFormat, PixelIndexType, TexPixelFormat, TexPixelType};
+use crate::common::values::{DrawPixelsFormat, TexPixelFormat, TexPixelType};
 use crate::gl::convert;
 use crate::gl::enums::*;
 use crate::gl::types::GLsizei;
@@ -65,14 +65,20 @@ impl Context {
         type_: GLenum,
         size: [GLsizei; 3],
     ) -> usize {
+        let Some(s) = image_size(dims, size, max_image_side()) else {
+            return 0;
+        };
+        if format == GL_COLOR_INDEX {
+            return convert::pixel_index_type(type_)
+                .map_or(0, |t| texpix::index_image_len(&self.unpack, dims, s, t));
+        }
         let (Some(f), Some(t)) = (
             convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;
         };
-        image_size(dims, size, max_image_side())
-            .map_or(0, |s| image_bytes(&self.unpack, dims, f, t, s))
+        image_bytes(&self.unpack, dims, f, t, s)
     }
 
     /// Bytes `glDrawPixels` reads: colour and depth groups as for texture images, colour and
@@ -96,12 +102,8 @@ impl Context {
                 image_bytes(u, 2, TexPixelFormat::DepthComponent, t, [w, h, 1])
             }),
             Some(DrawPixelsFormat::StencilIndex | DrawPixelsFormat::ColorIndex) => {
-                let (bits, size) = match convert::pixel_index_type(type_) {
-                    Some(PixelIndexType::Bitmap) => (1, 1),
-                    Some(PixelIndexType::Plain(t)) => (8 * t.size(), t.size()),
-                    None => return 0,
-                };
-                texpix::index_rows(u, w, h, bits, size).map_or(0, |r| r.end)
+                convert::pixel_index_type(type_)
+                    .map_or(0, |t| texpix::index_image_len(u, 2, [w, h, 1], t))
             }
             None => 0,
         }
@@ -162,8 +164,9 @@ impl Context {
         format: GLenum,
         type_: GLenum,
     ) -> usize {
+        // GL_DEPTH_STENCIL too: depth-stencil images read back packed (24_8).
         let (Some(f), Some(t)) = (
-            convert::tex_pixel_format(format),
+            convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;

@@ -103,7 +103,7 @@ impl Context {
         let independent_lines = mode == PrimitiveMode::Lines;
         let edge_flags = assemble::uses_edge_flags(mode);
         let mut prims = std::mem::take(&mut self.primitive_buffer);
-        assemble::assemble_into(mode, clip.len(), &mut prims);
+        assemble::assemble_into(mode, clip.len(), ds.provoking, &mut prims);
         if mode == PrimitiveMode::Quads
             && (self.list_executing() || clip.iter().any(|v| !point_visible(v, user)))
         {

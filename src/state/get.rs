@@ -245,6 +245,13 @@ impl Context {
             Query::BlendDstAlpha => Enum(ops.blend_dst_alpha.to_gl()),
             Query::BlendEquationRgb => Enum(ops.blend_equation.to_gl()),
             Query::BlendEquationAlpha => Enum(ops.blend_equation_alpha.to_gl()),
+            Query::CurrentIndex => Floats(vec![self.current.index as f64]),
+            Query::IndexClearValue => Floats(vec![self.clear_values.index as f64]),
+            Query::IndexWritemask => int1(ops.index_writemask as i32 as i64),
+            Query::ProvokingVertex => Enum(self.raster.provoking_vertex.to_gl()),
+            Query::QuadsFollowProvokingVertex => {
+                bool1(crate::primitive::assemble::QUADS_FOLLOW_PROVOKING_VERTEX)
+            }
             Query::BlendColor => Normalized(ops.blend_color.iter().map(|&c| c as f64).collect()),
             Query::LogicOpMode => Enum(ops.logic_op.to_gl()),
             Query::MaxLights => int1(8),

@@ -72,6 +72,7 @@ impl Default for ContextConfig {
 /// programs that print the names one per line by turning spaces into newlines (piglit's
 /// glinfo) end their last line so.
 pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters GL_ARB_point_sprite \
+GL_ARB_provoking_vertex \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
@@ -79,7 +80,7 @@ GL_ARB_texture_rectangle GL_ARB_transpose_matrix GL_ARB_vertex_array_bgra GL_ARB
 GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract \
 GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
-GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_rescale_normal GL_EXT_secondary_color \
+GL_EXT_multi_draw_arrays GL_EXT_packed_pixels GL_EXT_provoking_vertex GL_EXT_rescale_normal GL_EXT_secondary_color \
 GL_EXT_separate_specular_color GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
@@ -346,6 +347,18 @@ impl Context {
         }
     }
 
+    /// [`Context::reject_inside_begin_end`] for the commands that record themselves into
+    /// display lists (the array draws): the error is recorded into the list being compiled
+    /// too, and raised now unless the list is only compiled.
+    pub(crate) fn reject_inside_begin_end_in_lists(&mut self) -> bool {
+        if self.immediate.is_some() {
+            self.list_aware_error(GL_INVALID_OPERATION);
+            true
+        } else {
+            false
+        }
+    }
+
     /// Marks drawing state changed: the next draw builds a new snapshot.
     #[inline]
     pub(crate) fn invalidate(&mut self) {
@@ -556,6 +569,16 @@ impl Context {
             return;
         };
         self.raster.shade_model = m;
+        self.invalidate();
+    }
+
+    /// EXT_provoking_vertex.
+    pub(crate) fn provoking_vertex_ext(&mut self, mode: GLenum) {
+        let Some(m) = convert::provoking_vertex(mode) else {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        };
+        self.raster.provoking_vertex = m;
         self.invalidate();
     }
 

@@ -177,57 +177,6 @@ enum PixelValue {
     Stencil(u8),
 }
 
-/// Reads index `n` (0-based, in row `row_start`) of index data.
-fn read_index(
-    data: &[u8],
-    row_start: usize,
-    n: usize,
-    ty: PixelIndexType,
-    swap: bool,
-    lsb_first: bool,
-) -> i64 {
-    match ty {
-        PixelIndexType::Bitmap => {
-            let byte = data.get(row_start + n / 8).copied().unwrap_or(0);
-            let bit = if lsb_first {
-                byte >> (n % 8)
-            } else {
-                byte >> (7 - n % 8)
-            };
-            (bit & 1) as i64
-        }
-        PixelIndexType::Plain(t) => {
-            let size = t.size();
-            let at = row_start + n * size;
-            let Some(bytes) = data.get(at..at + size) else {
-                return 0;
-            };
-            let mut b = [0u8; 4];
-            b[..size].copy_from_slice(bytes);
-            if swap {
-                b[..size].reverse();
-            }
-            match t {
-                TexPixelType::UnsignedByte => b[0] as i64,
-                TexPixelType::Byte => b[0] as i8 as i64,
-                TexPixelType::UnsignedShort => u16::from_ne_bytes([b[0], b[1]]) as i64,
-                TexPixelType::Short => i16::from_ne_bytes([b[0], b[1]]) as i64,
-                TexPixelType::UnsignedInt => u32::from_ne_bytes(b) as i64,
-                TexPixelType::Int => i32::from_ne_bytes(b) as i64,
-                TexPixelType::Float => {
-                    let f = f32::from_ne_bytes(b);
-                    if f.is_finite() {
-                        f as i64
-                    } else {
-                        0
-                    }
-                }
-                TexPixelType::Packed(_) => 0,
-            }
-        }
-    }
-}
-
 /// The window pixels a zoomed source pixel covers (section 3.6.4): those whose centres lie
 /// between `a` and `b` (in either order, half-open), as first and one-past-last.
 fn centre_span(a: f64, b: f64) -> (i64, i64) {
@@ -715,31 +664,14 @@ impl Context {
         out.try_reserve(w.checked_mul(h)?).ok()?;
         match (f, index_ty, color_ty) {
             (DrawPixelsFormat::StencilIndex | DrawPixelsFormat::ColorIndex, Some(ity), _) => {
-                // Rows of indices: bits (GL_BITMAP) or elements, under the unpack state.
-                let (elem_bits, elem_size) = match ity {
-                    PixelIndexType::Bitmap => (1, 1),
-                    PixelIndexType::Plain(t) => (8 * t.size(), t.size()),
-                };
-                let rows = texpix::index_rows(u, w, h, elem_bits, elem_size)?;
-                if data.len() < rows.end {
-                    return None;
-                }
-                let skip = u.skip_pixels.max(0) as usize;
-                for j in 0..h {
-                    let row = rows.first_row + j * rows.stride;
-                    for i in 0..w {
-                        let (start, n) = match ity {
-                            PixelIndexType::Bitmap => (row, skip + i),
-                            PixelIndexType::Plain(_) => (row + skip * elem_size, i),
-                        };
-                        let v = read_index(data, start, n, ity, u.swap_bytes, u.lsb_first);
-                        out.push(if f == DrawPixelsFormat::StencilIndex {
-                            PixelValue::Stencil(t.stencil(v))
-                        } else {
-                            PixelValue::Color(t.index_to_color(v))
-                        });
-                    }
-                }
+                let stencil = f == DrawPixelsFormat::StencilIndex;
+                texpix::for_each_index(data, u, 2, [w, h, 1], ity, |v| {
+                    out.push(if stencil {
+                        PixelValue::Stencil(t.stencil(v))
+                    } else {
+                        PixelValue::Color(t.index_to_color(v))
+                    })
+                })?;
             }
             (DrawPixelsFormat::Depth, _, Some(ty)) => {
                 let layout = texpix::layout(u, 2, [w, h, 1], TexPixelFormat::DepthComponent, ty)?;
@@ -917,7 +849,7 @@ impl Context {
                     if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {
                         continue;
                     }
-                    let set = read_index(
+                    let set = texpix::read_index(
                         bitmap,
                         row,
                         skip + i,

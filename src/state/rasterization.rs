@@ -107,6 +107,59 @@ impl Context {
         }
     }
 
+    // The current colour index (section 2.7): state in RGBA mode too, where nothing reads it
+    // (table 6.5 lists it with the current values; no command errs for it in RGBA mode).
+
+    pub(crate) fn indexd(&mut self, c: GLdouble) {
+        self.current.index = c as f32;
+    }
+
+    pub(crate) fn indexdv(&mut self, c: &[GLdouble; 1]) {
+        self.current.index = c[0] as f32;
+    }
+
+    pub(crate) fn indexf(&mut self, c: GLfloat) {
+        self.current.index = c;
+    }
+
+    pub(crate) fn indexfv(&mut self, c: &[GLfloat; 1]) {
+        self.current.index = c[0];
+    }
+
+    pub(crate) fn indexi(&mut self, c: GLint) {
+        self.current.index = c as f32;
+    }
+
+    pub(crate) fn indexiv(&mut self, c: &[GLint; 1]) {
+        self.current.index = c[0] as f32;
+    }
+
+    pub(crate) fn indexs(&mut self, c: GLshort) {
+        self.current.index = c as f32;
+    }
+
+    pub(crate) fn indexsv(&mut self, c: &[GLshort; 1]) {
+        self.current.index = c[0] as f32;
+    }
+
+    pub(crate) fn indexub(&mut self, c: GLubyte) {
+        self.current.index = c as f32;
+    }
+
+    pub(crate) fn indexubv(&mut self, c: &[GLubyte; 1]) {
+        self.current.index = c[0] as f32;
+    }
+
+    /// `glClearIndex`: colour-index state (section 4.2.3), kept in RGBA mode.
+    pub(crate) fn clear_index(&mut self, c: GLfloat) {
+        self.clear_values.index = c;
+    }
+
+    /// `glIndexMask`: colour-index state (section 4.2.2), kept in RGBA mode.
+    pub(crate) fn index_mask(&mut self, mask: GLuint) {
+        self.fragment_ops.index_writemask = mask;
+    }
+
     pub(crate) fn edge_flag(&mut self, flag: GLboolean) {
         self.current.edge_flag = flag != 0;
     }

@@ -447,7 +447,7 @@ impl Context {
         let user = ds.viewport.clip_planes.clone();
         let edge_flags = assemble::uses_edge_flags(mode);
         let mut reset = true;
-        for prim in assemble(mode, clip.len()) {
+        for prim in assemble(mode, clip.len(), ds.provoking) {
             match prim {
                 Primitive::Point(i) => {
                     if point_visible(&clip[i], &user) {

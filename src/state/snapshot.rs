@@ -9,7 +9,7 @@ use glam::{DVec4, Mat4};
 use super::Context;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::rect::Rect;
-use crate::common::values::{Face, PolygonMode, ShadeModel, Winding};
+use crate::common::values::{Face, PolygonMode, ProvokingVertex, ShadeModel, Winding};
 use crate::common::values::{TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
 pub use crate::fragment::fog::{fog_exp, FogDraw, EXP2_TAYLOR};
@@ -40,6 +40,8 @@ pub struct DrawState {
     pub viewport_rect: Rect,
     pub cull: Option<Face>,
     pub front_face: Winding,
+    /// Which vertex provokes under flat shading (EXT_provoking_vertex).
+    pub provoking: ProvokingVertex,
     /// Attributes carried through clipping (includes the back colours with two-sided lighting).
     pub clip_attr_count: usize,
 }
@@ -232,6 +234,7 @@ impl Context {
             viewport_rect,
             cull: self.raster.cull_enabled.then_some(self.raster.cull_face),
             front_face: self.raster.front_face,
+            provoking: self.raster.provoking_vertex,
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
         });
         self.draw_state = Some(ds.clone());

@@ -2,8 +2,8 @@
 //! 6.2), with the defaults those tables give.
 
 use crate::common::values::{
-    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode, ShadeModel,
-    StencilOp, Winding,
+    BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode,
+    ProvokingVertex, ShadeModel, StencilOp, Winding,
 };
 use crate::gl::enums::GL_DONT_CARE;
 use crate::gl::GLenum;
@@ -75,6 +75,8 @@ pub struct RasterState {
     pub cull_face: Face,
     pub front_face: Winding,
     pub shade_model: ShadeModel,
+    /// EXT_provoking_vertex (in the lighting attribute group, like the shade model).
+    pub provoking_vertex: ProvokingVertex,
     pub point_size: f32,
     pub line_width: f32,
     pub point_smooth: bool,
@@ -110,6 +112,7 @@ impl Default for RasterState {
             cull_face: Face::Back,
             front_face: Winding::Ccw,
             shade_model: ShadeModel::Smooth,
+            provoking_vertex: ProvokingVertex::Last,
             point_size: 1.0,
             line_width: 1.0,
             point_smooth: false,
@@ -146,6 +149,9 @@ pub struct FragmentOpsState {
     pub color_mask: [bool; 4],
     pub dither: bool,
     pub stencil_writemask: u32,
+    /// `glIndexMask`: colour-index state, kept (and queried) in RGBA mode too, where it
+    /// masks nothing (section 4.2.2 applies it in colour-index mode only).
+    pub index_writemask: u32,
     pub alpha_test: bool,
     pub alpha_func: CompareFunc,
     /// Alpha reference, clamped to [0, 1] at `glAlphaFunc`.
@@ -183,6 +189,7 @@ impl Default for FragmentOpsState {
             color_mask: [true; 4],
             dither: true,
             stencil_writemask: !0,
+            index_writemask: !0,
             alpha_test: false,
             alpha_func: CompareFunc::Always,
             alpha_ref: 0.0,
@@ -216,6 +223,8 @@ pub struct ClearValues {
     pub stencil: i32,
     /// `glClearAccum`, clamped to [-1, 1].
     pub accum: [f32; 4],
+    /// `glClearIndex` (colour-index state; no RGBA buffer uses it).
+    pub index: f32,
 }
 
 impl Default for ClearValues {
@@ -225,6 +234,7 @@ impl Default for ClearValues {
             depth: 1.0,
             stencil: 0,
             accum: [0.0; 4],
+            index: 0.0,
         }
     }
 }

@@ -46,14 +46,18 @@ impl Context {
             return;
         };
         let need = if p == TexGenParam::Mode { 1 } else { 4 };
-        if (!vector && need > 1) || v.len() < need {
-            self.record_error(if vector {
-                GL_INVALID_VALUE
-            } else {
-                GL_INVALID_ENUM
-            });
+        if vector && v.len() < need {
+            self.record_error(GL_INVALID_VALUE);
             return;
         }
+        // A plane through the scalar forms: section 2.11.4 describes the planes' values as
+        // given by `params` only and names no error for `param` (unlike the lighting
+        // commands, section 2.14.2), so this follows the drivers: Mesa takes (param, 0, 0, 0).
+        let mut plane = [0.0; 4];
+        for (p, &x) in plane.iter_mut().zip(v) {
+            *p = x;
+        }
+        let v = &plane;
         let unit = self.active_texture;
         match p {
             TexGenParam::Mode => match convert::tex_gen_mode(v[0] as GLenum, c) {

@@ -114,6 +114,10 @@ pub struct InternalFormat {
     pub bits: u8,
     /// The S3TC format the image is stored in, if compressed.
     pub compressed: Option<S3tcFormat>,
+    /// A depth-stencil format (EXT_packed_depth_stencil, ARB_depth_buffer_float): the image
+    /// keeps an 8-bit stencil index per texel beside its depth (`TexImage::stencil`), which
+    /// sampling does not read.
+    pub stencil: bool,
 }
 
 impl InternalFormat {
@@ -123,6 +127,15 @@ impl InternalFormat {
             base,
             bits,
             compressed: None,
+            stencil: false,
+        }
+    }
+
+    /// A depth format with `bits` of depth and 8 of stencil.
+    pub fn depth_stencil(requested: i32, bits: u8) -> InternalFormat {
+        InternalFormat {
+            stencil: true,
+            ..InternalFormat::new(requested, BaseFormat::DepthComponent, bits)
         }
     }
 
@@ -132,6 +145,7 @@ impl InternalFormat {
             base: f.base(),
             bits: 8,
             compressed: Some(f),
+            stencil: false,
         }
     }
 

@@ -160,6 +160,8 @@ pub struct TexImage {
     pub texels: Arc<Texels>,
     /// The S3TC blocks of a compressed image.
     pub blocks: Option<Arc<Vec<u8>>>,
+    /// The stencil indices of a depth-stencil image, one per stored texel (x fastest).
+    pub stencil: Option<Arc<Vec<u8>>>,
 }
 
 impl TexImage {
@@ -196,7 +198,48 @@ impl TexImage {
             format,
             texels: Arc::new(Texels::zeroed(format.storage(), n)?),
             blocks,
+            stencil: match format.stencil && !proxy {
+                true => Some(Arc::new(alloc::<u8>(n)?)),
+                false => None,
+            },
         })
+    }
+
+    /// The stencil index at stored coordinates (0 outside the image or without stencil).
+    pub fn stencil_at(&self, x: i32, y: i32, z: i32) -> u8 {
+        if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {
+            return 0;
+        }
+        let i = self.index(x, y, z);
+        self.stencil
+            .as_ref()
+            .and_then(|s| s.get(i).copied())
+            .unwrap_or(0)
+    }
+
+    /// Stores the stencil indices of the `size` block at `origin` (stored coordinates), as
+    /// [`TexImage::store_block`] stores texels; nothing for an image without stencil.
+    pub fn store_stencil_block(
+        &mut self,
+        origin: [usize; 3],
+        size: [usize; 3],
+        mut index: impl FnMut(usize, usize, usize) -> u8,
+    ) {
+        let dims = [self.width, self.height, self.depth].map(|s| s.max(0) as usize);
+        let Some(s) = self.stencil.as_mut() else {
+            return;
+        };
+        let s = Arc::make_mut(s);
+        for z in 0..size[2] {
+            for y in 0..size[1] {
+                for x in 0..size[0] {
+                    let p = [origin[0] + x, origin[1] + y, origin[2] + z];
+                    if p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2] {
+                        s[(p[2] * dims[1] + p[1]) * dims[0] + p[0]] = index(x, y, z);
+                    }
+                }
+            }
+        }
     }
 
     /// Border width along each axis.

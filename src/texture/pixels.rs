@@ -3,10 +3,10 @@
 //!
 //! Client data is in the machine's byte order; `GL_UNPACK_SWAP_BYTES` reverses the bytes of
 //! each element (a component, or a whole packed group). `GL_UNPACK_LSB_FIRST` concerns only
-//! `GL_BITMAP` data, which texture images do not take. Signed and unsigned integers become
+//! `GL_BITMAP` data (colour indices, [`for_each_index`]). Signed and unsigned integers become
 //! floats by table 2.9 of OpenGL 1.5: unsigned `c / (2^b - 1)`, signed `(2c + 1) / (2^b - 1)`.
 
-use crate::common::values::{TexPixelFormat, TexPixelType};
+use crate::common::values::{PixelIndexType, TexPixelFormat, TexPixelType};
 
 /// Table 6.17: pixel storage modes of one direction (pack or unpack).
 #[derive(Clone, Copy, Debug)]
@@ -196,6 +196,150 @@ pub fn index_rows(
         first_row,
         end,
     })
+}
+
+/// Bits and bytes of one index element (`GL_BITMAP`: one bit; bytes 1 for row alignment).
+fn index_element(ty: PixelIndexType) -> (usize, usize) {
+    match ty {
+        PixelIndexType::Bitmap => (1, 1),
+        PixelIndexType::Plain(t) => (8 * t.size(), t.size()),
+    }
+}
+
+/// Where a `size` image of indices of type `ty` lies under `store`: its rows
+/// ([`index_rows`]), the distance between two images (3D images: IMAGE_HEIGHT rows, or the
+/// height) and the offset of the first (SKIP_IMAGES images in), and the bytes it spans.
+/// `None` on arithmetic overflow.
+fn index_image(
+    store: &PixelStore,
+    dims: usize,
+    size: [usize; 3],
+    ty: PixelIndexType,
+) -> Option<(IndexRows, usize, usize, usize)> {
+    let (bits, bytes) = index_element(ty);
+    let rows = index_rows(store, size[0], size[1], bits, bytes)?;
+    let (rows_per_image, skip_images) = if dims == 3 {
+        let h = if store.image_height > 0 {
+            store.image_height as usize
+        } else {
+            size[1]
+        };
+        (h, store.skip_images.max(0) as usize)
+    } else {
+        (size[1], 0)
+    };
+    let image_stride = rows.stride.checked_mul(rows_per_image)?;
+    let first_image = image_stride.checked_mul(skip_images)?;
+    let end = if size.contains(&0) {
+        0
+    } else {
+        first_image
+            .checked_add(image_stride.checked_mul(size[2] - 1)?)?
+            .checked_add(rows.end)?
+    };
+    Some((rows, image_stride, first_image, end))
+}
+
+/// Bytes an image of indices (colour or stencil indices, or `GL_BITMAP` bits) of `size` spans
+/// under `store` (0 on overflow).
+pub fn index_image_len(
+    store: &PixelStore,
+    dims: usize,
+    size: [usize; 3],
+    ty: PixelIndexType,
+) -> usize {
+    index_image(store, dims, size, ty).map_or(0, |(.., end)| end)
+}
+
+/// Calls `visit` with every index of a `size` image of type `ty` in client memory, x fastest,
+/// then y, then z (section 3.6.4's unpacking of index groups, shared by `glDrawPixels` and
+/// colour-index texture images). `None`, visiting nothing, when `data` is shorter than the
+/// image or its layout overflows.
+pub fn for_each_index(
+    data: &[u8],
+    store: &PixelStore,
+    dims: usize,
+    size: [usize; 3],
+    ty: PixelIndexType,
+    mut visit: impl FnMut(i64),
+) -> Option<()> {
+    let (rows, image_stride, first_image, end) = index_image(store, dims, size, ty)?;
+    if data.len() < end {
+        return None;
+    }
+    let skip = store.skip_pixels.max(0) as usize;
+    let (_, elem_size) = index_element(ty);
+    for z in 0..size[2] {
+        for y in 0..size[1] {
+            let row = first_image + z * image_stride + rows.first_row + y * rows.stride;
+            for x in 0..size[0] {
+                let (start, n) = match ty {
+                    PixelIndexType::Bitmap => (row, skip + x),
+                    PixelIndexType::Plain(_) => (row + skip * elem_size, x),
+                };
+                visit(read_index(
+                    data,
+                    start,
+                    n,
+                    ty,
+                    store.swap_bytes,
+                    store.lsb_first,
+                ));
+            }
+        }
+    }
+    Some(())
+}
+
+/// Reads index `n` (0-based, in row `row_start`) of index data.
+pub fn read_index(
+    data: &[u8],
+    row_start: usize,
+    n: usize,
+    ty: PixelIndexType,
+    swap: bool,
+    lsb_first: bool,
+) -> i64 {
+    match ty {
+        PixelIndexType::Bitmap => {
+            let byte = data.get(row_start + n / 8).copied().unwrap_or(0);
+            let bit = if lsb_first {
+                byte >> (n % 8)
+            } else {
+                byte >> (7 - n % 8)
+            };
+            (bit & 1) as i64
+        }
+        PixelIndexType::Plain(t) => {
+            let size = t.size();
+            let at = row_start + n * size;
+            let Some(bytes) = data.get(at..at + size) else {
+                return 0;
+            };
+            let mut b = [0u8; 4];
+            b[..size].copy_from_slice(bytes);
+            if swap {
+                b[..size].reverse();
+            }
+            match t {
+                TexPixelType::UnsignedByte => b[0] as i64,
+                TexPixelType::Byte => b[0] as i8 as i64,
+                TexPixelType::UnsignedShort => u16::from_ne_bytes([b[0], b[1]]) as i64,
+                TexPixelType::Short => i16::from_ne_bytes([b[0], b[1]]) as i64,
+                TexPixelType::UnsignedInt => u32::from_ne_bytes(b) as i64,
+                TexPixelType::Int => i32::from_ne_bytes(b) as i64,
+                TexPixelType::Float => {
+                    let f = f32::from_ne_bytes(b);
+                    if f.is_finite() {
+                        f as i64
+                    } else {
+                        0
+                    }
+                }
+                TexPixelType::Packed(_) => 0,
+            }
+        }
+    }
 }
 
 /// Reads an element of `n` bytes at `at` in machine order, optionally byte-swapped.

@@ -18,6 +18,7 @@ super::state_case_list!(source = include_str!("basic.rs"), agree = |(_, a): &(St
     errors_bad_enums: "Section 2.5: a bad enum records GL_INVALID_ENUM and has no other effect; the first error sticks until glGetError reads it, then GL_NO_ERROR.",
     errors_bad_values: "Section 2.5: negative sizes, a zero near plane, far < near and equal bounds record GL_INVALID_VALUE and change nothing.",
     errors_begin_end: "Section 2.6.3: state commands between glBegin and glEnd (and glEnd without glBegin, glBegin inside glBegin, glGetError inside) record GL_INVALID_OPERATION and are ignored; vertex and colour calls inside are legal.",
+    state_provoking_vertex: "EXT_provoking_vertex: GL_PROVOKING_VERTEX_EXT starts as GL_LAST_VERTEX_CONVENTION_EXT and reads back what glProvokingVertexEXT set; GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT is implementation-dependent (false on both); another enum is GL_INVALID_ENUM and the call between glBegin and glEnd GL_INVALID_OPERATION, neither changing the convention; the call is compiled into display lists (executed by glCallList, not while compiling).",
     errors_stack_limits: "Section 2.11.2 and the implementation-dependent state table: pushing a full stack records GL_STACK_OVERFLOW, popping at depth 1 GL_STACK_UNDERFLOW, neither changes the matrix; stacks hold at least 32 modelview and 2 projection and texture matrices.",
 );
 
@@ -471,6 +472,43 @@ mod scripts {
                 Q::F(GL_CURRENT_COLOR, 4),
             ],
         );
+    }
+
+    pub fn state_provoking_vertex(gl: &mut dyn Gl, out: &mut Out) {
+        let pv = |gl: &mut dyn Gl, out: &mut Out| {
+            queries(
+                gl,
+                out,
+                &[
+                    Q::I(GL_PROVOKING_VERTEX_EXT, 1),
+                    Q::F(GL_PROVOKING_VERTEX_EXT, 1),
+                ],
+            )
+        };
+        pv(gl, out);
+        queries(
+            gl,
+            out,
+            &[Q::B(GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT, 1)],
+        );
+        gl.provoking_vertex_ext(GL_FIRST_VERTEX_CONVENTION_EXT);
+        err(gl, out, "provoking_vertex_ext(FIRST)");
+        pv(gl, out);
+        gl.provoking_vertex_ext(GL_FLAT);
+        err(gl, out, "provoking_vertex_ext(GL_FLAT)");
+        pv(gl, out);
+        gl.begin(GL_TRIANGLES);
+        gl.provoking_vertex_ext(GL_LAST_VERTEX_CONVENTION_EXT);
+        gl.end();
+        err(gl, out, "provoking_vertex_ext between begin and end");
+        pv(gl, out);
+        gl.new_list(1, GL_COMPILE);
+        gl.provoking_vertex_ext(GL_LAST_VERTEX_CONVENTION_EXT);
+        gl.end_list();
+        pv(gl, out);
+        gl.call_list(1);
+        pv(gl, out);
+        gl.delete_lists(1, 1);
     }
 
     pub fn errors_stack_limits(gl: &mut dyn Gl, out: &mut Out) {

@@ -10,12 +10,13 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
             .zip(&b.values)
             .all(|(x, y)| (x - y).abs() <= a.tolerance)
 };
-    piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (8 for the depth-stencil formats, 0 for the others). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_get_tex_image_luminance: "piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
-    piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_beginend_coverage: "piglit's gl-1.0-beginend-coverage: glIndex*, glClearIndex and glIndexMask set colour-index state in an RGBA context without error (glIndex* also between glBegin and glEnd); glTexGenf/glTexGeni with a plane set (param, 0, 0, 0) (section 2.11.4 names no error for the scalar forms); glTexParameterf(GL_TEXTURE_BORDER_COLOR) is GL_INVALID_ENUM; glDrawArrays and glDrawElements from a display list executed between glBegin and glEnd are GL_INVALID_OPERATION. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, depth-stencil textures keeping the stencil indices too (read back as GL_DEPTH_STENCIL, which a depth-only texture refuses), and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
 );
 
 use tilegl::api::GLenum;
@@ -55,7 +56,8 @@ fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
 }
 
 /// piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter
-/// reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (0: none keeps stencil).
+/// reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (8 for the depth-stencil
+/// formats, 0 for the others).
 fn piglit_sized_format_channels(gl: &mut dyn Gl, out: &mut Answers) {
     const SIZES: [GLenum; 8] = [
         GL_TEXTURE_RED_SIZE,
@@ -77,6 +79,9 @@ fn piglit_sized_format_channels(gl: &mut dyn Gl, out: &mut Answers) {
         (GL_R8, GL_RGBA),
         (GL_RG8, GL_RGBA),
         (GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT),
+        (GL_DEPTH24_STENCIL8_EXT, GL_DEPTH_COMPONENT),
+        (GL_DEPTH32F_STENCIL8, GL_DEPTH_COMPONENT),
+        (GL_DEPTH_STENCIL_EXT, GL_DEPTH_COMPONENT),
     ] {
         gl.tex_image_2d(
             GL_TEXTURE_2D,
@@ -284,6 +289,51 @@ fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
                 .collect(),
             tolerance: 1.0,
         });
+        // Depth and stencil packed back, with the stencil indices distinct per texel.
+        let words2: Vec<u8> = [0x1234_5601u32, 0x89ab_cd7f, 0x0000_0080, 0xffff_ffff]
+            .iter()
+            .flat_map(|w| w.to_ne_bytes())
+            .collect();
+        gl.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            internal as i32,
+            2,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words2),
+        );
+        let mut packed = [0u8; 16];
+        gl.get_tex_image(
+            GL_TEXTURE_2D,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut packed,
+        );
+        err(
+            gl,
+            out,
+            &format!("get_tex_image 0x{internal:04x} as DEPTH_STENCIL"),
+        );
+        if internal == GL_DEPTH24_STENCIL8_EXT {
+            let words: Vec<u32> = packed
+                .chunks(4)
+                .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+                .collect();
+            exact(
+                out,
+                "stencil read back".into(),
+                words.iter().map(|w| (w & 0xff) as f64).collect(),
+            );
+            out.push(Answer {
+                label: "depth read back (24 bits)".into(),
+                values: words.iter().map(|w| (w >> 8) as f64).collect(),
+                tolerance: 1.0,
+            });
+        }
     }
     let data = [0u8; 64];
     for (internal, format, ty) in [
@@ -315,6 +365,124 @@ fn piglit_depth_stencil_uploads(gl: &mut dyn Gl, out: &mut Answers) {
             &format!("tex_image_2d 0x{internal:04x} 0x{format:04x} 0x{ty:04x}"),
         );
     }
+}
+
+/// piglit's gl-1.0-beginend-coverage, the parts where tilegl and Mesa agree (the lighting
+/// commands' scalar forms with vector parameters are GL_INVALID_ENUM by section 2.14.2; Mesa
+/// accepts them, so `tests/state_errors.rs` checks those against the specification).
+fn piglit_beginend_coverage(gl: &mut dyn Gl, out: &mut Answers) {
+    let get_f = |gl: &mut dyn Gl, out: &mut Answers, pname: GLenum, label: &str| {
+        let mut v = [-9.0f32];
+        gl.get_floatv(pname, &mut v);
+        exact(out, label.into(), vec![v[0] as f64]);
+    };
+    gl.indexf(7.5);
+    err(gl, out, "indexf");
+    get_f(gl, out, GL_CURRENT_INDEX, "current index after indexf(7.5)");
+    gl.indexub(200);
+    get_f(
+        gl,
+        out,
+        GL_CURRENT_INDEX,
+        "current index after indexub(200)",
+    );
+    gl.begin(GL_POINTS);
+    gl.indexi(9);
+    gl.indexsv(&[11]);
+    gl.end();
+    err(gl, out, "indexi, indexsv between begin and end");
+    get_f(gl, out, GL_CURRENT_INDEX, "current index after indexsv(11)");
+    gl.clear_index(3.0);
+    gl.index_mask(5);
+    err(gl, out, "clear_index, index_mask");
+    get_f(gl, out, GL_INDEX_CLEAR_VALUE, "index clear value");
+    let mut m = [0];
+    gl.get_integerv(GL_INDEX_WRITEMASK, &mut m);
+    exact(out, "index write mask".into(), vec![m[0] as f64]);
+    gl.begin(GL_POINTS);
+    gl.clear_index(4.0);
+    gl.end();
+    err(gl, out, "clear_index between begin and end");
+    gl.begin(GL_POINTS);
+    gl.index_mask(4);
+    gl.end();
+    err(gl, out, "index_mask between begin and end");
+    for (pname, f) in [(GL_OBJECT_PLANE, 0.5), (GL_EYE_PLANE, 2.0)] {
+        gl.tex_genf(GL_S, pname, f);
+        err(gl, out, &format!("tex_genf 0x{pname:04x}"));
+        let mut v = [-9.0f32; 4];
+        gl.get_tex_genfv(GL_S, pname, &mut v);
+        exact(
+            out,
+            format!("plane 0x{pname:04x}"),
+            v.map(|x| x as f64).to_vec(),
+        );
+    }
+    gl.tex_parameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5);
+    err(gl, out, "tex_parameterf(GL_TEXTURE_BORDER_COLOR)");
+    // Array draws from a list, executed inside glBegin/glEnd.
+    let verts = [0.0f32; 8];
+    gl.vertex_pointer(2, GL_FLOAT, 0, tilegl::ClientPtr(verts.as_ptr() as usize));
+    for enabled in [false, true] {
+        if enabled {
+            gl.enable_client_state(GL_VERTEX_ARRAY);
+        }
+        gl.new_list(5, GL_COMPILE);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end_list();
+        gl.new_list(6, GL_COMPILE);
+        gl.draw_elements(
+            GL_POINTS,
+            1,
+            GL_UNSIGNED_INT,
+            tilegl::ClientPtr([0u32].as_ptr() as usize),
+        );
+        gl.end_list();
+        err(gl, out, "compiling array draws");
+        for list in [5, 6] {
+            gl.begin(GL_POINTS);
+            gl.call_list(list);
+            gl.end();
+            err(
+                gl,
+                out,
+                &format!("list {list} between begin and end, arrays {enabled}"),
+            );
+            gl.new_list(7, GL_COMPILE);
+            gl.begin(GL_POINTS);
+            gl.call_list(list);
+            gl.end();
+            gl.end_list();
+            gl.call_list(7);
+            err(
+                gl,
+                out,
+                &format!("list of begin, list {list}, end, arrays {enabled}"),
+            );
+        }
+        gl.new_list(8, GL_COMPILE);
+        gl.begin(GL_POINTS);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end();
+        gl.end_list();
+        err(gl, out, "compiling begin, draw_arrays, end");
+        gl.call_list(8);
+        err(
+            gl,
+            out,
+            &format!("list of begin, draw_arrays, end, arrays {enabled}"),
+        );
+        gl.new_list(8, GL_COMPILE_AND_EXECUTE);
+        gl.begin(GL_POINTS);
+        gl.draw_arrays(GL_POINTS, 0, 1);
+        gl.end();
+        gl.end_list();
+        err(gl, out, "compile-and-execute begin, draw_arrays, end");
+        gl.call_list(8);
+        err(gl, out, "that list called");
+    }
+    gl.disable_client_state(GL_VERTEX_ARRAY);
+    gl.delete_lists(5, 4);
 }
 
 /// Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and

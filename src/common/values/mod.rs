@@ -87,6 +87,15 @@ pub enum ShadeModel {
     Smooth,
 }
 
+/// `glProvokingVertexEXT`: which vertex of a primitive gives a flat-shaded primitive its
+/// colours. `Last` is OpenGL 1.5's table 2.9.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ProvokingVertex {
+    First,
+    #[default]
+    Last,
+}
+
 /// Texture targets that can be enabled and bound.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TextureTarget {
@@ -322,6 +331,11 @@ pub enum Query {
     BlendDstAlpha,
     BlendEquationRgb,
     BlendEquationAlpha,
+    ProvokingVertex,
+    QuadsFollowProvokingVertex,
+    CurrentIndex,
+    IndexClearValue,
+    IndexWritemask,
     BlendColor,
     LogicOpMode,
     MaxLights,

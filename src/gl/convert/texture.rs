@@ -393,8 +393,8 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         // generic compressed forms (stored uncompressed), the float formats of
         // ARB_texture_float (stored as 16- or 32-bit normalised values: what they receive from
         // an 8-bit framebuffer or [0, 1] data is kept exactly; values outside [0, 1] are
-        // clamped, so GL_ARB_texture_float is not advertised), and the depth-stencil formats'
-        // depth (the stencil part is not kept).
+        // clamped, so GL_ARB_texture_float is not advertised), and the depth-stencil formats
+        // (depth, and a stencil index per texel that sampling does not read).
         GL_RED | GL_COMPRESSED_RED | GL_R8 => (Red, 8),
         GL_R16 => (Red, 16),
         GL_RG | GL_COMPRESSED_RG | GL_RG8 => (Rg, 8),
@@ -415,8 +415,11 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_LUMINANCE_ALPHA32F_ARB => (LuminanceAlpha, 32),
         GL_INTENSITY16F_ARB => (Intensity, 16),
         GL_INTENSITY32F_ARB => (Intensity, 32),
-        GL_DEPTH24_STENCIL8_EXT => (DepthComponent, 24),
-        GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (DepthComponent, 32),
+        GL_DEPTH_COMPONENT32F => (DepthComponent, 32),
+        GL_DEPTH_STENCIL_EXT | GL_DEPTH24_STENCIL8_EXT => {
+            return Some(InternalFormat::depth_stencil(value, 24))
+        }
+        GL_DEPTH32F_STENCIL8 => return Some(InternalFormat::depth_stencil(value, 32)),
         GL_COMPRESSED_RGB => {
             return Some(if dims == 2 {
                 InternalFormat::s3tc(value, S3tcFormat::RgbDxt1)

@@ -44,7 +44,7 @@ impl Context {
         pixels: Option<&[u8]>,
     ) -> Check<()> {
         let target = convert::tex_image_target_for(target, dims, true).ok_or(GL_INVALID_ENUM)?;
-        let (pf, pt) = upload_format_type(format, type_)?;
+        let src = upload_source(format, type_)?;
         let level = check_level(target.texture_target(), level)?;
         let ifmt = check_internal_format(internalformat, dims)?;
         let stored = match check_size(target, level, size, border) {
@@ -59,21 +59,29 @@ impl Context {
         if ifmt.compressed.is_some() && border != 0 {
             return Err(GL_INVALID_OPERATION);
         }
-        check_format_type(pf, pt)?;
-        if pf.is_depth() != ifmt.is_depth() {
+        src.check_packed()?;
+        if src.is_depth() != ifmt.is_depth() {
             return Err(GL_INVALID_OPERATION);
         }
         check_depth_target(target, ifmt)?;
         let usize3 = stored.map(|s| s as usize);
-        let layout = pixels::layout(&self.unpack, dims, usize3, pf, pt).ok_or(GL_INVALID_VALUE)?;
-        if let Some(data) = pixels {
-            if data.len() < layout.end {
-                return Err(GL_INVALID_VALUE);
-            }
+        let len = self.upload_len(dims, usize3, src).ok_or(GL_INVALID_VALUE)?;
+        if pixels.is_some_and(|data| data.len() < len) {
+            return Err(GL_INVALID_VALUE);
         }
         let mut img = TexImage::new(dims as u8, stored, border, ifmt, target.is_proxy())
             .map_err(|_| GL_OUT_OF_MEMORY)?;
-        if let (Some(data), false) = (pixels, target.is_proxy()) {
+        if let (Some(data), false, UploadSource::ColorIndex(ty)) = (pixels, target.is_proxy(), src)
+        {
+            let texels = self.index_texels(data, dims, usize3, ty)?;
+            let [w, h, _] = usize3;
+            img.store_block([0; 3], usize3, |x, y, z| texels[(z * h + y) * w + x]);
+            img.encode_region(0, 0, img.width, img.height);
+        } else if let (Some(data), false, UploadSource::Groups(pf, pt)) =
+            (pixels, target.is_proxy(), src)
+        {
+            let layout =
+                pixels::layout(&self.unpack, dims, usize3, pf, pt).ok_or(GL_INVALID_VALUE)?;
             let swap = self.unpack.swap_bytes;
             // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
@@ -90,6 +98,14 @@ impl Context {
                     xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
                 });
             }
+            let stencil = StencilUpload {
+                data,
+                layout: &layout,
+                pf,
+                pt,
+                swap,
+            };
+            stencil.store(&mut img, &self.pixel_transfer, [0; 3], usize3);
             img.encode_region(0, 0, img.width, img.height);
         }
         self.install_image(target, level, img);
@@ -110,7 +126,7 @@ impl Context {
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
-            let (pf, pt) = upload_format_type(format, type_)?;
+            let src = upload_source(format, type_)?;
             let level = check_level(target.texture_target(), level)?;
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
@@ -118,8 +134,8 @@ impl Context {
             let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
             let (b, inner) = (img.borders(), img.inner_size());
             check_sub_region(dims, offset, size, b, inner)?;
-            check_format_type(pf, pt)?;
-            if pf.is_depth() != img.format.is_depth() {
+            src.check_packed()?;
+            if src.is_depth() != img.format.is_depth() {
                 return Err(GL_INVALID_OPERATION);
             }
             check_compressed_alignment(&img, offset, size)?;
@@ -127,24 +143,47 @@ impl Context {
             for d in 0..dims {
                 n[d] = size[d] as usize;
             }
-            let layout = pixels::layout(&self.unpack, dims, n, pf, pt).ok_or(GL_INVALID_VALUE)?;
+            let len = self.upload_len(dims, n, src).ok_or(GL_INVALID_VALUE)?;
             let Some(data) = pixels else {
                 return Ok(());
             };
-            if data.len() < layout.end {
+            if data.len() < len {
                 return Err(GL_INVALID_VALUE);
             }
+            let o = [
+                offset[0] + b[0],
+                if dims >= 2 { offset[1] + b[1] } else { 0 },
+                if dims >= 3 { offset[2] + b[2] } else { 0 },
+            ];
+            let (pf, pt) = match src {
+                UploadSource::Groups(pf, pt) => (pf, pt),
+                UploadSource::ColorIndex(ty) => {
+                    let texels = self.index_texels(data, dims, n, ty)?;
+                    let face = target.face();
+                    let mut obj = self.image_object_mut(target);
+                    if let Some(img) = obj.image_mut(face, level) {
+                        let origin = o.map(|v| v.max(0) as usize);
+                        img.store_block(origin, n, |x, y, z| texels[(z * n[1] + y) * n[0] + x]);
+                        img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
+                    }
+                    drop(obj);
+                    self.after_image_change(target, level);
+                    return Ok(());
+                }
+            };
+            let layout = pixels::layout(&self.unpack, dims, n, pf, pt).ok_or(GL_INVALID_VALUE)?;
             let swap = self.unpack.swap_bytes;
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
+            // Stencil indices take the index shift, offset and map (not in `xfer`'s test).
+            let transfer = if pf == TexPixelFormat::DepthStencil {
+                self.pixel_transfer.clone()
+            } else {
+                Default::default()
+            };
             let depth = pf.is_depth();
             let face = target.face();
             let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
-                let o = [
-                    offset[0] + b[0],
-                    if dims >= 2 { offset[1] + b[1] } else { 0 },
-                    if dims >= 3 { offset[2] + b[2] } else { 0 },
-                ];
                 let copied = bytes_are_texels(xfer.is_some(), pf, pt, img.format)
                     && o.iter().all(|&v| v >= 0)
                     && img.store_byte_rows(data, &layout, o.map(|v| v as usize), n);
@@ -159,6 +198,15 @@ impl Context {
                         xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
                     });
                 }
+                let origin = o.map(|v| v.max(0) as usize);
+                let stencil = StencilUpload {
+                    data,
+                    layout: &layout,
+                    pf,
+                    pt,
+                    swap,
+                };
+                stencil.store(img, &transfer, origin, n);
                 img.encode_region(o[0], o[1], o[0] + n[0] as i32, o[1] + n[1] as i32);
             }
             drop(obj);
@@ -363,15 +411,27 @@ impl Context {
             let target = convert::tex_image_target(target)
                 .filter(|t| !t.is_proxy())
                 .ok_or(GL_INVALID_ENUM)?;
-            let (pf, pt) = pixel_format_type(format, type_)?;
+            // GL_DEPTH_STENCIL reads a depth-stencil image's depth and stencil packed as
+            // GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil).
+            let (pf, pt) = if format == GL_DEPTH_STENCIL_EXT {
+                upload_format_type(format, type_)?
+            } else {
+                pixel_format_type(format, type_)?
+            };
             let level = check_level(target.texture_target(), level)?;
             check_format_type(pf, pt)?;
             let Some(img) = self.image_at(target, level) else {
                 return Ok(());
             };
-            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+            let fits = match pf {
+                TexPixelFormat::DepthComponent => img.format.is_depth(),
+                TexPixelFormat::DepthStencil => img.format.stencil,
+                _ => !img.format.is_depth(),
+            };
+            if !fits {
                 return Err(GL_INVALID_OPERATION);
             }
+            let stencil = pf == TexPixelFormat::DepthStencil;
             let dims = target.dims();
             let size = [img.width, img.height, img.depth].map(|s| s.max(0) as usize);
             let layout = pixels::layout(&self.pack, dims, size, pf, pt).ok_or(GL_INVALID_VALUE)?;
@@ -393,6 +453,9 @@ impl Context {
                         let mut v = img.fetch(x as i32, y as i32, z as i32);
                         if luminance {
                             (v[1], v[2]) = (0.0, 0.0);
+                        }
+                        if stencil {
+                            v[3] = img.stencil_at(x as i32, y as i32, z as i32) as f32 / 255.0;
                         }
                         pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
                     }

@@ -5,10 +5,11 @@
 //! `texture`.
 #![allow(clippy::too_many_arguments)]
 
+use super::pixel_rect::PixelTransfer;
 use super::Context;
 use crate::common::values::{
-    PackedType, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType,
-    TextureTarget,
+    PackedType, PixelIndexType, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat,
+    TexPixelType, TextureTarget,
 };
 use crate::gl::convert;
 use crate::gl::enums::*;
@@ -106,6 +107,105 @@ pub(super) fn upload_format_type(
         });
     }
     Ok((f, t))
+}
+
+/// The client data of a texture upload: groups of a pixel format, or colour indices.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum UploadSource {
+    Groups(TexPixelFormat, TexPixelType),
+    /// `GL_COLOR_INDEX` (also as `GL_BITMAP` bits): indices taken as `glDrawPixels` takes
+    /// them and turned into RGBA by the pixel transfer's index shift and offset and the
+    /// `I_TO_*` maps (sections 3.6.5 and 3.8.1).
+    ColorIndex(PixelIndexType),
+}
+
+impl UploadSource {
+    fn is_depth(self) -> bool {
+        matches!(self, UploadSource::Groups(f, _) if f.is_depth())
+    }
+
+    /// [`check_format_type`] for groups.
+    fn check_packed(self) -> Check<()> {
+        match self {
+            UploadSource::Groups(f, t) => check_format_type(f, t),
+            UploadSource::ColorIndex(_) => Ok(()),
+        }
+    }
+}
+
+/// [`upload_format_type`], with `GL_COLOR_INDEX` data too (a packed type with it is
+/// INVALID_OPERATION, as for any format the packed type does not fit).
+pub(super) fn upload_source(format: GLenum, type_: GLenum) -> Check<UploadSource> {
+    if format != GL_COLOR_INDEX {
+        let (f, t) = upload_format_type(format, type_)?;
+        return Ok(UploadSource::Groups(f, t));
+    }
+    match convert::pixel_index_type(type_) {
+        Some(t) => Ok(UploadSource::ColorIndex(t)),
+        None if convert::tex_pixel_type(type_).is_some() => Err(GL_INVALID_OPERATION),
+        None => Err(GL_INVALID_ENUM),
+    }
+}
+
+impl Context {
+    /// Bytes of client data an upload of `n` texels from `src` reads (`None` on overflow).
+    fn upload_len(&self, dims: usize, n: [usize; 3], src: UploadSource) -> Option<usize> {
+        match src {
+            UploadSource::Groups(f, t) => {
+                pixels::layout(&self.unpack, dims, n, f, t).map(|l| l.end)
+            }
+            UploadSource::ColorIndex(t) => Some(pixels::index_image_len(&self.unpack, dims, n, t))
+                .filter(|&len| len > 0 || n.contains(&0)),
+        }
+    }
+
+    /// The RGBA texels of colour-index client data, x fastest (clamped to [0, 1] as texture
+    /// storage requires; the maps hold values in [0, 1] already). `None` when `data` is too
+    /// short.
+    fn index_texels(
+        &self,
+        data: &[u8],
+        dims: usize,
+        n: [usize; 3],
+        ty: PixelIndexType,
+    ) -> Check<Vec<[f32; 4]>> {
+        let mut out = Vec::new();
+        out.try_reserve(n[0] * n[1] * n[2])
+            .map_err(|_| GL_OUT_OF_MEMORY)?;
+        let t = &self.pixel_transfer;
+        pixels::for_each_index(data, &self.unpack, dims, n, ty, |i| {
+            out.push(t.index_to_color(i).map(|c| c.clamp(0.0, 1.0)));
+        })
+        .ok_or(GL_INVALID_VALUE)?;
+        Ok(out)
+    }
+}
+
+/// The client data of a `GL_DEPTH_STENCIL` upload, whose stencil indices go into a
+/// depth-stencil image beside the depth.
+pub(super) struct StencilUpload<'a> {
+    pub data: &'a [u8],
+    pub layout: &'a pixels::Layout,
+    pub pf: TexPixelFormat,
+    pub pt: TexPixelType,
+    pub swap: bool,
+}
+
+impl StencilUpload<'_> {
+    /// Stores the indices of the `n` block at `origin` (the packed word's low 8 bits, through
+    /// the index shift and offset and the stencil map, section 3.6.5); nothing for other
+    /// formats or an image without stencil.
+    pub fn store(&self, img: &mut TexImage, t: &PixelTransfer, origin: [usize; 3], n: [usize; 3]) {
+        if self.pf != TexPixelFormat::DepthStencil || img.stencil.is_none() {
+            return;
+        }
+        let l = self.layout;
+        img.store_stencil_block(origin, n, |x, y, z| {
+            let at = l.start + z * l.image_stride + y * l.row_stride + x * l.group;
+            let v = pixels::unpack_group(self.data, at, self.pf, self.pt, self.swap)[3];
+            t.stencil((v * 255.0).round() as i64)
+        });
+    }
 }
 
 fn pixel_format_type(format: GLenum, type_: GLenum) -> Check<(TexPixelFormat, TexPixelType)> {

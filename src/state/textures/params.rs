@@ -232,7 +232,13 @@ impl Context {
             TexLevelParam::LuminanceSize => has(matches!(f.base, Luminance | LuminanceAlpha)),
             TexLevelParam::IntensitySize => has(f.base == Intensity),
             TexLevelParam::DepthSize => has(f.base == DepthComponent),
-            TexLevelParam::StencilSize => 0,
+            TexLevelParam::StencilSize => {
+                if f.stencil {
+                    8
+                } else {
+                    0
+                }
+            }
             TexLevelParam::Compressed => f.compressed.is_some() as i64,
             TexLevelParam::CompressedImageSize => match (f.compressed, &img.blocks) {
                 (Some(c), _) => {
