@@ -332,7 +332,8 @@ impl Context {
         }
         let (w, h) = (width as usize, height as usize);
         let ty = TexPixelType::Packed(PackedType::UInt248);
-        let Some(layout) = texpix::layout(&self.pack, 2, [w, h, 1], TexPixelFormat::DepthStencil, ty)
+        let Some(layout) =
+            texpix::layout(&self.pack, 2, [w, h, 1], TexPixelFormat::DepthStencil, ty)
         else {
             self.record_error(GL_INVALID_VALUE);
             return;

@@ -12,8 +12,8 @@ use glam::Vec4;
 use super::Context;
 use crate::api::convert;
 use crate::api::enums::*;
-use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::fixed::depth_to_fixed;
+use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
     CopyPixelsType, DrawPixelsFormat, PackedType, PixelIndexType, PixelMap, PixelRectQuery,
     PixelTransferParam, TexPixelFormat, TexPixelType,
@@ -779,7 +779,10 @@ impl Context {
                 }
                 let word = u32::from_ne_bytes(b);
                 let depth = t.depth((word >> 8) as f64 / 0x00FF_FFFF as f64);
-                values.push(PixelValue::DepthStencil(depth, t.stencil((word & 0xFF) as i64)));
+                values.push(PixelValue::DepthStencil(
+                    depth,
+                    t.stencil((word & 0xFF) as i64),
+                ));
             }
         }
         self.draw_pixel_values(w, h, &values);
