@@ -84,7 +84,8 @@ GL_EXT_multi_draw_arrays GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT
 GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
 GL_EXT_texture_env_combine GL_EXT_texture_env_dot3 GL_EXT_texture_filter_anisotropic \
-GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle GL_EXT_vertex_array_bgra \
+GL_EXT_texture_lod_bias GL_EXT_texture_mirror_clamp GL_EXT_texture_swizzle GL_EXT_vertex_array \
+GL_EXT_vertex_array_bgra \
 GL_ATI_texture_mirror_once GL_NV_texture_env_combine4 GL_SGIS_generate_mipmap \
 GL_SGIS_texture_edge_clamp GL_SGIS_texture_lod ";
 
@@ -1059,6 +1060,12 @@ impl Gl for Context {
         pop_client_attrib,
         lock_arrays_ext,
         unlock_arrays_ext,
+        vertex_pointer_ext,
+        normal_pointer_ext,
+        color_pointer_ext,
+        index_pointer_ext,
+        tex_coord_pointer_ext,
+        edge_flag_pointer_ext,
         // display lists
         gen_lists,
         new_list,

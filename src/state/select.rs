@@ -492,7 +492,11 @@ impl Context {
                     }
                     let xy: Vec<[i64; 2]> = poly.iter().map(|p| to_window(&ds, p).xy).collect();
                     let area = signed_area2(&xy);
-                    if area == 0 {
+                    // A polygon of no area produces no fragments but is still a polygon:
+                    // feedback and selection report it (piglit's rendermode-feedback feeds
+                    // back a triangle on a line), unless culling is on (a zero area has no
+                    // facing; llvmpipe culls it then).
+                    if area == 0 && ds.cull.is_some() {
                         continue;
                     }
                     let front = is_front(area, ds.front_face);
