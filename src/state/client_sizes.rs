@@ -179,7 +179,7 @@ impl Context {
         type_: GLenum,
     ) -> usize {
         let (Some(f), Some(t)) = (
-            convert::tex_pixel_format(format),
+            convert::tex_upload_format(format),
             convert::tex_pixel_type(type_),
         ) else {
             return 0;

@@ -14,6 +14,7 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
     piglit_get_tex_image_luminance: "piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_stencil_pixels: "piglit's depthstencil-default_fb-readpixels-24_8 and -drawpixels-24_8: glReadPixels and glDrawPixels with GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil), with depth scale and bias and (on read-back) index offset, the depth and stencil write masks, the depth test off, and the errors of other types and formats. Every answer equals Mesa's (24-bit depths within one unit).",
+    piglit_get_tex_image_depth_stencil: "piglit's getteximage-depth with EXT_packed_depth_stencil listed: depth-stencil images uploaded and read back with glGetTexImage(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8), the depth of each word compared (tilegl's depth textures keep no stencil), and the error of reading a colour image so. Every answer equals Mesa's (24-bit depths within one unit).",
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
@@ -513,4 +514,69 @@ fn piglit_depth_stencil_pixels(gl: &mut dyn Gl, out: &mut Answers) {
         gl.draw_pixels(1, 1, format, GL_UNSIGNED_INT_24_8_EXT, Some(&buf));
         err(gl, out, &format!("draw_pixels(0x{format:04x}, 24_8)"));
     }
+}
+
+/// piglit's getteximage-depth with EXT_packed_depth_stencil listed: depth-stencil images
+/// uploaded and read back with glGetTexImage(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8), the
+/// depth of each word compared (tilegl's depth textures keep no stencil), and the error of
+/// reading a colour image so.
+fn piglit_get_tex_image_depth_stencil(gl: &mut dyn Gl, out: &mut Answers) {
+    let words: Vec<u8> = (0..8u32)
+        .flat_map(|x| ((0xffff_ff00u32 as f32 * (x as f32 / 7.0)) as u32 | 0x5a).to_ne_bytes())
+        .collect();
+    for (target, internal) in [
+        (GL_TEXTURE_2D, GL_DEPTH24_STENCIL8_EXT),
+        (GL_TEXTURE_2D, GL_DEPTH_STENCIL_EXT),
+        (GL_TEXTURE_RECTANGLE_ARB, GL_DEPTH24_STENCIL8_EXT),
+    ] {
+        gl.tex_image_2d(
+            target,
+            0,
+            internal as i32,
+            4,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words),
+        );
+        err(gl, out, &format!("upload 0x{target:04x} 0x{internal:04x}"));
+        let mut back = [0u8; 32];
+        gl.get_tex_image(
+            target,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut back,
+        );
+        err(gl, out, "get_tex_image(GL_DEPTH_STENCIL)");
+        out.push(Answer {
+            label: format!("0x{target:04x} 0x{internal:04x} depths read back (24 bits)"),
+            values: back
+                .chunks(4)
+                .map(|c| (u32::from_ne_bytes([c[0], c[1], c[2], c[3]]) >> 8) as f64)
+                .collect(),
+            tolerance: 1.0,
+        });
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[1, 2, 3, 4]),
+    );
+    let mut back = [0u8; 4];
+    gl.get_tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        &mut back,
+    );
+    err(gl, out, "get_tex_image(GL_DEPTH_STENCIL) of an RGBA image");
 }

@@ -415,7 +415,8 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_LUMINANCE_ALPHA32F_ARB => (LuminanceAlpha, 32),
         GL_INTENSITY16F_ARB => (Intensity, 16),
         GL_INTENSITY32F_ARB => (Intensity, 32),
-        GL_DEPTH24_STENCIL8_EXT => (DepthComponent, 24),
+        // EXT_packed_depth_stencil: the unsized name too (its stencil is not kept).
+        GL_DEPTH24_STENCIL8_EXT | GL_DEPTH_STENCIL_EXT => (DepthComponent, 24),
         GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => (DepthComponent, 32),
         GL_COMPRESSED_RGB => {
             return Some(if dims == 2 {

@@ -363,13 +363,17 @@ impl Context {
             let target = convert::tex_image_target(target)
                 .filter(|t| !t.is_proxy())
                 .ok_or(GL_INVALID_ENUM)?;
-            let (pf, pt) = pixel_format_type(format, type_)?;
+            // GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 too (EXT_packed_depth_stencil): a depth
+            // image's depth in the high 24 bits; the low 8, the stencil index, are 0 because
+            // tilegl's depth textures keep no stencil.
+            let (pf, pt) = upload_format_type(format, type_)?;
             let level = check_level(target.texture_target(), level)?;
             check_format_type(pf, pt)?;
             let Some(img) = self.image_at(target, level) else {
                 return Ok(());
             };
-            if (pf == TexPixelFormat::DepthComponent) != img.format.is_depth() {
+            let depth_stencil = pf == TexPixelFormat::DepthStencil;
+            if (pf == TexPixelFormat::DepthComponent || depth_stencil) != img.format.is_depth() {
                 return Err(GL_INVALID_OPERATION);
             }
             let dims = target.dims();
@@ -393,6 +397,9 @@ impl Context {
                         let mut v = img.fetch(x as i32, y as i32, z as i32);
                         if luminance {
                             (v[1], v[2]) = (0.0, 0.0);
+                        }
+                        if depth_stencil {
+                            v[3] = 0.0;
                         }
                         pixels::pack_group(pixels, row + x * layout.group, v, pf, pt, swap);
                     }

@@ -124,7 +124,8 @@ fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
     }
 }
 
-/// The client format and type of a texture upload: those of [`pixel_format_type`] and
+/// The client format and type of a texture upload or `glGetTexImage`: the colour and depth
+/// formats with their types, and
 /// `GL_DEPTH_STENCIL` with `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil; another type
 /// with it is INVALID_ENUM, as that extension says). `GL_STENCIL_INDEX`, a pixel format
 /// texture images do not take, is INVALID_OPERATION (the rule GL 3.x states for formats
@@ -146,12 +147,6 @@ pub(super) fn upload_format_type(
             GL_INVALID_OPERATION
         });
     }
-    Ok((f, t))
-}
-
-fn pixel_format_type(format: GLenum, type_: GLenum) -> Check<(TexPixelFormat, TexPixelType)> {
-    let f = convert::tex_pixel_format(format).ok_or(GL_INVALID_ENUM)?;
-    let t = convert::tex_pixel_type(type_).ok_or(GL_INVALID_ENUM)?;
     Ok((f, t))
 }
 
