@@ -241,6 +241,51 @@ fn feedback_tokens_and_vertices() {
     assert_eq!(n as usize, expected.len());
 }
 
+/// A triangle of zero area (collinear vertices, or two equal) is still a primitive: feedback
+/// reports it, selection counts its hit (section 5.3: what would be rasterized), and the sign
+/// test of section 3.5.1 makes it back-facing (a = 0 is not positive), so culling back faces
+/// removes it and culling front faces keeps it.
+#[test]
+fn zero_area_triangles_are_back_facing_primitives() {
+    let tris: [[[f32; 2]; 3]; 2] = [
+        [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]],
+        [[10.0, 10.0], [10.0, 10.0], [20.0, 30.0]],
+    ];
+    let draw = |gl: &mut Context| {
+        for t in &tris {
+            gl.begin(GL_TRIANGLES);
+            for v in t {
+                gl.vertex_2f(v[0], v[1]);
+            }
+            gl.end();
+        }
+    };
+    let mut expected = Vec::new();
+    for t in &tris {
+        expected.extend([GL_POLYGON_TOKEN as f32, 3.0]);
+        expected.extend(t.iter().flatten());
+    }
+    for (cull, kept) in [(None, true), (Some(GL_BACK), false), (Some(GL_FRONT), true)] {
+        let mut gl = context();
+        if let Some(face) = cull {
+            gl.enable(GL_CULL_FACE);
+            gl.cull_face(face);
+        }
+        gl.feedback_buffer(64, GL_2D, NULL);
+        gl.render_mode(GL_FEEDBACK);
+        draw(&mut gl);
+        let n = gl.render_mode(GL_RENDER);
+        let want: &[f32] = if kept { &expected } else { &[] };
+        assert_eq!(gl.feedback_buffer_contents(), want, "cull {cull:?}");
+        assert_eq!(n as usize, want.len(), "cull {cull:?}");
+        gl.select_buffer(16, NULL);
+        gl.render_mode(GL_SELECT);
+        gl.push_name(3);
+        draw(&mut gl);
+        assert_eq!(gl.render_mode(GL_RENDER), kept as i32, "cull {cull:?}");
+    }
+}
+
 #[test]
 fn feedback_types_sizes_w_and_texture_coordinates() {
     for (ty, size) in [
@@ -435,64 +480,5 @@ fn extreme_vertices_never_panic_in_either_mode() {
         let n = gl.render_mode(GL_RENDER);
         assert!(n >= -1);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
-    }
-}
-
-#[test]
-fn polygons_of_no_area_are_fed_back_and_selected_unless_culling_is_on() {
-    // Section 5.3: feedback reports each polygon after clipping; a triangle whose vertices lie
-    // on a line covers no pixel but is still one (piglit's gl-1.0-rendermode-feedback draws
-    // one from vertex arrays). With culling on it has no facing and is dropped (llvmpipe).
-    let tri = |gl: &mut Context| {
-        gl.begin(GL_TRIANGLES);
-        gl.vertex_3f(1.0, 2.0, 0.4);
-        gl.vertex_3f(3.0, 4.0, 0.6);
-        gl.vertex_3f(5.0, 6.0, 0.8);
-        gl.end();
-    };
-    let mut gl = context();
-    gl.feedback_buffer(64, GL_3D, NULL);
-    gl.render_mode(GL_FEEDBACK);
-    tri(&mut gl);
-    let n = gl.render_mode(GL_RENDER);
-    // Window z = (1 - z) / 2.
-    let expected = [
-        GL_POLYGON_TOKEN as f32,
-        3.0,
-        1.0,
-        2.0,
-        0.3,
-        3.0,
-        4.0,
-        0.2,
-        5.0,
-        6.0,
-        0.1,
-    ];
-    assert_eq!(n as usize, expected.len());
-    let got = gl.feedback_buffer_contents();
-    for (g, e) in got.iter().zip(expected) {
-        assert!((g - e).abs() < 1e-6, "{got:?}");
-    }
-    // Selection: one hit with the polygon's depths.
-    gl.select_buffer(16, NULL);
-    gl.render_mode(GL_SELECT);
-    gl.init_names();
-    gl.push_name(9);
-    tri(&mut gl);
-    assert_eq!(gl.render_mode(GL_RENDER), 1);
-    let hit = &gl.select_buffer_contents()[..4];
-    assert_eq!([hit[0], hit[3]], [1, 9]);
-    // Depths within single-precision rounding of the window z.
-    for (h, z) in hit[1..3].iter().zip([0.1, 0.3]) {
-        assert!((*h as f64 - zscale(z) as f64).abs() < 1e3, "{hit:?}");
-    }
-    // Culling on (either face): nothing.
-    for face in [GL_BACK, GL_FRONT] {
-        gl.enable(GL_CULL_FACE);
-        gl.cull_face(face);
-        gl.render_mode(GL_FEEDBACK);
-        tri(&mut gl);
-        assert_eq!(gl.render_mode(GL_RENDER), 0, "cull face {face:#x}");
     }
 }
