@@ -15,13 +15,13 @@
 //! once) with the counter the caller keeps across the segments of a strip or loop.
 //! Attributes are interpolated perspective-correctly along the line.
 
+use super::draw::TileDraw;
 use super::point::{add_constant_planes, bin_rect, emit_rect};
 use super::setup::WindowVertex;
 use crate::common::attr::MAX_ATTRS;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::raster::scene::Scene;
-use crate::state::DrawState;
 
 /// Whether the stipple lets fragment number `counter` through.
 #[inline]
@@ -47,7 +47,7 @@ fn attrs_at(v: [&WindowVertex; 2], attrs: [&[f32]; 2], t: f64, n: usize, out: &m
 /// Bins one line segment. `z_offset` is a polygon offset (edges of polygons in line mode);
 /// `stipple_counter` carries the stipple count from the previous segment of a strip.
 pub fn bin_line(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: [&WindowVertex; 2],
     attrs: [&[f32]; 2],
@@ -185,7 +185,7 @@ pub fn bin_line(
 /// diagonal, or with the across coordinate interpolated in window space, a receding line of
 /// width 4 sits a pixel away from Mesa's).
 fn bin_smooth_line(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: [&WindowVertex; 2],
     attrs: [&[f32]; 2],

@@ -5,10 +5,10 @@
 //! undefined). `glAccum` works immediately on the flushed framebuffer, inside the scissor box.
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::fixed::color_to_u8;
 use crate::common::values::AccumOp;
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// Scale of the fixed-point accumulation values.
 const ACCUM_ONE: f32 = 32767.0;
