@@ -84,7 +84,8 @@ fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
     }
 }
 
-/// The client format and type of a texture upload: those of [`pixel_format_type`] and
+/// The client format and type of a texture upload or `glGetTexImage`: the colour and depth
+/// formats with their types, and
 /// `GL_DEPTH_STENCIL` with `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil; another type
 /// with it is INVALID_ENUM, as that extension says). `GL_STENCIL_INDEX`, a pixel format
 /// texture images do not take, is INVALID_OPERATION (the rule GL 3.x states for formats
