@@ -13,6 +13,8 @@ use super::prefetch;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
 use super::tri::{raster_triangle, AttrScratch};
+use crate::common::attr::MAX_ATTRS;
+use crate::common::rect::Rect;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::state::Context;
@@ -432,6 +434,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Clear(_) => None,
             Command::Triangle(t) => Some(t.state),
             Command::Rect(r) => Some(r.state),
+            Command::Line(l) => Some(l.state),
         };
         if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
             levels.prepare(&scene.states[state as usize]);
@@ -459,28 +462,79 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];
                 let attrs = &scene.planes[r.attrs as usize..r.attrs as usize + ds.attr_count];
-                let shared = PrimitiveShared::new(&levels);
-                let it = Interpolants {
-                    z: Plane::constant(r.z),
-                    inv_w: Plane::constant(1.0),
-                    attrs,
-                    perspective: false,
-                    constant_primary: false,
-                    coverage: r.coverage,
-                    shared: &shared,
-                };
-                if ds.key.depth_write {
-                    coarse.forget(tile, r.rect);
-                }
-                let t = tile.side();
-                let (x0, x1) = (r.rect.x0.max(tile.x0), r.rect.x1.min(tile.x0 + t));
-                let (y0, y1) = (r.rect.y0.max(tile.y0), r.rect.y1.min(tile.y0 + t));
-                if x0 < x1 {
-                    for y in y0..y1 {
-                        (ds.span)(ds, tile, y, x0, x1, &it);
-                    }
-                }
+                shade_rect(ds, tile, &levels, &mut coarse, r.rect, r.z, attrs, r.coverage);
             }
+            Command::Line(l) => {
+                let ds = &scene.states[l.state as usize];
+                let line = &scene.lines[l.line as usize];
+                let (at, n) = (line.attrs as usize, line.n as usize);
+                let ends = &scene.line_attrs[at..at + 2 * n];
+                let (major, minor) = line.tile_ranges(tile.x0, tile.y0, tile.side());
+                let mut planes = [Plane::constant(0.0); MAX_ATTRS];
+                let count = ds.attr_count.min(n);
+                let d = &ds.draw_rect;
+                line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, coverage| {
+                    let rect = Rect {
+                        x0: r[0].max(d.x0 as i64) as i32,
+                        y0: r[1].max(d.y0 as i64) as i32,
+                        x1: r[2].min(d.x1 as i64) as i32,
+                        y1: r[3].min(d.y1 as i64) as i32,
+                    };
+                    if rect.is_empty() {
+                        return;
+                    }
+                    for (p, &v) in planes[..count].iter_mut().zip(a) {
+                        *p = Plane::constant(v as f64);
+                    }
+                    shade_rect(
+                        ds,
+                        tile,
+                        &levels,
+                        &mut coarse,
+                        rect,
+                        z,
+                        &planes[..count],
+                        coverage,
+                    );
+                });
+            }
+        }
+    }
+}
+
+/// Shades the pixels of `rect` (inside the draw rectangle) in `tile` with constant
+/// attributes: a point, a column of a line, or one pixel of an antialiased point or line.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn shade_rect(
+    ds: &crate::state::DrawState,
+    tile: &mut Tile,
+    levels: &UnitLevels,
+    coarse: &mut CoarseDepth,
+    rect: Rect,
+    z: f64,
+    attrs: &[Plane],
+    coverage: f32,
+) {
+    let shared = PrimitiveShared::new(levels);
+    let it = Interpolants {
+        z: Plane::constant(z),
+        inv_w: Plane::constant(1.0),
+        attrs,
+        perspective: false,
+        constant_primary: false,
+        coverage,
+        shared: &shared,
+    };
+    if ds.key.depth_write {
+        coarse.forget(tile, rect);
+    }
+    let t = tile.side();
+    let (x0, x1) = (rect.x0.max(tile.x0), rect.x1.min(tile.x0 + t));
+    let (y0, y1) = (rect.y0.max(tile.y0), rect.y1.min(tile.y0 + t));
+    if x0 < x1 {
+        for y in y0..y1 {
+            (ds.span)(ds, tile, y, x0, x1, &it);
         }
     }
 }
