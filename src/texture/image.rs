@@ -624,6 +624,127 @@ fn gather<T: Copy>(
 mod tests {
     use super::*;
 
+    /// An unsigned byte stores as itself in 8-bit storage (`store_converted` copies it).
+    #[test]
+    fn bytes_store_as_themselves() {
+        for c in 0..=255u8 {
+            assert_eq!((clamp01(c as f32 / 255.0) as f64 * 255.0 + 0.5) as u8, c);
+        }
+    }
+
+    /// `store_converted` stores what the per-texel route (`unpack_group` of each group into
+    /// `store_block`) stores: every unpacked client type and colour format, into 8-, 16- and
+    /// 32-bit storage of every colour base format, whole images and sub-blocks under row
+    /// lengths, alignments and skips; client bytes pseudo-random (so floats include NaN,
+    /// infinities, negatives and values above 1).
+    #[test]
+    fn converted_uploads_store_what_the_per_texel_route_stores() {
+        use crate::texture::format::BaseFormat;
+        use crate::texture::pixels::{layout, unpack_group, PixelStore};
+        use TexPixelFormat as F;
+        use TexPixelType as T;
+        let formats = [
+            F::Red,
+            F::Green,
+            F::Blue,
+            F::Alpha,
+            F::Rgb,
+            F::Rgba,
+            F::Bgr,
+            F::Bgra,
+            F::Luminance,
+            F::LuminanceAlpha,
+        ];
+        let types = [
+            T::UnsignedByte,
+            T::Byte,
+            T::UnsignedShort,
+            T::Short,
+            T::UnsignedInt,
+            T::Int,
+            T::Float,
+        ];
+        let bases = [
+            BaseFormat::Alpha,
+            BaseFormat::Luminance,
+            BaseFormat::LuminanceAlpha,
+            BaseFormat::Intensity,
+            BaseFormat::Rgb,
+            BaseFormat::Rgba,
+            BaseFormat::Red,
+            BaseFormat::Rg,
+        ];
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let data: Vec<u8> = (0..4096)
+            .map(|_| {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                // Some floats near [0, 1]: exponent bytes 0x3F / 0x3E in the high byte.
+                match seed % 5 {
+                    0 => 0x3F,
+                    1 => 0x3E,
+                    _ => (seed >> 24) as u8,
+                }
+            })
+            .collect();
+        let (w, h) = (7usize, 5usize);
+        let mut checked = 0;
+        for format in formats {
+            for ty in types {
+                for base in bases {
+                    for bits in [8u8, 16, 32] {
+                        let ifmt = InternalFormat::new(0, base, bits);
+                        for (align, row_length, skip_px, skip_rows) in
+                            [(1, 0, 0, 0), (4, 11, 2, 1), (8, 0, 1, 2)]
+                        {
+                            let store = PixelStore {
+                                alignment: align,
+                                row_length,
+                                skip_pixels: skip_px,
+                                skip_rows,
+                                ..PixelStore::default()
+                            };
+                            for (origin, size) in [([0, 0, 0], [w, h, 1]), ([2, 1, 0], [4, 3, 1])] {
+                                let lay = layout(&store, 2, size, format, ty).unwrap();
+                                assert!(lay.end <= data.len());
+                                let image = || {
+                                    let mut img =
+                                        TexImage::new(2, [w as i32, h as i32, 1], 0, ifmt, false)
+                                            .unwrap();
+                                    // A non-zero background, so skipped texels show.
+                                    img.store_block([0; 3], [w, h, 1], |x, y, _| {
+                                        [x as f32 / 8.0, y as f32 / 8.0, 0.5, 0.25]
+                                    });
+                                    img
+                                };
+                                let mut fast = image();
+                                assert!(
+                                    fast.store_converted(&data, &lay, origin, size, format, ty)
+                                );
+                                let mut slow = image();
+                                slow.store_block(origin, size, |x, y, z| {
+                                    let at = lay.start
+                                        + z * lay.image_stride
+                                        + y * lay.row_stride
+                                        + x * lay.group;
+                                    unpack_group(&data, at, format, ty, false)
+                                });
+                                assert_eq!(
+                                    fast.texels, slow.texels,
+                                    "{format:?} {ty:?} into {base:?}/{bits}, unpack {align} \
+                                     {row_length} {skip_px} {skip_rows}, block {origin:?} {size:?}"
+                                );
+                                checked += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 10 * 7 * 8 * 3 * 3 * 2);
+    }
+
     #[test]
     fn images_over_the_byte_limit_are_out_of_memory_without_allocating() {
         // The limit counts bytes, whatever the size of one stored component.
