@@ -63,6 +63,10 @@ pub struct LineSetup {
     last: i64,
     stipple: Option<(u32, u16)>,
     start_counter: u32,
+    /// An aliased segment whose ends have the same z, 1/w and attributes: every fragment
+    /// then has the same values (the interpolation adds `t * 0`), so fragments next to each
+    /// other in a row may be shaded as one span.
+    pub uniform: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -99,7 +103,11 @@ pub fn bin_line(
     stipple_counter: &mut u32,
     scene: &mut Scene,
 ) {
-    let n = ds.attr_count.min(MAX_ATTRS).min(attrs[0].len()).min(attrs[1].len());
+    let n = ds
+        .attr_count
+        .min(MAX_ATTRS)
+        .min(attrs[0].len())
+        .min(attrs[1].len());
     let planned = if ds.raster.line_smooth {
         plan_smooth(ds, v)
     } else {
@@ -111,6 +119,10 @@ pub fn bin_line(
     if first > last {
         return;
     }
+    let uniform = matches!(kind, LineKind::Aliased { .. })
+        && v[0].z == v[1].z
+        && v[0].inv_w == v[1].inv_w
+        && attrs[0][..n] == attrs[1][..n];
     let offset = scene.line_attrs.len() as u32;
     scene.line_attrs.extend_from_slice(&attrs[0][..n]);
     scene.line_attrs.extend_from_slice(&attrs[1][..n]);
@@ -132,6 +144,7 @@ pub fn bin_line(
         last,
         stipple: ds.raster.line_stipple,
         start_counter: *stipple_counter,
+        uniform,
     };
     // The tiles each band of columns one tile wide reaches (the minor coordinate is linear
     // in the column, so the band's end columns bound it).
@@ -379,15 +392,24 @@ impl LineSetup {
 
     /// Rows (columns for y-major lines) that the fragments of columns `c0..=c1` can reach.
     fn minor_span(&self, c0: i64, c1: i64) -> (i64, i64) {
-        let m = |c: i64| self.b0 + ((c as f64 + 0.5).clamp(self.lo, self.hi) - self.a0) * self.db_da;
+        let m =
+            |c: i64| self.b0 + ((c as f64 + 0.5).clamp(self.lo, self.hi) - self.a0) * self.db_da;
         let (ma, mb) = (m(c0), m(c1));
         let (m0, m1) = (ma.min(mb), ma.max(mb));
         let (lo, hi) = match &self.kind {
             LineKind::Aliased { width, .. } => (m0.floor() - 1.0, m1.floor() + *width as f64 + 1.0),
-            LineKind::Smooth { reach, .. } => ((m0 - reach).floor() - 1.0, (m1 + reach).floor() + 1.0),
+            LineKind::Smooth { reach, .. } => {
+                ((m0 - reach).floor() - 1.0, (m1 + reach).floor() + 1.0)
+            }
         };
         // NaN (a degenerate slope) reaches everything.
-        let clamp = |v: f64, d: i64| if v.is_nan() { d } else { v.clamp(-1e9, 1e9) as i64 };
+        let clamp = |v: f64, d: i64| {
+            if v.is_nan() {
+                d
+            } else {
+                v.clamp(-1e9, 1e9) as i64
+            }
+        };
         (clamp(lo, i64::MIN / 2), clamp(hi, i64::MAX / 2))
     }
 
@@ -443,8 +465,14 @@ impl LineSetup {
                     }
                     // The fragment's place along the segment: where the segment leaves its
                     // pixel, in whole major-axis units from the start.
-                    let exit = if ascending { c + 1.0 - self.a0 } else { self.a0 - c };
-                    let counter = self.start_counter.wrapping_add(exit.max(0.0).floor() as u32);
+                    let exit = if ascending {
+                        c + 1.0 - self.a0
+                    } else {
+                        self.a0 - c
+                    };
+                    let counter = self
+                        .start_counter
+                        .wrapping_add(exit.max(0.0).floor() as u32);
                     if !stipple_passes(self.stipple, counter) {
                         continue;
                     }
@@ -492,8 +520,7 @@ impl LineSetup {
                     let r1 = ((m + reach).floor() as i64).min(minor_rect.1).min(minor.1);
                     for row in r0..=r1 {
                         let (px, py) = if self.x_major { (c, row) } else { (row, c) };
-                        let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5)
-                        else {
+                        let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5) else {
                             continue;
                         };
                         // Data are those of the lengthened quad's vertices (the end points'
@@ -543,7 +570,6 @@ impl LineSetup {
         }
     }
 }
-
 
 /// The quad an antialiased line is drawn as (see [`plan_smooth`]).
 #[derive(Clone, Debug)]

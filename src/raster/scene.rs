@@ -3,8 +3,8 @@
 
 use std::sync::Arc;
 
-use super::prefetch;
 use super::line::LineSetup;
+use super::prefetch;
 use super::setup::{Edge, Plane};
 use crate::common::rect::Rect;
 use crate::framebuffer::Framebuffer;

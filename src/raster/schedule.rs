@@ -462,7 +462,16 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Rect(r) => {
                 let ds = &scene.states[r.state as usize];
                 let attrs = &scene.planes[r.attrs as usize..r.attrs as usize + ds.attr_count];
-                shade_rect(ds, tile, &levels, &mut coarse, r.rect, r.z, attrs, r.coverage);
+                shade_rect(
+                    ds,
+                    tile,
+                    &levels,
+                    &mut coarse,
+                    r.rect,
+                    r.z,
+                    attrs,
+                    r.coverage,
+                );
             }
             Command::Line(l) => {
                 let ds = &scene.states[l.state as usize];
@@ -473,34 +482,110 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 let mut planes = [Plane::constant(0.0); MAX_ATTRS];
                 let count = ds.attr_count.min(n);
                 let d = &ds.draw_rect;
-                line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, coverage| {
-                    let rect = Rect {
-                        x0: r[0].max(d.x0 as i64) as i32,
-                        y0: r[1].max(d.y0 as i64) as i32,
-                        x1: r[2].min(d.x1 as i64) as i32,
-                        y1: r[3].min(d.y1 as i64) as i32,
-                    };
-                    if rect.is_empty() {
-                        return;
+                let clip = |r: [i64; 4]| Rect {
+                    x0: r[0].max(d.x0 as i64) as i32,
+                    y0: r[1].max(d.y0 as i64) as i32,
+                    x1: r[2].min(d.x1 as i64) as i32,
+                    y1: r[3].min(d.y1 as i64) as i32,
+                };
+                let rows = tile.side() as usize;
+                if line.uniform && rows <= MAX_SIDE {
+                    // Every fragment has the same values: the pixels of each row next to
+                    // each other are one span (the same values per pixel as one span per
+                    // fragment; a segment's fragments never share a pixel).
+                    let mut runs = [(0i32, 0i32); MAX_SIDE];
+                    let mut z_uniform = 0.0;
+                    line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, _| {
+                        let rect = clip(r).intersect(&tile.rect());
+                        if rect.is_empty() {
+                            return;
+                        }
+                        z_uniform = z;
+                        for (p, &v) in planes[..count].iter_mut().zip(a) {
+                            *p = Plane::constant(v as f64);
+                        }
+                        for y in rect.y0..rect.y1 {
+                            let run = &mut runs[(y - tile.y0) as usize];
+                            if run.0 < run.1 && run.1 == rect.x0 {
+                                run.1 = rect.x1;
+                                continue;
+                            }
+                            if run.0 < run.1 {
+                                let r = Rect {
+                                    x0: run.0,
+                                    y0: y,
+                                    x1: run.1,
+                                    y1: y + 1,
+                                };
+                                shade_rect(
+                                    ds,
+                                    tile,
+                                    &levels,
+                                    &mut coarse,
+                                    r,
+                                    z,
+                                    &planes[..count],
+                                    1.0,
+                                );
+                            }
+                            *run = (rect.x0, rect.x1);
+                        }
+                    });
+                    for (k, run) in runs[..rows].iter().enumerate() {
+                        if run.0 < run.1 {
+                            let y = tile.y0 + k as i32;
+                            let r = Rect {
+                                x0: run.0,
+                                y0: y,
+                                x1: run.1,
+                                y1: y + 1,
+                            };
+                            shade_rect(
+                                ds,
+                                tile,
+                                &levels,
+                                &mut coarse,
+                                r,
+                                z_uniform,
+                                &planes[..count],
+                                1.0,
+                            );
+                        }
                     }
-                    for (p, &v) in planes[..count].iter_mut().zip(a) {
-                        *p = Plane::constant(v as f64);
-                    }
-                    shade_rect(
-                        ds,
-                        tile,
-                        &levels,
-                        &mut coarse,
-                        rect,
-                        z,
-                        &planes[..count],
-                        coverage,
-                    );
-                });
+                    continue;
+                }
+                line.fragments(
+                    ends,
+                    major,
+                    minor,
+                    line.major_clip(ds),
+                    |r, z, a, coverage| {
+                        let rect = clip(r);
+                        if rect.is_empty() {
+                            return;
+                        }
+                        for (p, &v) in planes[..count].iter_mut().zip(a) {
+                            *p = Plane::constant(v as f64);
+                        }
+                        shade_rect(
+                            ds,
+                            tile,
+                            &levels,
+                            &mut coarse,
+                            rect,
+                            z,
+                            &planes[..count],
+                            coverage,
+                        );
+                    },
+                );
             }
         }
     }
 }
+
+/// The largest tile side (`framebuffer::TILE_SIZES`).
+const MAX_SIDE: usize = 128;
 
 /// Shades the pixels of `rect` (inside the draw rectangle) in `tile` with constant
 /// attributes: a point, a column of a line, or one pixel of an antialiased point or line.

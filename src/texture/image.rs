@@ -4,8 +4,8 @@
 use std::sync::Arc;
 
 use super::format::{InternalFormat, Storage};
-use crate::common::values::{TexPixelFormat, TexPixelType};
 use super::s3tc;
+use crate::common::values::{TexPixelFormat, TexPixelType};
 
 /// Texel components, unsigned normalised, `components` per texel, rows bottom to top, images
 /// (3D slices) front to back, borders included.
@@ -406,11 +406,9 @@ impl TexImage {
                 let to = $to;
                 match ty {
                     TexPixelType::UnsignedByte => block.fill($t, |b| to(b[0] as f32 / 255.0), &to),
-                    TexPixelType::Byte => block.fill(
-                        $t,
-                        |b| to((2.0 * (b[0] as i8) as f32 + 1.0) / 255.0),
-                        &to,
-                    ),
+                    TexPixelType::Byte => {
+                        block.fill($t, |b| to((2.0 * (b[0] as i8) as f32 + 1.0) / 255.0), &to)
+                    }
                     TexPixelType::UnsignedShort => block.fill(
                         $t,
                         |b| to(u16::from_ne_bytes([b[0], b[1]]) as f32 / 65535.0),
@@ -423,8 +421,10 @@ impl TexImage {
                     ),
                     TexPixelType::UnsignedInt => block.fill(
                         $t,
-                        |b| to((u32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as f64
-                            / u32::MAX as f64) as f32),
+                        |b| {
+                            to((u32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as f64
+                                / u32::MAX as f64) as f32)
+                        },
                         &to,
                     ),
                     TexPixelType::Int => block.fill(
@@ -448,14 +448,17 @@ impl TexImage {
             Texels::U8(t) => {
                 if ty == TexPixelType::UnsignedByte {
                     // A byte's value c / 255 stores as c again (`bytes_store_as_themselves`).
-                    block.fill(t, |b| b[0], &|v: f32| (clamp01(v) as f64 * 255.0 + 0.5) as u8);
+                    block.fill(t, |b| b[0], &|v: f32| {
+                        (clamp01(v) as f64 * 255.0 + 0.5) as u8
+                    });
                 } else {
                     by_type!(t, |v: f32| (clamp01(v) as f64 * 255.0 + 0.5) as u8)
                 }
             }
             Texels::U16(t) => by_type!(t, |v: f32| (clamp01(v) as f64 * 65535.0 + 0.5) as u16),
             Texels::U32(t) => {
-                by_type!(t, |v: f32| (clamp01(v) as f64 * u32::MAX as f64 + 0.5) as u32)
+                by_type!(t, |v: f32| (clamp01(v) as f64 * u32::MAX as f64 + 0.5)
+                    as u32)
             }
         }
         true
@@ -719,9 +722,7 @@ mod tests {
                                     img
                                 };
                                 let mut fast = image();
-                                assert!(
-                                    fast.store_converted(&data, &lay, origin, size, format, ty)
-                                );
+                                assert!(fast.store_converted(&data, &lay, origin, size, format, ty));
                                 let mut slow = image();
                                 slow.store_block(origin, size, |x, y, z| {
                                     let at = lay.start
