@@ -63,9 +63,9 @@ pub struct LineSetup {
     last: i64,
     stipple: Option<(u32, u16)>,
     start_counter: u32,
-    /// An aliased segment whose ends have the same z, 1/w and attributes: every fragment
-    /// then has the same values (the interpolation adds `t * 0`), so fragments next to each
-    /// other in a row may be shaded as one span.
+    /// The ends have the same z, 1/w and attributes: every fragment then has the same values
+    /// (the interpolation adds `t * 0`), so fragments of full coverage next to each other in
+    /// a row may be shaded as one span.
     pub uniform: bool,
 }
 
@@ -119,10 +119,7 @@ pub fn bin_line(
     if first > last {
         return;
     }
-    let uniform = matches!(kind, LineKind::Aliased { .. })
-        && v[0].z == v[1].z
-        && v[0].inv_w == v[1].inv_w
-        && attrs[0][..n] == attrs[1][..n];
+    let uniform = v[0].z == v[1].z && v[0].inv_w == v[1].inv_w && attrs[0][..n] == attrs[1][..n];
     let offset = scene.line_attrs.len() as u32;
     scene.line_attrs.extend_from_slice(&attrs[0][..n]);
     scene.line_attrs.extend_from_slice(&attrs[1][..n]);

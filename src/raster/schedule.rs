@@ -490,12 +490,12 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 };
                 let rows = tile.side() as usize;
                 if line.uniform && rows <= MAX_SIDE {
-                    // Every fragment has the same values: the pixels of each row next to
-                    // each other are one span (the same values per pixel as one span per
-                    // fragment; a segment's fragments never share a pixel).
+                    // Every fragment has the same values: the fully covered pixels of each
+                    // row next to each other are one span (the same values per pixel as one
+                    // span per fragment; a segment's fragments never share a pixel).
                     let mut runs = [(0i32, 0i32); MAX_SIDE];
                     let mut z_uniform = 0.0;
-                    line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, _| {
+                    line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, cov| {
                         let rect = clip(r).intersect(&tile.rect());
                         if rect.is_empty() {
                             return;
@@ -503,6 +503,12 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                         z_uniform = z;
                         for (p, &v) in planes[..count].iter_mut().zip(a) {
                             *p = Plane::constant(v as f64);
+                        }
+                        if cov != 1.0 {
+                            // An antialiased edge pixel: its own coverage.
+                            let p = &planes[..count];
+                            shade_rect(ds, tile, &levels, &mut coarse, rect, z, p, cov);
+                            return;
                         }
                         for y in rect.y0..rect.y1 {
                             let run = &mut runs[(y - tile.y0) as usize];
