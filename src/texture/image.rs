@@ -77,6 +77,8 @@ impl Converted<'_> {
             .iter()
             .map(|s| s.map_err(|v| constant(v)))
             .collect();
+        let in_order = c * self.elem == l.group
+            && (self.sources.iter().enumerate()).all(|(k, s)| *s == Ok(k * self.elem));
         for z in 0..n[2] {
             for y in 0..n[1] {
                 let src = l.start + z * l.image_stride + y * l.row_stride;
@@ -87,6 +89,13 @@ impl Converted<'_> {
                 ) else {
                     continue;
                 };
+                if in_order {
+                    // Each client component is the next stored one: one flat loop.
+                    for (d, b) in dst.iter_mut().zip(src.chunks_exact(self.elem)) {
+                        *d = value(b);
+                    }
+                    continue;
+                }
                 for (g, out) in src.chunks_exact(l.group).zip(dst.chunks_exact_mut(c)) {
                     for (d, s) in out.iter_mut().zip(&sources) {
                         *d = match *s {
