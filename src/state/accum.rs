@@ -101,16 +101,20 @@ impl Context {
     }
 }
 
+/// A row of colours (RGBA8) and a row of accumulation values.
+type Colors<'a> = &'a [[u8; 4]];
+type Accums<'a> = &'a [[i16; 4]];
+
 /// The row kernels of one `glAccum`: the AVX2 ones or their scalar twins, which store the same
 /// values (the same IEEE operations in the same order on every channel).
 #[derive(Clone, Copy)]
 struct Kernels {
     /// `GL_LOAD` (false) or `GL_ACCUM` (true) of a row of colours into accumulation values.
-    load: fn(&mut [[i16; 4]], &[[u8; 4]], f32, bool),
+    load: fn(&mut [[i16; 4]], Colors, f32, bool),
     /// `GL_MULT` (true) or `GL_ADD` (false) on a row of accumulation values.
     scale: fn(&mut [[i16; 4]], f32, bool),
     /// `GL_RETURN` of a row into colours, under the colour mask.
-    ret: fn(&mut [[u8; 4]], &[[i16; 4]], f32, [bool; 4]),
+    ret: fn(&mut [[u8; 4]], Accums, f32, [bool; 4]),
 }
 
 impl Kernels {

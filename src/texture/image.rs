@@ -72,11 +72,8 @@ impl Converted<'_> {
         let c = self.sources.len();
         let (o, n, l) = (self.origin, self.size, self.layout);
         let row_bytes = n[0] * l.group;
-        let sources: Vec<Result<usize, T>> = self
-            .sources
-            .iter()
-            .map(|s| s.map_err(|v| constant(v)))
-            .collect();
+        let sources: Vec<Result<usize, T>> =
+            self.sources.iter().map(|s| s.map_err(constant)).collect();
         let in_order = c * self.elem == l.group
             && (self.sources.iter().enumerate()).all(|(k, s)| *s == Ok(k * self.elem));
         for z in 0..n[2] {
