@@ -56,6 +56,7 @@ pub use api::enums;
 pub use api::types::*;
 pub use api::Gl;
 pub use framebuffer::{Framebuffer, FramebufferConfig};
+pub use raster::controls::SmoothPoints;
 pub use state::evaluators::MeshFill;
 pub use state::{Context, ContextConfig};
 

@@ -184,6 +184,38 @@ fn bad_input_fails_with_a_message_naming_the_call() {
     let _ = std::fs::remove_dir_all(&tmp);
 }
 
+/// The xscreensaver starwars capture (smooth points of sizes 0.5 to 3) matches Mesa with the
+/// replay's default (Mesa's full-colour discs) and not with `--spec-points` (the
+/// specification's coverage shades the discs' rims: 0.37 % of the pixels off).
+#[test]
+fn spec_points_switches_smooth_points_to_coverage() {
+    let dir = common::traces_root().join("corpus");
+    let run = |spec: bool| {
+        let mut c = tilegl();
+        c.arg("replay")
+            .arg(common::require(&dir.join("xss-starwars.trace")))
+            .arg("--compare")
+            .arg(common::require(&dir.join("xss-starwars.frames")));
+        if spec {
+            c.arg("--spec-points");
+        }
+        c.output().unwrap()
+    };
+    let default = run(false);
+    assert!(
+        default.status.success(),
+        "{}",
+        String::from_utf8_lossy(&default.stdout)
+    );
+    let spec = run(true);
+    assert_eq!(
+        spec.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&spec.stdout)
+    );
+}
+
 /// The evaluator teapot of tilegl's own capture matches Mesa with the replay's default
 /// (Mesa's triangle-strip meshes) and not with `--spec-meshes` (the specification's quad
 /// strips colour each flat-shaded quad once).

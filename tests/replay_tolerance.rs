@@ -2,7 +2,8 @@
 //! `tilegl replay --compare` and the capture tests), each against planted references:
 //! the llvmpipe-vs-softpipe spread widens the tolerance only up to a cap
 //! (`tilegl::compare::SPREAD_CAP`, 5 %), alpha is compared where the reference has it, and a
-//! reference that shows nothing drawn (every pixel black or the clear colour) fails.
+//! reference that shows nothing drawn (every pixel black or the clear colour) fails, unless the
+//! capture's `glRenderMode` results, replayed, equal the recorded ones.
 
 use std::path::{Path, PathBuf};
 
@@ -257,4 +258,61 @@ fn a_reference_showing_nothing_drawn_fails_and_one_drawn_colour_passes() {
     let r = script_against("red", red, uniform([255, 0, 0]));
     let p = &r.pictures[0];
     assert!(p.ok && p.note.is_empty(), "{}", p.line());
+}
+
+/// A program that draws only in feedback mode: a grey clear, one triangle fed back as GL_2D
+/// (a polygon token, its vertex count and three x, y pairs: 8 values), and the value count
+/// `glRenderMode` returned when it was recorded (`RECORDED`).
+fn feedback_script(recorded: i32) -> String {
+    format!(
+        "window(16, 8);\n\
+         glClearColor(0.5f, 0.5f, 0.5f, 1.0f);\n\
+         glClear(GL_COLOR_BUFFER_BIT);\n\
+         glFeedbackBuffer(16, GL_2D, {{0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}});\n\
+         glRenderMode(GL_FEEDBACK) = 0;\n\
+         glBegin(GL_TRIANGLES);\n\
+         glVertex2f(-0.5f, -0.5f);\n\
+         glVertex2f(0.5f, -0.5f);\n\
+         glVertex2f(0.0f, 0.5f);\n\
+         glEnd();\n\
+         glRenderMode(GL_RENDER) = {recorded};\n\
+         swap();\n"
+    )
+}
+
+/// The frame of `feedback_script`, a picture of the clear colour only, passes when the
+/// replayed `glRenderMode` results equal the recorded ones (the check of a program that draws
+/// in feedback mode), and fails, saying so, when one differs; with no result that counts
+/// something it is a reference of nothing drawn, which fails.
+#[test]
+fn render_mode_results_check_captures_that_draw_nothing() {
+    let grey = image::DynamicImage::ImageRgb8(image::RgbImage::from_pixel(
+        16,
+        8,
+        image::Rgb([128, 128, 128]),
+    ));
+    let frame_at = |script: String| script_against("feedback", &script, grey.clone());
+    let right = frame_at(feedback_script(8));
+    assert!(right.all_ok(), "{}", report_text(&right));
+    assert!(
+        right.pictures[0].note.contains("checked by 1 glRenderMode"),
+        "{}",
+        report_text(&right)
+    );
+    let wrong = frame_at(feedback_script(9));
+    assert!(!wrong.all_ok(), "{}", report_text(&wrong));
+    assert!(
+        wrong.pictures[0]
+            .note
+            .contains("1 of 2 glRenderMode results differ"),
+        "{}",
+        report_text(&wrong)
+    );
+    let nothing = frame_at(feedback_script(8).replace("glRenderMode(GL_RENDER) = 8;\n", ""));
+    assert!(!nothing.all_ok(), "{}", report_text(&nothing));
+    assert!(
+        nothing.pictures[0].note.contains("nothing drawn"),
+        "{}",
+        report_text(&nothing)
+    );
 }

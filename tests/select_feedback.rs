@@ -241,6 +241,51 @@ fn feedback_tokens_and_vertices() {
     assert_eq!(n as usize, expected.len());
 }
 
+/// A triangle of zero area (collinear vertices, or two equal) is still a primitive: feedback
+/// reports it, selection counts its hit (section 5.3: what would be rasterized), and the sign
+/// test of section 3.5.1 makes it back-facing (a = 0 is not positive), so culling back faces
+/// removes it and culling front faces keeps it.
+#[test]
+fn zero_area_triangles_are_back_facing_primitives() {
+    let tris: [[[f32; 2]; 3]; 2] = [
+        [[1.0, 2.0], [3.0, 4.0], [5.0, 6.0]],
+        [[10.0, 10.0], [10.0, 10.0], [20.0, 30.0]],
+    ];
+    let draw = |gl: &mut Context| {
+        for t in &tris {
+            gl.begin(GL_TRIANGLES);
+            for v in t {
+                gl.vertex_2f(v[0], v[1]);
+            }
+            gl.end();
+        }
+    };
+    let mut expected = Vec::new();
+    for t in &tris {
+        expected.extend([GL_POLYGON_TOKEN as f32, 3.0]);
+        expected.extend(t.iter().flatten());
+    }
+    for (cull, kept) in [(None, true), (Some(GL_BACK), false), (Some(GL_FRONT), true)] {
+        let mut gl = context();
+        if let Some(face) = cull {
+            gl.enable(GL_CULL_FACE);
+            gl.cull_face(face);
+        }
+        gl.feedback_buffer(64, GL_2D, NULL);
+        gl.render_mode(GL_FEEDBACK);
+        draw(&mut gl);
+        let n = gl.render_mode(GL_RENDER);
+        let want: &[f32] = if kept { &expected } else { &[] };
+        assert_eq!(gl.feedback_buffer_contents(), want, "cull {cull:?}");
+        assert_eq!(n as usize, want.len(), "cull {cull:?}");
+        gl.select_buffer(16, NULL);
+        gl.render_mode(GL_SELECT);
+        gl.push_name(3);
+        draw(&mut gl);
+        assert_eq!(gl.render_mode(GL_RENDER), kept as i32, "cull {cull:?}");
+    }
+}
+
 #[test]
 fn feedback_types_sizes_w_and_texture_coordinates() {
     for (ty, size) in [

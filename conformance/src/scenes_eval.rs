@@ -18,7 +18,39 @@ pub const EVAL_SCENES: &[Scene] = &[
     ),
     scene_128("eval_grid_meshes", eval_grid_meshes),
     scene_128("eval_other_targets", eval_other_targets),
+    // Mesa 22 draws this one wrongly (`known_failures::MESA_LESS_EXACT`).
+    scene_128("eval_coords_colour_in_a_list", eval_coords_colour_in_a_list),
 ];
+
+/// piglit `dlist-fdo31590`'s calls (section 5.4: a list's commands run as if issued in
+/// order): a display list holding `glBegin(GL_LINE_STRIP)`, `glColor3f(1, 1, 0)` and 31
+/// `glEvalCoord1f` of a cubic `MAP1_VERTEX_3`, called while the current colour is white: the
+/// strip is yellow, and so is the current colour afterwards, which a rectangle drawn after the
+/// call shows.
+fn eval_coords_colour_in_a_list(gl: &mut dyn Gl) {
+    clear(gl);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(-5.0, 5.0, -5.0, 5.0, -5.0, 5.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    let cubic = [
+        -4.0, -4.0, 0.0, -2.0, 4.0, 0.0, 2.0, -4.0, 0.0, 4.0, 4.0, 0.0f32,
+    ];
+    gl.map_1f(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 4, &cubic);
+    gl.enable(GL_MAP1_VERTEX_3);
+    gl.new_list(5, GL_COMPILE);
+    gl.begin(GL_LINE_STRIP);
+    gl.color_3f(1.0, 1.0, 0.0);
+    for i in 0..=30 {
+        gl.eval_coord_1f(i as f32 / 30.0);
+    }
+    gl.end();
+    gl.end_list();
+    gl.color_3f(1.0, 1.0, 1.0);
+    gl.call_list(5);
+    gl.rectf(3.0, -4.5, 4.5, -3.0);
+}
 
 const fn scene_128(name: &'static str, draw: fn(&mut dyn Gl)) -> Scene {
     let s = scene(name, draw);

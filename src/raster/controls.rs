@@ -3,12 +3,28 @@
 
 use crate::common::values::PolygonMode;
 
+/// How `GL_POINT_SMOOTH` points are drawn: not GL state, a choice of the context's owner
+/// ([`crate::Context::set_smooth_points`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SmoothPoints {
+    /// The specification's antialiasing (section 3.3.2): each pixel takes the share of its
+    /// square the point's disc covers, as coverage.
+    #[default]
+    Coverage,
+    /// As Mesa 22 draws them (llvmpipe and softpipe alike, measured): a disc without coverage,
+    /// every pixel whose centre lies within max(size / 2, 1) of the point's centre taking the
+    /// full colour. Replays of captures recorded on Mesa use it to give Mesa's pictures.
+    Discs,
+}
+
 /// Point, line and polygon rasterization controls of a draw (sections 3.3-3.5).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RasterDraw {
     /// `glPointSize`, before attenuation and clamping.
     pub point_size: f32,
     pub point_smooth: bool,
+    /// How `GL_POINT_SMOOTH` points are drawn (a choice of the context's owner).
+    pub smooth_points: SmoothPoints,
     /// `GL_POINT_SPRITE` on: the units whose texture coordinates the sprite replaces (bit per
     /// unit) and whether t runs down from the top (`GL_UPPER_LEFT`).
     pub point_sprite: Option<(u32, bool)>,

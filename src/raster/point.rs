@@ -9,7 +9,7 @@
 
 use glam::DVec4;
 
-use super::controls::RasterDraw;
+use super::controls::{RasterDraw, SmoothPoints};
 use super::scene::{Command, RectCommand, Scene};
 use super::setup::Plane;
 use super::setup::WindowVertex;
@@ -98,6 +98,21 @@ pub fn bin_point(
     // aliased one here).
     let [lo, hi] = limits::POINT_SIZE_RANGE;
     let radius = size.max(lo as f64).min(hi as f64) / 2.0;
+    if ds.raster.smooth_points == SmoothPoints::Discs {
+        // Mesa's smallest disc has radius 1 (measured: sizes up to 2 light the same pixels).
+        let r = radius.max(1.0);
+        let (px0, px1) = ((x - r).floor() as i64, (x + r).floor() as i64);
+        let (py0, py1) = ((y - r).floor() as i64, (y + r).floor() as i64);
+        let offset = add_constant_planes(attrs, scene);
+        for py in py0..=py1 {
+            for px in px0..=px1 {
+                if in_disc(x, y, r, px, py) {
+                    bin_rect(ds, state, [px, py, px + 1, py + 1], z, offset, 1.0, scene);
+                }
+            }
+        }
+        return;
+    }
     let (px0, px1) = ((x - radius).floor() as i64, (x + radius).floor() as i64);
     let (py0, py1) = ((y - radius).floor() as i64, (y + radius).floor() as i64);
     let offset = add_constant_planes(attrs, scene);
@@ -171,6 +186,13 @@ pub fn disc_coverage(cx: f64, cy: f64, r: f64, px: i64, py: i64) -> f32 {
     // A disc narrower than a pixel covers at most its own area.
     let full = (r * r * std::f64::consts::PI).min(1.0);
     ((r + 0.5 - dist).clamp(0.0, 1.0) * full) as f32
+}
+
+/// Whether the centre of pixel `(px, py)` lies in the disc at `(cx, cy)` of radius `r`
+/// ([`SmoothPoints::Discs`]).
+pub fn in_disc(cx: f64, cy: f64, r: f64, px: i64, py: i64) -> bool {
+    let (dx, dy) = (px as f64 + 0.5 - cx, py as f64 + 0.5 - cy);
+    dx * dx + dy * dy <= r * r
 }
 
 /// Stores `attrs` as constant planes; returns their offset.

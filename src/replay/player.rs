@@ -30,10 +30,11 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::api::enums::*;
 use crate::framebuffer::{ColorBuffer, FramebufferConfig};
+use crate::raster::controls::SmoothPoints;
 use crate::state::evaluators::MeshFill;
 use crate::state::{Context, ContextConfig};
 
-use super::dispatch::{dispatch, DispatchState};
+use super::dispatch::{dispatch, DispatchState, Outcome, Returned};
 use super::trace::{Call, TraceReader, Value};
 
 /// Framebuffer size of a context made current without a fake `glViewport` after it.
@@ -156,6 +157,30 @@ pub struct ReplayStats {
     pub without_context: u64,
     /// Size of the last window (framebuffer) used.
     pub size: Option<(i32, i32)>,
+    /// Results of the calls in [`CHECKED_RESULTS`], each beside the one the capture recorded.
+    pub results: Vec<ResultCheck>,
+}
+
+/// Calls whose result the capture records and tilegl must reproduce: `glRenderMode` returns
+/// the number of selection hits or feedback values, the only output of programs that draw in
+/// `GL_SELECT` or `GL_FEEDBACK` mode (their pictures show nothing drawn).
+pub const CHECKED_RESULTS: &[&str] = &["glRenderMode"];
+
+/// A call's result compared with the capture's.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ResultCheck {
+    pub call_no: u64,
+    pub name: String,
+    /// What the capture recorded (the program's GL returned it).
+    pub traced: i64,
+    /// What tilegl returned.
+    pub ours: i64,
+}
+
+impl ResultCheck {
+    pub fn matches(&self) -> bool {
+        self.traced == self.ours
+    }
 }
 
 impl ReplayStats {
@@ -175,6 +200,12 @@ impl ReplayStats {
         }
         for (w, n) in &self.warnings {
             out.push(format!("warning: {w} ({n}x)"));
+        }
+        for r in self.results.iter().filter(|r| !r.matches()) {
+            out.push(format!(
+                "{} at call {} returned {}, the capture {}",
+                r.name, r.call_no, r.ours, r.traced
+            ));
         }
         if self.without_context > 0 {
             out.push(format!(
@@ -240,6 +271,10 @@ pub struct Player {
     /// as the Mesa the captures were recorded with draws them (the specification's quad
     /// strips colour a flat-shaded quad once, Mesa's triangles twice).
     pub mesh_fill: MeshFill,
+    /// How the contexts draw `GL_POINT_SMOOTH` points: full-colour discs unless changed, as
+    /// the Mesa the captures were recorded with draws them (the specification's coverage
+    /// shades the discs' rims).
+    pub smooth_points: SmoothPoints,
 }
 
 /// The handle of the context made by [`Player::auto_window`].
@@ -292,6 +327,7 @@ impl Player {
             threads,
             auto_window: false,
             mesh_fill: MeshFill::TriangleStrips,
+            smooth_points: SmoothPoints::Discs,
         }
     }
 
@@ -327,6 +363,7 @@ impl Player {
             threads: self.threads,
         });
         ctx.set_mesh_fill(self.mesh_fill);
+        ctx.set_smooth_points(self.smooth_points);
         self.contexts.insert(handle, ctx);
         self.current = Some(handle);
         self.last = Some(handle);
@@ -458,8 +495,12 @@ impl Player {
                 return Ok(pictures);
             };
             let st = &mut self.dispatch;
+            let checked = CHECKED_RESULTS.contains(&name);
+            let mut returned = None;
             let result = catch_unwind(AssertUnwindSafe(|| {
-                dispatch(ctx, call, st);
+                if let Outcome::Called(Returned::Int(v)) = dispatch(ctx, call, st) {
+                    returned = Some(v);
+                }
                 // Errors are collected after each call (outside glBegin/glEnd, where
                 // glGetError itself would be an error); the trace's own glGetError calls
                 // therefore see no error, which replay does not rely on.
@@ -469,6 +510,16 @@ impl Player {
                     GL_NO_ERROR
                 }
             }));
+            if let (true, Some(ours), Some(traced)) =
+                (checked, returned, call.ret.as_ref().and_then(Value::as_i64))
+            {
+                self.stats.results.push(ResultCheck {
+                    call_no: call.no,
+                    name: name.to_string(),
+                    traced,
+                    ours,
+                });
+            }
             match result {
                 Ok(GL_NO_ERROR) => {}
                 Ok(e) => {

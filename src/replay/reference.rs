@@ -13,7 +13,13 @@
 //! A reference that shows nothing drawn fails whatever the replay shows: every pixel black, or
 //! every pixel the clear colour current at the snapshot. Such a picture cannot tell a working
 //! replay from one that draws nothing. (A reference of one other colour is a real check: piglit
-//! probes often fill the window with the one colour under test.)
+//! probes often fill the window with the one colour under test.) The exception is a capture
+//! whose output is not a picture: programs that draw in `GL_SELECT` or `GL_FEEDBACK` mode,
+//! where nothing drawn is Mesa's correct picture. Their check is the results of `glRenderMode`
+//! (hit and value counts) the capture recorded ([`super::player::CHECKED_RESULTS`]): a
+//! reference of nothing drawn passes when the results replayed up to the snapshot all match
+//! and at least one of them is not zero (counted something).
+//! A result that differs from the capture's fails every picture of the replay.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -421,13 +427,38 @@ pub fn compare_replay(
             Diff::total(rw, rh, tolerance.channel)
         };
         let mut ok = tolerance.accepts(&diff);
-        if let Some(why) = empty_reference(&ref_pixels, channels, Some(p.clear_color)) {
-            ok = false;
+        // Results up to the snapshot; a zero (entering a mode, or nothing counted) shows no
+        // work done, so only the others count as checks.
+        let results: Vec<_> = stats
+            .results
+            .iter()
+            .filter(|r| r.call_no <= p.call_no)
+            .collect();
+        let checked = results.iter().filter(|r| r.traced != 0).count();
+        let mismatched = results.iter().filter(|r| !r.matches()).count();
+        let mut add_note = |why: String| {
             note = if note.is_empty() {
                 why
             } else {
                 format!("{note}; {why}")
             };
+        };
+        if let Some(why) = empty_reference(&ref_pixels, channels, Some(p.clear_color)) {
+            if checked > 0 && mismatched == 0 {
+                add_note(format!(
+                    "nothing drawn, as in the reference; checked by {checked} glRenderMode results equal to the capture's"
+                ));
+            } else {
+                ok = false;
+                add_note(why);
+            }
+        }
+        if mismatched > 0 {
+            ok = false;
+            add_note(format!(
+                "{mismatched} of {} glRenderMode results differ from the capture's",
+                results.len()
+            ));
         }
         pictures.push(PictureResult {
             file: e.file.clone(),

@@ -781,6 +781,12 @@ impl Context {
         self.mesh_fill = fill;
     }
 
+    /// Chooses how `GL_POINT_SMOOTH` points are drawn (the specification's coverage unless
+    /// changed).
+    pub fn set_smooth_points(&mut self, points: crate::raster::controls::SmoothPoints) {
+        self.smooth_points = points;
+    }
+
     pub(crate) fn eval_point_1(&mut self, i: GLint) {
         let u = self.grid_u1(i);
         self.eval_coord1(u);

@@ -170,6 +170,8 @@ pub struct Context {
     pub(crate) eval: evaluators::EvalState,
     /// How `glEvalMesh2(GL_FILL)` connects the grid (not GL state).
     pub(crate) mesh_fill: evaluators::MeshFill,
+    /// How `GL_POINT_SMOOTH` points are drawn (not GL state).
+    pub(crate) smooth_points: crate::raster::controls::SmoothPoints,
 }
 
 impl Context {
@@ -260,6 +262,7 @@ impl Context {
             select: Default::default(),
             eval: Default::default(),
             mesh_fill: Default::default(),
+            smooth_points: Default::default(),
         }
     }
 

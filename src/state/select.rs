@@ -491,11 +491,10 @@ impl Context {
                         continue;
                     }
                     let xy: Vec<[i64; 2]> = poly.iter().map(|p| to_window(&ds, p).xy).collect();
-                    let area = signed_area2(&xy);
-                    if area == 0 {
-                        continue;
-                    }
-                    let front = is_front(area, ds.front_face);
+                    // A polygon of zero area is still a primitive (section 5.3 reports what
+                    // would be rasterized): back-facing, as the sign test of section 3.5.1
+                    // gives for a = 0 (Mesa reports and culls it so too).
+                    let front = is_front(signed_area2(&xy), ds.front_face);
                     if is_culled(ds.cull, front) {
                         continue;
                     }

@@ -289,6 +289,7 @@ impl Context {
         RasterDraw {
             point_size: r.point_size,
             point_smooth: r.point_smooth,
+            smooth_points: self.smooth_points,
             point_sprite: r
                 .point_sprite
                 .then_some((r.point_sprite_coord_replace, r.point_sprite_upper_left)),

@@ -481,7 +481,24 @@ fn state_selection_hits(gl: &mut dyn Gl, out: &mut Answers) {
     gl.vertex_2f(10.0, 30.0);
     gl.vertex_2f(30.0, 10.0);
     gl.end();
+    // Zero area: a hit, back-facing (culled by GL_BACK, kept by GL_FRONT).
+    gl.load_name(16);
+    for face in [GL_BACK, GL_FRONT] {
+        gl.cull_face(face);
+        gl.begin(GL_TRIANGLES);
+        gl.vertex_2f(1.0, 2.0);
+        gl.vertex_2f(3.0, 4.0);
+        gl.vertex_2f(5.0, 6.0);
+        gl.end();
+    }
+    gl.cull_face(GL_BACK);
     gl.disable(GL_CULL_FACE);
+    gl.load_name(17);
+    gl.begin(GL_TRIANGLES);
+    gl.vertex_2f(10.0, 10.0);
+    gl.vertex_2f(10.0, 10.0);
+    gl.vertex_2f(20.0, 30.0);
+    gl.end();
     // A quad clipped by the view volume's sides. (Not at the far plane: Mesa 22 converts a
     // window z of 1 to 2^32 in single precision and stores 0, where section 5.2 asks for
     // 2^32 - 1, which tilegl writes; `tests/select_feedback.rs` checks that case.)
@@ -572,6 +589,26 @@ fn state_feedback_buffer(gl: &mut dyn Gl, out: &mut Answers) {
         gl.color_3f(0.0, 1.0, 1.0);
         gl.vertex_3f(20.0, 50.0, -0.25);
         gl.end();
+        // Zero area (collinear, and two equal vertices): reported, as back-facing.
+        gl.begin(GL_TRIANGLES);
+        gl.vertex_2f(1.0, 2.0);
+        gl.vertex_2f(3.0, 4.0);
+        gl.vertex_2f(5.0, 6.0);
+        gl.vertex_2f(10.0, 10.0);
+        gl.vertex_2f(10.0, 10.0);
+        gl.vertex_2f(20.0, 30.0);
+        gl.end();
+        gl.enable(GL_CULL_FACE);
+        for face in [GL_BACK, GL_FRONT] {
+            gl.cull_face(face);
+            gl.begin(GL_TRIANGLES);
+            gl.vertex_2f(2.0, 1.0);
+            gl.vertex_2f(4.0, 3.0);
+            gl.vertex_2f(6.0, 5.0);
+            gl.end();
+        }
+        gl.cull_face(GL_BACK);
+        gl.disable(GL_CULL_FACE);
         gl.window_pos_2f(7.0, 9.0);
         gl.bitmap(0, 0, 0.0, 0.0, 2.0, 3.0, &[]);
         gl.draw_pixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, Some(&[0u8; 4]));

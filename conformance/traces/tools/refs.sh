@@ -2,6 +2,7 @@
 # Writes NAME.trace and NAME.frames/ (frames.tsv, llvmpipe PNGs, softpipe/ PNGs) into $OUT.
 # Run in the folder holding NAME.trace, points.py and bigwin.so (gcc -shared -fPIC -o bigwin.so bigwin.c -ldl).
 # refs.sh NAME KIND(piglit|swap) -> conformance/traces/NAME.trace + NAME.frames/
+# CALLS=N,M,... picks the snapshot calls instead of points.py / the last three swaps.
 set -e
 export DISPLAY=${DISPLAY:-:99} LIBGL_ALWAYS_SOFTWARE=1
 NAME=$1; KIND=$2; OUT=${OUT:-../conformance/traces}
@@ -9,9 +10,9 @@ mkdir -p $OUT
 T=$NAME.trace
 apitrace dump --color=never $T > $NAME.txt
 if [ $KIND = piglit ]; then
-  CALLS=$(python3 points.py $NAME.txt); PRE="LD_PRELOAD=$PWD/bigwin.so"
+  CALLS=${CALLS:-$(python3 points.py $NAME.txt)}; PRE="LD_PRELOAD=$PWD/bigwin.so"
 else
-  CALLS=$(grep -E '^[0-9]+ (egl|glX)SwapBuffers' $NAME.txt | tail -3 | cut -d' ' -f1 | paste -sd,); PRE=""
+  CALLS=${CALLS:-$(grep -E '^[0-9]+ (egl|glX)SwapBuffers' $NAME.txt | tail -3 | cut -d' ' -f1 | paste -sd,)}; PRE=""
 fi
 rm -rf snap-$NAME snap-$NAME-sp; mkdir snap-$NAME snap-$NAME-sp
 env $PRE apitrace replay -S $CALLS -s snap-$NAME/ $T > /dev/null 2>&1

@@ -64,6 +64,10 @@ enum Command {
         /// triangle strips Mesa draws (differs only for flat-shaded meshes).
         #[arg(long)]
         spec_meshes: bool,
+        /// Draw `GL_POINT_SMOOTH` points with the specification's coverage instead of the
+        /// full-colour discs Mesa draws.
+        #[arg(long)]
+        spec_points: bool,
     },
     /// Write an apitrace capture as a call script DIR/NAME.gl (large data in DIR/NAME.blobs/).
     Dump {
@@ -219,11 +223,17 @@ fn main() -> ExitCode {
             out,
             compare,
             spec_meshes,
+            spec_points,
         }) => {
             let mesh_fill = if spec_meshes {
                 tilegl::MeshFill::QuadStrips
             } else {
                 tilegl::MeshFill::TriangleStrips
+            };
+            let smooth_points = if spec_points {
+                tilegl::SmoothPoints::Coverage
+            } else {
+                tilegl::SmoothPoints::Discs
             };
             replay(
                 &file,
@@ -231,7 +241,7 @@ fn main() -> ExitCode {
                 &calls,
                 out.as_deref(),
                 compare.as_deref(),
-                mesh_fill,
+                (mesh_fill, smooth_points),
             )
         }
         Some(Command::Dump { file, out }) => dump(&file, &out),
@@ -399,7 +409,7 @@ fn replay(
     calls: &[u64],
     out: Option<&Path>,
     compare: Option<&Path>,
-    mesh_fill: tilegl::MeshFill,
+    (mesh_fill, smooth_points): (tilegl::MeshFill, tilegl::SmoothPoints),
 ) -> ExitCode {
     use tilegl::replay::player::{FrameSelection, Player, Want};
     let (mut reader, is_script) = match open_source(file) {
@@ -413,6 +423,7 @@ fn replay(
         let mut p = Player::new(0);
         p.auto_window = is_script;
         p.mesh_fill = mesh_fill;
+        p.smooth_points = smooth_points;
         p
     };
     if let Some(out) = out {
