@@ -1,9 +1,10 @@
 //! tilegl: an OpenGL 1.5 fixed-function driver emulated by a tile-based, multi-threaded
 //! software rasterizer.
 //!
-//! A draw flows through the modules in pipeline order: [`api`] (entry points, enum conversion,
-//! errors) -> [`state`] (the state machine and the frozen per-draw snapshot) -> [`vertex`]
-//! (transform) -> [`primitive`] (assembly, clipping, culling, viewport) -> [`raster`] (setup,
+//! A draw flows through the modules in pipeline order: [`api`] (the `Gl` trait and its entry
+//! points) -> [`state`] (the state machine, composing the frozen per-draw snapshot from each
+//! stage's part) -> [`gl`] (the GL vocabulary `api` and `state` speak: types, enums, their
+//! conversion, errors; no stage below uses it) -> [`vertex`] (transform) -> [`primitive`] (assembly, clipping, culling, viewport) -> [`raster`] (setup,
 //! binning into tiles, parallel tile shading) -> [`fragment`] (specialised span functions) ->
 //! [`texture`] (objects, formats, sampling) -> [`framebuffer`] (tiled buffers), each using only
 //! the modules after it; [`common`] (CPU features, limits, fixed point, rectangles, the typed
@@ -45,6 +46,7 @@ pub mod common;
 pub mod compare;
 pub mod fragment;
 pub mod framebuffer;
+pub mod gl;
 pub mod primitive;
 pub mod raster;
 pub mod replay;

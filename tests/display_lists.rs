@@ -72,7 +72,7 @@ fn lit_piece(gl: &mut dyn Gl) {
 }
 
 fn fresh() -> Context {
-    let mut gl = Context::new(48, 48);
+    let mut gl = client_context(48, 48);
     gl.clear_color(0.0, 0.1, 0.1, 1.0);
     gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl
@@ -470,7 +470,7 @@ const GL_EXECUTE_AND_COMPILE_BAD: GLenum = GL_COMPILE_AND_EXECUTE + 1;
 /// Mesa 22 draws it white, which is why the capture is a known failure.
 #[test]
 fn evaluated_strip_in_a_list_takes_the_lists_colour() {
-    let mut gl = Context::new(50, 50);
+    let mut gl = client_context(50, 50);
     gl.matrix_mode(GL_PROJECTION);
     gl.ortho(-5.0, 5.0, -5.0, 5.0, -5.0, 5.0);
     gl.matrix_mode(GL_MODELVIEW);
@@ -496,4 +496,13 @@ fn evaluated_strip_in_a_list_takes_the_lists_colour() {
         .collect();
     assert!(drawn.len() > 40, "only {} pixels drawn", drawn.len());
     assert!(drawn.iter().all(|p| *p == [255, 255, 0, 255]), "{drawn:?}");
+}
+
+/// A context that reads the client arrays and writes the buffers these tests name by address.
+fn client_context(width: i32, height: i32) -> Context {
+    let mut gl = Context::new(width, height);
+    // SAFETY: every `ClientPtr` these tests pass names a live local array or variable, valid
+    // for as long as the calls that read or write it, or an offset into a bound buffer object.
+    unsafe { tilegl::capi::client_memory::attach(&mut gl) };
+    gl
 }

@@ -22,7 +22,7 @@ fn integer(gl: &mut Context, pname: GLenum) -> i32 {
 
 /// A 64 x 64 context in which object x, y are window x, y and window z = (1 - z_obj) / 2.
 fn context() -> Context {
-    let mut gl = Context::new(64, 64);
+    let mut gl = client_context(64, 64);
     window_ortho(&mut gl);
     gl
 }
@@ -295,7 +295,7 @@ fn feedback_types_sizes_w_and_texture_coordinates() {
         (GL_3D_COLOR_TEXTURE, 11),
         (GL_4D_COLOR_TEXTURE, 12),
     ] {
-        let mut gl = Context::new(64, 64);
+        let mut gl = client_context(64, 64);
         gl.matrix_mode(GL_PROJECTION);
         gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
         gl.matrix_mode(GL_TEXTURE);
@@ -481,4 +481,13 @@ fn extreme_vertices_never_panic_in_either_mode() {
         assert!(n >= -1);
         assert_eq!(gl.get_error(), GL_NO_ERROR);
     }
+}
+
+/// A context that reads the client arrays and writes the buffers these tests name by address.
+fn client_context(width: i32, height: i32) -> Context {
+    let mut gl = Context::new(width, height);
+    // SAFETY: every `ClientPtr` these tests pass names a live local array or variable, valid
+    // for as long as the calls that read or write it, or an offset into a bound buffer object.
+    unsafe { tilegl::capi::client_memory::attach(&mut gl) };
+    gl
 }

@@ -4,7 +4,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use tilegl::enums::*;
-use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
+use tilegl::{ContextConfig, FramebufferConfig, Gl};
 
 use crate::c_route::CAbiContext;
 use crate::mesa::{self, MesaContext, Oracle, OracleError, OracleInfo};
@@ -152,7 +152,7 @@ pub fn render_tilegl(scene: &Scene) -> Rendered {
 /// Renders a scene on a fresh tilegl context shading with `threads` threads (0: one per core).
 pub fn render_tilegl_with_threads(scene: &Scene, threads: usize) -> Rendered {
     // The same buffers as the Mesa side: 24 depth, 8 stencil, 16 accumulation bits.
-    let mut ctx = Context::with_config(ContextConfig {
+    let mut ctx = crate::client_context(ContextConfig {
         width: scene.width,
         height: scene.height,
         framebuffer: FramebufferConfig {

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use tilegl::enums::*;
-use tilegl::{Context, Gl};
+use tilegl::Gl;
 
 use crate::compare::{self, diff, Image, Scene};
 use crate::mesa::{self, MesaContext, Oracle};
@@ -332,7 +332,11 @@ fn timed(gl: &mut dyn Gl, scene: &Scene) -> Duration {
 pub fn run_tilegl(scene: &Scene) -> Run {
     let mut time = Duration::MAX;
     for _ in 0..TIMED_RUNS {
-        let mut ctx = Context::new(scene.width, scene.height);
+        let mut ctx = crate::client_context(tilegl::ContextConfig {
+            width: scene.width,
+            height: scene.height,
+            ..Default::default()
+        });
         time = time.min(timed(&mut ctx, scene));
     }
     let (r, stages) = record(|| compare::render_tilegl(scene));

@@ -12,7 +12,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use tilegl::{Context, ContextConfig, FramebufferConfig, Gl};
+use tilegl::{ContextConfig, FramebufferConfig, Gl};
 
 use crate::compare::{diff, Image, Scene};
 use crate::example_support::{record, with_units, Stage};
@@ -284,7 +284,7 @@ fn render(entry: &Entry, size: (i32, i32), with: WithContext) -> Result<Pictures
 
 fn with_tilegl(threads: usize) -> impl FnMut(i32, i32, Job) -> Result<(), String> {
     move |w, h, f| {
-        let mut ctx = Context::with_config(ContextConfig {
+        let mut ctx = crate::client_context(ContextConfig {
             width: w,
             height: h,
             framebuffer: FramebufferConfig {

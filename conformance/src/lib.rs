@@ -21,7 +21,6 @@ pub mod scenes_arrays;
 pub mod scenes_cascade;
 pub mod scenes_eval;
 pub mod scenes_examples;
-pub mod scenes_extreme;
 pub mod scenes_extremes;
 pub mod scenes_fidelity;
 pub mod scenes_raster;
@@ -33,6 +32,18 @@ pub mod state_cases;
 pub mod tolerance;
 
 pub use compare::{Diff, Image, Scene};
+
+/// A tilegl context (Rust API) that reads the client arrays and writes the buffers the scenes
+/// and state cases name by address, as a C caller's context does.
+pub fn client_context(config: tilegl::ContextConfig) -> tilegl::Context {
+    let mut gl = tilegl::Context::with_config(config);
+    // SAFETY: every `ClientPtr` the scenes, state cases, examples and bench workloads pass
+    // names a live slice, static or local they keep for as long as the calls that read or
+    // write it (or is an offset into a bound buffer object), the GL client-memory contract.
+    unsafe { tilegl::capi::client_memory::attach(&mut gl) };
+    gl
+}
+
 pub use mesa::{MesaContext, Oracle, OracleError, OracleInfo};
 
 /// The environment variable that narrows a list test to the cases whose names contain its

@@ -490,7 +490,7 @@ fn time_frames(
 }
 
 pub(crate) fn tilegl_context(size: i32, threads: usize) -> Context {
-    Context::with_config(ContextConfig {
+    crate::client_context(ContextConfig {
         width: size,
         height: size,
         framebuffer: FramebufferConfig {

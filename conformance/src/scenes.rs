@@ -1009,7 +1009,6 @@ pub const SCENE_LISTS: &[(&str, &[Scene])] = &[
     ("evaluators", crate::scenes_eval::EVAL_SCENES),
     ("texenv cascade", crate::scenes_cascade::CASCADE_SCENES),
     ("fidelity", crate::scenes_fidelity::FIDELITY_SCENES),
-    ("extreme cases", crate::scenes_extreme::EXTREME_SCENES),
     ("extreme cases", crate::scenes_extremes::EXTREME_SCENES),
 ];
 

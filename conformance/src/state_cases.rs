@@ -11,7 +11,7 @@
 use std::fmt::Debug;
 use std::time::Instant;
 
-use tilegl::{Context, Gl};
+use tilegl::Gl;
 
 use crate::c_route::CAbiContext;
 use crate::known_failures;
@@ -151,7 +151,7 @@ fn timed<R>(f: impl FnOnce() -> R) -> (R, f64) {
 }
 
 /// Runs `script` on Mesa, on tilegl's Rust API and on tilegl's C ABI (64x64, the default
-/// buffers of [`Context::new`]) and compares: the two tilegl routes must answer identically;
+/// buffers of [`tilegl::Context::new`]) and compares: the two tilegl routes must answer identically;
 /// each of tilegl's answers is checked against Mesa's with `agree`.
 pub fn run_routes<T: Recorded>(
     name: &str,
@@ -160,7 +160,14 @@ pub fn run_routes<T: Recorded>(
 ) -> StateOutcome {
     let (t, t_ms) = timed(|| {
         let mut t = Vec::new();
-        script(&mut Context::new(SIZE, SIZE), &mut t);
+        script(
+            &mut crate::client_context(tilegl::ContextConfig {
+                width: SIZE,
+                height: SIZE,
+                ..Default::default()
+            }),
+            &mut t,
+        );
         t
     });
     let (c, c_ms) = timed(|| {

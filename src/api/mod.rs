@@ -1,12 +1,10 @@
-//! The GL API surface: types, generated enums and entry-point table, the `Gl` trait, enum
-//! conversion and the error flag.
+//! The GL API surface: the `Gl` trait (one method per GL 1.5 entry point, generated from the
+//! Khronos registry), the entry-point table, and `Context`'s implementation of the trait.
+//! The GL vocabulary (types, enums, their conversion, the error flag) is in `crate::gl`,
+//! re-exported here under its old paths.
 
-pub mod convert;
-pub mod enums;
-pub mod error;
-pub mod types;
-
-pub use types::*;
+pub use crate::gl::types::*;
+pub use crate::gl::{convert, enums, error, types};
 
 include!(concat!(env!("OUT_DIR"), "/commands.rs"));
 
@@ -47,3 +45,6 @@ pub fn command(name: &str) -> Option<&'static CommandInfo> {
     }
     COMMANDS.iter().find(|c| c.aliases.contains(&name))
 }
+
+// After the generated `gl_forward_all!` it uses (macros are in scope from their definition on).
+mod context;

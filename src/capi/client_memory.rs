@@ -18,10 +18,36 @@
 //! A null address is never dereferenced: reads give nothing, writes are skipped.
 
 use crate::api::types::ClientPtr;
+use crate::state::client_memory::ClientMemory;
+use crate::state::Context;
 
-/// Calls `f` with the `len` bytes at `ptr` (an empty slice for a null pointer or `len == 0`).
-pub(crate) fn with_client_bytes<R>(ptr: ClientPtr, len: usize, f: impl FnOnce(&[u8]) -> R) -> R {
-    with_client_bytes_from(ptr, 0, len, f)
+/// The memory of this process, read and written under the contract above.
+struct ProcessMemory;
+
+impl ClientMemory for ProcessMemory {
+    fn read(&self, base: ClientPtr, offset: usize, len: usize, f: &mut dyn FnMut(&[u8])) {
+        with_client_bytes_from(base, offset, len, f)
+    }
+
+    fn store_pointer(&self, dest: ClientPtr, value: usize) {
+        store_pointer(dest, value)
+    }
+
+    fn write(&self, dest: ClientPtr, bytes: &[u8]) {
+        write_client_bytes(dest, bytes)
+    }
+}
+
+/// Lets `ctx` read and write the process memory its `ClientPtr`s name. The C ABI's contexts
+/// get it when created; a Rust caller that hands `ClientPtr`s to the `Gl` trait calls this.
+///
+/// # Safety
+///
+/// The caller keeps the contract above for every `ClientPtr` it hands `ctx` from now on: the
+/// memory an address names is valid for what GL reads or writes there, for as long as GL
+/// uses it.
+pub unsafe fn attach(ctx: &mut Context) {
+    ctx.set_client_memory(&ProcessMemory);
 }
 
 /// Calls `f` with the `len` bytes `offset` bytes past `base` (a client array's start: the

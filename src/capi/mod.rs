@@ -2,7 +2,7 @@
 //! and `ForeignGl`, which drives another GL implementation (Mesa) through C function pointers.
 //! This is the only module with `unsafe` code.
 
-pub(crate) mod client_memory;
+pub mod client_memory;
 pub mod compsize;
 pub mod egl;
 pub mod foreign;

@@ -164,6 +164,15 @@ fn from_format(format: GLenum, p: &[u8]) -> [u8; 4] {
     }
 }
 
+/// A context that reads and writes the calling process's memory through its `ClientPtr`s.
+fn process_context(config: ContextConfig) -> Context {
+    let mut gl = Context::with_config(config);
+    // SAFETY: a C caller makes the GL client-memory promise (`client_memory`'s contract) for
+    // every pointer it passes the C entry points, which are the only way into this context.
+    unsafe { super::client_memory::attach(&mut gl) };
+    gl
+}
+
 impl OsMesaContext {
     /// A context of a window-system layer: no caller buffer; `present` runs at each flush
     /// point (`glFlush`, `glFinish`).
@@ -173,7 +182,7 @@ impl OsMesaContext {
         resize: fn(&mut Context),
     ) -> OsMesaContext {
         OsMesaContext {
-            gl: Context::with_config(config),
+            gl: process_context(config),
             format: OSMESA_RGBA,
             buffer: std::ptr::null_mut(),
             width: 0,
@@ -291,7 +300,7 @@ pub extern "C" fn OSMesaCreateContextExt(
         threads: 0,
     };
     let mut ctx = Box::new(OsMesaContext {
-        gl: Context::with_config(config),
+        gl: process_context(config),
         format,
         buffer: std::ptr::null_mut(),
         width: 0,

@@ -4,7 +4,7 @@ pub const MAX_MODELVIEW_STACK_DEPTH: usize = 32;
 pub const MAX_PROJECTION_STACK_DEPTH: usize = 4;
 pub const MAX_TEXTURE_STACK_DEPTH: usize = 4;
 /// User clip planes: 8, as Mesa reports (`GL_MAX_CLIP_PLANES`; the spec asks for at least
-/// 6). `api/convert.rs` accepts `GL_CLIP_PLANE0 + 0..8` to match.
+/// 6). `gl/convert.rs` accepts `GL_CLIP_PLANE0 + 0..8` to match.
 pub const MAX_CLIP_PLANES: usize = 8;
 pub const MAX_TEXTURE_UNITS: usize = 8;
 /// Largest viewport and framebuffer side.

@@ -52,7 +52,7 @@ pub struct FragmentKey {
     pub color_mask: [bool; 4],
     /// Add the secondary colour after texturing (section 3.9).
     pub color_sum: bool,
-    /// At least one texture unit applies (the units themselves are in the `DrawState`).
+    /// At least one texture unit applies (the units themselves are in the `FragmentDraw`).
     pub texturing: bool,
     /// Texturing is one unit that the fast 2D sampler handles
     /// (`BoundTexture::fast_2d`) under a `REPLACE` or `MODULATE` environment, with texels of
@@ -61,7 +61,7 @@ pub struct FragmentKey {
     /// Every texture unit may be sampled eight pixels at a time
     /// (`BoundTexture::simd_2d`): the general path's `span_sampled` form applies.
     pub simd_units: bool,
-    /// Fog, after the colour sum (parameters in the `DrawState`).
+    /// Fog, after the colour sum (parameters in the `FragmentDraw`).
     pub fog: Option<FogMode>,
     /// An occlusion query is active: count the fragments that pass the depth and stencil
     /// tests (only the general path counts, so draws without a query pay nothing).

@@ -3,6 +3,7 @@
 
 pub mod blend;
 pub mod cache;
+pub mod draw;
 pub mod fog;
 pub mod key;
 pub mod plane;

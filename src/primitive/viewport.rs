@@ -1,12 +1,26 @@
 //! Perspective division and the viewport transformation (section 2.11.1).
 
+use glam::DVec4;
+
 use super::clip::ClipVertex;
 use crate::common::fixed::to_fixed;
 pub use crate::raster::setup::WindowVertex;
-use crate::state::DrawState;
+
+/// The primitive stage's part of a draw's frozen state (built by `state::snapshot`).
+#[derive(Clone, Debug)]
+pub struct ViewportDraw {
+    /// Enabled user clip planes, in eye coordinates.
+    pub clip_planes: Vec<DVec4>,
+    /// Viewport mapping: window = ndc * scale + offset, per axis (z uses the depth range).
+    pub viewport_scale: [f64; 3],
+    pub viewport_offset: [f64; 3],
+    /// The guard band's side planes (`clip::guard_factors`) when both faces are filled, else
+    /// the view volume's (`clip::EXACT`).
+    pub guard: [f64; 2],
+}
 
 /// Divides by w and maps to the viewport. `v.pos.w` is positive (clipping guarantees it).
-pub fn to_window(ds: &DrawState, v: &ClipVertex) -> WindowVertex {
+pub fn to_window(ds: &ViewportDraw, v: &ClipVertex) -> WindowVertex {
     let inv_w = 1.0 / v.pos.w;
     let ndc = [v.pos.x * inv_w, v.pos.y * inv_w, v.pos.z * inv_w];
     let x = ndc[0] * ds.viewport_scale[0] + ds.viewport_offset[0];
@@ -26,7 +40,11 @@ pub fn to_window(ds: &DrawState, v: &ClipVertex) -> WindowVertex {
 /// four vertices at a time in f64 lanes: the same operations in the same order (IEEE
 /// arithmetic is exact per lane), so the same values; the scalar form costs about 130
 /// instructions a vertex, most of them the guard band's branches.
-pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option<WindowVertex>]) {
+pub fn guard_band_windows(
+    ds: &ViewportDraw,
+    clip: &[ClipVertex],
+    out: &mut [Option<WindowVertex>],
+) {
     let scalar = |c: &ClipVertex| {
         super::clip::in_guard_band(c, &ds.clip_planes, ds.guard).then(|| to_window(ds, c))
     };
@@ -52,7 +70,7 @@ pub fn guard_band_windows(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
-    use super::{ClipVertex, DrawState, WindowVertex};
+    use super::{ClipVertex, ViewportDraw, WindowVertex};
     use crate::common::fixed::SUBPIXEL;
     use std::arch::x86_64::*;
 
@@ -61,7 +79,11 @@ mod x86 {
     /// fixed-point coordinate beyond 32 bits (a viewport far from the origin), which the
     /// caller then computes one by one.
     #[target_feature(enable = "avx2")]
-    pub fn windows4(ds: &DrawState, clip: &[ClipVertex], out: &mut [Option<WindowVertex>]) -> bool {
+    pub fn windows4(
+        ds: &ViewportDraw,
+        clip: &[ClipVertex],
+        out: &mut [Option<WindowVertex>],
+    ) -> bool {
         let (add, sub, mul) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd);
         let ge = |a: __m256d, b: __m256d| _mm256_cmp_pd::<_CMP_GE_OQ>(a, b);
         let rows: [__m256d; 4] = std::array::from_fn(|k| {
@@ -220,7 +242,10 @@ mod tests {
                         let coord = |r: u64| match r % 9 {
                             0 => specials[(r >> 8) as usize % specials.len()],
                             // Near the guard band (g w) and the view volume (w).
-                            1 => w * ds.guard[0] * (1.0 + ((r >> 8) % 3) as f64 * 1e-16 - 1e-16),
+                            1 => {
+                                w * ds.viewport.guard[0]
+                                    * (1.0 + ((r >> 8) % 3) as f64 * 1e-16 - 1e-16)
+                            }
                             2 => -w,
                             _ => ((r >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0) * w * 3.0,
                         };
@@ -229,10 +254,10 @@ mod tests {
                     })
                     .collect();
                 let mut out = vec![None; len];
-                guard_band_windows(&ds, &clip, &mut out);
+                guard_band_windows(&ds.viewport, &clip, &mut out);
                 for (c, o) in clip.iter().zip(&out) {
-                    let expected = super::super::clip::in_guard_band(c, &[], ds.guard)
-                        .then(|| to_window(&ds, c));
+                    let expected = super::super::clip::in_guard_band(c, &[], ds.viewport.guard)
+                        .then(|| to_window(&ds.viewport, c));
                     assert_eq!(bits(o), bits(&expected), "{:?}", c.pos);
                 }
             }

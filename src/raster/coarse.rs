@@ -10,13 +10,13 @@
 //! The block maxima live with the worker shading one tile of one scene (the tile is its alone
 //! then), are computed on first use and forgotten for the blocks a command may write depth to.
 
+use super::draw::TileDraw;
 use super::setup::Plane;
 use crate::common::fixed::depth_to_fixed;
 use crate::common::rect::Rect;
 use crate::common::values::CompareFunc;
 use crate::fragment::key::FragmentKey;
 use crate::framebuffer::Tile;
-use crate::state::DrawState;
 
 /// Pixels per side of a block in a tile of the default side (the AVX2 maximum's shape).
 const BLOCK: usize = 8;
@@ -101,7 +101,7 @@ impl CoarseDepth {
     /// (Inlined, `rect` by value: built just before the call, it would otherwise be passed
     /// through memory and read back by wide loads its narrow stores cannot forward to.)
     #[inline(always)]
-    pub fn hides(&mut self, tile: &Tile, ds: &DrawState, z: &Plane, rect: Rect) -> bool {
+    pub fn hides(&mut self, tile: &Tile, ds: &TileDraw, z: &Plane, rect: Rect) -> bool {
         if !ds.coarse_depth || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
             return false;
         }
@@ -124,7 +124,7 @@ impl CoarseDepth {
             return false;
         }
         // depth_to_fixed does not decrease with z: no fragment is nearer than this.
-        let nearest = depth_to_fixed(zmin - margin, ds.depth_max);
+        let nearest = depth_to_fixed(zmin - margin, ds.fragment.depth_max);
         let mut blocks = Self::blocks(tile, rect);
         while blocks != 0 {
             let b = blocks.trailing_zeros() as usize;

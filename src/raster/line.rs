@@ -15,6 +15,7 @@
 //! once) with the counter the caller keeps across the segments of a strip or loop.
 //! Attributes are interpolated perspective-correctly along the line.
 
+use super::draw::TileDraw;
 use super::scene::{Command, LineCommand};
 use super::setup::WindowVertex;
 use crate::common::attr::MAX_ATTRS;
@@ -22,7 +23,6 @@ use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::common::rect::Rect;
 use crate::raster::scene::Scene;
-use crate::state::DrawState;
 
 /// Whether the stipple lets fragment number `counter` through.
 #[inline]
@@ -95,7 +95,7 @@ enum LineKind {
 /// `z_offset` is a polygon offset (edges of polygons in line mode); `stipple_counter` carries
 /// the stipple count from the previous segment of a strip.
 pub fn bin_line(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: [&WindowVertex; 2],
     attrs: [&[f32]; 2],
@@ -201,7 +201,7 @@ pub fn bin_line(
 /// its columns; `None` for a segment of zero length.
 #[allow(clippy::type_complexity)]
 fn plan_aliased(
-    ds: &DrawState,
+    ds: &TileDraw,
     v: [&WindowVertex; 2],
 ) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
     let s = SUBPIXEL as f64;
@@ -289,7 +289,7 @@ fn plan_aliased(
 /// Returns the set-up as [`plan_aliased`] does.
 #[allow(clippy::type_complexity)]
 fn plan_smooth(
-    ds: &DrawState,
+    ds: &TileDraw,
     v: [&WindowVertex; 2],
 ) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
     let s = SUBPIXEL as f64;
@@ -558,7 +558,7 @@ impl LineSetup {
     }
 
     /// The draw rectangle's major-axis bounds as the aliased rule clips columns.
-    pub fn major_clip(&self, ds: &DrawState) -> (f64, f64) {
+    pub fn major_clip(&self, ds: &TileDraw) -> (f64, f64) {
         let r = &ds.draw_rect;
         if self.x_major {
             (r.x0 as f64, r.x1 as f64 - 1.0)

@@ -4,6 +4,7 @@
 
 pub mod coarse;
 pub mod controls;
+pub mod draw;
 pub mod line;
 pub mod point;
 pub mod prefetch;

@@ -10,13 +10,13 @@
 use glam::DVec4;
 
 use super::controls::{RasterDraw, SmoothPoints};
+use super::draw::TileDraw;
 use super::scene::{Command, RectCommand, Scene};
 use super::setup::Plane;
 use super::setup::WindowVertex;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
 use crate::common::rect::Rect;
-use crate::state::DrawState;
 
 /// The derived point size for a vertex at eye position `eye` (section 3.3.1): `size *
 /// sqrt(1 / (a + b d + c d^2))`, clamped to the point-size range. Non-finite or non-positive
@@ -61,7 +61,7 @@ pub fn aliased_width(size: f64) -> i64 {
 /// Bins one point of derived size `size`; `z_offset` is a polygon offset (points of polygons
 /// drawn in point mode).
 pub fn bin_point(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: &WindowVertex,
     size: f64,
@@ -134,7 +134,7 @@ pub fn bin_point(
 /// size.
 #[allow(clippy::too_many_arguments)]
 fn bin_sprite(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     [x, y]: [f64; 2],
     z: f64,
@@ -207,7 +207,7 @@ pub(crate) fn add_constant_planes(attrs: &[f32], scene: &mut Scene) -> u32 {
 /// Records the pixels `[x0, x1) x [y0, y1)` (window coordinates, any size) with constant
 /// attributes, limited to the draw rectangle.
 pub(crate) fn emit_rect(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     r: [i64; 4],
     z: f64,
@@ -222,7 +222,7 @@ pub(crate) fn emit_rect(
     bin_rect(ds, state, r, z, offset, coverage, scene);
 }
 
-fn clip_to_draw_rect(ds: &DrawState, r: [i64; 4]) -> Option<Rect> {
+fn clip_to_draw_rect(ds: &TileDraw, r: [i64; 4]) -> Option<Rect> {
     let d = &ds.draw_rect;
     let rect = Rect {
         x0: r[0].max(d.x0 as i64) as i32,
@@ -235,7 +235,7 @@ fn clip_to_draw_rect(ds: &DrawState, r: [i64; 4]) -> Option<Rect> {
 
 /// Records a rectangle whose attribute planes are already stored at `attrs`.
 pub(crate) fn bin_rect(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     r: [i64; 4],
     z: f64,

@@ -1,14 +1,14 @@
 //! The deferred scene: commands recorded since the last flush, each binned into the screen
-//! tiles it touches. Every command refers to the `DrawState` frozen at its draw.
+//! tiles it touches. Every command refers to the `TileDraw` frozen at its draw.
 
 use std::sync::Arc;
 
+use super::draw::TileDraw;
 use super::line::LineSetup;
 use super::prefetch;
 use super::setup::{Edge, Plane};
 use crate::common::rect::Rect;
 use crate::framebuffer::Framebuffer;
-use crate::state::DrawState;
 
 /// A clear of part of the framebuffer.
 #[derive(Clone, Copy, Debug)]
@@ -76,7 +76,7 @@ impl TriangleCommand {
     /// How many planes the triangle has in `Scene::planes` (z, 1/w, the live attributes'),
     /// for its draw state `ds`.
     #[inline(always)]
-    pub fn plane_count(&self, ds: &DrawState) -> usize {
+    pub fn plane_count(&self, ds: &TileDraw) -> usize {
         2 + ds.live_attrs.count_ones() as usize - if self.constant_primary { 2 } else { 0 }
     }
 
@@ -135,7 +135,7 @@ pub enum Command {
 pub struct Scene {
     pub commands: Vec<Command>,
     pub bins: Vec<Vec<u32>>,
-    pub states: Vec<Arc<DrawState>>,
+    pub states: Vec<Arc<TileDraw>>,
     pub planes: Vec<Plane>,
     /// Line segments' set-ups and their end points' attributes.
     pub lines: Vec<LineSetup>,
@@ -175,7 +175,7 @@ impl Scene {
     }
 
     /// Index of `ds` in the state table (reused when it is the last one added).
-    pub fn add_state(&mut self, ds: &Arc<DrawState>) -> u32 {
+    pub fn add_state(&mut self, ds: &Arc<TileDraw>) -> u32 {
         if let Some(last) = self.states.last() {
             if Arc::ptr_eq(last, ds) {
                 return (self.states.len() - 1) as u32;

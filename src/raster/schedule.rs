@@ -16,11 +16,10 @@ use super::tri::{raster_triangle, AttrScratch};
 use crate::common::attr::MAX_ATTRS;
 use crate::common::rect::Rect;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
-use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
-use crate::state::Context;
+use crate::framebuffer::{ColorBuffer, Tile};
 
 /// Recorded commands after which a draw hands the scene to the shading workers and goes on
-/// recording the next one (see `Context::flush_in_background`).
+/// recording the next one (see `state::flush`).
 pub const BACKGROUND_COMMANDS: usize = 1 << 12;
 
 /// Recorded commands after which a draw hands the scene over early, when no worker has tiles
@@ -31,22 +30,22 @@ pub const EARLY_BACKGROUND_COMMANDS: usize = 1 << 9;
 /// thread shades queued tiles (or waits for one) before recording more; each scene is about
 /// a megabyte, and a worker stalled on one tile (a descheduled thread) holds back only that
 /// tile's later scenes until then.
-const MAX_SCENES_IN_FLIGHT: usize = 6;
+pub(crate) const MAX_SCENES_IN_FLIGHT: usize = 6;
 
-/// Background shading (see `Context::flush_in_background`): the framebuffer's tiles, each
+/// Background shading (see `state::flush`): the framebuffer's tiles, each
 /// with the handed-off scenes still to be shaded in it, in order. A tile is shaded by one
 /// thread at a time, its scenes one after the other, so every tile sees its commands in
 /// submission order; different tiles (and a tile's later scenes) go on while another tile is
 /// in progress, so no thread waits for another's tile except at a flush point.
 pub(crate) struct InFlight {
-    shared: Arc<Background>,
+    pub(crate) shared: Arc<Background>,
     /// The colour buffer the tiles hold.
-    buffer: ColorBuffer,
+    pub(crate) buffer: ColorBuffer,
 }
 
 /// What the background workers and the caller share while tiles are away from the
 /// framebuffer.
-struct Background {
+pub(crate) struct Background {
     tiles: Vec<TileSlot>,
     /// Tiles with queued scenes and nobody shading them (each at most once).
     ready: Mutex<std::collections::VecDeque<usize>>,
@@ -78,8 +77,8 @@ fn thread_token() -> usize {
 /// Scenes that were shaded everywhere, reset for reuse, and the count of those in flight.
 #[derive(Default)]
 pub(crate) struct Recycle {
-    scenes: Mutex<Vec<Scene>>,
-    in_flight: AtomicUsize,
+    pub(crate) scenes: Mutex<Vec<Scene>>,
+    pub(crate) in_flight: AtomicUsize,
 }
 
 impl Recycle {
@@ -106,14 +105,14 @@ impl Drop for SceneJob {
     }
 }
 
-fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+pub(crate) fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     // A panic while shading is caught where it happens; its tile keeps the pixels as far as
     // they got.
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
 impl Background {
-    fn new(tiles: Vec<Tile>, recycle: Arc<Recycle>) -> Background {
+    pub(crate) fn new(tiles: Vec<Tile>, recycle: Arc<Recycle>) -> Background {
         Background {
             tiles: tiles
                 .into_iter()
@@ -131,7 +130,7 @@ impl Background {
     }
 
     /// Queues `scene` on the tiles it has commands for, the busiest first.
-    fn enqueue(&self, scene: Scene) {
+    pub(crate) fn enqueue(&self, scene: Scene) {
         let mut order: Vec<usize> = (0..self.tiles.len())
             .filter(|&t| scene.bins.get(t).is_some_and(|b| !b.is_empty()))
             .collect();
@@ -153,7 +152,7 @@ impl Background {
     }
 
     /// Shades queued tiles until none is ready.
-    fn shade_ready(&self) {
+    pub(crate) fn shade_ready(&self) {
         let me = thread_token();
         // `take_ready` releases the lock before the tile is shaded.
         while let Some(t) = self.take_ready(me) {
@@ -200,185 +199,17 @@ impl Background {
         self.caller.unpark();
     }
 
-    /// Whether no tile waits for a thread.
-    fn nothing_ready(&self) -> bool {
-        lock(&self.ready).is_empty()
-    }
-}
-
-impl Context {
-    /// Finishes background shading (if any), shading queued tiles on this thread too, and
-    /// puts the tiles back into the framebuffer.
-    pub(crate) fn join_background(&mut self) {
-        let Some(flight) = self.in_flight.take() else {
-            return;
-        };
-        let shared = flight.shared;
-        loop {
-            shared.shade_ready();
-            if self.recycle.in_flight.load(Ordering::Acquire) == 0 {
-                break;
-            }
-            // A worker is on a tile: woken when it is done (or soon anyway).
-            std::thread::park_timeout(std::time::Duration::from_micros(200));
-        }
-        // Every scene is shaded; a worker may still be leaving a tile, so take each under
-        // its lock. Workers that start later find nothing ready and touch no tile.
-        self.framebuffer.tiles = shared
-            .tiles
+    /// Takes every tile's pixels (each under its lock: a worker may still be leaving it).
+    pub(crate) fn take_tiles(&self) -> Vec<Tile> {
+        self.tiles
             .iter()
             .map(|slot| std::mem::take(&mut *lock(&slot.pixels)))
-            .collect();
-        if self.spare_scene.is_none() {
-            self.spare_scene = lock(&self.recycle.scenes).pop();
-        }
+            .collect()
     }
 
-    /// When the scene has grown past [`BACKGROUND_COMMANDS`] and several workers shade, hands
-    /// it to the workers and starts a new one, so that the caller's thread (vertex
-    /// processing, clipping, binning) and the tile shading overlap; at the next hand-off the
-    /// caller first shades the tiles nobody has taken yet instead of leaving them waiting
-    /// (measured: spheremap 2T 13.0-14.6 -> 12.1-12.3 ms, sprites 3 % faster, the other
-    /// workloads unchanged; keeping one worker out while the caller records was 5 % slower on
-    /// `triangles`), but never waits for a tile another thread is shading. Each tile replays
-    /// its scenes in order, so pictures do not change. A single worker (`threads` = 1) keeps
-    /// flushing synchronously, so "one thread" means one.
-    #[inline]
-    pub(crate) fn flush_in_background(&mut self) {
-        // Checked for every primitive: the hand-off itself is rare and stays out of line.
-        if self.shading_threads < 2 {
-            return;
-        }
-        let n = self.scene.commands.len();
-        if n >= BACKGROUND_COMMANDS
-            || (n >= EARLY_BACKGROUND_COMMANDS
-                && n.is_multiple_of(EARLY_BACKGROUND_COMMANDS)
-                && self.workers_waiting())
-        {
-            self.hand_off_scene();
-        }
-    }
-
-    /// Whether no tile is waiting for a background worker (or there is no background work).
-    fn workers_waiting(&self) -> bool {
-        self.in_flight
-            .as_ref()
-            .is_none_or(|f| f.shared.nothing_ready())
-    }
-
-    /// [`Context::flush_in_background`] past its threshold (with at least two shading
-    /// threads).
-    #[inline(never)]
-    fn hand_off_scene(&mut self) {
-        let workers = self.shading_threads;
-        let DrawTarget::One(buffer) = self.framebuffer.draw else {
-            return;
-        };
-        if self.in_flight.as_ref().is_some_and(|f| f.buffer != buffer) {
-            self.join_background();
-        }
-        let shared = match &self.in_flight {
-            Some(f) => {
-                // Tiles nobody has taken yet: shaded here rather than left waiting.
-                f.shared.shade_ready();
-                Arc::clone(&f.shared)
-            }
-            None => {
-                self.framebuffer.make_resident(buffer);
-                let tiles = std::mem::take(&mut self.framebuffer.tiles);
-                let shared = Arc::new(Background::new(tiles, Arc::clone(&self.recycle)));
-                self.in_flight = Some(InFlight {
-                    shared: Arc::clone(&shared),
-                    buffer,
-                });
-                shared
-            }
-        };
-        // Bounded memory: past the cap, shade (or wait for) tiles until a scene is done.
-        while self.recycle.in_flight.load(Ordering::Acquire) >= MAX_SCENES_IN_FLIGHT {
-            shared.shade_ready();
-            if self.recycle.in_flight.load(Ordering::Acquire) >= MAX_SCENES_IN_FLIGHT {
-                std::thread::park_timeout(std::time::Duration::from_micros(200));
-            }
-        }
-        let next = match self
-            .spare_scene
-            .take()
-            .or_else(|| lock(&self.recycle.scenes).pop())
-        {
-            Some(s) => s,
-            None => Scene::new(&self.framebuffer),
-        };
-        let scene = std::mem::replace(&mut self.scene, next);
-        shared.enqueue(scene);
-        for _ in 0..workers {
-            let shared = Arc::clone(&shared);
-            let job = move || shared.shade_ready();
-            match &self.pool {
-                Some(p) => p.spawn(job),
-                None => rayon::spawn(job),
-            }
-        }
-    }
-
-    /// Executes all recorded work. Called at every flush point (`glFinish`, `glFlush`,
-    /// `glReadPixels`, framebuffer access, scene memory cap).
-    pub(crate) fn flush_scene(&mut self) {
-        self.join_background();
-        if self.scene.is_empty() {
-            return;
-        }
-        let fb = &mut self.framebuffer;
-        let scene = &self.scene;
-        let pool = &self.pool;
-        // One shading thread: this one. Handing the scene to the pool's thread would move it
-        // (and the tiles) to whichever core that thread runs on, which costs a tenth of the
-        // frame when the cores are far apart (see `shade_here`).
-        let one_thread = self.shading_threads < 2;
-        let shade = |tiles: &mut [Tile]| match pool {
-            _ if one_thread => shade_here(scene, tiles),
-            Some(pool) => pool.install(|| shade_all(scene, tiles)),
-            None => shade_all(scene, tiles),
-        };
-        match fb.draw {
-            DrawTarget::One(buffer) => {
-                fb.make_resident(buffer);
-                shade(&mut fb.tiles);
-            }
-            DrawTarget::None => {
-                // Depth and stencil are still written; the colour is put back afterwards.
-                let saved: Vec<Vec<[u8; 4]>> = fb.tiles.iter().map(|t| t.color.clone()).collect();
-                shade(&mut fb.tiles);
-                for (tile, color) in fb.tiles.iter_mut().zip(saved) {
-                    tile.color = color;
-                }
-            }
-            DrawTarget::Both => {
-                // Each colour buffer gets the same fragments and blends with its own content.
-                // Depth and stencil results do not depend on the colour buffer, so the second
-                // pass starts from the same depth/stencil as the first and ends identically.
-                let saved: Vec<(Vec<u32>, Vec<u8>)> = fb
-                    .tiles
-                    .iter()
-                    .map(|t| (t.depth.clone(), t.stencil.clone()))
-                    .collect();
-                fb.make_resident(ColorBuffer::Back);
-                shade(&mut fb.tiles);
-                for (tile, (depth, stencil)) in fb.tiles.iter_mut().zip(saved) {
-                    tile.depth = depth;
-                    tile.stencil = stencil;
-                }
-                // Occlusion queries count the fragments once, not once per buffer.
-                let counted: Vec<u64> = fb.tiles.iter().map(|t| t.samples_passed).collect();
-                fb.make_resident(ColorBuffer::Front);
-                shade(&mut fb.tiles);
-                for (tile, n) in fb.tiles.iter_mut().zip(counted) {
-                    tile.samples_passed = n;
-                }
-                fb.make_resident(ColorBuffer::Back);
-            }
-        }
-        self.scene.reset();
+    /// Whether no tile waits for a thread.
+    pub(crate) fn nothing_ready(&self) -> bool {
+        lock(&self.ready).is_empty()
     }
 }
 
@@ -388,7 +219,7 @@ impl Context {
 /// development VM, whose two virtual CPUs are at times placed far apart, with a cache line's
 /// round trip between them at 400 ns instead of 100, that made spheremap 1T 21.6 ms instead of
 /// 18.7; the same time otherwise.)
-fn shade_here(scene: &Scene, tiles: &mut [Tile]) {
+pub(crate) fn shade_here(scene: &Scene, tiles: &mut [Tile]) {
     for (tile, bin) in tiles.iter_mut().zip(&scene.bins) {
         if !bin.is_empty() {
             shade_tile(scene, bin, tile);
@@ -396,7 +227,7 @@ fn shade_here(scene: &Scene, tiles: &mut [Tile]) {
     }
 }
 
-fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
+pub(crate) fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
     // The busiest tiles first, each its own task: the workers finish the scene together
     // instead of one waiting for the other's last large tile (scenes are shaded one after
     // the other, so that wait is paid at every background hand-off).
@@ -437,7 +268,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Line(l) => Some(l.state),
         };
         if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
-            levels.prepare(&scene.states[state as usize]);
+            levels.prepare(&scene.states[state as usize].fragment);
             levels_state = Some(state);
         }
         match command {
@@ -455,7 +286,7 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     continue;
                 }
                 raster_triangle(t, ds, planes, &levels, &mut attrs, tile);
-                if ds.key.depth_write {
+                if ds.fragment.key.depth_write {
                     coarse.forget(tile, t.bbox());
                 }
             }
@@ -598,7 +429,7 @@ const MAX_SIDE: usize = 128;
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn shade_rect(
-    ds: &crate::state::DrawState,
+    ds: &super::draw::TileDraw,
     tile: &mut Tile,
     levels: &UnitLevels,
     coarse: &mut CoarseDepth,
@@ -617,7 +448,7 @@ fn shade_rect(
         coverage,
         shared: &shared,
     };
-    if ds.key.depth_write {
+    if ds.fragment.key.depth_write {
         coarse.forget(tile, rect);
     }
     let t = tile.side();
@@ -625,7 +456,7 @@ fn shade_rect(
     let (y0, y1) = (rect.y0.max(tile.y0), rect.y1.min(tile.y0 + t));
     if x0 < x1 {
         for y in y0..y1 {
-            (ds.span)(ds, tile, y, x0, x1, &it);
+            (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
         }
     }
 }

@@ -1,12 +1,12 @@
 //! Triangle traversal within one tile: for each row, the covered interval is solved from the
 //! three edge functions directly (triangles are convex), then handed to the span function.
 
+use super::draw::TileDraw;
 use super::scene::TriangleCommand;
 use super::setup::{Edge, Plane};
 use crate::common::fixed::SUBPIXEL;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::Tile;
-use crate::state::DrawState;
 
 /// A triangle's attribute planes spread over the draw's attribute layout (zero where an
 /// attribute is not live), reused from triangle to triangle of a tile: while the live set
@@ -59,11 +59,11 @@ impl AttrScratch {
 }
 
 /// Shades the part of triangle `t` inside `tile`; `planes` are its window-z plane, its 1/w
-/// plane and the planes of the draw's live attributes (`DrawState::live_attrs`), which are
+/// plane and the planes of the draw's live attributes (`TileDraw::live_attrs`), which are
 /// spread over `scratch` (the others zero) unless every attribute is live.
 pub fn raster_triangle<'a>(
     t: &TriangleCommand,
-    ds: &'a DrawState,
+    ds: &'a TileDraw,
     planes: &'a [Plane],
     levels: &'a UnitLevels<'a>,
     scratch: &'a mut AttrScratch,
@@ -127,7 +127,7 @@ pub fn raster_triangle<'a>(
         }
         (lo < hi).then_some((lo as i32, hi as i32))
     };
-    match (&ds.raster.polygon_stipple, ds.span_pair) {
+    match (&ds.raster.polygon_stipple, ds.fragment.span_pair) {
         (None, Some(pair)) => {
             // Rows in pairs (even y first), gathered for one call of the pair function, which
             // then prepares what does not depend on the rows once per triangle (a tile has at
@@ -152,18 +152,18 @@ pub fn raster_triangle<'a>(
                     (Some(a), None) if a.1 - a.0 <= 4 => Some([a, EMPTY]),
                     (None, Some(b)) if b.1 - b.0 <= 4 => Some([EMPTY, b]),
                     (Some((x0, x1)), None) => {
-                        (ds.span)(ds, tile, y, x0, x1, &it);
+                        (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
                         None
                     }
                     (None, Some((x0, x1))) => {
-                        (ds.span)(ds, tile, y + 1, x0, x1, &it);
+                        (ds.fragment.span)(&ds.fragment, tile, y + 1, x0, x1, &it);
                         None
                     }
                     (None, None) => None,
                 };
                 if let Some(rows) = rows {
                     if n == pairs.len() {
-                        pair(ds, tile, &pairs, &it);
+                        pair(&ds.fragment, tile, &pairs, &it);
                         n = 0;
                     }
                     pairs[n] = (y, rows);
@@ -172,13 +172,13 @@ pub fn raster_triangle<'a>(
                 y += 2;
             }
             if n > 0 {
-                pair(ds, tile, &pairs[..n], &it);
+                pair(&ds.fragment, tile, &pairs[..n], &it);
             }
         }
         (None, None) => {
             for y in y_lo..y_hi {
                 if let Some((x0, x1)) = row_interval(y) {
-                    (ds.span)(ds, tile, y, x0, x1, &it);
+                    (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
                 }
             }
         }
@@ -197,7 +197,7 @@ pub fn raster_triangle<'a>(
 /// its centre to the three edges; runs of full coverage are shaded as spans.
 fn smooth_rows<'a>(
     edges: &[Edge; 3],
-    ds: &'a DrawState,
+    ds: &'a TileDraw,
     it: &Interpolants<'a>,
     tile: &mut Tile,
     [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
@@ -228,7 +228,7 @@ fn smooth_rows<'a>(
                 while x < x_hi && coverage(x as f64 + 0.5, yc) >= 1.0 {
                     x += 1;
                 }
-                (ds.span)(ds, tile, y, start, x, it);
+                (ds.fragment.span)(&ds.fragment, tile, y, start, x, it);
                 continue;
             }
             if cov > 0.0 {
@@ -236,7 +236,7 @@ fn smooth_rows<'a>(
                     coverage: cov,
                     ..*it
                 };
-                (ds.span)(ds, tile, y, x, x + 1, &edge);
+                (ds.fragment.span)(&ds.fragment, tile, y, x, x + 1, &edge);
             }
             x += 1;
         }
@@ -245,7 +245,7 @@ fn smooth_rows<'a>(
 
 /// Polygon stipple (section 3.5.6): only the runs of pixels whose stipple bit is set.
 fn stippled_row<'a>(
-    ds: &'a DrawState,
+    ds: &'a TileDraw,
     tile: &mut Tile,
     y: i32,
     lo: i32,
@@ -265,7 +265,7 @@ fn stippled_row<'a>(
             x += 1;
         }
         if start < x {
-            (ds.span)(ds, tile, y, start, x, it);
+            (ds.fragment.span)(&ds.fragment, tile, y, start, x, it);
         }
     }
 }
@@ -292,7 +292,7 @@ pub fn depth_plane(v: [&WindowVertex; 3]) -> Option<Plane> {
 /// Sets up one triangle (any winding; facing was decided before) and bins it, its depth moved
 /// by the polygon offset when `GL_POLYGON_OFFSET_FILL` is on (section 3.5.5).
 pub fn bin_triangle(
-    ds: &DrawState,
+    ds: &TileDraw,
     state: u32,
     v: [&WindowVertex; 3],
     attrs: [&[f32]; 3],
@@ -339,7 +339,7 @@ pub fn bin_triangle(
     let inv_det = (s * s) / area2.unsigned_abs() as f64;
     let mut z = Plane::through(p, [v[0].z, v[1].z, v[2].z], inv_det);
     if let Some(o) = &ds.raster.offset {
-        z.c += o.for_plane(PolygonMode::Fill, z.a, z.b, ds.depth_max);
+        z.c += o.for_plane(PolygonMode::Fill, z.a, z.b, ds.fragment.depth_max);
     }
     // 1/w and the attributes are interpolated over the unsnapped positions (as Mesa does):
     // snapping moves a vertex by up to half a sub-pixel, which tilts the planes of long thin
@@ -360,7 +360,7 @@ pub fn bin_triangle(
     // Every attribute is interpolated perspective-correctly (as attribute/w). Under flat
     // shading the colours are constant: their planes are the 1/w plane scaled by the provoking
     // vertex's value (every vertex already carries it), so dividing by 1/w gives it back.
-    // Only the attributes the fragment stage reads get planes (`DrawState::live_attrs`).
+    // Only the attributes the fragment stage reads get planes (`TileDraw::live_attrs`).
     let w = [v[0].inv_w, v[1].inv_w, v[2].inv_w];
     let (a0, a1, a2) = (&attrs[0][..n], &attrs[1][..n], &attrs[2][..n]);
     // A primary colour that is the same at the three vertices (lighting off, one glColor, or

@@ -364,6 +364,9 @@ impl Player {
         });
         ctx.set_mesh_fill(self.mesh_fill);
         ctx.set_smooth_points(self.smooth_points);
+        // SAFETY: the replayer hands the context the addresses of bytes it keeps alive for
+        // as long as GL may use them (`dispatch::DispatchState`'s retained arrays and buffers).
+        unsafe { crate::capi::client_memory::attach(&mut ctx) };
         self.contexts.insert(handle, ctx);
         self.current = Some(handle);
         self.last = Some(handle);

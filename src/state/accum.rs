@@ -9,12 +9,12 @@
 use rayon::prelude::*;
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::fixed::color_to_u8;
 use crate::common::rect::Rect;
 use crate::common::values::AccumOp;
 use crate::framebuffer::Framebuffer;
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// Scale of the fixed-point accumulation values.
 const ACCUM_ONE: f32 = 32767.0;

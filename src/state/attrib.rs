@@ -12,9 +12,9 @@ use glam::DVec4;
 use super::tables::{limits, ClearValues, CurrentValues, FragmentOpsState, Hints, RasterState};
 use super::tables::{TransformState, Viewport};
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{AttribGroups, MatrixMode, MultisampleCap};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// Multisample state (table 6.x "multisample"). tilegl has no multisample buffer
 /// (`GL_SAMPLE_BUFFERS` is 0), so this state has no effect on rendering (section 3.2.1).

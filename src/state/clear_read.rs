@@ -1,10 +1,10 @@
 //! `glClear` recording and `glReadPixels`.
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::fixed::{color_to_u8, depth_to_fixed};
 use crate::common::values::{ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::raster::scene::{ClearCommand, Command};
 use crate::texture::pixels as texpix;
 

@@ -14,10 +14,10 @@
 //! pixel pointer is always client memory (or NULL, "no data").
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
-use crate::api::types::GLsizei;
 use crate::common::values::{DrawPixelsFormat, PixelIndexType, TexPixelFormat, TexPixelType};
+use crate::gl::convert;
+use crate::gl::enums::*;
+use crate::gl::types::GLsizei;
 use crate::state::tables::PixelStore;
 use crate::texture::object::{MAX_3D_TEXTURE_SIZE, MAX_CUBE_MAP_TEXTURE_SIZE, MAX_TEXTURE_SIZE};
 use crate::texture::pixels as texpix;

@@ -8,10 +8,10 @@
 //! The defaults are `GL_BACK` for a double-buffered context and `GL_FRONT` otherwise.
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::ColorBufferName;
 use crate::framebuffer::{ColorBuffer, DrawTarget};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// The `glDrawBuffer` and `glReadBuffer` settings as given (what the queries return).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

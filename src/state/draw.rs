@@ -25,7 +25,7 @@ impl Context {
             return self.select_feedback_vertices(mode, verts);
         }
         let ds = self.snapshot();
-        if ds.draw_rect.is_empty() || ds.key.writes_nothing() {
+        if ds.tile.draw_rect.is_empty() || ds.tile.fragment.key.writes_nothing() {
             return;
         }
         // Reuse the clip-space buffer across draws: large batches would otherwise fault in
@@ -38,8 +38,8 @@ impl Context {
         // not once per triangle that shares it (a strip's vertex belongs to three).
         let mut windows = std::mem::take(&mut self.window_buffer);
         windows.clear();
-        let shared_windows = ds.raster.polygon_mode == [PolygonMode::Fill; 2]
-            && !ds.two_sided
+        let shared_windows = ds.tile.raster.polygon_mode == [PolygonMode::Fill; 2]
+            && !ds.vertex.two_sided
             && !matches!(
                 mode,
                 PrimitiveMode::Points
@@ -57,21 +57,21 @@ impl Context {
                 pool.install(|| {
                     clip.par_chunks_mut(TRANSFORM_CHUNK)
                         .zip(verts.par_chunks(TRANSFORM_CHUNK))
-                        .for_each(|(c, v)| transform::to_clip_batch(&ds, v, c));
+                        .for_each(|(c, v)| transform::to_clip_batch(&ds.vertex, v, c));
                     if shared_windows {
                         windows.resize(clip.len(), None);
                         windows
                             .par_chunks_mut(TRANSFORM_CHUNK)
                             .zip(clip.par_chunks(TRANSFORM_CHUNK))
-                            .for_each(|(w, c)| guard_band_windows(&ds, c, w));
+                            .for_each(|(w, c)| guard_band_windows(&ds.viewport, c, w));
                     }
                 });
             }
             _ => {
-                transform::to_clip_batch(&ds, verts, &mut clip);
+                transform::to_clip_batch(&ds.vertex, verts, &mut clip);
                 if shared_windows {
                     windows.resize(clip.len(), None);
-                    guard_band_windows(&ds, &clip, &mut windows);
+                    guard_band_windows(&ds.viewport, &clip, &mut windows);
                 }
             }
         }
@@ -90,9 +90,9 @@ impl Context {
         clip: &[ClipVertex],
         windows: Option<&[Option<WindowVertex>]>,
     ) {
-        let n_attrs = ds.attr_count;
+        let n_attrs = ds.tile.attr_count;
         let clip_attrs = ds.clip_attr_count;
-        let user = &ds.clip_planes;
+        let user = &ds.viewport.clip_planes;
         let mut poly = Vec::with_capacity(16);
         let mut scratch = Vec::with_capacity(16);
         let mut win = Vec::with_capacity(16);
@@ -116,14 +116,14 @@ impl Context {
                 self.flush_scene();
             }
             self.flush_in_background();
-            let state = self.scene.add_state(ds);
+            let state = self.scene.add_state(&ds.tile);
             match prim {
                 Primitive::Point(i) => {
                     if point_visible(&clip[i], user) {
-                        let w = to_window(ds, &clip[i]);
-                        let size = point::derived_size(&ds.raster, clip[i].eye);
+                        let w = to_window(&ds.viewport, &clip[i]);
+                        let size = point::derived_size(&ds.tile.raster, clip[i].eye);
                         point::bin_point(
-                            ds,
+                            &ds.tile,
                             state,
                             &w,
                             size,
@@ -135,18 +135,18 @@ impl Context {
                 }
                 Primitive::Line { v, provoking } => {
                     let (mut a, mut b) = (clip[v[0]], clip[v[1]]);
-                    if ds.flat {
-                        copy_provoking_colors(ds, &mut a, &clip[provoking]);
-                        copy_provoking_colors(ds, &mut b, &clip[provoking]);
+                    if ds.tile.flat {
+                        copy_provoking_colors(&ds.vertex, &mut a, &clip[provoking]);
+                        copy_provoking_colors(&ds.vertex, &mut b, &clip[provoking]);
                     }
                     if independent_lines {
                         stipple_counter = 0;
                     }
                     if let Some((a, b)) = clip_line(&a, &b, user, clip_attrs) {
-                        let wa = to_window(ds, &a);
-                        let wb = to_window(ds, &b);
+                        let wa = to_window(&ds.viewport, &a);
+                        let wb = to_window(&ds.viewport, &b);
                         line::bin_line(
-                            ds,
+                            &ds.tile,
                             state,
                             [&wa, &wb],
                             [&a.attrs[..n_attrs], &b.attrs[..n_attrs]],
@@ -175,10 +175,10 @@ impl Context {
                         // Flat shading takes the provoking vertex's colours only; texture and
                         // fog coordinates still vary across the triangle.
                         let flat;
-                        let verts = if ds.flat {
+                        let verts = if ds.tile.flat {
                             let mut copies = [*tri[0], *tri[1], *tri[2]];
                             for v in copies.iter_mut() {
-                                copy_provoking_colors(ds, v, &clip[provoking]);
+                                copy_provoking_colors(&ds.vertex, v, &clip[provoking]);
                             }
                             flat = copies;
                             [&flat[0], &flat[1], &flat[2]]
@@ -186,7 +186,7 @@ impl Context {
                             tri
                         };
                         tri::bin_triangle(
-                            ds,
+                            &ds.tile,
                             state,
                             w,
                             verts.map(|c| &c.attrs[..n_attrs]),
@@ -200,16 +200,16 @@ impl Context {
                         // Diagonals of split quads and polygons are never boundary edges.
                         p.edge = edges[k] && (p.edge || !edge_flags);
                     }
-                    if ds.flat {
+                    if ds.tile.flat {
                         for p in poly.iter_mut() {
-                            copy_provoking_colors(ds, p, &clip[provoking]);
+                            copy_provoking_colors(&ds.vertex, p, &clip[provoking]);
                         }
                     }
-                    if !clip_polygon(&mut poly, &mut scratch, user, ds.guard, clip_attrs) {
+                    if !clip_polygon(&mut poly, &mut scratch, user, ds.viewport.guard, clip_attrs) {
                         continue;
                     }
                     win.clear();
-                    win.extend(poly.iter().map(|p| to_window(ds, p)));
+                    win.extend(poly.iter().map(|p| to_window(&ds.viewport, p)));
                     xy.clear();
                     xy.extend(win.iter().map(|w| w.xy));
                     let area = signed_area2(&xy);
@@ -220,19 +220,19 @@ impl Context {
                     if is_culled(ds.cull, front) {
                         continue;
                     }
-                    if ds.two_sided && !front {
+                    if ds.vertex.two_sided && !front {
                         for p in poly.iter_mut() {
                             use_back_colors(&mut p.attrs);
                         }
                     }
-                    let polygon_mode = ds.raster.polygon_mode[usize::from(!front)];
+                    let polygon_mode = ds.tile.raster.polygon_mode[usize::from(!front)];
                     if polygon_mode != PolygonMode::Fill {
                         self.draw_polygon_outline(ds, state, polygon_mode, &poly, &win);
                         continue;
                     }
                     for k in 1..poly.len() - 1 {
                         tri::bin_triangle(
-                            ds,
+                            &ds.tile,
                             state,
                             [&win[0], &win[k], &win[k + 1]],
                             [
@@ -260,12 +260,12 @@ impl Context {
         poly: &[ClipVertex],
         win: &[WindowVertex],
     ) {
-        let n_attrs = ds.attr_count;
+        let n_attrs = ds.tile.attr_count;
         let z_offset = match (
-            &ds.raster.offset,
+            &ds.tile.raster.offset,
             tri::depth_plane([&win[0], &win[1], &win[2]]),
         ) {
-            (Some(o), Some(z)) => o.for_plane(mode, z.a, z.b, ds.depth_max),
+            (Some(o), Some(z)) => o.for_plane(mode, z.a, z.b, ds.tile.fragment.depth_max),
             _ => 0.0,
         };
         let n = poly.len();
@@ -275,9 +275,9 @@ impl Context {
             }
             match mode {
                 PolygonMode::Point => {
-                    let size = point::derived_size(&ds.raster, poly[k].eye);
+                    let size = point::derived_size(&ds.tile.raster, poly[k].eye);
                     point::bin_point(
-                        ds,
+                        &ds.tile,
                         state,
                         &win[k],
                         size,
@@ -290,7 +290,7 @@ impl Context {
                     let j = (k + 1) % n;
                     let mut stipple_counter = 0;
                     line::bin_line(
-                        ds,
+                        &ds.tile,
                         state,
                         [&win[k], &win[j]],
                         [&poly[k].attrs[..n_attrs], &poly[j].attrs[..n_attrs]],

@@ -27,43 +27,12 @@ use glam::{Vec3, Vec4};
 
 use super::get::StateValue;
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{AnyMap, EvalMeshMode, EvalQuery, EvalTarget, GetMapQuery};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// `GL_MAX_EVAL_ORDER` (the specification asks for at least 8; Mesa has 30).
 pub const MAX_EVAL_ORDER: i32 = 30;
-
-/// The evaluator entry points `impl Gl for Context` forwards (see `gl_forward_all!`).
-macro_rules! evaluator_entry_points {
-    () => {
-        gl_forward_all!(
-            map_1f,
-            map_1d,
-            map_2f,
-            map_2d,
-            get_mapfv,
-            get_mapdv,
-            get_mapiv,
-            eval_coord_1f,
-            eval_coord_1fv,
-            eval_coord_1d,
-            eval_coord_1dv,
-            eval_coord_2f,
-            eval_coord_2fv,
-            eval_coord_2d,
-            eval_coord_2dv,
-            map_grid_1f,
-            map_grid_1d,
-            map_grid_2f,
-            map_grid_2d,
-            eval_mesh_1,
-            eval_mesh_2,
-            eval_point_1,
-            eval_point_2,
-        );
-    };
-}
 
 /// A one-dimensional map: domain, order and `order` control points of k values each.
 #[derive(Clone, Debug, PartialEq)]

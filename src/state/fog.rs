@@ -1,9 +1,9 @@
 //! Fog state and entry points (section 3.10): `glFog*`, `glFogCoord*`.
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{FogMode, FogParam};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// Table 6.14.
 #[derive(Clone, Copy, Debug, PartialEq)]

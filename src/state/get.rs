@@ -2,9 +2,9 @@
 
 use super::tables::limits;
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{PixelStoreParam, Query};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use glam::Mat4;
 
 /// A state value in its natural type, before conversion to the requested one.

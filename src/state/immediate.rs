@@ -6,9 +6,9 @@
 // variants included.
 #![allow(clippy::unnecessary_cast)]
 
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::PrimitiveMode;
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::state::Context;
 use crate::vertex::immediate::*;
 use glam::{Vec3, Vec4};

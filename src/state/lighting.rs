@@ -5,9 +5,9 @@
 use glam::{Mat3, Vec3, Vec4};
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{Face, LightModelParam, LightParam, MaterialParam};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 pub use crate::vertex::lighting::{Light, LightingState, Material};
 

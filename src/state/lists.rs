@@ -34,9 +34,9 @@ use std::sync::Arc;
 use parking_lot::RwLock;
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::ListNameType;
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// `GL_MAX_LIST_NESTING`.
 pub const MAX_LIST_NESTING: u32 = 64;

@@ -6,9 +6,9 @@ use glam::{DMat4, DVec4, Mat4, Vec3};
 
 use super::tables::{limits, Viewport};
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::MatrixMode;
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 pub(crate) use crate::vertex::transform::inverse_or_identity;
 

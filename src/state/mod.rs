@@ -1,17 +1,16 @@
 //! `Context`: all GL state as plain data, the entry points that set it, and the one place that
 //! turns it into the immutable per-draw snapshot.
 
-#[macro_use]
-mod textures;
-mod client_sizes;
-#[macro_use]
-pub mod evaluators;
 pub mod accum;
 pub mod arrays;
 pub mod attrib;
 pub mod clear_read;
+pub mod client_memory;
+mod client_sizes;
 pub mod color_buffers;
 pub mod draw;
+pub mod evaluators;
+mod flush;
 pub mod fog;
 mod fragment_key;
 pub mod get;
@@ -29,17 +28,17 @@ pub mod snapshot;
 pub mod tables;
 pub mod texenv;
 pub mod texgen;
+mod textures;
 
 use std::collections::HashMap;
 use std::ffi::CString;
 use std::sync::Arc;
 
-use crate::api::convert;
-use crate::api::enums::*;
-use crate::api::error::ErrorFlag;
-use crate::api::*;
 use crate::common::values::{Capability, HintTarget, PixelStoreParam, StringName};
 use crate::framebuffer::{Framebuffer, FramebufferConfig};
+use crate::gl::convert;
+use crate::gl::enums::*;
+use crate::gl::error::ErrorFlag;
 use crate::raster::scene::Scene;
 use crate::vertex::immediate::ImmediateBatch;
 use tables::*;
@@ -170,6 +169,9 @@ pub struct Context {
     pub(crate) eval: evaluators::EvalState,
     /// How `glEvalMesh2(GL_FILL)` connects the grid (not GL state).
     pub(crate) mesh_fill: evaluators::MeshFill,
+    /// The client memory `ClientPtr`s name (none until the C ABI, or a Rust caller that
+    /// promises the GL client-memory contract, attaches it).
+    pub(crate) client_memory: &'static dyn client_memory::ClientMemory,
     /// How `GL_POINT_SMOOTH` points are drawn (not GL state).
     pub(crate) smooth_points: crate::raster::controls::SmoothPoints,
 }
@@ -255,6 +257,7 @@ impl Context {
             drawable_check_requested: false,
             force_general_path: false,
             client: Default::default(),
+            client_memory: &client_memory::NoClientMemory,
             lists: Default::default(),
             attrib_stack: Vec::new(),
             multisample: Default::default(),
@@ -264,6 +267,13 @@ impl Context {
             mesh_fill: Default::default(),
             smooth_points: Default::default(),
         }
+    }
+
+    /// Lets the context read and write the client memory its `ClientPtr`s name (client
+    /// arrays, `glGetPointerv`, selection and feedback buffers) through `memory`; the C ABI
+    /// attaches the process's memory to the contexts it creates (`capi::client_memory`).
+    pub fn set_client_memory(&mut self, memory: &'static dyn client_memory::ClientMemory) {
+        self.client_memory = memory;
     }
 
     /// Resizes the framebuffer (contents become undefined; tilegl clears them). Used by the C
@@ -672,426 +682,4 @@ pub(crate) fn clamp01(v: f64) -> f64 {
     } else {
         0.0
     }
-}
-
-impl Gl for Context {
-    fn unsupported(&mut self, name: &'static str) {
-        let _ = name;
-        self.record_error(GL_INVALID_OPERATION);
-    }
-
-    fn get_error(&mut self) -> GLenum {
-        // glGetError itself is illegal inside glBegin/glEnd and then returns 0.
-        if self.reject_inside_begin_end() {
-            return 0;
-        }
-        Context::get_error(self)
-    }
-
-    texture_entry_points!();
-    evaluator_entry_points!();
-
-    gl_forward_all!(
-        raster_pos_2s,
-        raster_pos_2sv,
-        raster_pos_2i,
-        raster_pos_2iv,
-        raster_pos_2f,
-        raster_pos_2fv,
-        raster_pos_2d,
-        raster_pos_2dv,
-        raster_pos_3s,
-        raster_pos_3sv,
-        raster_pos_3i,
-        raster_pos_3iv,
-        raster_pos_3f,
-        raster_pos_3fv,
-        raster_pos_3d,
-        raster_pos_3dv,
-        raster_pos_4s,
-        raster_pos_4sv,
-        raster_pos_4i,
-        raster_pos_4iv,
-        raster_pos_4f,
-        raster_pos_4fv,
-        raster_pos_4d,
-        raster_pos_4dv,
-        window_pos_2s,
-        window_pos_2sv,
-        window_pos_2i,
-        window_pos_2iv,
-        window_pos_2f,
-        window_pos_2fv,
-        window_pos_2d,
-        window_pos_2dv,
-        window_pos_3s,
-        window_pos_3sv,
-        window_pos_3i,
-        window_pos_3iv,
-        window_pos_3f,
-        window_pos_3fv,
-        window_pos_3d,
-        window_pos_3dv,
-        pixel_transferf,
-        pixel_transferi,
-        pixel_zoom,
-        pixel_mapfv,
-        pixel_mapuiv,
-        pixel_mapusv,
-        get_pixel_mapfv,
-        get_pixel_mapuiv,
-        get_pixel_mapusv,
-        draw_pixels,
-        copy_pixels,
-        bitmap,
-        accum,
-        clear_accum,
-        get_string,
-        flush,
-        finish,
-        hint,
-        enable,
-        disable,
-        is_enabled,
-        cull_face,
-        front_face,
-        shade_model,
-        depth_func,
-        depth_mask,
-        color_mask,
-        stencil_mask,
-        scissor,
-        clear_color,
-        clear_depth,
-        clear_stencil,
-        clear,
-        pixel_storei,
-        pixel_storef,
-        draw_buffer,
-        read_buffer,
-        // matrices
-        matrix_mode,
-        load_identity,
-        load_matrixf,
-        load_matrixd,
-        mult_matrixf,
-        mult_matrixd,
-        load_transpose_matrixf,
-        load_transpose_matrixd,
-        mult_transpose_matrixf,
-        mult_transpose_matrixd,
-        rotatef,
-        rotated,
-        translatef,
-        translated,
-        scalef,
-        scaled,
-        frustum,
-        ortho,
-        push_matrix,
-        pop_matrix,
-        viewport,
-        depth_range,
-        clip_plane,
-        get_clip_plane,
-        // queries
-        get_booleanv,
-        get_integerv,
-        get_floatv,
-        get_doublev,
-        // pixels
-        read_pixels,
-        // per-fragment operations
-        alpha_func,
-        stencil_func,
-        stencil_op,
-        blend_func,
-        blend_func_separate,
-        blend_color,
-        blend_equation,
-        blend_equation_separate_ext,
-        logic_op,
-        // lighting
-        lightf,
-        lighti,
-        lightfv,
-        lightiv,
-        light_modelf,
-        light_modeli,
-        light_modelfv,
-        light_modeliv,
-        materialf,
-        materiali,
-        materialfv,
-        materialiv,
-        color_material,
-        get_lightfv,
-        get_lightiv,
-        get_materialfv,
-        get_materialiv,
-        secondary_color_3b,
-        secondary_color_3bv,
-        secondary_color_3d,
-        secondary_color_3dv,
-        secondary_color_3f,
-        secondary_color_3fv,
-        secondary_color_3i,
-        secondary_color_3iv,
-        secondary_color_3s,
-        secondary_color_3sv,
-        secondary_color_3ub,
-        secondary_color_3ubv,
-        secondary_color_3ui,
-        secondary_color_3uiv,
-        secondary_color_3us,
-        secondary_color_3usv,
-        // texture units and environments
-        active_texture,
-        client_active_texture,
-        tex_envf,
-        tex_envi,
-        tex_envfv,
-        tex_enviv,
-        get_tex_envfv,
-        get_tex_enviv,
-        multi_tex_coord_1d,
-        multi_tex_coord_1dv,
-        multi_tex_coord_1f,
-        multi_tex_coord_1fv,
-        multi_tex_coord_1i,
-        multi_tex_coord_1iv,
-        multi_tex_coord_1s,
-        multi_tex_coord_1sv,
-        multi_tex_coord_2d,
-        multi_tex_coord_2dv,
-        multi_tex_coord_2f,
-        multi_tex_coord_2fv,
-        multi_tex_coord_2i,
-        multi_tex_coord_2iv,
-        multi_tex_coord_2s,
-        multi_tex_coord_2sv,
-        multi_tex_coord_3d,
-        multi_tex_coord_3dv,
-        multi_tex_coord_3f,
-        multi_tex_coord_3fv,
-        multi_tex_coord_3i,
-        multi_tex_coord_3iv,
-        multi_tex_coord_3s,
-        multi_tex_coord_3sv,
-        multi_tex_coord_4d,
-        multi_tex_coord_4dv,
-        multi_tex_coord_4f,
-        multi_tex_coord_4fv,
-        multi_tex_coord_4i,
-        multi_tex_coord_4iv,
-        multi_tex_coord_4s,
-        multi_tex_coord_4sv,
-        // texture coordinate generation
-        tex_gend,
-        tex_genf,
-        tex_geni,
-        tex_gendv,
-        tex_genfv,
-        tex_geniv,
-        get_tex_gendv,
-        get_tex_genfv,
-        get_tex_geniv,
-        // fog
-        fogf,
-        fogi,
-        fogfv,
-        fogiv,
-        fog_coordf,
-        fog_coordd,
-        fog_coordfv,
-        fog_coorddv,
-        // rasterization controls
-        point_size,
-        line_width,
-        line_stipple,
-        polygon_mode,
-        polygon_offset,
-        polygon_stipple,
-        get_polygon_stipple,
-        edge_flag,
-        edge_flagv,
-        point_parameterf,
-        point_parameteri,
-        point_parameterfv,
-        point_parameteriv,
-        // immediate mode
-        begin,
-        end,
-        vertex_2d,
-        vertex_2dv,
-        vertex_2f,
-        vertex_2fv,
-        vertex_2i,
-        vertex_2iv,
-        vertex_2s,
-        vertex_2sv,
-        vertex_3d,
-        vertex_3dv,
-        vertex_3f,
-        vertex_3fv,
-        vertex_3i,
-        vertex_3iv,
-        vertex_3s,
-        vertex_3sv,
-        vertex_4d,
-        vertex_4dv,
-        vertex_4f,
-        vertex_4fv,
-        vertex_4i,
-        vertex_4iv,
-        vertex_4s,
-        vertex_4sv,
-        color_3b,
-        color_3bv,
-        color_3d,
-        color_3dv,
-        color_3f,
-        color_3fv,
-        color_3i,
-        color_3iv,
-        color_3s,
-        color_3sv,
-        color_3ub,
-        color_3ubv,
-        color_3ui,
-        color_3uiv,
-        color_3us,
-        color_3usv,
-        color_4b,
-        color_4bv,
-        color_4d,
-        color_4dv,
-        color_4f,
-        color_4fv,
-        color_4i,
-        color_4iv,
-        color_4s,
-        color_4sv,
-        color_4ub,
-        color_4ubv,
-        color_4ui,
-        color_4uiv,
-        color_4us,
-        color_4usv,
-        normal_3b,
-        normal_3bv,
-        normal_3d,
-        normal_3dv,
-        normal_3f,
-        normal_3fv,
-        normal_3i,
-        normal_3iv,
-        normal_3s,
-        normal_3sv,
-        tex_coord_1d,
-        tex_coord_1dv,
-        tex_coord_1f,
-        tex_coord_1fv,
-        tex_coord_1i,
-        tex_coord_1iv,
-        tex_coord_1s,
-        tex_coord_1sv,
-        tex_coord_2d,
-        tex_coord_2dv,
-        tex_coord_2f,
-        tex_coord_2fv,
-        tex_coord_2i,
-        tex_coord_2iv,
-        tex_coord_2s,
-        tex_coord_2sv,
-        tex_coord_3d,
-        tex_coord_3dv,
-        tex_coord_3f,
-        tex_coord_3fv,
-        tex_coord_3i,
-        tex_coord_3iv,
-        tex_coord_3s,
-        tex_coord_3sv,
-        tex_coord_4d,
-        tex_coord_4dv,
-        tex_coord_4f,
-        tex_coord_4fv,
-        tex_coord_4i,
-        tex_coord_4iv,
-        tex_coord_4s,
-        tex_coord_4sv,
-        rectd,
-        rectdv,
-        rectf,
-        rectfv,
-        recti,
-        rectiv,
-        rects,
-        rectsv,
-        // vertex arrays and buffer objects
-        vertex_pointer,
-        normal_pointer,
-        color_pointer,
-        secondary_color_pointer,
-        fog_coord_pointer,
-        tex_coord_pointer,
-        edge_flag_pointer,
-        index_pointer,
-        interleaved_arrays,
-        enable_client_state,
-        disable_client_state,
-        get_pointerv,
-        array_element,
-        draw_arrays,
-        draw_elements,
-        draw_range_elements,
-        multi_draw_arrays,
-        multi_draw_elements,
-        gen_buffers,
-        bind_buffer,
-        delete_buffers,
-        is_buffer,
-        buffer_data,
-        buffer_sub_data,
-        get_buffer_sub_data,
-        map_buffer,
-        unmap_buffer,
-        get_buffer_parameteriv,
-        get_buffer_pointerv,
-        push_client_attrib,
-        pop_client_attrib,
-        lock_arrays_ext,
-        unlock_arrays_ext,
-        // display lists
-        gen_lists,
-        new_list,
-        end_list,
-        call_list,
-        call_lists,
-        list_base,
-        delete_lists,
-        is_list,
-        // attribute stack, multisample
-        push_attrib,
-        pop_attrib,
-        sample_coverage,
-        // occlusion queries
-        gen_queries,
-        delete_queries,
-        is_query,
-        begin_query,
-        end_query,
-        get_queryiv,
-        get_query_objectiv,
-        get_query_objectuiv,
-        // selection and feedback
-        render_mode,
-        select_buffer,
-        init_names,
-        push_name,
-        pop_name,
-        load_name,
-        feedback_buffer,
-        pass_through
-    );
 }

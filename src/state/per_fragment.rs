@@ -2,8 +2,8 @@
 //! blending and logic operation. Depth and masks live with the framebuffer controls.
 
 use super::{clamp01, Context};
-use crate::api::convert;
-use crate::api::enums::*;
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 impl Context {
     pub(crate) fn alpha_func(&mut self, func: GLenum, ref_: GLclampf) {

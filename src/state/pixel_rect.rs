@@ -10,18 +10,18 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
     CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery, PixelTransferParam,
     TexPixelFormat, TexPixelType,
 };
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::primitive::clip::point_visible;
 use crate::raster::setup::Plane;
 use crate::state::get::StateValue;
-use crate::state::snapshot::{attr, DrawState};
+use crate::state::snapshot::{attr, TileDraw};
 use crate::texture::pixels as texpix;
 use crate::vertex::immediate::ImmVertex;
 use crate::vertex::transform;
@@ -267,15 +267,15 @@ impl Context {
             fog_coord: c.fog_coord,
             edge_flag: c.edge_flag,
         };
-        let clip = transform::to_clip(&ds, &v);
-        if !point_visible(&clip, &ds.clip_planes) {
+        let clip = transform::to_clip(&ds.vertex, &v);
+        if !point_visible(&clip, &ds.viewport.clip_planes) {
             self.raster_pos.valid = false;
             return;
         }
         let p = clip.pos;
         let w = 1.0 / p.w;
         let window = [0, 1, 2].map(|k| {
-            let v = p[k] * w * ds.viewport_scale[k] + ds.viewport_offset[k];
+            let v = p[k] * w * ds.viewport.viewport_scale[k] + ds.viewport.viewport_offset[k];
             if k == 2 {
                 v.clamp(0.0, 1.0)
             } else {
@@ -284,7 +284,7 @@ impl Context {
         });
         let mut texcoords = [[0f32; 4]; MAX_TEXTURE_UNITS];
         for (u, tc) in texcoords.iter_mut().enumerate() {
-            *tc = match ds.units.iter().find(|d| d.unit == u) {
+            *tc = match ds.vertex.units.iter().find(|d| d.unit == u) {
                 Some(_) => {
                     let a = &clip.attrs[attr::TEX + 4 * u..attr::TEX + 4 * u + 4];
                     [a[0], a[1], a[2], a[3]]
@@ -297,7 +297,7 @@ impl Context {
                 }
             };
         }
-        let eye = ds.modelview * position;
+        let eye = ds.vertex.modelview * position;
         let distance = if self.fog.coord_from_vertex {
             c.fog_coord
         } else {
@@ -523,7 +523,7 @@ impl Context {
 
     /// Constant attribute planes of a pixel-rectangle fragment: `color` and the raster
     /// position's secondary colour, texture coordinates and distance.
-    fn raster_planes(&self, ds: &DrawState, color: [f32; 4], planes: &mut Vec<Plane>) {
+    fn raster_planes(&self, ds: &TileDraw, color: [f32; 4], planes: &mut Vec<Plane>) {
         let r = &self.raster_pos;
         planes.clear();
         planes.resize(ds.attr_count, Plane::constant(0.0));
@@ -535,7 +535,7 @@ impl Context {
                 planes[attr::COLOR1 + k] = Plane::constant(r.secondary[k] as f64);
             }
         }
-        for u in &ds.units {
+        for u in &ds.fragment.units {
             for k in 0..4 {
                 let i = attr::TEX + 4 * u.unit + k;
                 if i < ds.attr_count {
@@ -549,7 +549,7 @@ impl Context {
     }
 
     /// Shades one fragment now (the scene has been flushed).
-    fn shade_pixel_now(&mut self, ds: &DrawState, x: i32, y: i32, z: f64, planes: &[Plane]) {
+    fn shade_pixel_now(&mut self, ds: &TileDraw, x: i32, y: i32, z: f64, planes: &[Plane]) {
         let Some(t) = self.framebuffer.tile_index(x, y) else {
             return;
         };
@@ -566,7 +566,14 @@ impl Context {
             coverage: 1.0,
             shared: &shared,
         };
-        (ds.span)(ds, &mut self.framebuffer.tiles[t], y, x, x + 1, &it);
+        (ds.fragment.span)(
+            &ds.fragment,
+            &mut self.framebuffer.tiles[t],
+            y,
+            x,
+            x + 1,
+            &it,
+        );
     }
 
     /// Draws a converted `width` x `height` image at the raster position with the zoom.
@@ -586,7 +593,7 @@ impl Context {
         let (xr, yr) = ((xr + 0.5).floor(), (yr + 0.5).floor());
         let raster_color = self.raster_pos.color;
         let stencil_mask = self.fragment_ops.stencil_writemask as u8;
-        let mut planes = Vec::with_capacity(ds.attr_count);
+        let mut planes = Vec::with_capacity(ds.tile.attr_count);
         let mut color_planes_for: Option<[f32; 4]> = None;
         for j in 0..height {
             let (y0, y1) = centre_span(yr + zy * j as f64, yr + zy * (j + 1) as f64);
@@ -619,12 +626,12 @@ impl Context {
                     }
                 };
                 if color_planes_for != Some(color) {
-                    self.raster_planes(&ds, color, &mut planes);
+                    self.raster_planes(&ds.tile, color, &mut planes);
                     color_planes_for = Some(color);
                 }
                 for y in y0..y1 {
                     for x in x0..x1 {
-                        self.shade_pixel_now(&ds, x as i32, y as i32, z, &planes);
+                        self.shade_pixel_now(&ds.tile, x as i32, y as i32, z, &planes);
                     }
                 }
             }
@@ -897,7 +904,7 @@ impl Context {
             let x0 = (xr + BITMAP_MARGIN - xorig as f64).floor() as i64;
             let y0 = (yr + BITMAP_MARGIN - yorig as f64).floor() as i64;
             let mut planes = Vec::new();
-            self.raster_planes(&ds, self.raster_pos.color, &mut planes);
+            self.raster_planes(&ds.tile, self.raster_pos.color, &mut planes);
             // The origin may be far outside the window (saturated from a huge float).
             for j in 0..h {
                 let y = y0.saturating_add(j as i64);
@@ -919,7 +926,7 @@ impl Context {
                         u.lsb_first,
                     ) != 0;
                     if set {
-                        self.shade_pixel_now(&ds, x as i32, y as i32, zr, &planes);
+                        self.shade_pixel_now(&ds.tile, x as i32, y as i32, zr, &planes);
                     }
                 }
             }

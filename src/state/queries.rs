@@ -10,9 +10,9 @@
 use std::collections::{HashMap, HashSet};
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{QueryObjectParam, QueryParam};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// `GL_QUERY_COUNTER_BITS`: results are kept in 64 bits.
 pub const QUERY_COUNTER_BITS: i32 = 64;

@@ -2,9 +2,9 @@
 //! stipple, polygon mode, offset and stipple, edge flags.
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{Face, PointParam};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 impl Context {
     pub(crate) fn point_size(&mut self, size: GLfloat) {

@@ -12,11 +12,10 @@
 //! [`Context::feedback_buffer_contents`].
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
-use crate::capi::client_memory::write_client_bytes;
 use crate::common::values::{FeedbackToken, FeedbackType, PrimitiveMode, RenderMode};
 use crate::common::values::{PolygonMode, StateExtQuery};
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::primitive::assemble::{self, assemble, Primitive};
 use crate::primitive::clip::{clip_line, clip_polygon, point_visible, ClipVertex, EXACT};
 use crate::primitive::cull::{is_culled, is_front, signed_area2};
@@ -84,9 +83,9 @@ fn window_coords(ds: &DrawState, c: &ClipVertex) -> [f64; 4] {
     let w = c.pos.w;
     let inv = 1.0 / w;
     [
-        c.pos.x * inv * ds.viewport_scale[0] + ds.viewport_offset[0],
-        c.pos.y * inv * ds.viewport_scale[1] + ds.viewport_offset[1],
-        c.pos.z * inv * ds.viewport_scale[2] + ds.viewport_offset[2],
+        c.pos.x * inv * ds.viewport.viewport_scale[0] + ds.viewport.viewport_offset[0],
+        c.pos.y * inv * ds.viewport.viewport_scale[1] + ds.viewport.viewport_offset[1],
+        c.pos.z * inv * ds.viewport.viewport_scale[2] + ds.viewport.viewport_offset[2],
         w,
     ]
 }
@@ -163,7 +162,7 @@ impl Context {
                 self.write_hit_record();
                 let s = &self.select;
                 let bytes: Vec<u8> = s.select_data.iter().flat_map(|v| v.to_ne_bytes()).collect();
-                write_client_bytes(s.select_ptr, &bytes);
+                self.client_memory.write(s.select_ptr, &bytes);
                 if s.count > s.select_size {
                     -1
                 } else {
@@ -177,7 +176,7 @@ impl Context {
                     .iter()
                     .flat_map(|v| v.to_ne_bytes())
                     .collect();
-                write_client_bytes(s.feedback_ptr, &bytes);
+                self.client_memory.write(s.feedback_ptr, &bytes);
                 if s.count > s.feedback_size {
                     -1
                 } else {
@@ -417,7 +416,7 @@ impl Context {
     /// and, in selection mode, a valid position is a hit.
     pub(crate) fn raster_pos_feedback(&mut self, position: Option<glam::Vec4>) {
         self.select.raster_w = match position {
-            Some(p) => (self.snapshot().mvp * p).w,
+            Some(p) => (self.snapshot().vertex.mvp * p).w,
             None => 1.0,
         };
         if self.select.mode == RenderMode::Select && self.raster_pos.valid {
@@ -430,9 +429,12 @@ impl Context {
     /// recorded instead of rasterized.
     pub(crate) fn select_feedback_vertices(&mut self, mode: PrimitiveMode, verts: &[ImmVertex]) {
         let ds = self.snapshot();
-        let mut clip: Vec<ClipVertex> = verts.iter().map(|v| transform::to_clip(&ds, v)).collect();
+        let mut clip: Vec<ClipVertex> = verts
+            .iter()
+            .map(|v| transform::to_clip(&ds.vertex, v))
+            .collect();
         // Feedback reports unit 0's texture coordinates even when the unit does not texture.
-        if !ds.units.iter().any(|u| u.unit == 0) {
+        if !ds.vertex.units.iter().any(|u| u.unit == 0) {
             let m = *self.transform.texture[0]
                 .last()
                 .unwrap_or(&glam::Mat4::IDENTITY);
@@ -442,7 +444,7 @@ impl Context {
             }
         }
         let n_attrs = ds.clip_attr_count.max(attr::TEX + 4);
-        let user = ds.clip_planes.clone();
+        let user = ds.viewport.clip_planes.clone();
         let edge_flags = assemble::uses_edge_flags(mode);
         let mut reset = true;
         for prim in assemble(mode, clip.len()) {
@@ -455,7 +457,7 @@ impl Context {
                 }
                 Primitive::Line { v, provoking } => {
                     let (mut a, mut b) = (clip[v[0]], clip[v[1]]);
-                    if ds.flat {
+                    if ds.tile.flat {
                         copy_colors(&mut a, &clip[provoking]);
                         copy_colors(&mut b, &clip[provoking]);
                     }
@@ -480,7 +482,7 @@ impl Context {
                     let mut poly: Vec<ClipVertex> = v.iter().map(|&i| clip[i]).collect();
                     for (k, p) in poly.iter_mut().enumerate() {
                         p.edge = edges[k] && (p.edge || !edge_flags);
-                        if ds.flat {
+                        if ds.tile.flat {
                             copy_colors(p, &clip[provoking]);
                         }
                     }
@@ -490,7 +492,8 @@ impl Context {
                     {
                         continue;
                     }
-                    let xy: Vec<[i64; 2]> = poly.iter().map(|p| to_window(&ds, p).xy).collect();
+                    let xy: Vec<[i64; 2]> =
+                        poly.iter().map(|p| to_window(&ds.viewport, p).xy).collect();
                     // A polygon of zero area is still a primitive (section 5.3 reports what
                     // would be rasterized): back-facing, as the sign test of section 3.5.1
                     // gives for a = 0 (Mesa reports and culls it so too).
@@ -498,14 +501,14 @@ impl Context {
                     if is_culled(ds.cull, front) {
                         continue;
                     }
-                    if ds.two_sided && !front {
+                    if ds.vertex.two_sided && !front {
                         for p in poly.iter_mut() {
                             crate::vertex::use_back_colors(&mut p.attrs);
                         }
                     }
                     let fv: Vec<FeedbackVertex> =
                         poly.iter().map(|p| feedback_vertex(&ds, p)).collect();
-                    match ds.raster.polygon_mode[usize::from(!front)] {
+                    match ds.tile.raster.polygon_mode[usize::from(!front)] {
                         PolygonMode::Fill => {
                             // As a fan of triangles, the way Mesa's pipeline reports them.
                             for k in 1..fv.len() - 1 {

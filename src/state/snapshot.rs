@@ -14,84 +14,34 @@ use crate::common::values::{TexEnvMode, TexGenMode};
 use crate::fragment::cache::{select_pair, select_span};
 pub use crate::fragment::fog::{fog_exp, FogDraw, EXP2_TAYLOR};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
-use crate::fragment::span::{PairFn, SpanFn};
-use crate::state::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
-use crate::texture::sample::{BoundTexture, LevelPlan, LodSelect};
+use crate::texture::sample::LevelPlan;
 use crate::vertex::lighting::NormalTransform;
 use crate::vertex::texgen::GenCoord;
 
 pub use crate::common::attr::{self, COLOR_ATTRS, MAX_ATTRS};
 
-/// One texture unit that takes part in a draw: it has an enabled, complete texture.
-#[derive(Clone, Debug)]
-pub struct TextureUnitDraw {
-    pub unit: usize,
-    pub texture: BoundTexture,
-    /// Base format as the environment sees it (depth textures per `GL_DEPTH_TEXTURE_MODE`).
-    pub base: BaseFormat,
-    pub env: TexEnv,
-    /// The unit's texture matrix.
-    pub matrix: Mat4,
-    /// Texture coordinate generation for s, t, r, q (`None`: the current coordinate).
-    pub texgen: [Option<GenCoord>; 4],
-    /// The texture's level-of-detail selection with this unit's bias, gathered once per draw.
-    pub lod: LodSelect,
-    /// The level and filter when they do not depend on λ (`plan_without_lambda`).
-    pub fixed_plan: Option<(usize, bool)>,
-}
-
+pub use crate::fragment::draw::{FragmentDraw, TextureUnitDraw};
+pub use crate::primitive::viewport::ViewportDraw;
 pub use crate::raster::controls::{PolygonOffsetDraw, RasterDraw};
+pub use crate::raster::draw::TileDraw;
+pub use crate::vertex::transform::{TexCoordDraw, VertexDraw};
 
-/// The frozen state of one draw.
+/// The frozen state of one draw: each stage's part, defined by the stage that reads it, and
+/// what the draw driver (`state::draw`) decides with itself.
 #[derive(Clone, Debug)]
 pub struct DrawState {
-    /// Projection x modelview.
-    pub mvp: Mat4,
-    pub modelview: Mat4,
-    /// Enabled user clip planes, in eye coordinates.
-    pub clip_planes: Vec<DVec4>,
-    /// Viewport mapping: window = ndc * scale + offset, per axis (z uses the depth range).
-    pub viewport_scale: [f64; 3],
-    pub viewport_offset: [f64; 3],
-    /// The guard band's side planes (`clip::guard_factors`) when both faces are filled, else
-    /// the view volume's (`clip::EXACT`).
-    pub guard: [f64; 2],
+    pub vertex: VertexDraw,
+    pub viewport: ViewportDraw,
+    /// Setup, binning and tile shading (with the fragment stage's part); the scene keeps it
+    /// for the draw's commands.
+    pub tile: Arc<TileDraw>,
     /// The viewport rectangle intersected with the framebuffer: nothing outside is drawn.
     pub viewport_rect: Rect,
-    /// Pixels that may be written: viewport, scissor (when enabled) and framebuffer bounds.
-    pub draw_rect: Rect,
     pub cull: Option<Face>,
     pub front_face: Winding,
-    pub flat: bool,
-    /// Interpolated attributes per vertex (a prefix of the `attr` layout).
-    pub attr_count: usize,
-    /// Bit i set when the fragment stage reads attribute i (below `attr_count`): the others'
-    /// planes of a triangle are neither computed nor stored (they read as zero).
-    pub live_attrs: u64,
     /// Attributes carried through clipping (includes the back colours with two-sided lighting).
     pub clip_attr_count: usize,
-    /// Two-sided lighting: back-facing polygons take the back colours.
-    pub two_sided: bool,
-    /// Texture units in use, in unit order (empty: no texturing).
-    pub units: Vec<TextureUnitDraw>,
-    /// Fog, when enabled (the mode is in the key; these are its parameters).
-    pub fog: Option<FogDraw>,
-    /// Normals to eye space (texture generation needs them).
-    pub normal_transform: NormalTransform,
-    pub normalize: bool,
-    pub depth_max: u32,
-    pub raster: RasterDraw,
-    pub key: FragmentKey,
-    pub uniforms: Uniforms,
-    /// The fragment function chosen for `key`.
-    pub span: SpanFn,
-    /// The function that shades the rows of a triangle together, for keys that have one.
-    pub span_pair: Option<PairFn>,
-    /// Whether triangles hidden behind the stored depths are dropped before rasterizing
-    /// (`raster::coarse`): the key allows it (`coarse::applies`), and off on the general path,
-    /// so twin tests compare both.
-    pub coarse_depth: bool,
 }
 
 impl Context {
@@ -155,6 +105,15 @@ impl Context {
                     },
                     texture,
                     env: self.tex_env[u],
+                })
+            })
+            .collect();
+        let coord_units: Vec<TexCoordDraw> = units
+            .iter()
+            .map(|d| {
+                let u = d.unit;
+                TexCoordDraw {
+                    unit: u,
                     matrix: *self.transform.texture[u].last().unwrap_or(&Mat4::IDENTITY),
                     texgen: std::array::from_fn(|c| {
                         let g = &self.tex_gen[u][c];
@@ -168,7 +127,7 @@ impl Context {
                             .as_vec4(),
                         })
                     }),
-                })
+                }
             })
             .collect();
         let fs = &self.fog;
@@ -207,60 +166,80 @@ impl Context {
         key.fog = fog.map(|f| f.mode);
         key.count_samples = self.queries.active.is_some();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
+        let raster = self.raster_draw();
+        let clip_planes: Vec<DVec4> = clip_planes;
+        let needs_eye = !clip_planes.is_empty()
+            || raster.point_attenuation.is_some()
+            || fog.is_some_and(|f| !f.coord_from_vertex)
+            || coord_units
+                .iter()
+                .any(|u| u.texgen.iter().any(|g| g.is_some()));
         let ds = Arc::new(DrawState {
-            mvp: projection * modelview,
-            modelview,
-            clip_planes,
-            viewport_scale: [vp.width as f64 / 2.0, vp.height as f64 / 2.0, (f - n) / 2.0],
-            viewport_offset: [
-                vp.x as f64 + vp.width as f64 / 2.0,
-                vp.y as f64 + vp.height as f64 / 2.0,
-                (n + f) / 2.0,
-            ],
-            // Outlines and vertices of polygons in line and point mode (wide lines and points
-            // near the viewport's edges) are drawn from the polygon clipped to the view volume.
-            guard: if self.raster.polygon_mode == [PolygonMode::Fill; 2] {
-                crate::primitive::clip::guard_factors(
-                    [vp.width as f64 / 2.0, vp.height as f64 / 2.0],
-                    [
-                        vp.x as f64 + vp.width as f64 / 2.0,
-                        vp.y as f64 + vp.height as f64 / 2.0,
-                    ],
-                )
-            } else {
-                crate::primitive::clip::EXACT
+            vertex: VertexDraw {
+                mvp: projection * modelview,
+                modelview,
+                normal_transform: NormalTransform::new(
+                    modelview,
+                    self.transform.normalize,
+                    self.transform.rescale_normal,
+                ),
+                normalize: self.transform.normalize,
+                two_sided,
+                needs_eye,
+                units: coord_units,
+                fog_from_vertex: fog.map(|f| f.coord_from_vertex),
             },
+            viewport: ViewportDraw {
+                clip_planes,
+                viewport_scale: [vp.width as f64 / 2.0, vp.height as f64 / 2.0, (f - n) / 2.0],
+                viewport_offset: [
+                    vp.x as f64 + vp.width as f64 / 2.0,
+                    vp.y as f64 + vp.height as f64 / 2.0,
+                    (n + f) / 2.0,
+                ],
+                // Outlines and vertices of polygons in line and point mode (wide lines and
+                // points near the viewport's edges) are drawn from the polygon clipped to the
+                // view volume.
+                guard: if self.raster.polygon_mode == [PolygonMode::Fill; 2] {
+                    crate::primitive::clip::guard_factors(
+                        [vp.width as f64 / 2.0, vp.height as f64 / 2.0],
+                        [
+                            vp.x as f64 + vp.width as f64 / 2.0,
+                            vp.y as f64 + vp.height as f64 / 2.0,
+                        ],
+                    )
+                } else {
+                    crate::primitive::clip::EXACT
+                },
+            },
+            tile: Arc::new(TileDraw {
+                draw_rect,
+                flat: self.raster.shade_model == ShadeModel::Flat,
+                attr_count,
+                live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
+                coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
+                raster,
+                fragment: FragmentDraw {
+                    units,
+                    fog,
+                    depth_max: self.framebuffer.depth_max(),
+                    key,
+                    uniforms,
+                    span: select_span(&key, self.force_general_path),
+                    span_pair: select_pair(&key, self.force_general_path),
+                },
+            }),
             viewport_rect,
-            draw_rect,
             cull: self.raster.cull_enabled.then_some(self.raster.cull_face),
             front_face: self.raster.front_face,
-            flat: self.raster.shade_model == ShadeModel::Flat,
-            attr_count,
-            live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
             clip_attr_count: if two_sided { attr::COUNT } else { attr_count },
-            two_sided,
-            units,
-            fog,
-            normal_transform: NormalTransform::new(
-                modelview,
-                self.transform.normalize,
-                self.transform.rescale_normal,
-            ),
-            normalize: self.transform.normalize,
-            depth_max: self.framebuffer.depth_max(),
-            raster: self.raster_draw(),
-            key,
-            uniforms,
-            span: select_span(&key, self.force_general_path),
-            span_pair: select_pair(&key, self.force_general_path),
-            coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
         });
         self.draw_state = Some(ds.clone());
         ds
     }
 }
 
-/// The attributes the fragment stage reads ([`DrawState::live_attrs`]): the primary colour;
+/// The attributes the fragment stage reads ([`TileDraw::live_attrs`]): the primary colour;
 /// the fog coordinate under fog; the secondary colour with the colour sum; each unit's s, t
 /// and q, and r where its texture reads it.
 fn live_attrs(units: &[TextureUnitDraw], fog: bool, color_sum: bool, attr_count: usize) -> u64 {

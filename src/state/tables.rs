@@ -1,12 +1,12 @@
 //! GL state as plain data, grouped like the specification's state tables (OpenGL 1.5, section
 //! 6.2), with the defaults those tables give.
 
-use crate::api::enums::GL_DONT_CARE;
-use crate::api::GLenum;
 use crate::common::values::{
     BlendEquation, BlendFactor, CompareFunc, Face, LogicOp, MatrixMode, PolygonMode, ShadeModel,
     StencilOp, Winding,
 };
+use crate::gl::enums::GL_DONT_CARE;
+use crate::gl::GLenum;
 use glam::{DVec4, Mat4, Vec3, Vec4};
 
 /// Implementation limits reported by `glGet` (defined in the leaf module, where every stage

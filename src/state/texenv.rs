@@ -4,9 +4,9 @@
 use glam::Vec4;
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::TexEnvParam;
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::vertex::immediate::norm_i32;
 
 pub use crate::fragment::texenv::{Combine, TexEnv};

@@ -5,9 +5,9 @@
 use glam::{DVec4, Mat4};
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{TexGenMode, TexGenParam};
+use crate::gl::convert;
+use crate::gl::enums::*;
 
 /// Generation for one coordinate of one unit (table 6.16).
 #[derive(Clone, Copy, Debug, PartialEq)]

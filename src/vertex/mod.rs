@@ -8,7 +8,7 @@ pub mod transform;
 
 use crate::common::attr::{self, MAX_ATTRS};
 use crate::primitive::clip::ClipVertex;
-use crate::state::DrawState;
+use transform::VertexDraw;
 
 /// Batches at least this large are transformed in parallel (below, the hand-off costs more
 /// than it saves).
@@ -18,7 +18,7 @@ pub(crate) const TRANSFORM_CHUNK: usize = 256;
 
 /// Flat shading: every vertex of a primitive takes the provoking vertex's colours (front and
 /// back), before clipping so that clipped vertices inherit them too.
-pub(crate) fn copy_provoking_colors(ds: &DrawState, v: &mut ClipVertex, provoking: &ClipVertex) {
+pub(crate) fn copy_provoking_colors(ds: &VertexDraw, v: &mut ClipVertex, provoking: &ClipVertex) {
     attr::copy_colors(&mut v.attrs, &provoking.attrs);
     if ds.two_sided {
         v.attrs[attr::BACK..attr::COUNT].copy_from_slice(&provoking.attrs[attr::BACK..attr::COUNT]);

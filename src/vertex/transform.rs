@@ -3,10 +3,41 @@
 use glam::{DVec4, Mat4};
 
 use super::immediate::ImmVertex;
+use super::lighting::NormalTransform;
 use super::texgen;
+use super::texgen::GenCoord;
 use crate::common::attr;
 use crate::primitive::clip::ClipVertex;
-use crate::state::DrawState;
+
+/// The vertex stage's part of a draw's frozen state (built by `state::snapshot`).
+#[derive(Clone, Debug)]
+pub struct VertexDraw {
+    /// Projection x modelview.
+    pub mvp: Mat4,
+    pub modelview: Mat4,
+    /// Normals to eye space (texture generation needs them).
+    pub normal_transform: NormalTransform,
+    pub normalize: bool,
+    /// Two-sided lighting: the back colours travel with the vertex.
+    pub two_sided: bool,
+    /// The eye position is needed: user clip planes, point attenuation, fog from the eye
+    /// distance or texture coordinate generation.
+    pub needs_eye: bool,
+    /// Texture units in use, in unit order: their coordinates' generation and matrix.
+    pub units: Vec<TexCoordDraw>,
+    /// Fog on: whether the fog coordinate is the vertex's (`true`) or the eye distance.
+    pub fog_from_vertex: Option<bool>,
+}
+
+/// How one texture unit in use gets its coordinates.
+#[derive(Clone, Debug)]
+pub struct TexCoordDraw {
+    pub unit: usize,
+    /// The unit's texture matrix.
+    pub matrix: Mat4,
+    /// Texture coordinate generation for s, t, r, q (`None`: the current coordinate).
+    pub texgen: [Option<GenCoord>; 4],
+}
 
 /// Inverse of `m`, or the identity when `m` is singular or not finite (Mesa does the same;
 /// the specification leaves it undefined).
@@ -25,7 +56,7 @@ pub(crate) fn inverse_or_identity(m: Mat4) -> Mat4 {
 
 /// Transforms one vertex. Colours are clamped to [0, 1] here (section 2.14.7; with lighting
 /// off the current colour is used as is, then clamped).
-pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
+pub fn to_clip(ds: &VertexDraw, v: &ImmVertex) -> ClipVertex {
     let mut out = ClipVertex::ZERO;
     to_clip_into(ds, v, &mut out);
     out
@@ -34,14 +65,14 @@ pub fn to_clip(ds: &DrawState, v: &ImmVertex) -> ClipVertex {
 /// [`to_clip`] written over `out` in place: a batch's vertices go straight into the draw's
 /// reused buffer instead of being built and then copied (a clip vertex is 264 bytes).
 #[inline]
-pub fn to_clip_into(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex) {
+pub fn to_clip_into(ds: &VertexDraw, v: &ImmVertex, out: &mut ClipVertex) {
     to_clip_except(ds, v, out, false);
 }
 
 /// [`to_clip_into`] for a batch (`out[i]` from `verts[i]`): units whose generation is the
 /// sphere map (`texgen::is_sphere_map`) get it eight vertices at a time
 /// (`texgen::sphere_map8`, the same values). The same clip vertices as one by one.
-pub fn to_clip_batch(ds: &DrawState, verts: &[ImmVertex], out: &mut [ClipVertex]) {
+pub fn to_clip_batch(ds: &VertexDraw, verts: &[ImmVertex], out: &mut [ClipVertex]) {
     let deferred = crate::common::cpu::available()
         && ds.units.iter().any(|u| texgen::is_sphere_map(&u.texgen));
     if !deferred {
@@ -96,16 +127,9 @@ type Vec3x8 = [Option<glam::Vec3>; 8];
 /// [`to_clip_into`], leaving the texture coordinates of sphere-mapped units (0) to the caller
 /// when `defer_sphere_map`.
 #[inline(always)]
-fn to_clip_except(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex, defer_sphere_map: bool) {
+fn to_clip_except(ds: &VertexDraw, v: &ImmVertex, out: &mut ClipVertex, defer_sphere_map: bool) {
     let pos = (ds.mvp * v.position).as_dvec4();
-    let needs_eye = !ds.clip_planes.is_empty()
-        || ds.raster.point_attenuation.is_some()
-        || ds.fog.is_some_and(|f| !f.coord_from_vertex)
-        || ds
-            .units
-            .iter()
-            .any(|u| u.texgen.iter().any(|g| g.is_some()));
-    let eye = if !needs_eye {
+    let eye = if !ds.needs_eye {
         DVec4::ZERO
     } else {
         (ds.modelview * v.position).as_dvec4()
@@ -138,9 +162,9 @@ fn to_clip_except(ds: &DrawState, v: &ImmVertex, out: &mut ClipVertex, defer_sph
         let tc = u.matrix * tc;
         attrs[attr::TEX + 4 * u.unit..attr::TEX + 4 * u.unit + 4].copy_from_slice(&tc.to_array());
     }
-    if let Some(f) = &ds.fog {
+    if let Some(from_vertex) = ds.fog_from_vertex {
         // Section 3.10: the fog coordinate, or the eye distance approximated by |z_eye|.
-        attrs[attr::FOG] = if f.coord_from_vertex {
+        attrs[attr::FOG] = if from_vertex {
             v.fog_coord
         } else {
             (eye.z as f32).abs()
@@ -200,7 +224,7 @@ mod tests {
         gl.rotatef(40.0, 0.0, 0.0, 1.0);
         gl.scalef(2.0, 0.5, 1.0);
         let ds = gl.snapshot();
-        assert_eq!(ds.units.len(), 3);
+        assert_eq!(ds.vertex.units.len(), 3);
         let mut seed = 0x5EED_1234_ABCD_0001u64;
         let mut next = || {
             let seed = crate::test_support::xorshift(&mut seed);
@@ -224,9 +248,9 @@ mod tests {
                 })
                 .collect();
             let mut batch = vec![ClipVertex::ZERO; n];
-            to_clip_batch(&ds, &verts, &mut batch);
+            to_clip_batch(&ds.vertex, &verts, &mut batch);
             for (i, (b, v)) in batch.iter().zip(&verts).enumerate() {
-                let one = to_clip(&ds, v);
+                let one = to_clip(&ds.vertex, v);
                 assert_eq!(b.pos, one.pos, "batch of {n}, vertex {i}");
                 let bits = |c: &ClipVertex| c.attrs.map(f32::to_bits);
                 assert_eq!(bits(b), bits(&one), "batch of {n}, vertex {i}");

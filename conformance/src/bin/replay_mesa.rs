@@ -7,7 +7,7 @@ use std::path::Path;
 
 use tilegl::replay::dispatch::{dispatch, DispatchState, Outcome};
 use tilegl::replay::trace::TraceReader;
-use tilegl::{Context, Gl};
+use tilegl::Gl;
 use tilegl_conformance::compare::{diff, Image};
 use tilegl_conformance::mesa::{MesaContext, Oracle};
 
@@ -62,7 +62,11 @@ fn main() {
     let _ = std::fs::create_dir_all(out);
     let mut mesa = MesaContext::create(w, h).expect("Mesa");
     let m = play(&mut *mesa, trace, frame, after_call, w, h);
-    let mut ctx = Context::new(w, h);
+    let mut ctx = tilegl_conformance::client_context(tilegl::ContextConfig {
+        width: w,
+        height: h,
+        ..Default::default()
+    });
     let t = play(&mut ctx, trace, frame, after_call, w, h);
     println!("{}: tilegl vs Mesa {}", args[1], diff(&t, &m, 8));
     let _ = m.write_ppm(&out.join(format!("{}-mesa.ppm", args[1])));

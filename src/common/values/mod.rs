@@ -1,4 +1,4 @@
-//! The typed values the API layer converts GL enums to (`api::convert` parses them; this module
+//! The typed values the API layer converts GL enums to (`gl::convert` parses them; this module
 //! only defines them), used by every stage below the API: primitive modes, comparison
 //! functions, blend factors, fog modes, texture environment and generation modes, ...
 //! Nothing here knows a GL enum value.

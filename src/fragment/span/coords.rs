@@ -56,7 +56,7 @@ pub(super) fn unit_coords(
 /// Samples every unit and runs the texture environment cascade on the primary colour.
 #[inline(never)]
 pub(super) fn texture_fragment(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     it: &Interpolants,
     x: f64,
     y: f64,
@@ -105,7 +105,7 @@ pub(super) fn sampled_texels(
 /// The texture environment cascade on the primary colour, given each unit's texel.
 #[inline(never)]
 pub(super) fn environment(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     primary: [f32; 4],
     texels: &[Option<[f32; 4]>; MAX_TEXTURE_UNITS],
 ) -> [f32; 4] {
@@ -122,7 +122,7 @@ pub(super) fn environment(
 /// [`environment`] for eight fragments at once: primary colours `primary` (channel arrays) and
 /// the texels of every unit with a texture in `by_unit` (indexed by unit number).
 pub(super) fn environment8(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     primary: &Texels8,
     by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
 ) -> Texels8 {
@@ -141,7 +141,7 @@ pub(super) fn environment8(
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 pub(super) fn environment8_avx2(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     primary: &Texels8,
     by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
 ) -> Texels8 {
@@ -173,7 +173,7 @@ pub(super) fn environment8_avx2(
 
 #[inline(always)]
 pub(super) fn environment8_arrays(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     primary: &Texels8,
     by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
 ) -> Texels8 {

@@ -19,7 +19,7 @@ pub(super) fn finish_fragment<
     const FOG: bool,
     const BLEND: u8,
 >(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     tile: &mut Tile,
     it: &Interpolants,
     idx: usize,
@@ -133,7 +133,7 @@ pub(super) fn shade<
     const SAMPLED: bool,
     const FOG: bool,
 >(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -222,7 +222,7 @@ pub(super) fn shade_textured<
     const TEX: u8,
     const BLEND: u8,
 >(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,

@@ -26,12 +26,11 @@ use super::texenv::{self, CombineInputs};
 use crate::common::attr;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{CompareFunc, StencilOp, TexEnvMode};
+use crate::fragment::draw::{FragmentDraw, TextureUnitDraw};
 use crate::fragment::fog::FogDraw;
 use crate::fragment::plane::Plane;
 use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
-use crate::state::snapshot::TextureUnitDraw;
-use crate::state::DrawState;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
 use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
@@ -93,7 +92,7 @@ impl<'a> PrimitiveShared<'a> {
 }
 
 /// Every level of each unit's texture prepared for the eight-pixel filter ([`Level8`]; `None`
-/// where a level does not take it), by the unit's index in `DrawState::units`. Prepared once
+/// where a level does not take it), by the unit's index in `FragmentDraw::units`. Prepared once
 /// per tile and draw state ([`UnitLevels::prepare`]) instead of in every span: the spans of
 /// small triangles are a few pixels long. Empty (and not allocated) for draws without
 /// eight-pixel samplers.
@@ -108,7 +107,7 @@ pub struct UnitLevels<'a> {
 impl<'a> UnitLevels<'a> {
     /// Replaces the table with the levels of `ds`'s units (none unless the draw's key has
     /// `simd_units`, which the eight-pixel samplers require).
-    pub fn prepare(&mut self, ds: &'a DrawState) {
+    pub fn prepare(&mut self, ds: &'a FragmentDraw) {
         self.units.clear();
         self.textured_tail = None;
         if !ds.key.simd_units || !crate::common::cpu::available() {
@@ -134,7 +133,7 @@ impl<'a> UnitLevels<'a> {
 }
 
 /// Shades pixels `x0..x1` of row `y` (window coordinates, inside `tile`).
-pub type SpanFn = for<'a> fn(&'a DrawState, &mut Tile, i32, i32, i32, &Interpolants<'a>);
+pub type SpanFn = for<'a> fn(&'a FragmentDraw, &mut Tile, i32, i32, i32, &Interpolants<'a>);
 
 /// Depth handling chosen at compile time: `DYNAMIC` reads the key, others are fixed.
 pub mod depth_mode {

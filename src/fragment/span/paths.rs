@@ -5,7 +5,7 @@ use super::*;
 
 /// The general path: every decision read from the key at run time.
 pub fn span_general<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -18,7 +18,7 @@ pub fn span_general<'a>(
 /// The general path with every texture unit sampled eight pixels at a time (keys with
 /// `simd_units`): the same texels, hence the same pictures.
 pub fn span_sampled<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -32,7 +32,7 @@ pub fn span_sampled<'a>(
 /// the colour mask by `FULL_MASK`; everything else read from the key (which must have
 /// `fast_texture` of `TEX`'s layout, no stencil test and no logic op).
 pub fn span_textured<'a, const TEX: u8, const BLEND: u8, const FULL_MASK: bool>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -49,11 +49,11 @@ pub type RowPair = (i32, [(i32, i32); 2]);
 /// Shades row pairs of one primitive in a tile (distinct rows: within a primitive no pixel is
 /// covered twice, so their order does not matter). One call per primitive and tile, so that
 /// what does not depend on the rows is prepared once (a tiny triangle has one to three pairs).
-pub type PairFn = for<'a> fn(&'a DrawState, &mut Tile, &[RowPair], &Interpolants<'a>);
+pub type PairFn = for<'a> fn(&'a FragmentDraw, &mut Tile, &[RowPair], &Interpolants<'a>);
 
 /// The rows of the pairs one by one, by the draw's span function.
 pub(super) fn pair_by_rows<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants<'a>,
@@ -75,7 +75,7 @@ pub(super) fn pair_by_rows<'a>(
 /// answers the colour words and the lanes that passed every test, which are stored.
 #[inline(always)]
 pub(super) fn for_each_block(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
@@ -92,7 +92,7 @@ pub(super) fn for_each_block(
 /// [`for_each_block`] for a fogged draw (`FOG`) or not.
 #[inline(always)]
 pub(super) fn blocks<const FOG: bool>(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
@@ -215,7 +215,7 @@ pub(super) fn block_lane_centre(gx: i32, y: i32, lane: usize) -> (f64, f64) {
 /// pixels are the same; affine primitives and keys without the eight-lane tail take the rows
 /// one by one.
 pub fn pair_textured<'a, const TEX: u8>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants<'a>,
@@ -278,7 +278,7 @@ pub fn pair_textured<'a, const TEX: u8>(
 /// sampled by its block sampler (`Perspective8::texels_block`; one by one where it does not
 /// apply), the cascade, then the eight-fragment tail. The same pixels as the rows one by one.
 pub fn pair_sampled8<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants<'a>,
@@ -326,7 +326,7 @@ pub fn pair_sampled8<'a>(
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
 /// mode and full colour mask fixed at compile time.
 pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -339,7 +339,7 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
 /// [`span_specialised`] with fog: keys that are simple but for fog (a fogged, untextured,
 /// unblended scene).
 pub fn span_fogged<'a, const DEPTH: u8, const FULL_MASK: bool>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -361,7 +361,7 @@ pub fn untextured8_applies(key: &FragmentKey) -> bool {
 /// the alpha test, blending, colour mask and writes run on eight at once with the general
 /// path's arithmetic (the same pixels). Partly covered pixels take the general path.
 pub fn span_untextured8<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -416,7 +416,7 @@ pub fn depth_stencil_applies(key: &FragmentKey) -> bool {
 /// the colour, texturing and fog it would compute and then not write (the depth stepped as
 /// every span path steps it).
 pub fn span_depth_stencil<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -460,7 +460,7 @@ pub fn span_depth_stencil<'a>(
 }
 
 /// Draws nothing (a key whose fragments change no buffer).
-pub fn span_nothing(_: &DrawState, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
+pub fn span_nothing(_: &FragmentDraw, _: &mut Tile, _: i32, _: i32, _: i32, _: &Interpolants) {}
 
 /// Whether [`span_sampled8`] may shade a key: every unit takes the eight-pixel sampler
 /// (`simd_units`), and after the texture environment only the alpha test, the depth test,
@@ -474,7 +474,7 @@ pub fn sampled8_applies(key: &FragmentKey) -> bool {
 /// blending and colour mask of eight fragments at once ([`simd::shade8`] with the environment's
 /// result as a replacing texel). The same arithmetic as the general path, so the same pixels.
 pub fn span_sampled8<'a>(
-    ds: &'a DrawState,
+    ds: &'a FragmentDraw,
     tile: &mut Tile,
     y: i32,
     x0: i32,
@@ -532,7 +532,7 @@ pub fn span_sampled8<'a>(
 pub(super) type SingleUnit = Option<(bool, bool, bool)>;
 
 /// What the eight-lane paths of a [`sampled8_applies`] draw set up for a row or a row pair:
-/// each unit's sampler (by index in `DrawState::units`), the tail, and each unit's texels of
+/// each unit's sampler (by index in `FragmentDraw::units`), the tail, and each unit's texels of
 /// the current group by unit number (as the cascade reads them).
 pub(super) struct Sampled8<'a> {
     pub(super) samplers: [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
@@ -546,7 +546,7 @@ impl<'a> Sampled8<'a> {
     /// in place, not copied out, it costs nothing per row pair.)
     #[inline(always)]
     pub(super) fn new(
-        ds: &'a DrawState,
+        ds: &'a FragmentDraw,
         it: &Interpolants<'a>,
         y: i32,
         block: bool,
@@ -570,7 +570,7 @@ impl<'a> Sampled8<'a> {
     #[inline(always)]
     pub(super) fn place_samplers(
         samplers: &mut [Option<Perspective8<'a>>; MAX_TEXTURE_UNITS],
-        ds: &'a DrawState,
+        ds: &'a FragmentDraw,
         it: &Interpolants<'a>,
         y: i32,
         block: bool,
@@ -589,7 +589,7 @@ impl<'a> Sampled8<'a> {
 /// MODULATE ([`SingleUnit`]) the environment itself runs eight fragments at a time in the
 /// tail (with the base format's table: which of colour and alpha the texture has); otherwise
 /// the cascade runs per fragment and enters the tail as a replacing texel.
-pub(super) fn sampled8_tail(ds: &DrawState) -> (SingleUnit, Tail8) {
+pub(super) fn sampled8_tail(ds: &FragmentDraw) -> (SingleUnit, Tail8) {
     let single = match ds.units.as_slice() {
         [unit] if matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate) => {
             let (has_color, has_alpha) = match unit.base {
@@ -614,7 +614,7 @@ pub(super) fn sampled8_tail(ds: &DrawState) -> (SingleUnit, Tail8) {
 /// draw, given each unit's texels by unit number.
 #[inline(always)]
 pub(super) fn sampled8_shade(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     single: SingleUnit,
     tail: &Tail8,
     group: &GroupInputs,

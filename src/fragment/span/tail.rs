@@ -58,7 +58,7 @@ impl SpanRun {
     #[inline(always)]
     pub(super) fn with_fog(
         mut self,
-        ds: &DrawState,
+        ds: &FragmentDraw,
         it: &Interpolants,
         xc0: f64,
         yc: f64,
@@ -178,7 +178,7 @@ pub(super) type Lane = ([f32; 4], u32, f32, Option<[f32; 3]>);
 /// The colours the eight-lane paths step ([`SpanRun::new`]'s count): the primary, and the
 /// secondary with the colour sum.
 #[inline(always)]
-pub(super) fn lane_colors(ds: &DrawState) -> usize {
+pub(super) fn lane_colors(ds: &FragmentDraw) -> usize {
     if ds.key.color_sum {
         8
     } else {
@@ -188,7 +188,7 @@ pub(super) fn lane_colors(ds: &DrawState) -> usize {
 
 /// The fog the eight-lane paths apply: the draw's parameters when its key is fogged.
 #[inline(always)]
-pub(super) fn lane_fog(ds: &DrawState) -> Option<&FogDraw> {
+pub(super) fn lane_fog(ds: &FragmentDraw) -> Option<&FogDraw> {
     ds.key.fog.and(ds.fog.as_ref())
 }
 
@@ -242,7 +242,7 @@ impl GroupInputs {
     /// depth, called in lane order.
     #[inline(always)]
     pub(super) fn gather(
-        ds: &DrawState,
+        ds: &FragmentDraw,
         tile: &Tile,
         base: usize,
         lanes: std::ops::Range<usize>,
@@ -257,7 +257,14 @@ impl GroupInputs {
 
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
     #[inline(always)]
-    pub(super) fn add(&mut self, ds: &DrawState, tile: &Tile, j: usize, index: usize, value: Lane) {
+    pub(super) fn add(
+        &mut self,
+        ds: &FragmentDraw,
+        tile: &Tile,
+        j: usize,
+        index: usize,
+        value: Lane,
+    ) {
         let (color, d, fog, secondary) = value;
         if let Some(secondary) = secondary {
             for c in 0..3 {
@@ -277,7 +284,7 @@ impl GroupInputs {
 /// Whether a fragment of stored depth `d` passes the eight-lane paths' depth test against
 /// `stored` (no test, or `ALWAYS`: it passes).
 #[inline(always)]
-pub(super) fn depth_passes(ds: &DrawState, d: u32, stored: u32) -> bool {
+pub(super) fn depth_passes(ds: &FragmentDraw, d: u32, stored: u32) -> bool {
     match ds.key.depth_func {
         None | Some(CompareFunc::Always) => true,
         Some(func) => func.test(d, stored),
@@ -288,7 +295,7 @@ pub(super) fn depth_passes(ds: &DrawState, d: u32, stored: u32) -> bool {
 /// the depth of each lane set in `passed`.
 #[inline(always)]
 pub(super) fn store_group(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     tile: &mut Tile,
     base: usize,
     lanes: std::ops::Range<usize>,
@@ -305,7 +312,7 @@ pub(super) fn store_group(
 /// writes are on.
 #[inline(always)]
 pub(super) fn store_lane(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     tile: &mut Tile,
     j: usize,
     index: usize,
@@ -322,7 +329,7 @@ pub(super) fn store_lane(
 /// The eight-fragment tail for the draw's key (its alpha test, blending and colour mask) with
 /// the texture environment's part as given.
 pub(super) fn tail8(
-    ds: &DrawState,
+    ds: &FragmentDraw,
     modulate: bool,
     rgb_from_primary: bool,
     alpha_from_primary: bool,
@@ -342,7 +349,7 @@ pub(super) fn tail8(
 
 /// The depth range the eight-lane paths convert depths to: none without a depth test or
 /// depth writes (the values would be unused).
-pub(super) fn group_depth_max(ds: &DrawState) -> Option<u32> {
+pub(super) fn group_depth_max(ds: &FragmentDraw) -> Option<u32> {
     (ds.key.depth_func.is_some() || ds.key.depth_write).then_some(ds.depth_max)
 }
 
@@ -358,7 +365,7 @@ pub fn tail8_applies(key: &FragmentKey) -> bool {
 }
 
 /// The eight-fragment tail's blending for the draw's key.
-pub(super) fn tail_blend(ds: &DrawState) -> simd::TailBlend {
+pub(super) fn tail_blend(ds: &FragmentDraw) -> simd::TailBlend {
     match ds.key.blend {
         None => simd::TailBlend::None,
         Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,

@@ -307,7 +307,7 @@ impl Context {
             }
         });
         match r {
-            Ok(p) => client_memory::store_pointer(params, p),
+            Ok(p) => self.client_memory.store_pointer(params, p),
             Err(e) => self.record_error(e),
         }
     }

@@ -27,7 +27,7 @@ impl Context {
         let len = ((max - min) as usize)
             .saturating_mul(a.effective_stride())
             .saturating_add(a.element_bytes());
-        client_memory::with_client_bytes_from(a.pointer, start, len, f)
+        client_memory::with_bytes_from(self.client_memory, a.pointer, start, len, f)
     }
 
     pub(super) fn buffer_mapped(&self, name: GLuint) -> bool {
@@ -382,7 +382,7 @@ impl Context {
             fill(data.get(indices.0..).unwrap_or(&[]), &mut out);
         } else {
             let len = count.saturating_mul(ty.size());
-            client_memory::with_client_bytes(indices, len, |b| fill(b, &mut out));
+            client_memory::with_bytes(self.client_memory, indices, len, |b| fill(b, &mut out));
         }
         Ok(out)
     }
@@ -477,7 +477,8 @@ impl Context {
         // `indices` is a client array of `drawcount` pointers (offsets when an element array
         // buffer is bound).
         let n = drawcount as usize;
-        let ptrs: Vec<usize> = client_memory::with_client_bytes(
+        let ptrs: Vec<usize> = client_memory::with_bytes(
+            self.client_memory,
             indices,
             n.saturating_mul(std::mem::size_of::<usize>()),
             |b| {

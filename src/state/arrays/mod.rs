@@ -16,7 +16,8 @@
 //!
 //! An array's data is either in a buffer object (the pointer is an offset into the buffer
 //! bound to `GL_ARRAY_BUFFER` when the pointer was given; safe, owned by the context) or in
-//! client memory, read through `capi::client_memory` under the GL client-array contract.
+//! client memory, read through the context's `client_memory` (attached by the C ABI) under the GL client-array
+//! contract.
 //! Elements beyond the end of a buffer object read as zeros; a null client pointer reads as
 //! zeros.
 
@@ -27,16 +28,16 @@ use parking_lot::{MappedRwLockWriteGuard, RwLock, RwLockReadGuard, RwLockWriteGu
 
 use glam::{Vec3, Vec4};
 
+use super::client_memory;
 use super::tables::PixelStore;
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
-use crate::capi::client_memory;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
     ArrayQuery, ArrayType, BufferAccess, BufferParam, BufferTarget, ClientArray, IndexType,
     InterleavedFormat,
 };
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::state::get::StateValue;
 use crate::vertex::immediate::{norm_i16, norm_i32, norm_i8, norm_u16, norm_u32, norm_u8};
 

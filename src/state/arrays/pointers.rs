@@ -306,6 +306,6 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
-        client_memory::store_pointer(params, p.0);
+        self.client_memory.store_pointer(params, p.0);
     }
 }

@@ -6,12 +6,12 @@
 #![allow(clippy::too_many_arguments)]
 
 use super::Context;
-use crate::api::convert;
-use crate::api::enums::*;
 use crate::common::values::{
     PackedType, TexImageTarget, TexLevelParam, TexParam, TexPixelFormat, TexPixelType,
     TextureTarget,
 };
+use crate::gl::convert;
+use crate::gl::enums::*;
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
 use crate::texture::object::{level_count, max_size, MAX_TEXTURE_MAX_ANISOTROPY};
@@ -21,47 +21,6 @@ mod compressed;
 mod copy;
 mod image;
 mod params;
-
-/// The texture entry points `impl Gl for Context` forwards (see `gl_forward_all!`).
-macro_rules! texture_entry_points {
-    () => {
-        gl_forward_all!(
-            gen_textures,
-            bind_texture,
-            delete_textures,
-            is_texture,
-            prioritize_textures,
-            are_textures_resident,
-            tex_image_1d,
-            tex_image_2d,
-            tex_image_3d,
-            tex_sub_image_1d,
-            tex_sub_image_2d,
-            tex_sub_image_3d,
-            copy_tex_image_1d,
-            copy_tex_image_2d,
-            copy_tex_sub_image_1d,
-            copy_tex_sub_image_2d,
-            copy_tex_sub_image_3d,
-            get_tex_image,
-            tex_parameterf,
-            tex_parameterfv,
-            tex_parameteri,
-            tex_parameteriv,
-            get_tex_parameterfv,
-            get_tex_parameteriv,
-            get_tex_level_parameterfv,
-            get_tex_level_parameteriv,
-            compressed_tex_image_1d,
-            compressed_tex_image_2d,
-            compressed_tex_image_3d,
-            compressed_tex_sub_image_1d,
-            compressed_tex_sub_image_2d,
-            compressed_tex_sub_image_3d,
-            get_compressed_tex_image,
-        );
-    };
-}
 
 /// A validation failure: the error to record.
 type Check<T> = Result<T, GLenum>;

@@ -20,9 +20,12 @@ pub type GLsizeiptr = isize;
 
 /// A client memory address that GL keeps after the call returns (client arrays, selection and
 /// feedback buffers, offsets into buffer objects). Safe Rust cannot hand such a pointer over, so
-/// it travels as a number; only the C ABI turns it back into memory (`capi::client_memory`).
-/// Handing an address to `gl*Pointer` or `glDrawElements` is GL's client-array promise that
-/// the memory stays valid while draws read it; Rust code that wants no such promise sources its
-/// arrays from buffer objects, where the value is an offset into context-owned memory.
+/// it travels as a number; only the C ABI turns it back into memory (`capi::client_memory`),
+/// for the contexts it is attached to: those the C ABI and the replayer create, and a Rust
+/// context whose owner calls `unsafe capi::client_memory::attach`, promising GL's client-array
+/// contract (the memory stays valid while draws read it). A context without it reads client
+/// arrays as empty and skips pointer and buffer writes. Rust code that wants no such promise
+/// sources its arrays from buffer objects, where the value is an offset into context-owned
+/// memory.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct ClientPtr(pub usize);

@@ -2,8 +2,8 @@
 
 use crate::common::values::*;
 
-use crate::api::enums::*;
-use crate::api::types::{GLenum, GLint};
+use crate::gl::enums::*;
+use crate::gl::types::{GLenum, GLint};
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 
 /// Every image target, including proxies (`glGetTexLevelParameter`).

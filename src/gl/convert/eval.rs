@@ -2,8 +2,8 @@
 
 use crate::common::values::*;
 
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 /// `GL_MAP1_*` targets.
 pub fn map1_target(e: GLenum) -> Option<EvalTarget> {

@@ -2,8 +2,8 @@
 
 use crate::common::values::*;
 
-use crate::api::enums::*;
-use crate::api::types::GLenum;
+use crate::gl::enums::*;
+use crate::gl::types::GLenum;
 
 pub fn client_array(e: GLenum) -> Option<ClientArray> {
     use ClientArray::*;

@@ -1,34 +1,20 @@
-//! Extreme cases: stiff and extreme numerics against Mesa. Coordinates near 1e30, w near zero
-//! and negative, slivers and degenerate triangles, non-finite vertices; zero-length normals
-//! under `GL_NORMALIZE`, spot cut-offs 90 and 180, shininess 0 and 128, huge eye-plane
-//! coefficients, a sphere map with m = 0 and q = 0 from texture-coordinate generation.
-//! (`tests/extremes.rs` and `tests/cascade_extremes.rs` check the same inputs against the
-//! specification's equations.)
+//! Extreme cases of clipping and lighting (in [`super::EXTREME_SCENES`]): coordinates near
+//! 1e30, w near zero and negative, slivers and degenerate triangles, non-finite vertices;
+//! zero-length normals under `GL_NORMALIZE`, spot cut-offs 90 and 180, shininess 0 and 128,
+//! huge eye-plane coefficients, a sphere map with m = 0 and q = 0 from texture-coordinate
+//! generation. (`tests/extremes.rs` and `tests/cascade_extremes.rs` check the same inputs
+//! against the specification's equations.)
 //!
 //! Where Mesa is known to be less exact than tilegl, the case is listed in
 //! [`crate::known_failures::MESA_LESS_EXACT`] with the reason, and the report shows it.
 
-use crate::compare::Scene;
-use crate::scenes::{clear, pal, pixel_space, scene};
+use crate::scenes::{clear, pal, pixel_space};
 use tilegl::enums::*;
 use tilegl::Gl;
 
-/// Extreme-case scenes, in report order.
-pub const EXTREME_SCENES: &[Scene] = &[
-    scene("extreme_huge_coordinates", huge_coordinates),
-    scene("extreme_w_zero_and_negative", w_near_zero),
-    scene("extreme_slivers", slivers),
-    scene("extreme_non_finite_vertices", non_finite_vertices),
-    scene("extreme_zero_normals", zero_normals),
-    scene("extreme_spot_cutoffs", spot_cutoffs),
-    scene("extreme_shininess", shininess),
-    scene("extreme_shininess_0_positional", shininess_0_positional),
-    scene("extreme_texgen", texgen),
-];
-
 /// Triangles with vertices near 1e30 and 1e20 (in object space) that still cover the right
 /// half-planes, and a quad far outside every clip plane.
-fn huge_coordinates(gl: &mut dyn Gl) {
+pub(super) fn huge_coordinates(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
     gl.begin(GL_TRIANGLES);
     pal(gl, 0);
@@ -54,7 +40,7 @@ fn huge_coordinates(gl: &mut dyn Gl) {
 
 /// Vertices with w = 1e-6, w = -1 and w = 0 (clip-space input through an identity
 /// projection): the clipper must cut, not divide by zero.
-fn w_near_zero(gl: &mut dyn Gl) {
+pub(super) fn w_near_zero(gl: &mut dyn Gl) {
     clear(gl);
     gl.begin(GL_TRIANGLES);
     gl.color_3f(1.0, 0.5, 0.0);
@@ -74,7 +60,7 @@ fn w_near_zero(gl: &mut dyn Gl) {
 
 /// Slivers one hundredth of a pixel wide, a triangle with all three vertices on a line, one
 /// with two equal vertices, and long thin triangles across the picture.
-fn slivers(gl: &mut dyn Gl) {
+pub(super) fn slivers(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
     gl.begin(GL_TRIANGLES);
     for i in 0..8 {
@@ -96,7 +82,7 @@ fn slivers(gl: &mut dyn Gl) {
 
 /// Triangles, lines and points with a NaN or infinite coordinate, each followed by a good
 /// primitive; a NaN in the modelview matrix for one rectangle.
-fn non_finite_vertices(gl: &mut dyn Gl) {
+pub(super) fn non_finite_vertices(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
     for (i, bad) in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY]
         .into_iter()
@@ -131,7 +117,7 @@ fn non_finite_vertices(gl: &mut dyn Gl) {
 }
 
 /// A lit context in pixel space: no global ambient, material components zero, light 0 white.
-fn lit(gl: &mut dyn Gl) {
+pub(super) fn lit(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
     gl.enable(GL_LIGHTING);
     gl.enable(GL_LIGHT0);
@@ -146,7 +132,7 @@ fn lit(gl: &mut dyn Gl) {
 /// whose squares leave the float range, 1e-22 or 1e-30 for example, are in
 /// `scenes_extremes::normals_1e_minus_20`: llvmpipe flushes or underflows them to zero and
 /// leaves such a normal unlit, tilegl normalizes them to a unit normal, as the spec asks.)
-fn zero_normals(gl: &mut dyn Gl) {
+pub(super) fn zero_normals(gl: &mut dyn Gl) {
     lit(gl);
     gl.materialfv(GL_FRONT_AND_BACK, GL_EMISSION, &[0.2, 0.1, 0.0, 1.0]);
     gl.materialfv(GL_FRONT_AND_BACK, GL_AMBIENT, &[0.4, 0.4, 0.4, 1.0]);
@@ -177,7 +163,7 @@ fn zero_normals(gl: &mut dyn Gl) {
 /// 0 and 8. (The light sits between two columns of vertices: at a vertex exactly at 90 degrees
 /// the spot factor is 0^0, which llvmpipe's pow evaluates to 0 and tilegl to 1; the
 /// specification does not settle 0^0.)
-fn spot_cutoffs(gl: &mut dyn Gl) {
+pub(super) fn spot_cutoffs(gl: &mut dyn Gl) {
     lit(gl);
     gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[1.0, 1.0, 1.0, 1.0]);
     gl.lightfv(GL_LIGHT0, GL_SPOT_DIRECTION, &[1.0, 0.0, 0.0]);
@@ -204,7 +190,7 @@ fn spot_cutoffs(gl: &mut dyn Gl) {
 }
 
 /// Specular highlights on a tilted mesh under a directional light: shininess 0, 1, 64 and 128.
-fn shininess(gl: &mut dyn Gl) {
+pub(super) fn shininess(gl: &mut dyn Gl) {
     lit(gl);
     gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.9, 0.8, 0.7, 1.0]);
     gl.materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, &[0.1, 0.1, 0.2, 1.0]);
@@ -226,7 +212,7 @@ fn shininess(gl: &mut dyn Gl) {
 
 /// Shininess 0 under attenuated positional lights: the specular term is the full attenuated
 /// specular colour wherever n . VP > 0 (section 2.14.1: (n . h)^0 = 1).
-fn shininess_0_positional(gl: &mut dyn Gl) {
+pub(super) fn shininess_0_positional(gl: &mut dyn Gl) {
     lit(gl);
     gl.materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, &[0.5, 0.5, 0.5, 1.0]);
     gl.materialf(GL_FRONT_AND_BACK, GL_SHININESS, 0.0);
@@ -246,7 +232,7 @@ fn shininess_0_positional(gl: &mut dyn Gl) {
 /// Texture-coordinate generation at its edges on a 2x2 checker: eye planes with coefficients
 /// of 1e20 (left), a sphere map whose reflection vector is (0, 0, -1), m = 0 (middle), and
 /// object-linear q = 0 on part of a quad (right).
-fn texgen(gl: &mut dyn Gl) {
+pub(super) fn texgen(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
     let checker: [u8; 16] = [
         230, 40, 40, 255, 40, 230, 40, 255, 40, 40, 230, 255, 230, 230, 40, 255,
