@@ -341,6 +341,26 @@ fn face_coords(face: usize, dir: [f32; 3]) -> [f32; 2] {
     }
 }
 
+/// The derivatives of a cube map sample in the coordinates of its face: `coords + d_dx` and
+/// `coords + d_dy` (direction derivatives) projected on `face` (chosen for `coords`, whose
+/// face coordinates are `st`), minus `st`.
+#[inline]
+pub fn cube_face_derivatives(
+    face: usize,
+    st: [f32; 2],
+    coords: [f32; 3],
+    d_dx: [f32; 3],
+    d_dy: [f32; 3],
+) -> ([f32; 3], [f32; 3]) {
+    let add = |d: [f32; 3]| [coords[0] + d[0], coords[1] + d[1], coords[2] + d[2]];
+    let fx = face_coords(face, add(d_dx));
+    let fy = face_coords(face, add(d_dy));
+    (
+        [fx[0] - st[0], fx[1] - st[1], 0.0],
+        [fy[0] - st[0], fy[1] - st[1], 0.0],
+    )
+}
+
 #[inline]
 fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
     [
@@ -559,15 +579,8 @@ impl BoundTexture {
         };
         let (face, c, dx, dy) = if self.inner.target == TextureTarget::CubeMap {
             let (face, st) = cube_face(coords);
-            let add = |d: [f32; 3]| [coords[0] + d[0], coords[1] + d[1], coords[2] + d[2]];
-            let fx = face_coords(face, add(d_dx));
-            let fy = face_coords(face, add(d_dy));
-            (
-                face,
-                [st[0], st[1], coords[2]],
-                [fx[0] - st[0], fx[1] - st[1], 0.0],
-                [fy[0] - st[0], fy[1] - st[1], 0.0],
-            )
+            let (dx, dy) = cube_face_derivatives(face, st, coords, d_dx, d_dy);
+            (face, [st[0], st[1], coords[2]], dx, dy)
         } else {
             (0, coords, d_dx, d_dy)
         };
@@ -951,8 +964,14 @@ impl BoundTexture {
     /// Whether the eight-pixel filter (`simd::Level8`) may sample this texture, given that
     /// each level also passes `Level8::new`: a texture the fast 2D path takes
     /// ([`BoundTexture::fast_2d`]) or one of one-byte ALPHA, LUMINANCE, LUMINANCE_ALPHA or
-    /// INTENSITY texels under the same conditions.
+    /// INTENSITY texels under the same conditions; or a cube map whose faces are such
+    /// images (each lane's face chosen, then filtered as a 2D image).
     pub fn simd_2d(&self) -> bool {
+        self.simd_formats() && (self.byte_2d() || self.byte_cube())
+    }
+
+    /// The base formats the eight-pixel filter expands.
+    fn simd_formats(&self) -> bool {
         matches!(
             self.inner.base,
             BaseFormat::Rgb
@@ -961,12 +980,24 @@ impl BoundTexture {
                 | BaseFormat::Luminance
                 | BaseFormat::LuminanceAlpha
                 | BaseFormat::Intensity
-        ) && self.byte_2d()
+        )
     }
 
     /// A 2D texture of unsigned-byte texels without border, wrapped by `REPEAT`,
     /// `CLAMP_TO_EDGE` or `MIRRORED_REPEAT`, without anisotropy or swizzle.
     fn byte_2d(&self) -> bool {
+        self.inner.target == TextureTarget::T2D && self.byte_faces(1)
+    }
+
+    /// A cube map whose six faces are what [`BoundTexture::byte_2d`] asks of a 2D texture
+    /// (the faces are sampled as 2D images once a face is chosen).
+    fn byte_cube(&self) -> bool {
+        self.inner.target == TextureTarget::CubeMap && self.byte_faces(6)
+    }
+
+    /// `faces` faces of unsigned-byte levels without border, s and t wrapped by `REPEAT`,
+    /// `CLAMP_TO_EDGE` or `MIRRORED_REPEAT`, without anisotropy or swizzle.
+    fn byte_faces(&self, faces: usize) -> bool {
         let i = &*self.inner;
         let wrap_ok = |w: WrapMode| {
             matches!(
@@ -974,26 +1005,42 @@ impl BoundTexture {
                 WrapMode::Repeat | WrapMode::ClampToEdge | WrapMode::MirroredRepeat
             )
         };
-        i.target == TextureTarget::T2D
-            && i.params.max_anisotropy <= 1.0
+        i.params.max_anisotropy <= 1.0
             && i.params.swizzle == SwizzleSource::IDENTITY
             && wrap_ok(i.params.wrap[0])
             && wrap_ok(i.params.wrap[1])
-            && i.levels.len() == 1
-            && i.levels[0].iter().all(|l| {
-                l.border == 0
-                    && l.format.base == i.base
-                    && l.width > 0
-                    && l.height > 0
-                    && matches!(&*l.texels, Texels::U8(_))
+            && i.levels.len() == faces
+            && i.levels.iter().all(|face| {
+                face.iter().all(|l| {
+                    l.border == 0
+                        && l.format.base == i.base
+                        && l.width > 0
+                        && l.height > 0
+                        && matches!(&*l.texels, Texels::U8(_))
+                })
             })
+    }
+
+    /// How many faces the eight-pixel samplers read: 6 for cube maps, else 1.
+    pub fn face_count(&self) -> usize {
+        if self.inner.target == TextureTarget::CubeMap {
+            6
+        } else {
+            1
+        }
     }
 
     /// Level `level` (from the base level) for the fast 2D path, or `None` when the texture is
     /// not eligible ([`BoundTexture::fast_2d`]) or the level does not exist.
     #[inline]
     pub fn fast_level(&self, level: usize) -> Option<FastLevel<'_>> {
-        let l = self.inner.levels.first()?.get(level)?;
+        self.face_fast_level(0, level)
+    }
+
+    /// [`BoundTexture::fast_level`] of face `face` (cube maps: +X, -X, +Y, -Y, +Z, -Z).
+    #[inline]
+    pub fn face_fast_level(&self, face: usize, level: usize) -> Option<FastLevel<'_>> {
+        let l = self.inner.levels.get(face)?.get(level)?;
         match &*l.texels {
             Texels::U8(v) if l.border == 0 => Some(FastLevel {
                 texels: v,

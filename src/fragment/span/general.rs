@@ -274,46 +274,63 @@ pub(super) fn shade_textured<
                 // start on an even column (quads), so its first group may begin one pixel
                 // early with lane 0 not live.
                 let mut gx = if perspective.is_some() { x0 & !1 } else { x0 };
+                let mut group = GroupInputs::EMPTY;
+                // A steady run's groups past its first pixel: every lane has the second
+                // pixel's inputs, set (and fogged) once; each group only reads the stored
+                // colours and depths.
+                let mut uniform = steady.then(|| GroupInputs::uniform(steady_values[1], fog));
                 while gx < x1 {
                     let lo = (x0 - gx).max(0) as usize;
                     let hi = ((x1 - gx) as usize).min(8);
                     let first = (gx - x0) as isize;
                     let base = (row as isize + first) as usize;
-                    let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |j| {
-                        if steady {
-                            steady_values[((first + j as isize) as usize).min(1)]
-                        } else if fogged {
-                            run.next::<true>(depth_max)
-                        } else {
-                            run.next::<false>(depth_max)
+                    let g = match &mut uniform {
+                        Some(u) if first + lo as isize >= 1 => {
+                            u.retest(ds, tile, base, lo..hi);
+                            &*u
                         }
-                    });
+                        _ => {
+                            group.refill(ds, tile, base, lo..hi, |j| {
+                                if steady {
+                                    steady_values[((first + j as isize) as usize).min(1)]
+                                } else if fogged {
+                                    run.next::<true>(depth_max)
+                                } else {
+                                    run.next::<false>(depth_max)
+                                }
+                            });
+                            if group.pass != 0 {
+                                group.fog_factors(fog);
+                            }
+                            &group
+                        }
+                    };
                     // Lanes failing the depth test change nothing (no stencil here): a group
                     // without a passing lane is not sampled, and only passing quads choose
                     // levels.
-                    if group.pass == 0 {
+                    if g.pass == 0 {
                         gx += 8;
                         continue;
                     }
-                    group.fog_factors(fog);
                     let GroupInputs {
                         primary,
                         depth,
                         pass,
                         dst,
                         after,
-                    } = group;
+                    } = g;
+                    let pass = *pass;
                     let x = gx as f64 + 0.5;
                     let live = pass;
                     // `shade8` always answers: AVX2 was detected above.
                     let shaded = match (&sampling, &mut perspective) {
                         (Some(sm), _) => {
-                            simd::textured8(sm, x, hi, &tail, &primary, &dst, pass, &after)
+                            simd::textured8(sm, x, hi, &tail, primary, dst, pass, after)
                         }
                         (None, Some(p)) => {
                             let mut tex = [[0f32; 8]; 4];
                             if p.texels_into(x, live, &mut tex) {
-                                simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
+                                simd::shade8(&tail, primary, &tex, dst, pass, after)
                             } else {
                                 None
                             }
@@ -326,10 +343,10 @@ pub(super) fn shade_textured<
                         } else {
                             f.texels_scalar::<4>(it, x, yc, hi)
                         };
-                        simd::shade8(&tail, &primary, &tex, &dst, pass, &after)
+                        simd::shade8(&tail, primary, &tex, dst, pass, after)
                     });
                     if let Some((words, passed)) = shaded {
-                        store_group(ds, tile, base, lo..hi, &words, passed, &depth);
+                        store_group(ds, tile, base, lo..hi, &words, passed, depth);
                     }
                     gx += 8;
                 }

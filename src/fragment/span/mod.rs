@@ -21,7 +21,7 @@
 use std::cell::Cell;
 
 use super::blend::{blend, blend_alpha_over};
-use super::key::{FragmentKey, Uniforms};
+use super::key::{FragmentKey, StencilKey, Uniforms};
 use super::texenv::{self, CombineInputs};
 use crate::common::attr;
 use crate::common::limits::MAX_TEXTURE_UNITS;
@@ -98,7 +98,10 @@ impl<'a> PrimitiveShared<'a> {
 /// eight-pixel samplers.
 #[derive(Clone, Debug, Default)]
 pub struct UnitLevels<'a> {
+    /// Each face's levels (one face, or a cube map's six from `first[k]`).
     units: Vec<[Option<Level8<'a>>; MAX_FAST_LEVELS]>,
+    /// The index in `units` of each unit's first face, and its face count.
+    first: [(usize, usize); MAX_TEXTURE_UNITS],
     /// `pair_textured`'s tail for the draw (one REPLACE/MODULATE unit on the fast 2D path,
     /// fragments finishing eight at a time), built once here instead of per row pair.
     textured_tail: Option<Tail8>,
@@ -109,6 +112,7 @@ impl<'a> UnitLevels<'a> {
     /// `simd_units`, which the eight-pixel samplers require).
     pub fn prepare(&mut self, ds: &'a FragmentDraw) {
         self.units.clear();
+        self.first = [(0, 0); MAX_TEXTURE_UNITS];
         self.textured_tail = None;
         if !ds.key.simd_units || !crate::common::cpu::available() {
             return;
@@ -120,15 +124,31 @@ impl<'a> UnitLevels<'a> {
                 self.textured_tail = Some(tail8(ds, modulate, false, rgb));
             }
         }
-        for unit in &ds.units {
+        for (k, unit) in ds.units.iter().enumerate() {
             let tex = &unit.texture;
             let (wrap, base) = (tex.wrap_st(), tex.base_format());
-            let mut levels = [None; MAX_FAST_LEVELS];
-            for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
-                *level = tex.fast_level(l).and_then(|f| Level8::new(&f, wrap, base));
+            let faces = tex.face_count();
+            self.first[k] = (self.units.len(), faces);
+            for face in 0..faces {
+                let mut levels = [None; MAX_FAST_LEVELS];
+                for (l, level) in levels.iter_mut().enumerate().take(tex.level_count()) {
+                    *level = tex
+                        .face_fast_level(face, l)
+                        .and_then(|f| Level8::new(&f, wrap, base));
+                }
+                self.units.push(levels);
             }
-            self.units.push(levels);
         }
+    }
+
+    /// The faces of the unit at index `k` of the draw's units (one, or a cube map's six), when
+    /// the table was prepared.
+    #[inline(always)]
+    fn faces(&self, k: usize) -> Option<&[[Option<Level8<'a>>; MAX_FAST_LEVELS]]> {
+        let &(first, count) = self.first.get(k)?;
+        self.units
+            .get(first..first + count)
+            .filter(|f| !f.is_empty())
     }
 }
 

@@ -71,7 +71,7 @@ pub(super) fn pair_by_rows<'a>(
 /// of the first covered pixel): lanes 0..4 are columns `gx..gx + 4` of row `y`, lanes 4..8
 /// the same columns of row `y + 1`. Each row's colour and depth are stepped from its own first
 /// pixel, as on the row alone. `shade(gx, group)` gets the covered lanes' inputs when one of
-/// them passes the depth test (the others change nothing: no stencil on these paths) and
+/// them passes the depth and stencil tests (the stencil actions done: [`stencil_lanes`]) and
 /// answers the colour words and the lanes that passed every test, which are stored.
 #[inline(always)]
 pub(super) fn for_each_block(
@@ -184,12 +184,17 @@ pub(super) fn blocks<const FOG: bool>(
                     }
                 }
             }
+            if ds.key.stencil.is_some() {
+                group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
+            }
             if group.pass != 0 {
                 group.fog_factors(fog);
                 if let Some((words, passed)) = shade(y, gx, &group) {
+                    // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
+                    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
                     for lane in 0..8 {
                         if live & (1 << lane) != 0 {
-                            let index = tile.index(gx + lane as i32 % 4, y + lane as i32 / 4);
+                            let index = row0 + lane / 4 * stride + lane % 4;
                             store_lane(ds, tile, lane, index, &words, passed, &group.depth);
                         }
                     }
@@ -198,6 +203,17 @@ pub(super) fn blocks<const FOG: bool>(
             gx += 4;
         }
     }
+}
+
+/// [`stencil_lanes`] for the live lanes of the 4x2 block at column `gx` of the row pair from
+/// `y` (kept out of the block loop, which draws without stencil far more often).
+#[inline(never)]
+fn block_stencil(ds: &FragmentDraw, tile: &mut Tile, gx: i32, y: i32, live: u8, pass: u8) -> u8 {
+    // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
+    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
+    stencil_lanes(ds, tile, live, pass, |lane| {
+        row0 + lane / 4 * stride + lane % 4
+    })
 }
 
 /// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
@@ -379,26 +395,31 @@ pub fn span_untextured8<'a>(
     let fog = lane_fog(ds);
     let fogged = fog.is_some();
     let mut gx = x0;
+    let mut group = GroupInputs::EMPTY;
     while gx < x1 {
         let n = ((x1 - gx) as usize).min(8);
         let base = row + (gx - x0) as usize;
-        let mut group = GroupInputs::gather(ds, tile, base, 0..n, |_| {
+        if stencil_rejects_all(ds, tile, base, 0..n) {
+            run.skip(n);
+            gx += 8;
+            continue;
+        }
+        group.refill(ds, tile, base, 0..n, |_| {
             if fogged {
                 run.next::<true>(depth_max)
             } else {
                 run.next::<false>(depth_max)
             }
         });
+        if ds.key.stencil.is_some() {
+            group.pass = stencil_lanes(ds, tile, lane_bits(0..n), group.pass, |j| base + j);
+        }
         group.fog_factors(fog);
-        let GroupInputs {
-            primary,
-            depth,
-            pass,
-            dst,
-            after,
-        } = group;
-        if let Some((words, passed)) = simd::shade8(&tail, &primary, &primary, &dst, pass, &after) {
-            store_group(ds, tile, base, 0..n, &words, passed, &depth);
+        let g = &group;
+        if let Some((words, passed)) =
+            simd::shade8(&tail, &g.primary, &g.primary, &g.dst, g.pass, &g.after)
+        {
+            store_group(ds, tile, base, 0..n, &words, passed, &g.depth);
         }
         gx += 8;
     }
@@ -412,9 +433,9 @@ pub fn depth_stencil_applies(key: &FragmentKey) -> bool {
 }
 
 /// Spans of a key with [`depth_stencil_applies`]: the stencil and depth tests with their
-/// updates and the occlusion count, per fragment and in [`finish_fragment`]'s order, without
-/// the colour, texturing and fog it would compute and then not write (the depth stepped as
-/// every span path steps it).
+/// updates and the occlusion count, eight fragments at a time and each in
+/// [`finish_fragment`]'s order, without the colour, texturing and fog it would compute and
+/// then not write (the depth stepped as every span path steps it).
 pub fn span_depth_stencil<'a>(
     ds: &'a FragmentDraw,
     tile: &mut Tile,
@@ -424,38 +445,43 @@ pub fn span_depth_stencil<'a>(
     it: &Interpolants<'a>,
 ) {
     let key = &ds.key;
-    let u = &ds.uniforms;
     let row = tile.index(x0, y);
     let mut run = SpanRun::new(it, x0 as f64 + 0.5, y as f64 + 0.5, 0);
-    for idx in row..row + (x1 - x0).max(0) as usize {
-        let depth = depth_to_fixed(run.z, ds.depth_max);
-        run.step();
-        let depth_pass = match key.depth_func {
-            None | Some(CompareFunc::Always) => true,
-            Some(f) => f.test(depth, tile.depth[idx]),
-        };
-        if let Some(st) = key.stencil {
-            let old = tile.stencil[idx];
-            let mask = u.stencil_value_mask;
-            let action = if !st.func.test(u.stencil_ref & mask, old & mask) {
-                tile.stencil[idx] = apply_stencil_op(st.fail, old, u);
-                continue;
-            } else if depth_pass {
-                st.depth_pass
-            } else {
-                st.depth_fail
-            };
-            tile.stencil[idx] = apply_stencil_op(action, old, u);
+    let end = row + (x1 - x0).max(0) as usize;
+    let mut start = row;
+    // Eight at a time: the depths stepped as every span steps them, rounded and tested by
+    // `simd::depth8` (`depth_to_fixed` and the key's function; per lane without it), then
+    // the stencil ([`stencil_lanes`]), the occlusion count and the depth writes.
+    while start < end {
+        let n = (end - start).min(8);
+        let live = lane_bits(0..n);
+        let mut z = [0f64; 8];
+        let mut stored = [0u32; 8];
+        for j in 0..n {
+            z[j] = run.next_z();
+            stored[j] = tile.depth[start + j];
         }
-        if !depth_pass {
-            continue;
-        }
+        let (depth, depth_pass) = simd::depth8(&z, &stored, live, ds.depth_max, key.depth_func)
+            .unwrap_or_else(|| {
+                let mut depth = [0u32; 8];
+                let mut pass = 0u8;
+                for j in 0..n {
+                    depth[j] = depth_to_fixed(z[j], ds.depth_max);
+                    pass |= u8::from(depth_passes(ds, depth[j], stored[j])) << j;
+                }
+                (depth, pass)
+            });
+        let base = start;
+        let pass = stencil_lanes(ds, tile, live, depth_pass, |j| base + j);
         if key.count_samples {
-            tile.samples_passed += 1;
+            tile.samples_passed += u64::from(pass.count_ones());
         }
         if key.depth_write {
-            tile.depth[idx] = depth;
+            for j in (0..n).filter(|j| pass & (1 << j) != 0) {
+                tile.depth[base + j] = depth[j];
+            }
         }
+        start += n;
     }
 }
 
@@ -497,20 +523,29 @@ pub fn span_sampled8<'a>(
     } = Sampled8::new(ds, it, y, false);
     let depth_max = group_depth_max(ds);
     let mut gx = x0 & !1;
+    let mut group = GroupInputs::EMPTY;
     while gx < x1 {
         let lo = (x0 - gx).max(0) as usize;
         let hi = ((x1 - gx) as usize).min(8);
         let first = (gx - x0) as isize;
         let base = (row as isize + first) as usize;
-        let mut group = GroupInputs::gather(ds, tile, base, lo..hi, |_| {
+        if stencil_rejects_all(ds, tile, base, lo..hi) {
+            run.skip(hi - lo);
+            gx += 8;
+            continue;
+        }
+        group.refill(ds, tile, base, lo..hi, |_| {
             if fog.is_some() {
                 run.next::<true>(depth_max)
             } else {
                 run.next::<false>(depth_max)
             }
         });
-        // Lanes failing the depth test change nothing (no stencil here): only passing lanes
-        // are sampled.
+        if ds.key.stencil.is_some() {
+            group.pass = stencil_lanes(ds, tile, lane_bits(lo..hi), group.pass, |j| base + j);
+        }
+        // Lanes failing the depth (or stencil) test change no colour or depth: only passing
+        // lanes are sampled.
         if group.pass == 0 {
             gx += 8;
             continue;

@@ -20,8 +20,20 @@ pub(super) struct Perspective8<'a> {
     pub(super) fixed_plan: Option<(usize, bool)>,
     /// λ and level selection, gathered once for the draw.
     pub(super) lod: &'a LodSelect,
-    /// The texture's levels prepared for the filter ([`UnitLevels`]).
+    /// The texture's levels prepared for the filter ([`UnitLevels`]; a cube map's first face).
     pub(super) levels: &'a [Option<Level8<'a>>; MAX_FAST_LEVELS],
+    /// A cube map's r planes and faces (`None` for 2D textures).
+    pub(super) cube: Option<Cube8<'a>>,
+}
+
+/// What a cube map adds to [`Perspective8`]: each lane's direction needs r, and each lane
+/// samples the face its direction selects.
+#[derive(Clone, Copy)]
+pub(super) struct Cube8<'a> {
+    /// The r plane on the sampler's two rows, as `Perspective8::planes`.
+    r: [[f64; 3]; 2],
+    /// The six faces' levels (+X, -X, +Y, -Y, +Z, -Z).
+    faces: &'a [[Option<Level8<'a>>; MAX_FAST_LEVELS]],
 }
 
 impl<'a> Perspective8<'a> {
@@ -54,17 +66,26 @@ impl<'a> Perspective8<'a> {
     ) -> Option<Perspective8<'a>> {
         // No table (no `simd_units` or no AVX2), or a base level that does not take the
         // filter: sampled one by one.
-        let levels = it.shared.levels.units.get(k)?;
+        let faces = it.shared.levels.faces(k)?;
+        let levels = &faces[0];
         levels[0]?;
         let base = attr::TEX + 4 * unit.unit;
         let p = [&it.attrs[base], &it.attrs[base + 1], &it.attrs[base + 3]];
         let row = |y: f64| p.map(|pl| [pl.a, pl.b * y, pl.c]);
+        let cube = (faces.len() == 6).then(|| {
+            let r = &it.attrs[base + 2];
+            Cube8 {
+                r: rows.map(|y| [r.a, r.b * y, r.c]),
+                faces,
+            }
+        });
         Some(Perspective8 {
             planes: [row(rows[0]), row(rows[1])],
             own_is_upper,
             lod: &unit.lod,
             fixed_plan: unit.fixed_plan,
             levels,
+            cube,
         })
     }
 
@@ -81,6 +102,9 @@ impl<'a> Perspective8<'a> {
     /// matter. False when a coordinate is beyond the filter's range (the caller samples one by
     /// one).
     pub(super) fn texels_into(&mut self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        if self.cube.is_some() {
+            return self.cube_row(x, live, out).is_some();
+        }
         let Some(rows) = texture_simd::perspective_rows8(&self.planes, x) else {
             return false;
         };
@@ -143,6 +167,9 @@ impl<'a> Perspective8<'a> {
     /// row, `x - 0.5` even (two whole quads). The same texels as [`Perspective8::texels_into`]
     /// gives each pixel on its own row. False when a coordinate is beyond the filter's range.
     pub(super) fn texels_block(&self, x: f64, live: u8, out: &mut Texels8) -> bool {
+        if self.cube.is_some() {
+            return self.cube_block(x, live, out).is_some();
+        }
         // A 2D texture (or a fixed plan) in one go: the same texels.
         let levels: &[Option<Level8>] = self.levels;
         if texture_simd::block_texels8(
@@ -189,6 +216,9 @@ impl<'a> Perspective8<'a> {
         group: &GroupInputs,
         tail: &Tail8,
     ) -> Option<([u32; 8], u8)> {
+        if self.cube.is_some() {
+            return None;
+        }
         let (level, linear, lod) = match self.fixed_plan {
             Some((level, linear)) => (level, linear, None),
             None => (0, self.lod.mag_linear(), Some(self.lod.magnified_test()?)),
@@ -285,6 +315,176 @@ impl<'a> Perspective8<'a> {
             };
             // One plan for every live lane (the usual case): no merging.
             if all {
+                *out = texels;
+                return Some(());
+            }
+            for j in 0..8 {
+                if lanes & (1 << j) != 0 {
+                    for c in 0..4 {
+                        out[c][j] = texels[c][j];
+                    }
+                }
+            }
+        }
+        Some(())
+    }
+}
+
+/// A direction or its derivative as the general path rounds it (`unit_coords`).
+#[inline(always)]
+fn fix3(v: [f64; 3]) -> [f32; 3] {
+    v.map(|c| finite_or_zero(c as f32))
+}
+
+impl Perspective8<'_> {
+    /// The direction (s/q, t/q, r/q in f64) at pixel centre `x` on the sampler's row `row`,
+    /// as `coords_at` evaluates it.
+    #[inline(always)]
+    fn direction(&self, cube: &Cube8, row: usize, x: f64) -> [f64; 3] {
+        let p = &self.planes[row];
+        let at = |pl: &[f64; 3]| pl[0] * x + pl[1] + pl[2];
+        let q = at(&p[2]);
+        [at(&p[0]) / q, at(&p[1]) / q, at(&cube.r[row]) / q]
+    }
+
+    /// [`Perspective8::texels_into`] for a cube map: the pixels centred at `x + j` on the
+    /// sampler's own row.
+    fn cube_row(&self, x: f64, live: u8, out: &mut Texels8) -> Option<()> {
+        let cube = self.cube.as_ref()?;
+        let mut coords = [[0f32; 3]; 8];
+        let mut grads = [([0f32; 3], [0f32; 3]); 8];
+        let need_lambda = self.fixed_plan.is_none();
+        let (upper, lower) = if self.own_is_upper { (0, 1) } else { (1, 0) };
+        for k in 0..4 {
+            let quad = 0b11u8 << (2 * k);
+            if live & quad == 0 {
+                continue;
+            }
+            let (l, r) = (2 * k, 2 * k + 1);
+            for j in [l, r] {
+                if live & (1 << j) != 0 {
+                    coords[j] = fix3(self.direction(cube, 0, x + j as f64));
+                }
+            }
+            if need_lambda {
+                // The quad's derivatives from its upper row and left column.
+                let ul = self.direction(cube, upper, x + l as f64);
+                let ur = self.direction(cube, upper, x + r as f64);
+                let ll = self.direction(cube, lower, x + l as f64);
+                let dx = fix3([0, 1, 2].map(|c| ur[c] - ul[c]));
+                let dy = fix3([0, 1, 2].map(|c| ul[c] - ll[c]));
+                grads[l] = (dx, dy);
+                grads[r] = (dx, dy);
+            }
+        }
+        self.cube_filter(cube, &coords, &grads, live, out)
+    }
+
+    /// [`Perspective8::texels_block`] for a cube map: lanes 0..4 the pixels centred at
+    /// `x + j` on the lower row, lanes 4..8 the same columns on the upper row.
+    fn cube_block(&self, x: f64, live: u8, out: &mut Texels8) -> Option<()> {
+        let cube = self.cube.as_ref()?;
+        let mut coords = [[0f32; 3]; 8];
+        let mut grads = [([0f32; 3], [0f32; 3]); 8];
+        let need_lambda = self.fixed_plan.is_none();
+        for q in 0..2 {
+            let lanes = [2 * q, 2 * q + 1, 2 * q + 4, 2 * q + 5];
+            let quad = lanes.iter().fold(0u8, |m, j| m | 1 << j);
+            if live & quad == 0 {
+                continue;
+            }
+            let mut dirs = [[0f64; 3]; 4];
+            for (d, &j) in dirs.iter_mut().zip(&lanes) {
+                if need_lambda || live & (1 << j) != 0 {
+                    *d = self.direction(cube, j / 4, x + (j % 4) as f64);
+                    coords[j] = fix3(*d);
+                }
+            }
+            if need_lambda {
+                // Lanes: lower left, lower right, upper left, upper right.
+                let dx = fix3([0, 1, 2].map(|c| dirs[3][c] - dirs[2][c]));
+                let dy = fix3([0, 1, 2].map(|c| dirs[2][c] - dirs[0][c]));
+                for j in lanes {
+                    grads[j] = (dx, dy);
+                }
+            }
+        }
+        self.cube_filter(cube, &coords, &grads, live, out)
+    }
+
+    /// The texels of a cube map at the lanes' directions `coords` (lanes set in `live`), as
+    /// `BoundTexture::sample_grad` samples each: the face and its coordinates by
+    /// `cube_face`, λ from the quad's derivatives `grads` projected on that face (unless the
+    /// plan is fixed), the level plan, then the face's levels filtered eight lanes at a time
+    /// for the lanes that share a face and plan.
+    fn cube_filter(
+        &self,
+        cube: &Cube8,
+        coords: &[[f32; 3]; 8],
+        grads: &[([f32; 3], [f32; 3]); 8],
+        live: u8,
+        out: &mut Texels8,
+    ) -> Option<()> {
+        use crate::texture::sample::{cube_face, cube_face_derivatives};
+        let mut s = [0f32; 8];
+        let mut t = [0f32; 8];
+        let mut weight = [0f32; 8];
+        // Per lane: face, first and second level, linear.
+        let mut plan = [(0usize, 0usize, 0usize, false); 8];
+        let mut m = live;
+        while m != 0 {
+            let j = m.trailing_zeros() as usize;
+            m &= m - 1;
+            let (face, st) = cube_face(coords[j]);
+            (s[j], t[j]) = (st[0], st[1]);
+            plan[j] = match self.fixed_plan {
+                Some((level, linear)) => (face, level, level, linear),
+                None => {
+                    let (dx, dy) =
+                        cube_face_derivatives(face, st, coords[j], grads[j].0, grads[j].1);
+                    match self.lod.plan(self.lod.isotropic_lambda(dx, dy)) {
+                        LevelPlan::One { level, linear } => (face, level, level, linear),
+                        LevelPlan::Two {
+                            levels: [a, b],
+                            linear,
+                            weight: w,
+                        } => {
+                            weight[j] = w;
+                            (face, a, b, linear)
+                        }
+                    }
+                }
+            };
+        }
+        let mut left = live;
+        while left != 0 {
+            let first = plan[left.trailing_zeros() as usize];
+            let mut lanes = 0u8;
+            let mut m = left;
+            while m != 0 {
+                let j = m.trailing_zeros() as usize;
+                m &= m - 1;
+                if plan[j] == first {
+                    lanes |= 1 << j;
+                }
+            }
+            left &= !lanes;
+            let (face, d1, d2, linear) = first;
+            let level = |l: usize| cube.faces.get(face)?.get(l)?.as_ref();
+            let t1 = texture_simd::filter8(level(d1)?, linear, &s, &t)?;
+            let texels = if d2 == d1 {
+                t1
+            } else {
+                let t2 = texture_simd::filter8(level(d2)?, linear, &s, &t)?;
+                let mut mixed = [[0f32; 8]; 4];
+                for c in 0..4 {
+                    for j in 0..8 {
+                        mixed[c][j] = t1[c][j] + (t2[c][j] - t1[c][j]) * weight[j];
+                    }
+                }
+                mixed
+            };
+            if lanes == live {
                 *out = texels;
                 return Some(());
             }

@@ -123,6 +123,23 @@ impl SpanRun {
         [self.color[4] * w, self.color[5] * w, self.color[6] * w]
     }
 
+    /// Moves `n` pixels on, as `n` steps (or `n` calls of [`Self::next`]) do.
+    #[inline(always)]
+    pub(super) fn skip(&mut self, n: usize) {
+        for _ in 0..n {
+            self.step();
+        }
+    }
+
+    /// The current pixel's depth, then a move to the next pixel (for runs whose other
+    /// values are not read).
+    #[inline(always)]
+    pub(super) fn next_z(&mut self) -> f64 {
+        let z = self.z;
+        self.z += self.dz;
+        z
+    }
+
     /// Moves to the next pixel.
     #[inline(always)]
     pub(super) fn step(&mut self) {
@@ -238,21 +255,27 @@ impl GroupInputs {
         }
     }
 
-    /// Lane `j` (in `lanes`) is pixel `base + j` of `tile`; `value(j)` gives its colour and
-    /// depth, called in lane order.
+    /// Refills the group in place (a fresh group would be a memset and its return a
+    /// memcpy per eight pixels): lane `j` (in `lanes`) is pixel `base + j` of `tile`;
+    /// `value(j)` gives its colour and depth, called in lane order. The other lanes' colours
+    /// and depths are 0 and they do not pass; their secondary colours and fog coordinates
+    /// are stale (read only for live lanes).
     #[inline(always)]
-    pub(super) fn gather(
+    pub(super) fn refill(
+        &mut self,
         ds: &FragmentDraw,
         tile: &Tile,
         base: usize,
         lanes: std::ops::Range<usize>,
         mut value: impl FnMut(usize) -> Lane,
-    ) -> GroupInputs {
-        let mut g = GroupInputs::EMPTY;
+    ) {
+        self.primary = [[0f32; 8]; 4];
+        self.depth = [0; 8];
+        self.pass = 0;
+        self.dst = [0; 8];
         for j in lanes {
-            g.add(ds, tile, j, base + j, value(j));
+            self.add(ds, tile, j, base + j, value(j));
         }
-        g
     }
 
     /// Lane `j` is pixel `index` of `tile`, with colour and depth `value`.
@@ -265,6 +288,15 @@ impl GroupInputs {
         index: usize,
         value: Lane,
     ) {
+        let d = value.1;
+        self.set_inputs(j, value);
+        self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
+        self.dst[j] = u32::from_le_bytes(tile.color[index]);
+    }
+
+    /// Lane `j`'s colours, depth and fog coordinate.
+    #[inline(always)]
+    pub(super) fn set_inputs(&mut self, j: usize, value: Lane) {
         let (color, d, fog, secondary) = value;
         if let Some(secondary) = secondary {
             for c in 0..3 {
@@ -276,9 +308,221 @@ impl GroupInputs {
         }
         self.depth[j] = d;
         self.after.fog[j] = fog;
-        self.pass |= u8::from(depth_passes(ds, d, tile.depth[index])) << j;
-        self.dst[j] = u32::from_le_bytes(tile.color[index]);
     }
+
+    /// A group whose eight lanes all have the inputs `value`, fog factors made (for the
+    /// groups of a steady run: see `shade_textured`); it neither passes nor has stored colours
+    /// until [`GroupInputs::retest`].
+    pub(super) fn uniform(value: Lane, fog: Option<&FogDraw>) -> GroupInputs {
+        let mut g = GroupInputs::EMPTY;
+        for j in 0..8 {
+            g.set_inputs(j, value);
+        }
+        g.pass = 0xFF;
+        g.fog_factors(fog);
+        g.pass = 0;
+        g
+    }
+
+    /// Keeps the lanes' inputs and reads lanes `lanes` (pixel `base + j`) afresh: their stored
+    /// colours and the depth test against their stored depths.
+    #[inline(always)]
+    pub(super) fn retest(
+        &mut self,
+        ds: &FragmentDraw,
+        tile: &Tile,
+        base: usize,
+        lanes: std::ops::Range<usize>,
+    ) {
+        self.pass = 0;
+        for j in lanes {
+            let index = base + j;
+            self.pass |= u8::from(depth_passes(ds, self.depth[j], tile.depth[index])) << j;
+            self.dst[j] = u32::from_le_bytes(tile.color[index]);
+        }
+    }
+}
+
+/// The stencil test and its actions (section 4.1.5, in `finish_fragment`'s order) for the
+/// lanes of `live`, lane j being pixel `index(j)` of `tile` with depth test results
+/// `depth_pass` (a subset of `live`): the lanes that pass both tests. Without a stencil test,
+/// `depth_pass`. The eight-lane paths take stencil keys only without an alpha test
+/// ([`tail8_applies`]), so every lane reaching the tests here is one the general path would
+/// test; lanes are distinct pixels, so their order does not matter.
+#[inline(always)]
+pub(super) fn stencil_lanes(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    live: u8,
+    depth_pass: u8,
+    index: impl Fn(usize) -> usize,
+) -> u8 {
+    let Some(st) = ds.key.stencil else {
+        return depth_pass;
+    };
+    let mut old = [0u8; 8];
+    for (j, o) in old.iter_mut().enumerate() {
+        if live & (1 << j) != 0 {
+            *o = tile.stencil[index(j)];
+        }
+    }
+    let (new, pass) = stencil8(&st, &ds.uniforms, &old, depth_pass);
+    for (j, &v) in new.iter().enumerate() {
+        if live & (1 << j) != 0 {
+            tile.stencil[index(j)] = v;
+        }
+    }
+    pass
+}
+
+/// The lanes whose stored stencil values `old` pass the stencil test (every lane tested).
+#[inline(always)]
+pub(super) fn stencil_test8(st: &StencilKey, u: &Uniforms, old: &[u8; 8]) -> u8 {
+    let mask = u.stencil_value_mask;
+    let reference = u.stencil_ref & mask;
+    let mut bits = 0u8;
+    for (j, &o) in old.iter().enumerate() {
+        bits |= u8::from(st.func.test(reference, o & mask)) << j;
+    }
+    bits
+}
+
+/// Eight stencil values after the test and the action each lane takes (`apply_stencil_op`
+/// lane by lane: the fail action where the test fails, else the depth-pass action for lanes
+/// in `depth_pass` and the depth-fail action for the others), and the lanes that pass both
+/// tests. SSE2 (every x86-64 has it) or lane by lane: the same integer operations.
+#[inline(always)]
+pub(super) fn stencil8(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: &[u8; 8],
+    depth_pass: u8,
+) -> ([u8; 8], u8) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: SSE2 is part of the x86-64 baseline.
+        unsafe { stencil8_sse2(st, u, old, depth_pass) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        stencil8_lanes(st, u, old, depth_pass)
+    }
+}
+
+/// [`stencil8`] lane by lane, in `finish_fragment`'s order.
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+#[inline(always)]
+pub(super) fn stencil8_lanes(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: &[u8; 8],
+    depth_pass: u8,
+) -> ([u8; 8], u8) {
+    let test = stencil_test8(st, u, old);
+    let mut new = [0u8; 8];
+    for j in 0..8 {
+        let bit = 1u8 << j;
+        let op = if test & bit == 0 {
+            st.fail
+        } else if depth_pass & bit != 0 {
+            st.depth_pass
+        } else {
+            st.depth_fail
+        };
+        new[j] = apply_stencil_op(op, old[j], u);
+    }
+    (new, test & depth_pass)
+}
+
+/// [`stencil8`] on the low eight bytes of SSE2 registers: unsigned byte comparisons through
+/// `max_epu8`, saturating and wrapping byte adds for the actions.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "sse2")]
+fn stencil8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8], depth_pass: u8) -> ([u8; 8], u8) {
+    use std::arch::x86_64::*;
+    let splat = |b: u8| _mm_set1_epi8(b as i8);
+    let ones = splat(0xFF);
+    // SAFETY: `old` holds eight bytes; an unaligned 64-bit load.
+    let o = unsafe { _mm_loadl_epi64(old.as_ptr() as *const __m128i) };
+    let m = _mm_and_si128(o, splat(u.stencil_value_mask));
+    let r = splat(u.stencil_ref & u.stencil_value_mask);
+    let max = _mm_max_epu8(r, m);
+    // Per lane: reference OP masked value.
+    let (r_ge, m_ge) = (_mm_cmpeq_epi8(max, r), _mm_cmpeq_epi8(max, m));
+    let eq = _mm_cmpeq_epi8(r, m);
+    let test = match st.func {
+        CompareFunc::Never => _mm_setzero_si128(),
+        CompareFunc::Less => _mm_xor_si128(r_ge, ones),
+        CompareFunc::Equal => eq,
+        CompareFunc::LessEqual => m_ge,
+        CompareFunc::Greater => _mm_xor_si128(m_ge, ones),
+        CompareFunc::NotEqual => _mm_xor_si128(eq, ones),
+        CompareFunc::GreaterEqual => r_ge,
+        CompareFunc::Always => ones,
+    };
+    let wm = splat(u.stencil_write_mask);
+    let action = |op: StencilOp| {
+        let one = splat(1);
+        let v = match op {
+            StencilOp::Keep => return o,
+            StencilOp::Zero => _mm_setzero_si128(),
+            StencilOp::Replace => splat(u.stencil_ref),
+            StencilOp::Incr => _mm_adds_epu8(o, one),
+            StencilOp::Decr => _mm_subs_epu8(o, one),
+            StencilOp::Invert => _mm_xor_si128(o, ones),
+            StencilOp::IncrWrap => _mm_add_epi8(o, one),
+            StencilOp::DecrWrap => _mm_sub_epi8(o, one),
+        };
+        _mm_or_si128(_mm_andnot_si128(wm, o), _mm_and_si128(v, wm))
+    };
+    // The depth test's bits as byte masks.
+    let bits = _mm_set_epi64x(0, 0x8040_2010_0804_0201u64 as i64);
+    let dp = _mm_cmpeq_epi8(_mm_and_si128(splat(depth_pass), bits), bits);
+    let select = |mask: __m128i, a: __m128i, b: __m128i| {
+        _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b))
+    };
+    let passed = select(dp, action(st.depth_pass), action(st.depth_fail));
+    let new = select(test, passed, action(st.fail));
+    let mut out = [0u8; 8];
+    // SAFETY: `out` holds eight bytes; an unaligned 64-bit store.
+    unsafe { _mm_storel_epi64(out.as_mut_ptr() as *mut __m128i, new) };
+    let pass = _mm_movemask_epi8(_mm_and_si128(test, dp)) as u8;
+    (out, pass)
+}
+
+/// For a stencil key, whether every lane of `lanes` (pixel `base + j`) fails the stencil
+/// test; if so, the fail action is applied to them (nothing else happens to a fragment that
+/// fails it), and the caller skips the group.
+#[inline(always)]
+pub(super) fn stencil_rejects_all(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    base: usize,
+    lanes: std::ops::Range<usize>,
+) -> bool {
+    let Some(st) = ds.key.stencil else {
+        return false;
+    };
+    let mut old = [0u8; 8];
+    let n = lanes.end - lanes.start;
+    let values = &mut tile.stencil[base + lanes.start..base + lanes.end];
+    old[..n].copy_from_slice(values);
+    if stencil_test8(&st, &ds.uniforms, &old) & lane_bits(0..n) != 0 {
+        return false;
+    }
+    if st.fail != StencilOp::Keep {
+        for v in values {
+            *v = apply_stencil_op(st.fail, *v, &ds.uniforms);
+        }
+    }
+    true
+}
+
+/// The lanes `lanes` as a mask.
+#[inline(always)]
+pub(super) fn lane_bits(lanes: std::ops::Range<usize>) -> u8 {
+    lanes.fold(0u8, |m, j| m | 1 << j)
 }
 
 /// Whether a fragment of stored depth `d` passes the eight-lane paths' depth test against
@@ -355,10 +599,12 @@ pub(super) fn group_depth_max(ds: &FragmentDraw) -> Option<u32> {
 
 /// Whether the eight-fragment tail covers everything after the colour for `key` (the colour
 /// sum and fog included: the lanes' secondary colours and fog factors are computed as the
-/// general path computes them, then added and blended in the tail): no stencil test, logic op
-/// or occlusion counting, and AVX2 present.
+/// general path computes them, then added and blended in the tail; the stencil test ahead of
+/// it by [`stencil_lanes`]): no stencil test together with an alpha test (which comes before
+/// it and would decide which fragments update the stencil), no logic op or occlusion
+/// counting, and AVX2 present.
 pub fn tail8_applies(key: &FragmentKey) -> bool {
-    key.stencil.is_none()
+    (key.stencil.is_none() || key.alpha_func.is_none())
         && key.logic_op.is_none()
         && !key.count_samples
         && crate::common::cpu::available()
@@ -371,5 +617,65 @@ pub(super) fn tail_blend(ds: &FragmentDraw) -> simd::TailBlend {
         Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
         Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
         Some(b) => simd::TailBlend::General(b, ds.uniforms.blend_color),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The eight-lane stencil kernel gives `apply_stencil_op` lane by lane, for every test
+    /// function and every triple of actions, with value and write masks, references above
+    /// and below the values, and random depth results.
+    #[test]
+    fn stencil8_is_the_per_lane_stencil() {
+        use CompareFunc::*;
+        use StencilOp::*;
+        let funcs = [
+            Never,
+            Less,
+            Equal,
+            LessEqual,
+            Greater,
+            NotEqual,
+            GreaterEqual,
+            Always,
+        ];
+        let ops = [Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap];
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut checked = 0;
+        for func in funcs {
+            for (i, &fail) in ops.iter().enumerate() {
+                for &depth_fail in &ops {
+                    for &depth_pass in &ops {
+                        let r = crate::test_support::xorshift(&mut seed);
+                        let u = Uniforms {
+                            stencil_ref: [0, 0x80, 0xFF, r as u8][i % 4],
+                            stencil_value_mask: [0xFF, 0x3F, (r >> 8) as u8][i % 3],
+                            stencil_write_mask: [0xFF, 0xF5, (r >> 16) as u8][(i / 3) % 3],
+                            ..Uniforms::default()
+                        };
+                        let st = StencilKey {
+                            func,
+                            fail,
+                            depth_fail,
+                            depth_pass,
+                        };
+                        let mut old = (r >> 24).to_le_bytes();
+                        old[0] = 0;
+                        old[1] = 0xFF;
+                        old[2] = u.stencil_ref;
+                        let dp = (r >> 40) as u8;
+                        assert_eq!(
+                            stencil8(&st, &u, &old, dp),
+                            stencil8_lanes(&st, &u, &old, dp),
+                            "{st:?} {u:?} {old:?} {dp:#x}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 8 * 512);
     }
 }

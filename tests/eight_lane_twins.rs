@@ -1,0 +1,501 @@
+//! Twin tests of the eight-lane paths that took over from the per-fragment general path:
+//! the stencil test and its actions ahead of the eight-fragment tail, and cube maps on the
+//! eight-pixel samplers. Each state is drawn on the general path (forced) and on the chosen
+//! path, and the colour, depth and stencil buffers must be identical; each draw must also
+//! change the picture (or the stencil), so that a state that drew nothing cannot pass.
+
+mod common;
+
+use common::{random_texture, read_depth, read_rgba, Rng};
+use tilegl::enums::*;
+use tilegl::{Context, Gl};
+
+const SIZE: i32 = 96;
+
+/// A perspective view over random coloured triangles (depth-tested), a stencil buffer
+/// holding a few different values (strips drawn with `REPLACE` and `INCR` before), and the
+/// state's texture set up by `setup`.
+fn scene(gl: &mut Context, rng: &mut Rng) {
+    gl.enable(GL_DEPTH_TEST);
+    gl.clear_color(0.2, 0.1, 0.0, 1.0);
+    gl.clear_stencil(0x10);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.enable(GL_STENCIL_TEST);
+    gl.stencil_func(GL_ALWAYS, 0x13, 0xFF);
+    gl.stencil_op(GL_KEEP, GL_INCR, GL_REPLACE);
+    gl.begin(GL_TRIANGLES);
+    for _ in 0..300 {
+        let c = [
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        ];
+        for _ in 0..3 {
+            gl.color_3f(
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
+            gl.vertex_3f(
+                c[0] + rng.range(-1.5, 1.5),
+                c[1] + rng.range(-1.5, 1.5),
+                c[2] + rng.range(-1.0, 1.0),
+            );
+        }
+    }
+    gl.end();
+    gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
+    strip(gl, rng, false, false);
+    gl.disable(GL_STENCIL_TEST);
+}
+
+/// A strip of 120 random vertices through the view volume with random colours (`translucent`:
+/// random alphas too; `constant`: one colour for all) and random normals.
+fn strip(gl: &mut Context, rng: &mut Rng, translucent: bool, constant: bool) {
+    gl.color_4f(0.8, 0.6, 0.3, 0.7);
+    gl.begin(GL_TRIANGLE_STRIP);
+    for _ in 0..120 {
+        if !constant {
+            let (r, g, b) = (
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
+            let a = if translucent {
+                rng.range(0.0, 1.0)
+            } else {
+                1.0
+            };
+            gl.color_4f(r, g, b, a);
+        }
+        gl.normal_3f(
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        );
+        gl.tex_coord_2f(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+}
+
+/// The colour, depth and stencil buffers.
+fn buffers(gl: &mut Context) -> (Vec<[u8; 4]>, Vec<u8>, Vec<u8>) {
+    let depth = read_depth(gl);
+    let mut stencil = vec![0u8; (SIZE * SIZE) as usize];
+    gl.read_pixels(
+        0,
+        0,
+        SIZE,
+        SIZE,
+        GL_STENCIL_INDEX,
+        GL_UNSIGNED_BYTE,
+        &mut stencil,
+    );
+    (read_rgba(gl), depth, stencil)
+}
+
+type Setup = (&'static str, fn(&mut Context, &mut Rng));
+
+/// Draws `setup`'s state over [`scene`] on the general path and on the chosen path: the three
+/// buffers must be identical and differ from the scene's.
+fn twins(states: &[Setup]) {
+    for &(name, setup) in states {
+        let render = |general: bool, draw: bool| {
+            let mut gl = Context::new(SIZE, SIZE);
+            gl.set_force_general_path(general);
+            let mut rng = Rng(0x5EED);
+            scene(&mut gl, &mut rng);
+            if draw {
+                setup(&mut gl, &mut rng);
+            }
+            assert_eq!(gl.get_error(), GL_NO_ERROR, "{name}");
+            buffers(&mut gl)
+        };
+        let general = render(true, true);
+        let fast = render(false, true);
+        let count = |a: &[u8], b: &[u8]| a.iter().zip(b).filter(|(x, y)| x != y).count();
+        let off = general
+            .0
+            .iter()
+            .zip(&fast.0)
+            .filter(|(a, b)| a != b)
+            .count();
+        assert_eq!(off, 0, "{name}: {off} pixels differ");
+        assert_eq!(count(&general.1, &fast.1), 0, "{name}: depth");
+        assert_eq!(count(&general.2, &fast.2), 0, "{name}: stencil");
+        let before = render(true, false);
+        let moved = general.0 != before.0 || general.2 != before.2;
+        assert!(moved, "{name}: the draw changed nothing");
+    }
+}
+
+/// The stencil test on the eight-lane paths: untextured (`span_untextured8`), one RGBA unit
+/// (`pair_textured` and the row paths), two units with fog (`pair_sampled8`), a constant colour
+/// (the blocks' constant form), every function and action, masks, and the alpha test (which
+/// keeps such keys on the general path).
+#[test]
+fn stencil_on_eight_lane_paths_matches_the_general_path() {
+    let states: [Setup; 8] = [
+        ("untextured, EQUAL, INCR/DECR/INVERT", |gl, rng| {
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_EQUAL, 0x11, 0x3F);
+            gl.stencil_op(GL_INVERT, GL_DECR, GL_INCR);
+            strip(gl, rng, false, false);
+        }),
+        (
+            "untextured, over, NOTEQUAL, no depth test (the shadow quad)",
+            |gl, rng| {
+                gl.enable(GL_STENCIL_TEST);
+                gl.stencil_func(GL_NOTEQUAL, 0x10, 0xFF);
+                gl.stencil_op(GL_KEEP, GL_KEEP, GL_KEEP);
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                strip(gl, rng, true, false);
+            },
+        ),
+        ("untextured, write mask, colour mask, GREATER", |gl, rng| {
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_GREATER, 0x12, 0x1F);
+            gl.stencil_mask(0xF5);
+            gl.stencil_op(GL_ZERO, GL_INCR_WRAP, GL_DECR_WRAP);
+            gl.color_mask(1, 0, 1, 1);
+            strip(gl, rng, false, false);
+        }),
+        ("one RGBA unit, trilinear, GEQUAL, REPLACE", |gl, rng| {
+            random_texture(gl, rng, GL_RGBA, 32, 32);
+            gl.tex_parameteri(
+                GL_TEXTURE_2D,
+                GL_TEXTURE_MIN_FILTER,
+                GL_LINEAR_MIPMAP_LINEAR as i32,
+            );
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_GEQUAL, 0x11, 0xFF);
+            gl.stencil_op(GL_REPLACE, GL_ZERO, GL_INCR);
+            strip(gl, rng, true, false);
+        }),
+        ("one RGB unit, constant colour, LESS, blended", |gl, rng| {
+            random_texture(gl, rng, GL_RGB, 16, 16);
+            gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_LESS, 0x10, 0xFF);
+            gl.stencil_op(GL_INVERT, GL_INCR, GL_DECR);
+            strip(gl, rng, false, true);
+        }),
+        ("two units, EXP fog, LEQUAL", |gl, rng| {
+            random_texture(gl, rng, GL_RGBA, 16, 16);
+            gl.tex_parameteri(
+                GL_TEXTURE_2D,
+                GL_TEXTURE_MIN_FILTER,
+                GL_NEAREST_MIPMAP_LINEAR as i32,
+            );
+            gl.enable(GL_TEXTURE_2D);
+            gl.active_texture(GL_TEXTURE1);
+            random_texture(gl, rng, GL_LUMINANCE, 8, 8);
+            gl.enable(GL_TEXTURE_2D);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD as i32);
+            gl.active_texture(GL_TEXTURE0);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.2);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_LEQUAL, 0x11, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_REPLACE, GL_INCR);
+            strip(gl, rng, false, false);
+        }),
+        ("one RGBA unit, alpha test (general path)", |gl, rng| {
+            random_texture(gl, rng, GL_RGBA, 16, 16);
+            gl.enable(GL_TEXTURE_2D);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.4);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_ALWAYS, 0x30, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_INCR, GL_REPLACE);
+            strip(gl, rng, true, false);
+        }),
+        ("depth-only volumes, z-fail", |gl, rng| {
+            gl.color_mask(0, 0, 0, 0);
+            gl.depth_mask(0);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_ALWAYS, 0, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+            strip(gl, rng, false, false);
+            gl.stencil_op(GL_KEEP, GL_DECR, GL_KEEP);
+            gl.depth_func(GL_GREATER);
+            strip(gl, rng, false, false);
+        }),
+    ];
+    twins(&states);
+}
+
+/// A cube map on the current unit: six random faces of `size` (a power of two) with every
+/// mipmap level, in `format`, filtered by `min` / `mag`, wrapped by `wrap`.
+fn cube_map(gl: &mut Context, rng: &mut Rng, format: GLenum, size: i32, filters: [GLenum; 3]) {
+    let [min, mag, wrap] = filters;
+    let comps = match format {
+        GL_RGBA => 4,
+        GL_RGB => 3,
+        GL_LUMINANCE_ALPHA => 2,
+        _ => 1,
+    };
+    let mut name = [0u32];
+    gl.gen_textures(1, &mut name);
+    gl.bind_texture(GL_TEXTURE_CUBE_MAP, name[0]);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    for face in 0..6 {
+        let (mut s, mut level) = (size, 0);
+        while s >= 1 {
+            let texels: Vec<u8> = (0..s * s * comps)
+                .map(|_| (rng.next_u64() >> 56) as u8)
+                .collect();
+            gl.tex_image_2d(
+                GL_TEXTURE_CUBE_MAP_POSITIVE_X + face,
+                level,
+                format as i32,
+                s,
+                s,
+                0,
+                format,
+                GL_UNSIGNED_BYTE,
+                Some(&texels),
+            );
+            s /= 2;
+            level += 1;
+        }
+    }
+    gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, mag as i32);
+    for p in [GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R] {
+        gl.tex_parameteri(GL_TEXTURE_CUBE_MAP, p, wrap as i32);
+    }
+    gl.enable(GL_TEXTURE_CUBE_MAP);
+}
+
+/// Texture coordinates generated by `mode` for s, t and r.
+fn texgen(gl: &mut Context, mode: GLenum) {
+    for c in [GL_S, GL_T, GL_R] {
+        gl.tex_geni(c, GL_TEXTURE_GEN_MODE, mode as i32);
+    }
+    for c in [GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R] {
+        gl.enable(c);
+    }
+}
+
+/// Cube maps on the eight-pixel samplers: fixed and per-lane level plans (bilinear without
+/// mipmaps, trilinear, nearest mipmaps with the 0.5 switch-over), reflection and normal-map
+/// texture generation, explicit directions with q, one-, two- and four-byte texels, wrap
+/// modes, a cube map beside a 2D unit, fog, blending, and lighting as the `cubemap` workload
+/// draws it.
+#[test]
+fn cube_maps_on_eight_lane_paths_match_the_general_path() {
+    let states: [Setup; 7] = [
+        (
+            "RGB, bilinear, reflection map, lit (the workload)",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_RGB,
+                    32,
+                    [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+                );
+                texgen(gl, GL_REFLECTION_MAP);
+                gl.enable(GL_LIGHTING);
+                gl.enable(GL_LIGHT0);
+                gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
+                strip(gl, rng, false, false);
+            },
+        ),
+        ("RGBA, trilinear, normal map, blended", |gl, rng| {
+            cube_map(
+                gl,
+                rng,
+                GL_RGBA,
+                16,
+                [GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT],
+            );
+            texgen(gl, GL_NORMAL_MAP);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            strip(gl, rng, true, false);
+        }),
+        (
+            "LUMINANCE, nearest mipmaps, linear magnification",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_LUMINANCE,
+                    64,
+                    [GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE],
+                );
+                texgen(gl, GL_REFLECTION_MAP);
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+                strip(gl, rng, false, false);
+            },
+        ),
+        (
+            "LUMINANCE_ALPHA, explicit directions with q, nearest",
+            |gl, rng| {
+                cube_map(
+                    gl,
+                    rng,
+                    GL_LUMINANCE_ALPHA,
+                    8,
+                    [GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT],
+                );
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL as i32);
+                gl.begin(GL_TRIANGLE_STRIP);
+                for _ in 0..120 {
+                    gl.color_3f(
+                        rng.range(0.0, 1.0),
+                        rng.range(0.0, 1.0),
+                        rng.range(0.0, 1.0),
+                    );
+                    let q = rng.range(0.3, 2.0);
+                    gl.tex_coord_4f(
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        rng.range(-1.0, 1.0),
+                        q,
+                    );
+                    gl.vertex_3f(
+                        rng.range(-3.0, 3.0),
+                        rng.range(-3.0, 3.0),
+                        rng.range(-9.0, -0.5),
+                    );
+                }
+                gl.end();
+            },
+        ),
+        ("2D unit and a cube map, LINEAR fog", |gl, rng| {
+            random_texture(gl, rng, GL_RGBA, 16, 16);
+            gl.tex_parameteri(
+                GL_TEXTURE_2D,
+                GL_TEXTURE_MIN_FILTER,
+                GL_LINEAR_MIPMAP_NEAREST as i32,
+            );
+            gl.enable(GL_TEXTURE_2D);
+            gl.active_texture(GL_TEXTURE1);
+            cube_map(
+                gl,
+                rng,
+                GL_RGB,
+                16,
+                [GL_LINEAR, GL_NEAREST, GL_CLAMP_TO_EDGE],
+            );
+            texgen(gl, GL_REFLECTION_MAP);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD as i32);
+            gl.active_texture(GL_TEXTURE0);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 1.0);
+            gl.fogf(GL_FOG_END, 9.0);
+            strip(gl, rng, false, false);
+        }),
+        ("RGB cube map, stencil, constant colour", |gl, rng| {
+            cube_map(
+                gl,
+                rng,
+                GL_RGB,
+                16,
+                [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+            );
+            texgen(gl, GL_NORMAL_MAP);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_NOTEQUAL, 0x11, 0xFF);
+            gl.stencil_op(GL_KEEP, GL_INCR, GL_ZERO);
+            strip(gl, rng, false, true);
+        }),
+        ("RGBA cube map, separate specular, alpha test", |gl, rng| {
+            cube_map(
+                gl,
+                rng,
+                GL_RGBA,
+                32,
+                [GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+            );
+            texgen(gl, GL_REFLECTION_MAP);
+            gl.enable(GL_LIGHTING);
+            gl.enable(GL_LIGHT0);
+            gl.light_modeli(
+                GL_LIGHT_MODEL_COLOR_CONTROL,
+                GL_SEPARATE_SPECULAR_COLOR as i32,
+            );
+            gl.materialfv(GL_FRONT, GL_SPECULAR, &[0.8, 0.8, 0.8, 1.0]);
+            gl.materialf(GL_FRONT, GL_SHININESS, 20.0);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.3);
+            strip(gl, rng, false, false);
+        }),
+    ];
+    twins(&states);
+}
+
+/// Quads facing the viewer: z, 1/w, the colour and the fog coordinate are the same along
+/// every row, so the one-unit textured span fills its groups from one set of inputs (fog
+/// factors made once); over the scene, with fog, blending and depth tests that pass and fail.
+fn facing_quads(gl: &mut Context, rng: &mut Rng) {
+    random_texture(gl, rng, GL_RGBA, 16, 16);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR as i32);
+    gl.enable(GL_TEXTURE_2D);
+    for k in 0..6 {
+        let z = -1.5 - 1.3 * k as f32;
+        let (x, y) = (rng.range(-2.0, 1.0), rng.range(-2.0, 1.0));
+        gl.color_4f(
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            0.6,
+        );
+        gl.begin(GL_QUADS);
+        for (i, (dx, dy)) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .iter()
+            .enumerate()
+        {
+            gl.tex_coord_2f(dx * 1.7, dy * 1.3 + i as f32 * 0.01);
+            gl.vertex_3f(x + dx * 2.5, y + dy * 2.5, z);
+        }
+        gl.end();
+    }
+}
+
+#[test]
+fn facing_textured_quads_match_the_general_path() {
+    let states: [Setup; 3] = [
+        ("EXP2 fog", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.25);
+            gl.fogfv(GL_FOG_COLOR, &[0.1, 0.6, 0.9, 1.0]);
+            facing_quads(gl, rng);
+        }),
+        ("LINEAR fog, over, depth writes off", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+            gl.fogf(GL_FOG_START, 1.0);
+            gl.fogf(GL_FOG_END, 9.0);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.depth_mask(0);
+            facing_quads(gl, rng);
+        }),
+        ("no fog, GREATER depth", |gl, rng| {
+            gl.depth_func(GL_GREATER);
+            facing_quads(gl, rng);
+        }),
+    ];
+    twins(&states);
+}
