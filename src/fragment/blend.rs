@@ -33,8 +33,18 @@ fn factor(f: BlendFactor, s: [f32; 4], d: [f32; 4], c: [f32; 4], ch: usize) -> f
     }
 }
 
-/// Blends source `src` over destination `dst` with constant colour `constant`; the result is
-/// clamped to [0, 1] and rounded to 8 bits.
+/// A blend product (source or destination times its factor) rounded to 8 bits, as a value in
+/// [0, 1]. Section 4.1.8 leaves the arithmetic's precision open; Mesa's llvmpipe rounds each
+/// product to 8 bits before adding (measured on every source and destination byte for
+/// `SRC_ALPHA, ONE_MINUS_SRC_ALPHA` and `DST_COLOR, SRC_COLOR`), and programs that stack many
+/// blends and then a logic op (xscreensaver's quasicrystal) show every 1-step difference.
+#[inline(always)]
+pub fn product_u8(v: f32) -> f32 {
+    color_to_u8(v) as f32 / 255.0
+}
+
+/// Blends source `src` over destination `dst` with constant colour `constant`: each product
+/// rounded to 8 bits ([`product_u8`]), the result clamped to [0, 1] and rounded to 8 bits.
 pub fn blend(key: &BlendKey, src: [u8; 4], dst: [u8; 4], constant: [f32; 4]) -> [u8; 4] {
     let s = src.map(|v| v as f32 / 255.0);
     let d = dst.map(|v| v as f32 / 255.0);
@@ -54,8 +64,8 @@ pub fn blend(key: &BlendKey, src: [u8; 4], dst: [u8; 4], constant: [f32; 4]) -> 
             BlendEquation::Min => s[ch].min(d[ch]),
             BlendEquation::Max => s[ch].max(d[ch]),
             eq => {
-                let a = s[ch] * factor(sf, s, d, constant, ch);
-                let b = d[ch] * factor(df, s, d, constant, ch);
+                let a = product_u8(s[ch] * factor(sf, s, d, constant, ch));
+                let b = product_u8(d[ch] * factor(df, s, d, constant, ch));
                 match eq {
                     BlendEquation::Add => a + b,
                     BlendEquation::Subtract => a - b,
@@ -104,8 +114,8 @@ impl BlendKey {
     }
 }
 
-/// [`blend`] for a key with [`BlendKey::is_alpha_over`]: the same arithmetic, without the
-/// per-channel choice of factors.
+/// [`blend`] for a key with [`BlendKey::is_alpha_over`]: the same arithmetic (both products
+/// rounded to 8 bits, then added), without the per-channel choice of factors.
 #[inline(always)]
 pub fn blend_alpha_over(src: [u8; 4], dst: [u8; 4]) -> [u8; 4] {
     let s = src.map(|v| UNORM8[v as usize]);
@@ -113,7 +123,7 @@ pub fn blend_alpha_over(src: [u8; 4], dst: [u8; 4]) -> [u8; 4] {
     let inv = 1.0 - s[3];
     let mut out = [0u8; 4];
     for ch in 0..4 {
-        out[ch] = color_to_u8(s[ch] * s[3] + d[ch] * inv);
+        out[ch] = color_to_u8(s[ch] * s[3]).saturating_add(color_to_u8(d[ch] * inv));
     }
     out
 }

@@ -450,7 +450,10 @@ mod x86 {
             for c in 0..4 {
                 let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
                 let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
-                out[c] = to_u8(_mm256_add_ps(_mm256_mul_ps(s, sa), _mm256_mul_ps(d, inv)));
+                // Each product rounded to 8 bits, then added, as `blend::blend_alpha_over`.
+                let sum =
+                    _mm256_add_epi32(to_u8(_mm256_mul_ps(s, sa)), to_u8(_mm256_mul_ps(d, inv)));
+                out[c] = _mm256_min_epi32(sum, byte);
             }
             pack(&out)
         } else if let super::TailBlend::General(key, constant) = &tail.blend {
@@ -468,8 +471,10 @@ mod x86 {
                     BlendEquation::Min => _mm256_min_ps(s[ch], d[ch]),
                     BlendEquation::Max => _mm256_max_ps(s[ch], d[ch]),
                     eq => {
-                        let a = _mm256_mul_ps(s[ch], factor8(sf, &s, &d, constant, ch));
-                        let b = _mm256_mul_ps(d[ch], factor8(df, &s, &d, constant, ch));
+                        // Each product rounded to 8 bits, as `blend::product_u8`.
+                        let q = |v: __m256| _mm256_div_ps(_mm256_cvtepi32_ps(to_u8(v)), k);
+                        let a = q(_mm256_mul_ps(s[ch], factor8(sf, &s, &d, constant, ch)));
+                        let b = q(_mm256_mul_ps(d[ch], factor8(df, &s, &d, constant, ch)));
                         match eq {
                             BlendEquation::Add => _mm256_add_ps(a, b),
                             BlendEquation::Subtract => _mm256_sub_ps(a, b),
