@@ -296,6 +296,13 @@ pub(super) fn bytes_are_texels(
         && format.slots() == internal.base.slots()
 }
 
+/// Whether an upload of unpacked `ty` components may take `TexImage::store_converted` (the
+/// conversion without per-texel dispatch): no pixel transfer and no byte swapping of
+/// multi-byte components.
+pub(super) fn converts_directly(transfer: bool, swap: bool, ty: TexPixelType) -> bool {
+    !transfer && (!swap || ty.size() == 1) && !matches!(ty, TexPixelType::Packed(_))
+}
+
 /// Whether an internal format may be used on a target (depth textures: 1D, 2D and, as
 /// ARB_texture_rectangle allows with ARB_depth_texture, rectangles).
 fn check_depth_target(target: TexImageTarget, f: InternalFormat) -> Check<()> {
