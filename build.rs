@@ -85,10 +85,12 @@ const EXTRA_ENUMS: [&str; 7] = [
 ];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
-/// exports, `ForeignGl` and the replay dispatch get them like core commands.
-const COMMAND_EXTENSIONS: [&str; 3] = [
+/// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
+/// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
+const COMMAND_EXTENSIONS: [&str; 4] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
+    "GL_EXT_vertex_array",
     "GL_EXT_provoking_vertex",
 ];
 
@@ -193,7 +195,7 @@ fn literal_len(p: &Param) -> Option<usize> {
 /// addresses.
 fn is_retained(cmd: &str, p: &Param) -> bool {
     p.depth >= 2
-        || (cmd.ends_with("Pointer") && p.name == "pointer")
+        || ((cmd.ends_with("Pointer") || cmd.ends_with("PointerEXT")) && p.name == "pointer")
         || cmd == "glInterleavedArrays"
         || cmd == "glSelectBuffer"
         || cmd == "glFeedbackBuffer"
@@ -512,7 +514,11 @@ fn main() {
         if COMMAND_EXTENSIONS.contains(&name) {
             for c in x.descendants().filter(|n| n.has_tag_name("command")) {
                 if let Some(n) = c.attribute("name") {
-                    if !core_cmds.iter().any(|c| c == n) {
+                    let aliases_core = commands
+                        .get(n)
+                        .and_then(|c| c.alias_of.as_ref())
+                        .is_some_and(|t| core_cmds.contains(t));
+                    if !aliases_core && !core_cmds.iter().any(|c| c == n) {
                         core_cmds.push(n.to_string());
                     }
                 }

@@ -392,6 +392,16 @@ fn cases() -> Vec<Case> {
                 p as *const c_void,
             )
         }),
+        // DrawPixels depth-stencil words (EXT_packed_depth_stencil), 3x2: 24 bytes.
+        case!("glDrawPixels", "pixels", 24, 1, raster_pos, |p| {
+            glDrawPixels(
+                3,
+                2,
+                GL_DEPTH_STENCIL_EXT,
+                GL_UNSIGNED_INT_24_8_EXT,
+                p as *const c_void,
+            )
+        }),
         // Bitmap 12x3, alignment 4: 2-byte rows padded to 4: 4 + 4 + 2.
         case!("glBitmap", "bitmap", 10, 1, raster_pos, |p| glBitmap(
             12,
@@ -421,6 +431,16 @@ fn cases() -> Vec<Case> {
             2,
             GL_BGRA,
             GL_UNSIGNED_INT_8_8_8_8_REV,
+            p as *mut c_void
+        )),
+        // ReadPixels 2x2 depth-stencil words under odd pack, as the packed type above: 84.
+        case!("glReadPixels", "pixels", 84, 1, odd_pack, |p| glReadPixels(
+            0,
+            0,
+            2,
+            2,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
             p as *mut c_void
         )),
         // GetTexImage of the 4x2 RGBA level as floats under odd pack: group 16, row 5*16 = 80

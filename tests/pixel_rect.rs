@@ -496,3 +496,171 @@ fn read_pixels_packs_every_packed_type() {
     gl.read_pixels(0, 0, 4, 4, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, &mut two);
     assert_eq!(gl.get_error(), GL_INVALID_VALUE);
 }
+
+/// Reads `w` x 1 pixels at (x, y) as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 words.
+fn read_depth_stencil_words(gl: &mut Context, x: i32, y: i32, w: usize) -> Vec<u32> {
+    let mut b = vec![0u8; 4 * w];
+    gl.read_pixels(
+        x,
+        y,
+        w as i32,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        &mut b,
+    );
+    b.chunks(4)
+        .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
+
+#[test]
+fn depth_stencil_rectangles_process_each_half_as_depth_and_stencil_index() {
+    // EXT_packed_depth_stencil: a GL_DEPTH_STENCIL group's depth goes through the depth
+    // transfer and its stencil index through the index arithmetic, as the same values drawn
+    // as GL_DEPTH_COMPONENT and GL_STENCIL_INDEX would (llvmpipe skips the index arithmetic
+    // on glDrawPixels' stencil; conformance's piglit_depth_stencil_pixels compares the rest
+    // with Mesa).
+    let pairs: [(u32, u8); 4] = [(0, 0), (0xff_ffff, 0x7f), (0x80_0000, 5), (0x12_3456, 0xf0)];
+    let words: Vec<u8> = pairs
+        .iter()
+        .flat_map(|&(d, s)| ((d << 8) | s as u32).to_ne_bytes())
+        .collect();
+    let transfer = |gl: &mut Context| {
+        gl.pixel_transferi(GL_INDEX_SHIFT, 1);
+        gl.pixel_transferi(GL_INDEX_OFFSET, 3);
+        gl.pixel_transferf(GL_DEPTH_SCALE, 0.5);
+        gl.pixel_transferf(GL_DEPTH_BIAS, 0.25);
+    };
+    let mut packed = setup();
+    transfer(&mut packed);
+    packed.raster_pos_2i(2, 3);
+    packed.draw_pixels(
+        4,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        Some(&words),
+    );
+    assert_eq!(packed.get_error(), GL_NO_ERROR);
+
+    let mut separate = setup();
+    transfer(&mut separate);
+    separate.enable(GL_DEPTH_TEST);
+    separate.depth_func(GL_ALWAYS);
+    let depths: Vec<u8> = pairs
+        .iter()
+        .flat_map(|&(d, _)| d.wrapping_shl(8).to_ne_bytes())
+        .collect();
+    let indices: Vec<u8> = pairs.iter().map(|&(_, s)| s).collect();
+    separate.raster_pos_2i(2, 3);
+    separate.draw_pixels(4, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, Some(&depths));
+    separate.draw_pixels(4, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, Some(&indices));
+
+    for gl in [&mut packed, &mut separate] {
+        gl.pixel_transferi(GL_INDEX_SHIFT, 0);
+        gl.pixel_transferi(GL_INDEX_OFFSET, 0);
+        gl.pixel_transferf(GL_DEPTH_SCALE, 1.0);
+        gl.pixel_transferf(GL_DEPTH_BIAS, 0.0);
+    }
+    let got = read_depth_stencil_words(&mut packed, 2, 3, 4);
+    assert_eq!(got, read_depth_stencil_words(&mut separate, 2, 3, 4));
+    for (w, &(d, s)) in got.iter().zip(&pairs) {
+        // Spec equations: depth d / (2^24 - 1) * 0.5 + 0.25 in 24 bits, index (s << 1) + 3.
+        let want_d = ((d as f64 / 0xff_ffff as f64 * 0.5 + 0.25) * 0xff_ffff as f64).round();
+        assert!(
+            ((w >> 8) as f64 - want_d).abs() <= 1.0,
+            "{w:#x} vs {want_d}"
+        );
+        assert_eq!(w & 0xff, ((s as u32) << 1).wrapping_add(3) & 0xff);
+    }
+    // Colour untouched: the pairs are not fragments (OpenGL 3.0, section 4.3.1).
+    assert_eq!(pixel(&mut packed, 2, 3), [0; 4]);
+
+    // Read back through the transfer, byte-swapped, with a skip: the words of the buffer.
+    let mut gl = setup();
+    gl.raster_pos_2i(0, 0);
+    gl.draw_pixels(
+        4,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        Some(&words),
+    );
+    gl.pixel_transferi(GL_INDEX_OFFSET, 1);
+    gl.pixel_storei(GL_PACK_SWAP_BYTES, 1);
+    gl.pixel_storei(GL_PACK_SKIP_PIXELS, 1);
+    let mut b = [0xaau8; 20];
+    gl.read_pixels(
+        0,
+        0,
+        4,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        &mut b,
+    );
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(b[..4], [0xaa; 4]);
+    for (k, &(d, s)) in pairs.iter().enumerate() {
+        let c = &b[4 + 4 * k..8 + 4 * k];
+        let w = u32::from_be_bytes([c[0], c[1], c[2], c[3]]);
+        let w = if cfg!(target_endian = "little") {
+            w
+        } else {
+            w.swap_bytes()
+        };
+        assert_eq!(w, (d << 8) | (s as u32 + 1) & 0xff, "word {k}");
+    }
+
+    // Scissor and zoom apply; a framebuffer without stencil refuses both commands.
+    let mut gl = setup();
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(0, 0, 3, 32);
+    gl.pixel_zoom(2.0, 1.0);
+    gl.raster_pos_2i(0, 0);
+    gl.draw_pixels(
+        2,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        Some(&words[4..12]),
+    );
+    gl.disable(GL_SCISSOR_TEST);
+    let got: Vec<u32> = read_depth_stencil_words(&mut gl, 0, 0, 4)
+        .iter()
+        .map(|w| w & 0xff)
+        .collect();
+    assert_eq!(got, [0x7f, 0x7f, 5, 0]);
+    for (depth_bits, stencil_bits) in [(24, 0), (0, 8)] {
+        let mut gl = Context::with_config(tilegl::ContextConfig {
+            width: 8,
+            height: 8,
+            framebuffer: tilegl::FramebufferConfig {
+                depth_bits,
+                stencil_bits,
+                ..tilegl::FramebufferConfig::default()
+            },
+            ..tilegl::ContextConfig::default()
+        });
+        gl.draw_pixels(
+            1,
+            1,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words),
+        );
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+        let mut b = [0u8; 4];
+        gl.read_pixels(
+            0,
+            0,
+            1,
+            1,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut b,
+        );
+        assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    }
+}

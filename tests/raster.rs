@@ -906,3 +906,70 @@ fn depth_stencil_spans_match_the_general_path() {
         assert!(moved, "{name}: the pass changed nothing");
     }
 }
+
+/// Lines whose two ends carry the same values shade the fully covered neighbours of a row as
+/// one span (`Command::Line`, `LineSetup::uniform`); the picture is the one of the same
+/// lines drawn fragment by fragment. Here the second drawing gives each segment's ends
+/// different depths (the depth test is off, so depth changes nothing but the route), and a
+/// third takes the general fragment path: aliased widths 1 and 3, smooth widths 1.5 and 2.5
+/// with "over" blending, stippled and not, in every direction, over tile borders.
+#[test]
+fn lines_with_equal_ends_draw_what_per_fragment_lines_draw() {
+    let draw = |z_apart: bool, general: bool| {
+        let mut gl = Context::new(150, 140);
+        gl.set_force_general_path(general);
+        window_ortho(&mut gl);
+        gl.clear_color(0.1, 0.2, 0.3, 1.0);
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        let mut rng = Rng(0x11E5_0001);
+        for (smooth, width, stipple) in [
+            (false, 1.0, false),
+            (false, 3.0, false),
+            (false, 3.0, true),
+            (true, 1.5, false),
+            (true, 2.5, false),
+            (true, 2.5, true),
+        ] {
+            if smooth {
+                gl.enable(GL_LINE_SMOOTH);
+                gl.enable(GL_BLEND);
+            } else {
+                gl.disable(GL_LINE_SMOOTH);
+                gl.disable(GL_BLEND);
+            }
+            if stipple {
+                gl.enable(GL_LINE_STIPPLE);
+                gl.line_stipple(2, 0x39CF);
+            } else {
+                gl.disable(GL_LINE_STIPPLE);
+            }
+            gl.line_width(width);
+            gl.begin(GL_LINES);
+            for _ in 0..40 {
+                gl.color_4f(
+                    rng.range(0.2, 1.0),
+                    rng.range(0.2, 1.0),
+                    rng.range(0.2, 1.0),
+                    0.7,
+                );
+                let (x, y) = (rng.range(-10.0, 160.0), rng.range(-10.0, 150.0));
+                let (len, ang) = (rng.range(3.0, 120.0), rng.range(0.0, std::f32::consts::TAU));
+                let z = if z_apart { 0.25 } else { 0.0 };
+                gl.vertex_3f(x, y, z);
+                gl.vertex_3f(x + len * ang.cos(), y + len * ang.sin(), -z);
+            }
+            gl.end();
+        }
+        assert_eq!(gl.get_error(), GL_NO_ERROR);
+        read_rgba(&mut gl)
+    };
+    let merged = draw(false, false);
+    let background = merged.iter().filter(|&&p| p == [26, 51, 77, 255]).count();
+    assert!(background < merged.len() * 9 / 10, "the lines drew little");
+    assert!(
+        merged == draw(true, false),
+        "equal ends against depths apart"
+    );
+    assert!(merged == draw(false, true), "against the general path");
+}

@@ -1066,6 +1066,93 @@ fn bgra_colour_and_secondary_colour_arrays_swap_red_and_blue() {
     }
 }
 
+/// EXT_vertex_array's `gl*PointerEXT`: the core array state plus `count`, read back as
+/// `GL_*_ARRAY_COUNT_EXT` (its state table; initially 0); a negative count or stride and the
+/// core call's own errors are errors that change nothing; the arrays draw as the core
+/// calls' do.
+#[test]
+fn ext_vertex_array_pointers_set_the_arrays_and_their_counts() {
+    let mut gl = Context::new(4, 4);
+    let data = [0u8; 64];
+    let p = ClientPtr(data.as_ptr() as usize);
+    let count_of = |gl: &mut Context, pname: GLenum| {
+        let mut v = [0i32];
+        gl.get_integerv(pname, &mut v);
+        v[0]
+    };
+    let counts = [
+        GL_VERTEX_ARRAY_COUNT_EXT,
+        GL_NORMAL_ARRAY_COUNT_EXT,
+        GL_COLOR_ARRAY_COUNT_EXT,
+        GL_INDEX_ARRAY_COUNT_EXT,
+        GL_TEXTURE_COORD_ARRAY_COUNT_EXT,
+        GL_EDGE_FLAG_ARRAY_COUNT_EXT,
+    ];
+    for c in counts {
+        assert_eq!(count_of(&mut gl, c), 0);
+    }
+    gl.vertex_pointer_ext(3, GL_FLOAT, 12, 5, p);
+    gl.normal_pointer_ext(GL_SHORT, 0, 6, p);
+    gl.color_pointer_ext(4, GL_UNSIGNED_BYTE, 0, 7, p);
+    gl.index_pointer_ext(GL_INT, 0, 8, p);
+    gl.tex_coord_pointer_ext(2, GL_DOUBLE, 0, 9, p);
+    gl.edge_flag_pointer_ext(3, 10, p);
+    no_error(&mut gl);
+    for (c, want) in counts.iter().zip(5..) {
+        assert_eq!(count_of(&mut gl, *c), want, "{c:#x}");
+    }
+    assert_eq!(count_of(&mut gl, GL_VERTEX_ARRAY_SIZE), 3);
+    assert_eq!(count_of(&mut gl, GL_VERTEX_ARRAY_STRIDE), 12);
+    assert_eq!(
+        count_of(&mut gl, GL_COLOR_ARRAY_TYPE),
+        GL_UNSIGNED_BYTE as i32
+    );
+    assert_eq!(count_of(&mut gl, GL_EDGE_FLAG_ARRAY_STRIDE), 3);
+    assert_eq!(gl.array_pointer(GL_TEXTURE_COORD_ARRAY_POINTER), Some(p));
+
+    // Errors change nothing: a negative count or stride, a size or type the core call refuses.
+    gl.vertex_pointer_ext(3, GL_FLOAT, 0, -1, ClientPtr(8));
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    gl.vertex_pointer_ext(1, GL_FLOAT, 0, 2, ClientPtr(8));
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    gl.normal_pointer_ext(GL_UNSIGNED_BYTE, 0, 2, ClientPtr(8));
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    gl.edge_flag_pointer_ext(-4, 2, ClientPtr(8));
+    assert_eq!(gl.get_error(), GL_INVALID_VALUE);
+    assert_eq!(count_of(&mut gl, GL_VERTEX_ARRAY_COUNT_EXT), 5);
+    assert_eq!(count_of(&mut gl, GL_NORMAL_ARRAY_COUNT_EXT), 6);
+    assert_eq!(count_of(&mut gl, GL_EDGE_FLAG_ARRAY_COUNT_EXT), 10);
+    assert_eq!(count_of(&mut gl, GL_VERTEX_ARRAY_SIZE), 3);
+    assert_eq!(gl.array_pointer(GL_VERTEX_ARRAY_POINTER), Some(p));
+
+    // An unread earlier error stays the one glGetError returns; the call still takes effect.
+    gl.enable(0xFFFF);
+    gl.color_pointer_ext(3, GL_FLOAT, 0, 11, p);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    assert_eq!(count_of(&mut gl, GL_COLOR_ARRAY_COUNT_EXT), 11);
+    assert_eq!(count_of(&mut gl, GL_COLOR_ARRAY_SIZE), 3);
+
+    // The count is client state: glPushClientAttrib / glPopClientAttrib keep it.
+    gl.push_client_attrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+    gl.vertex_pointer_ext(2, GL_FLOAT, 0, 99, p);
+    gl.pop_client_attrib();
+    assert_eq!(count_of(&mut gl, GL_VERTEX_ARRAY_COUNT_EXT), 5);
+    no_error(&mut gl);
+
+    // Drawing: the mesh's arrays given through the EXT calls draw the core calls' picture.
+    let m = mesh();
+    let reference = arrays_picture(|gl| gl.draw_arrays(GL_TRIANGLES, 0, N as i32));
+    let pos: Vec<f32> = (0..N).flat_map(|i| m.pos[i]).collect();
+    let col: Vec<f32> = (0..N).flat_map(|i| m.color[i]).collect();
+    let p = arrays_picture(|gl| {
+        gl.vertex_pointer_ext(3, GL_FLOAT, 0, N as i32, ClientPtr(pos.as_ptr() as usize));
+        gl.color_pointer_ext(4, GL_FLOAT, 0, N as i32, ClientPtr(col.as_ptr() as usize));
+        gl.draw_arrays(GL_TRIANGLES, 0, N as i32);
+    });
+    assert_same(&p, &reference, "arrays from gl*PointerEXT");
+}
+
 /// A context that reads the client arrays and writes the buffers these tests name by address.
 fn client_context(width: i32, height: i32) -> Context {
     let mut gl = Context::new(width, height);

@@ -104,6 +104,9 @@ extern "C" {
 #ifndef GL_COLOR_ARRAY_BUFFER_BINDING_ARB
 #define GL_COLOR_ARRAY_BUFFER_BINDING_ARB 0x8898
 #endif
+#ifndef GL_COLOR_ARRAY_COUNT_EXT
+#define GL_COLOR_ARRAY_COUNT_EXT 0x8084
+#endif
 #ifndef GL_COLOR_ARRAY_EXT
 #define GL_COLOR_ARRAY_EXT 0x8076
 #endif
@@ -272,6 +275,9 @@ extern "C" {
 #ifndef GL_EDGE_FLAG_ARRAY_BUFFER_BINDING_ARB
 #define GL_EDGE_FLAG_ARRAY_BUFFER_BINDING_ARB 0x889B
 #endif
+#ifndef GL_EDGE_FLAG_ARRAY_COUNT_EXT
+#define GL_EDGE_FLAG_ARRAY_COUNT_EXT 0x808D
+#endif
 #ifndef GL_EDGE_FLAG_ARRAY_EXT
 #define GL_EDGE_FLAG_ARRAY_EXT 0x8079
 #endif
@@ -331,6 +337,9 @@ extern "C" {
 #endif
 #ifndef GL_INDEX_ARRAY_BUFFER_BINDING_ARB
 #define GL_INDEX_ARRAY_BUFFER_BINDING_ARB 0x8899
+#endif
+#ifndef GL_INDEX_ARRAY_COUNT_EXT
+#define GL_INDEX_ARRAY_COUNT_EXT 0x8087
 #endif
 #ifndef GL_INDEX_ARRAY_EXT
 #define GL_INDEX_ARRAY_EXT 0x8077
@@ -487,6 +496,9 @@ extern "C" {
 #endif
 #ifndef GL_NORMAL_ARRAY_BUFFER_BINDING_ARB
 #define GL_NORMAL_ARRAY_BUFFER_BINDING_ARB 0x8897
+#endif
+#ifndef GL_NORMAL_ARRAY_COUNT_EXT
+#define GL_NORMAL_ARRAY_COUNT_EXT 0x8080
 #endif
 #ifndef GL_NORMAL_ARRAY_EXT
 #define GL_NORMAL_ARRAY_EXT 0x8075
@@ -1070,6 +1082,9 @@ extern "C" {
 #ifndef GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING_ARB
 #define GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING_ARB 0x889A
 #endif
+#ifndef GL_TEXTURE_COORD_ARRAY_COUNT_EXT
+#define GL_TEXTURE_COORD_ARRAY_COUNT_EXT 0x808B
+#endif
 #ifndef GL_TEXTURE_COORD_ARRAY_EXT
 #define GL_TEXTURE_COORD_ARRAY_EXT 0x8078
 #endif
@@ -1274,6 +1289,9 @@ extern "C" {
 #ifndef GL_VERTEX_ARRAY_BUFFER_BINDING_ARB
 #define GL_VERTEX_ARRAY_BUFFER_BINDING_ARB 0x8896
 #endif
+#ifndef GL_VERTEX_ARRAY_COUNT_EXT
+#define GL_VERTEX_ARRAY_COUNT_EXT 0x807D
+#endif
 #ifndef GL_VERTEX_ARRAY_EXT
 #define GL_VERTEX_ARRAY_EXT 0x8074
 #endif
@@ -1385,6 +1403,7 @@ typedef void (APIENTRYP PFNGLCOLOR4USVPROC)(const GLushort *v);
 typedef void (APIENTRYP PFNGLCOLORMASKPROC)(GLboolean red, GLboolean green, GLboolean blue, GLboolean alpha);
 typedef void (APIENTRYP PFNGLCOLORMATERIALPROC)(GLenum face, GLenum mode);
 typedef void (APIENTRYP PFNGLCOLORPOINTERPROC)(GLint size, GLenum type, GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLCOLORPOINTEREXTPROC)(GLint size, GLenum type, GLsizei stride, GLsizei count, const void *pointer);
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXIMAGE1DPROC)(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLint border, GLsizei imageSize, const void *data);
 GLAPI void GLAPIENTRY glCompressedTexImage1DARB(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLint border, GLsizei imageSize, const void *data);
 typedef void (APIENTRYP PFNGLCOMPRESSEDTEXIMAGE1DARBPROC)(GLenum target, GLint level, GLenum internalformat, GLsizei width, GLint border, GLsizei imageSize, const void *data);
@@ -1444,6 +1463,7 @@ GLAPI void GLAPIENTRY glDrawRangeElementsEXT(GLenum mode, GLuint start, GLuint e
 typedef void (APIENTRYP PFNGLDRAWRANGEELEMENTSEXTPROC)(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type, const void *indices);
 typedef void (APIENTRYP PFNGLEDGEFLAGPROC)(GLboolean flag);
 typedef void (APIENTRYP PFNGLEDGEFLAGPOINTERPROC)(GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLEDGEFLAGPOINTEREXTPROC)(GLsizei stride, GLsizei count, const GLboolean *pointer);
 typedef void (APIENTRYP PFNGLEDGEFLAGVPROC)(const GLboolean *flag);
 typedef void (APIENTRYP PFNGLENABLEPROC)(GLenum cap);
 typedef void (APIENTRYP PFNGLENABLECLIENTSTATEPROC)(GLenum array);
@@ -1553,6 +1573,7 @@ typedef void (APIENTRYP PFNGLGETTEXPARAMETERIVPROC)(GLenum target, GLenum pname,
 typedef void (APIENTRYP PFNGLHINTPROC)(GLenum target, GLenum mode);
 typedef void (APIENTRYP PFNGLINDEXMASKPROC)(GLuint mask);
 typedef void (APIENTRYP PFNGLINDEXPOINTERPROC)(GLenum type, GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLINDEXPOINTEREXTPROC)(GLenum type, GLsizei stride, GLsizei count, const void *pointer);
 typedef void (APIENTRYP PFNGLINDEXDPROC)(GLdouble c);
 typedef void (APIENTRYP PFNGLINDEXDVPROC)(const GLdouble *c);
 typedef void (APIENTRYP PFNGLINDEXFPROC)(GLfloat c);
@@ -1735,6 +1756,7 @@ typedef void (APIENTRYP PFNGLNORMAL3IVPROC)(const GLint *v);
 typedef void (APIENTRYP PFNGLNORMAL3SPROC)(GLshort nx, GLshort ny, GLshort nz);
 typedef void (APIENTRYP PFNGLNORMAL3SVPROC)(const GLshort *v);
 typedef void (APIENTRYP PFNGLNORMALPOINTERPROC)(GLenum type, GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLNORMALPOINTEREXTPROC)(GLenum type, GLsizei stride, GLsizei count, const void *pointer);
 typedef void (APIENTRYP PFNGLORTHOPROC)(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top, GLdouble zNear, GLdouble zFar);
 typedef void (APIENTRYP PFNGLPASSTHROUGHPROC)(GLfloat token);
 typedef void (APIENTRYP PFNGLPIXELMAPFVPROC)(GLenum map, GLsizei mapsize, const GLfloat *values);
@@ -1907,6 +1929,7 @@ typedef void (APIENTRYP PFNGLTEXCOORD4IVPROC)(const GLint *v);
 typedef void (APIENTRYP PFNGLTEXCOORD4SPROC)(GLshort s, GLshort t, GLshort r, GLshort q);
 typedef void (APIENTRYP PFNGLTEXCOORD4SVPROC)(const GLshort *v);
 typedef void (APIENTRYP PFNGLTEXCOORDPOINTERPROC)(GLint size, GLenum type, GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLTEXCOORDPOINTEREXTPROC)(GLint size, GLenum type, GLsizei stride, GLsizei count, const void *pointer);
 typedef void (APIENTRYP PFNGLTEXENVFPROC)(GLenum target, GLenum pname, GLfloat param);
 typedef void (APIENTRYP PFNGLTEXENVFVPROC)(GLenum target, GLenum pname, const GLfloat *params);
 typedef void (APIENTRYP PFNGLTEXENVIPROC)(GLenum target, GLenum pname, GLint param);
@@ -1966,6 +1989,7 @@ typedef void (APIENTRYP PFNGLVERTEX4IVPROC)(const GLint *v);
 typedef void (APIENTRYP PFNGLVERTEX4SPROC)(GLshort x, GLshort y, GLshort z, GLshort w);
 typedef void (APIENTRYP PFNGLVERTEX4SVPROC)(const GLshort *v);
 typedef void (APIENTRYP PFNGLVERTEXPOINTERPROC)(GLint size, GLenum type, GLsizei stride, const void *pointer);
+typedef void (APIENTRYP PFNGLVERTEXPOINTEREXTPROC)(GLint size, GLenum type, GLsizei stride, GLsizei count, const void *pointer);
 typedef void (APIENTRYP PFNGLVIEWPORTPROC)(GLint x, GLint y, GLsizei width, GLsizei height);
 typedef void (APIENTRYP PFNGLWINDOWPOS2DPROC)(GLdouble x, GLdouble y);
 GLAPI void GLAPIENTRY glWindowPos2dARB(GLdouble x, GLdouble y);

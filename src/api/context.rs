@@ -469,6 +469,12 @@ impl Gl for Context {
         pop_client_attrib,
         lock_arrays_ext,
         unlock_arrays_ext,
+        vertex_pointer_ext,
+        normal_pointer_ext,
+        color_pointer_ext,
+        index_pointer_ext,
+        tex_coord_pointer_ext,
+        edge_flag_pointer_ext,
         // display lists
         gen_lists,
         new_list,

@@ -9,18 +9,19 @@
 //!
 //! Antialiased lines cover the rectangle of the given width centred on the segment, each
 //! pixel taking a box-filtered estimate of the rectangle's share of its area as coverage,
-//! computed the way Mesa's draw module does it (see `bin_smooth_line`).
+//! computed the way Mesa's draw module does it (see `plan_smooth`).
 //!
 //! Stippling (section 3.4.2) counts fragments along the line (a wide line's column counts
 //! once) with the counter the caller keeps across the segments of a strip or loop.
 //! Attributes are interpolated perspective-correctly along the line.
 
 use super::draw::TileDraw;
-use super::point::{add_constant_planes, bin_rect, emit_rect};
+use super::scene::{Command, LineCommand};
 use super::setup::WindowVertex;
 use crate::common::attr::MAX_ATTRS;
 use crate::common::fixed::SUBPIXEL;
 use crate::common::limits;
+use crate::common::rect::Rect;
 use crate::raster::scene::Scene;
 
 /// Whether the stipple lets fragment number `counter` through.
@@ -32,20 +33,67 @@ fn stipple_passes(stipple: Option<(u32, u16)>, counter: u32) -> bool {
     }
 }
 
-/// Attributes at parameter `t` of the segment, perspective-correct.
-fn attrs_at(v: [&WindowVertex; 2], attrs: [&[f32]; 2], t: f64, n: usize, out: &mut [f32]) {
-    // Interpolate attr/w and 1/w linearly in window space.
-    let iw = v[0].inv_w + t * (v[1].inv_w - v[0].inv_w);
-    for i in 0..n {
-        let p = attrs[0][i] as f64 * v[0].inv_w
-            + t * (attrs[1][i] as f64 * v[1].inv_w - attrs[0][i] as f64 * v[0].inv_w);
-        // Flat colours are equal at both ends, so this returns them unchanged.
-        out[i] = (p / iw) as f32;
-    }
+/// A segment set up for the tiles: recorded once (`Command::Line`) and binned into the tiles
+/// it crosses; each tile's shading walks only the segment's columns inside it
+/// ([`LineSetup::fragments`]), so the per-fragment work runs on the shading threads and the
+/// scene holds one command per segment instead of one per fragment.
+#[derive(Clone, Debug)]
+pub struct LineSetup {
+    kind: LineKind,
+    /// Window z and 1/w at the two ends.
+    z: [f64; 2],
+    inv_w: [f64; 2],
+    z_offset: f64,
+    /// The end points' attributes: `n` at `attrs` in `Scene::line_attrs`, then the end's `n`.
+    pub attrs: u32,
+    pub n: u32,
+    /// Whether the major axis is x.
+    x_major: bool,
+    /// Major-axis coordinates of the two ends (moved by the wide-line shift), the minor
+    /// coordinate at the start and its slope along the major axis.
+    a0: f64,
+    a1: f64,
+    b0: f64,
+    db_da: f64,
+    /// The major-axis interval of the segment (`min(a0, a1)`, `max(a0, a1)`).
+    lo: f64,
+    hi: f64,
+    /// The columns (major-axis pixel coordinates) that can produce fragments.
+    first: i64,
+    last: i64,
+    stipple: Option<(u32, u16)>,
+    start_counter: u32,
+    /// The ends have the same z, 1/w and attributes: every fragment then has the same values
+    /// (the interpolation adds `t * 0`), so fragments of full coverage next to each other in
+    /// a row may be shaded as one span.
+    pub uniform: bool,
 }
 
-/// Bins one line segment. `z_offset` is a polygon offset (edges of polygons in line mode);
-/// `stipple_counter` carries the stipple count from the previous segment of a strip.
+#[derive(Clone, Debug)]
+enum LineKind {
+    Aliased {
+        /// The perturbed end points and the unperturbed end (see `plan_aliased`).
+        p0: [f64; 2],
+        p1: [f64; 2],
+        end: [f64; 2],
+        /// `(w - 1) / 2` and the width `w`.
+        shift: f64,
+        width: i64,
+    },
+    Smooth {
+        quad: SmoothLineQuad,
+        /// Minor-direction reach of the quad around the segment at one column.
+        reach: f64,
+        /// The draw rectangle's rows (columns for y-major lines), inclusive.
+        minor_rect: (i64, i64),
+        /// The columns along the segment itself (they advance the stipple counter).
+        along: Option<(i64, i64)>,
+    },
+}
+
+/// Sets up one line segment and records it (`Command::Line`) in the tiles it crosses.
+/// `z_offset` is a polygon offset (edges of polygons in line mode); `stipple_counter` carries
+/// the stipple count from the previous segment of a strip.
 pub fn bin_line(
     ds: &TileDraw,
     state: u32,
@@ -55,16 +103,113 @@ pub fn bin_line(
     stipple_counter: &mut u32,
     scene: &mut Scene,
 ) {
-    if ds.raster.line_smooth {
-        bin_smooth_line(ds, state, v, attrs, z_offset, stipple_counter, scene);
+    let n = ds
+        .attr_count
+        .min(MAX_ATTRS)
+        .min(attrs[0].len())
+        .min(attrs[1].len());
+    let planned = if ds.raster.line_smooth {
+        plan_smooth(ds, v)
+    } else {
+        plan_aliased(ds, v)
+    };
+    let Some((kind, x_major, [a0, a1, b0, db_da], (first, last))) = planned else {
+        return;
+    };
+    if first > last {
         return;
     }
+    let uniform = v[0].z == v[1].z && v[0].inv_w == v[1].inv_w && attrs[0][..n] == attrs[1][..n];
+    let offset = scene.line_attrs.len() as u32;
+    scene.line_attrs.extend_from_slice(&attrs[0][..n]);
+    scene.line_attrs.extend_from_slice(&attrs[1][..n]);
+    let line = LineSetup {
+        kind,
+        z: [v[0].z, v[1].z],
+        inv_w: [v[0].inv_w, v[1].inv_w],
+        z_offset,
+        attrs: offset,
+        n: n as u32,
+        x_major,
+        a0,
+        a1,
+        b0,
+        db_da,
+        lo: a0.min(a1),
+        hi: a0.max(a1),
+        first,
+        last,
+        stipple: ds.raster.line_stipple,
+        start_counter: *stipple_counter,
+        uniform,
+    };
+    // The tiles each band of columns one tile wide reaches (the minor coordinate is linear
+    // in the column, so the band's end columns bound it).
+    let s = scene.tile_shift();
+    let side = 1i64 << s;
+    let r = &ds.draw_rect;
+    let (minor_lo, minor_hi) = if x_major {
+        (r.y0 as i64, r.y1 as i64 - 1)
+    } else {
+        (r.x0 as i64, r.x1 as i64 - 1)
+    };
+    let (major_lo, major_hi) = if x_major {
+        (r.x0 as i64, r.x1 as i64 - 1)
+    } else {
+        (r.y0 as i64, r.y1 as i64 - 1)
+    };
+    let (c0, c1) = (first.max(major_lo), last.min(major_hi));
+    if c0 > c1 || minor_lo > minor_hi {
+        // Nothing inside the draw rectangle; the stipple count still advances.
+        *stipple_counter = line.end_counter();
+        return;
+    }
+    let index = scene.add_line(Command::Line(LineCommand {
+        state,
+        line: scene.lines.len() as u32,
+    }));
+    let mut band = c0 >> s;
+    while band << s <= c1 {
+        let (b0c, b1c) = ((band << s).max(c0), ((band << s) + side - 1).min(c1));
+        let (m0, m1) = line.minor_span(b0c, b1c);
+        let (m0, m1) = (m0.max(minor_lo), m1.min(minor_hi));
+        if m0 <= m1 {
+            let rect = if x_major {
+                Rect {
+                    x0: b0c as i32,
+                    y0: m0 as i32,
+                    x1: b1c as i32 + 1,
+                    y1: m1 as i32 + 1,
+                }
+            } else {
+                Rect {
+                    x0: m0 as i32,
+                    y0: b0c as i32,
+                    x1: m1 as i32 + 1,
+                    y1: b1c as i32 + 1,
+                }
+            };
+            scene.bin_again(index, rect);
+        }
+        band += 1;
+    }
+    *stipple_counter = line.end_counter();
+    scene.lines.push(line);
+}
+
+/// The aliased segment's set-up: its kind, whether it is x-major, `[a0, a1, b0, db_da]` and
+/// its columns; `None` for a segment of zero length.
+#[allow(clippy::type_complexity)]
+fn plan_aliased(
+    ds: &TileDraw,
+    v: [&WindowVertex; 2],
+) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
     let s = SUBPIXEL as f64;
     let (mut x0, mut y0) = (v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s);
     let (mut x1, mut y1) = (v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s);
     let (dx, dy) = (x1 - x0, y1 - y0);
     if dx == 0.0 && dy == 0.0 {
-        return;
+        return None;
     }
     // Section 3.4.1 rasterizes the segment moved by (-e, -e^2) for a tiny e, so that a segment
     // running exactly through diamond corners (a horizontal line at an integer y, a vertical
@@ -106,67 +251,23 @@ pub fn bin_line(
     } else {
         (p0[1], p1[1], p0[0], dx / dy)
     };
-    // Candidate pixels: one per major-axis column from the start's to the end's, in the
-    // direction of travel (the stipple counts in that order); each is kept when the segment
-    // leaves that pixel's diamond. Clipping bounded the segment by the viewport, so the loop
-    // is bounded too; only columns inside the draw rectangle are recorded.
+    // Candidate pixels: one per major-axis column from the start's to the end's; each is
+    // kept when the segment leaves that pixel's diamond. Clipping bounded the segment by the
+    // viewport, so the columns are bounded too.
     let (first, last) = (a0.min(a1).floor(), a0.max(a1).floor());
-    let count = (last - first) as i64 + 1;
-    let r = &ds.draw_rect;
-    let (clip_lo, clip_hi) = if x_major {
-        (r.x0 as f64, r.x1 as f64 - 1.0)
-    } else {
-        (r.y0 as f64, r.y1 as f64 - 1.0)
+    let kind = LineKind::Aliased {
+        p0: [x0, y0],
+        p1: [x1, y1],
+        end,
+        shift,
+        width,
     };
-    let n = ds.attr_count.min(MAX_ATTRS);
-    let mut a = [0f32; MAX_ATTRS];
-    let (lo, hi) = (a0.min(a1), a0.max(a1));
-    let stipple = ds.raster.line_stipple;
-    let start_counter = *stipple_counter;
-    for k in 0..count.max(0) {
-        let c = if a1 >= a0 {
-            first + k as f64
-        } else {
-            last - k as f64
-        };
-        let centre = c + 0.5;
-        // Which columns: the diamond-exit rule on the segment itself (a wide line has the
-        // same columns as its width-1 line, as llvmpipe draws them); which rows: the moved
-        // segment's.
-        let m = b0 + (centre.clamp(lo, hi) - a0) * db_da;
-        let unshifted = (m + shift).floor();
-        let diamond = if x_major {
-            [c + 0.5, unshifted + 0.5]
-        } else {
-            [unshifted + 0.5, c + 0.5]
-        };
-        if !exits_diamond([x0, y0], [x1, y1], end, diamond) {
-            continue;
-        }
-        let minor = m.floor();
-        let (px, py) = if x_major { (c, minor) } else { (minor, c) };
-        // The fragment's place along the segment: where the segment leaves its pixel, in
-        // whole major-axis units from the start.
-        let exit = if a1 >= a0 { c + 1.0 - a0 } else { a0 - c };
-        let counter = start_counter.wrapping_add(exit.max(0.0).floor() as u32);
-        if c < clip_lo || c > clip_hi || !stipple_passes(stipple, counter) {
-            continue;
-        }
-        let t = ((centre - a0) / (a1 - a0)).clamp(0.0, 1.0);
-        let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
-        attrs_at(v, attrs, t, n, &mut a);
-        let (px, py) = (px as i64, py as i64);
-        let rect = if x_major {
-            [px, py, px + 1, py + width]
-        } else {
-            [px, py, px + width, py + 1]
-        };
-        emit_rect(ds, state, rect, z, &a[..n], 1.0, scene);
-    }
-    // The next segment of a strip continues the count after ceil(major length) fragments
-    // (what the segment produces up to the end-point rounding; Mesa counts the same way).
-    let advance = (a1 - a0).abs().ceil();
-    *stipple_counter = start_counter.wrapping_add(advance.min(u32::MAX as f64) as u32);
+    Some((
+        kind,
+        x_major,
+        [a0, a1, b0, db_da],
+        (first as i64, last as i64),
+    ))
 }
 
 /// An antialiased line, drawn the way Mesa's llvmpipe and softpipe draw it (their draw
@@ -184,22 +285,20 @@ pub fn bin_line(
 /// matching the split is what puts a line's coverage where Mesa puts it (with the other
 /// diagonal, or with the across coordinate interpolated in window space, a receding line of
 /// width 4 sits a pixel away from Mesa's).
-fn bin_smooth_line(
+///
+/// Returns the set-up as [`plan_aliased`] does.
+#[allow(clippy::type_complexity)]
+fn plan_smooth(
     ds: &TileDraw,
-    state: u32,
     v: [&WindowVertex; 2],
-    attrs: [&[f32]; 2],
-    z_offset: f64,
-    stipple_counter: &mut u32,
-    scene: &mut Scene,
-) {
+) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
     let s = SUBPIXEL as f64;
     let p0 = [v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s];
     let p1 = [v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s];
     let (dx, dy) = (p1[0] - p0[0], p1[1] - p0[1]);
     let len = (dx * dx + dy * dy).sqrt();
     if !(len > 0.0) {
-        return;
+        return None;
     }
     let quad = SmoothLineQuad::new(
         p0,
@@ -240,43 +339,237 @@ fn bin_smooth_line(
     let ext = quad.half_width.ceil() as i64;
     let first = first.min(((lo.floor() as i64) - ext).max(major_rect.0));
     let last = last.max(((hi.floor() as i64) + ext).min(major_rect.1));
-    let n = ds.attr_count.min(MAX_ATTRS);
-    let mut a = [0f32; MAX_ATTRS];
-    let stipple = ds.raster.line_stipple;
-    let count = last - first + 1;
-    for k in 0..count.max(0) {
-        let c = if a1 >= a0 { first + k } else { last - k };
-        let centre = c as f64 + 0.5;
-        // Columns along the segment itself advance the stipple counter.
-        let along = centre >= lo && centre < hi;
-        let counter = *stipple_counter;
-        if along {
-            *stipple_counter = stipple_counter.wrapping_add(1);
+    // Columns whose centre lies in [lo, hi) advance the stipple counter: an interval, as the
+    // test is monotonic in the column.
+    let along = if first <= last {
+        let mut c0 = ((lo - 0.5).ceil() as i64).clamp(first, last);
+        while c0 > first && (c0 - 1) as f64 + 0.5 >= lo {
+            c0 -= 1;
         }
-        if !stipple_passes(stipple, counter) {
-            continue;
+        while c0 <= last && (c0 as f64 + 0.5) < lo {
+            c0 += 1;
         }
-        let m = b0 + (centre.clamp(lo, hi) - a0) * db_da;
-        let r0 = ((m - reach).floor() as i64).max(minor_rect.0);
-        let r1 = ((m + reach).floor() as i64).min(minor_rect.1);
-        for row in r0..=r1 {
-            let (px, py) = if x_major { (c, row) } else { (row, c) };
-            let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5) else {
-                continue;
-            };
-            // Data are those of the lengthened quad's vertices (the end points' own), so they
-            // vary over the lengthened rectangle: then the depth of a smooth outline drawn
-            // before a polygon over the same edge decides the same pixels as Mesa's
-            // (xss-stonerview).
-            attrs_at(v, attrs, t, n, &mut a);
-            let z = v[0].z + t * (v[1].z - v[0].z) + z_offset;
-            let o = add_constant_planes(&a[..n], scene);
-            bin_rect(ds, state, [px, py, px + 1, py + 1], z, o, cov as f32, scene);
+        let mut c1 = ((hi - 0.5).floor() as i64).clamp(first, last);
+        while c1 < last && ((c1 + 1) as f64 + 0.5) < hi {
+            c1 += 1;
+        }
+        while c1 >= first && (c1 as f64 + 0.5) >= hi {
+            c1 -= 1;
+        }
+        (c0 <= c1).then_some((c0, c1))
+    } else {
+        None
+    };
+    let kind = LineKind::Smooth {
+        quad,
+        reach,
+        minor_rect,
+        along,
+    };
+    Some((kind, x_major, [a0, a1, b0, db_da], (first, last)))
+}
+
+impl LineSetup {
+    /// The stipple counter after the segment (for the next segment of a strip).
+    fn end_counter(&self) -> u32 {
+        match &self.kind {
+            // The next segment continues the count after ceil(major length) fragments (what
+            // the segment produces up to the end-point rounding; Mesa counts the same way).
+            LineKind::Aliased { .. } => {
+                let advance = (self.a1 - self.a0).abs().ceil();
+                self.start_counter
+                    .wrapping_add(advance.min(u32::MAX as f64) as u32)
+            }
+            LineKind::Smooth { along, .. } => {
+                let n = along.map_or(0, |(c0, c1)| c1 - c0 + 1);
+                self.start_counter.wrapping_add(n as u32)
+            }
+        }
+    }
+
+    /// Rows (columns for y-major lines) that the fragments of columns `c0..=c1` can reach.
+    fn minor_span(&self, c0: i64, c1: i64) -> (i64, i64) {
+        let m =
+            |c: i64| self.b0 + ((c as f64 + 0.5).clamp(self.lo, self.hi) - self.a0) * self.db_da;
+        let (ma, mb) = (m(c0), m(c1));
+        let (m0, m1) = (ma.min(mb), ma.max(mb));
+        let (lo, hi) = match &self.kind {
+            LineKind::Aliased { width, .. } => (m0.floor() - 1.0, m1.floor() + *width as f64 + 1.0),
+            LineKind::Smooth { reach, .. } => {
+                ((m0 - reach).floor() - 1.0, (m1 + reach).floor() + 1.0)
+            }
+        };
+        // NaN (a degenerate slope) reaches everything.
+        let clamp = |v: f64, d: i64| {
+            if v.is_nan() {
+                d
+            } else {
+                v.clamp(-1e9, 1e9) as i64
+            }
+        };
+        (clamp(lo, i64::MIN / 2), clamp(hi, i64::MAX / 2))
+    }
+
+    /// Calls `f(rect, z, attrs, coverage)` for each fragment rectangle of the segment whose
+    /// major-axis column lies in `major` and whose pixels may reach `minor` (rows for x-major
+    /// segments, inclusive bounds): what the segment draws there, the same values whichever
+    /// tile asks. `attrs` are the two ends' attributes (`n` each); `scratch` holds a
+    /// fragment's.
+    pub fn fragments(
+        &self,
+        ends: &[f32],
+        major: (i64, i64),
+        minor: (i64, i64),
+        clip: (f64, f64),
+        mut f: impl FnMut([i64; 4], f64, &[f32], f32),
+    ) {
+        let n = self.n as usize;
+        let mut a = [0f32; MAX_ATTRS];
+        let (e0, e1) = ends.split_at(n);
+        let (c0, c1) = (self.first.max(major.0), self.last.min(major.1));
+        let ascending = self.a1 >= self.a0;
+        match &self.kind {
+            LineKind::Aliased {
+                p0,
+                p1,
+                end,
+                shift,
+                width,
+            } => {
+                let (clip_lo, clip_hi) = clip;
+                for ci in c0..=c1 {
+                    let c = ci as f64;
+                    if c < clip_lo || c > clip_hi {
+                        continue;
+                    }
+                    let centre = c + 0.5;
+                    // Which columns: the diamond-exit rule on the segment itself (a wide line
+                    // has the same columns as its width-1 line, as llvmpipe draws them); which
+                    // rows: the moved segment's.
+                    let m = self.b0 + (centre.clamp(self.lo, self.hi) - self.a0) * self.db_da;
+                    let minor_px = m.floor();
+                    if (minor_px as i64) > minor.1 || (minor_px as i64) + width <= minor.0 {
+                        continue;
+                    }
+                    let unshifted = (m + shift).floor();
+                    let diamond = if self.x_major {
+                        [c + 0.5, unshifted + 0.5]
+                    } else {
+                        [unshifted + 0.5, c + 0.5]
+                    };
+                    if !exits_diamond(*p0, *p1, *end, diamond) {
+                        continue;
+                    }
+                    // The fragment's place along the segment: where the segment leaves its
+                    // pixel, in whole major-axis units from the start.
+                    let exit = if ascending {
+                        c + 1.0 - self.a0
+                    } else {
+                        self.a0 - c
+                    };
+                    let counter = self
+                        .start_counter
+                        .wrapping_add(exit.max(0.0).floor() as u32);
+                    if !stipple_passes(self.stipple, counter) {
+                        continue;
+                    }
+                    let t = ((centre - self.a0) / (self.a1 - self.a0)).clamp(0.0, 1.0);
+                    let z = self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset;
+                    self.attrs_at([e0, e1], t, &mut a[..n]);
+                    let (px, py) = if self.x_major {
+                        (ci, minor_px as i64)
+                    } else {
+                        (minor_px as i64, ci)
+                    };
+                    let rect = if self.x_major {
+                        [px, py, px + 1, py + width]
+                    } else {
+                        [px, py, px + width, py + 1]
+                    };
+                    f(rect, z, &a[..n], 1.0);
+                }
+            }
+            LineKind::Smooth {
+                quad,
+                reach,
+                minor_rect,
+                along,
+            } => {
+                for c in c0..=c1 {
+                    let centre = c as f64 + 0.5;
+                    if self.stipple.is_some() {
+                        // Columns along the segment before this one in the direction of
+                        // travel advance the counter.
+                        let before = along.map_or(0, |(s0, s1)| {
+                            if ascending {
+                                (c.min(s1 + 1) - s0).max(0)
+                            } else {
+                                (s1 - c.max(s0 - 1)).max(0)
+                            }
+                        });
+                        let counter = self.start_counter.wrapping_add(before as u32);
+                        if !stipple_passes(self.stipple, counter) {
+                            continue;
+                        }
+                    }
+                    let m = self.b0 + (centre.clamp(self.lo, self.hi) - self.a0) * self.db_da;
+                    let r0 = ((m - reach).floor() as i64).max(minor_rect.0).max(minor.0);
+                    let r1 = ((m + reach).floor() as i64).min(minor_rect.1).min(minor.1);
+                    for row in r0..=r1 {
+                        let (px, py) = if self.x_major { (c, row) } else { (row, c) };
+                        let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5) else {
+                            continue;
+                        };
+                        // Data are those of the lengthened quad's vertices (the end points'
+                        // own), so they vary over the lengthened rectangle: then the depth of
+                        // a smooth outline drawn before a polygon over the same edge decides
+                        // the same pixels as Mesa's (xss-stonerview).
+                        self.attrs_at([e0, e1], t, &mut a[..n]);
+                        let z = self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset;
+                        f([px, py, px + 1, py + 1], z, &a[..n], cov as f32);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The major-axis pixel range a tile at `tile` (x0, y0, side) covers, and its minor range.
+    pub fn tile_ranges(&self, x0: i32, y0: i32, side: i32) -> ((i64, i64), (i64, i64)) {
+        let xs = (x0 as i64, (x0 + side) as i64 - 1);
+        let ys = (y0 as i64, (y0 + side) as i64 - 1);
+        if self.x_major {
+            (xs, ys)
+        } else {
+            (ys, xs)
+        }
+    }
+
+    /// Attributes at parameter `t` of the segment, perspective-correct.
+    #[inline]
+    fn attrs_at(&self, ends: [&[f32]; 2], t: f64, out: &mut [f32]) {
+        // Interpolate attr/w and 1/w linearly in window space.
+        let [q0, q1] = self.inv_w;
+        let iw = q0 + t * (q1 - q0);
+        for (i, o) in out.iter_mut().enumerate() {
+            let p = ends[0][i] as f64 * q0 + t * (ends[1][i] as f64 * q1 - ends[0][i] as f64 * q0);
+            // Flat colours are equal at both ends, so this returns them unchanged.
+            *o = (p / iw) as f32;
+        }
+    }
+
+    /// The draw rectangle's major-axis bounds as the aliased rule clips columns.
+    pub fn major_clip(&self, ds: &TileDraw) -> (f64, f64) {
+        let r = &ds.draw_rect;
+        if self.x_major {
+            (r.x0 as f64, r.x1 as f64 - 1.0)
+        } else {
+            (r.y0 as f64, r.y1 as f64 - 1.0)
         }
     }
 }
 
-/// The quad an antialiased line is drawn as (see [`bin_smooth_line`]).
+/// The quad an antialiased line is drawn as (see [`plan_smooth`]).
+#[derive(Clone, Debug)]
 struct SmoothLineQuad {
     p0: [f64; 2],
     /// Unit direction from the start to the end.

@@ -4,6 +4,7 @@
 use std::sync::Arc;
 
 use super::draw::TileDraw;
+use super::line::LineSetup;
 use super::prefetch;
 use super::setup::{Edge, Plane};
 use crate::common::rect::Rect;
@@ -113,12 +114,20 @@ pub struct RectCommand {
     pub coverage: f32,
 }
 
+/// A line segment: its set-up is `Scene::lines[line]` (each tile draws its own part).
+#[derive(Clone, Copy, Debug)]
+pub struct LineCommand {
+    pub state: u32,
+    pub line: u32,
+}
+
 /// Work recorded for the tiles.
 #[derive(Clone, Copy, Debug)]
 pub enum Command {
     Clear(ClearCommand),
     Triangle(TriangleCommand),
     Rect(RectCommand),
+    Line(LineCommand),
 }
 
 /// Commands recorded since the last flush, per-tile bins, and what they reference.
@@ -128,6 +137,9 @@ pub struct Scene {
     pub bins: Vec<Vec<u32>>,
     pub states: Vec<Arc<TileDraw>>,
     pub planes: Vec<Plane>,
+    /// Line segments' set-ups and their end points' attributes.
+    pub lines: Vec<LineSetup>,
+    pub line_attrs: Vec<f32>,
     tiles_x: usize,
     tiles_y: usize,
     /// log2 of the framebuffer's tile side.
@@ -157,7 +169,9 @@ impl Scene {
 
     /// True when the scene should be flushed before more is recorded.
     pub fn is_full(&self) -> bool {
-        self.commands.len() >= MAX_COMMANDS || self.planes.len() >= MAX_PLANES
+        self.commands.len() >= MAX_COMMANDS
+            || self.planes.len() >= MAX_PLANES
+            || self.line_attrs.len() >= MAX_PLANES
     }
 
     /// Index of `ds` in the state table (reused when it is the last one added).
@@ -178,12 +192,28 @@ impl Scene {
         offset
     }
 
+    /// log2 of the tiles' side.
+    pub fn tile_shift(&self) -> u32 {
+        self.tile_shift
+    }
+
     /// Records `cmd` in every tile that `rect` touches.
     #[inline(always)]
     pub fn bin(&mut self, cmd: Command, rect: Rect) {
         if rect.is_empty() {
             return;
         }
+        let index = self.push(cmd);
+        self.bin_again(index, rect);
+    }
+
+    /// Records a line command in no tile yet (see [`Scene::bin_again`]); returns its index.
+    pub fn add_line(&mut self, cmd: Command) -> u32 {
+        self.push(cmd)
+    }
+
+    #[inline(always)]
+    fn push(&mut self, cmd: Command) -> u32 {
         let index = self.commands.len() as u32;
         prefetch::write_past(
             &self.commands,
@@ -191,6 +221,16 @@ impl Scene {
             std::mem::size_of::<Command>(),
         );
         self.commands.push(cmd);
+        index
+    }
+
+    /// Records command `index` in every tile that `rect` touches (the rectangles of one
+    /// command must not share a tile).
+    #[inline(always)]
+    pub fn bin_again(&mut self, index: u32, rect: Rect) {
+        if rect.is_empty() {
+            return;
+        }
         let s = self.tile_shift;
         let tx0 = (rect.x0.max(0) >> s) as usize;
         let ty0 = (rect.y0.max(0) >> s) as usize;
@@ -214,6 +254,8 @@ impl Scene {
         }
         self.states.clear();
         self.planes.clear();
+        self.lines.clear();
+        self.line_attrs.clear();
     }
 }
 

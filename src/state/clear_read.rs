@@ -2,7 +2,9 @@
 
 use super::Context;
 use crate::common::fixed::{color_to_u8, depth_to_fixed};
-use crate::common::values::{ClearMask, PackedType, PixelFormat, PixelType, TexPixelType};
+use crate::common::values::{
+    ClearMask, PackedType, PixelFormat, PixelType, TexPixelFormat, TexPixelType,
+};
 use crate::gl::convert;
 use crate::gl::enums::*;
 use crate::raster::scene::{ClearCommand, Command};
@@ -57,6 +59,10 @@ impl Context {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
+        if format == GL_DEPTH_STENCIL_EXT {
+            self.read_depth_stencil(x, y, width, height, type_, pixels);
+            return;
+        }
         let Some(f) = convert::pixel_format(format) else {
             self.record_error(GL_INVALID_ENUM);
             return;
@@ -294,6 +300,72 @@ impl Context {
                 }
                 let at = layout.start + row * layout.row_stride + col * layout.group;
                 texpix::pack_group(pixels, at, c, tf, ty, swap);
+            }
+        }
+    }
+
+    /// `glReadPixels(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8)` (EXT_packed_depth_stencil): each
+    /// pixel one 32-bit word, the depth (after scale and bias) in the high 24 bits and the
+    /// stencil index (after shift, offset and map) in the low 8. Another type is
+    /// `GL_INVALID_ENUM`; a framebuffer without both buffers is `GL_INVALID_OPERATION`.
+    fn read_depth_stencil(
+        &mut self,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        type_: GLenum,
+        pixels: &mut [u8],
+    ) {
+        if type_ != GL_UNSIGNED_INT_24_8_EXT {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let cfg = self.framebuffer.config;
+        if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        let (w, h) = (width as usize, height as usize);
+        let ty = TexPixelType::Packed(PackedType::UInt248);
+        let Some(layout) =
+            texpix::layout(&self.pack, 2, [w, h, 1], TexPixelFormat::DepthStencil, ty)
+        else {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        if pixels.len() < layout.end {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.flush_scene();
+        let depth_max = self.framebuffer.depth_max() as f64;
+        let xfer = &self.pixel_transfer;
+        let swap = self.pack.swap_bytes;
+        for row in 0..h {
+            for col in 0..w {
+                let (wx, wy) = (x.saturating_add(col as i32), y.saturating_add(row as i32));
+                // Pixels outside the window are undefined; the destination is left as is.
+                let (Some(d), Some(s)) = (
+                    self.framebuffer.depth_at(wx, wy),
+                    self.framebuffer.stencil_at(wx, wy),
+                ) else {
+                    continue;
+                };
+                let d = xfer.depth(d as f64 / depth_max);
+                let word = (depth_to_fixed(d, 0x00FF_FFFF) << 8) | xfer.stencil(s as i64) as u32;
+                let at = layout.start + row * layout.row_stride + col * layout.group;
+                let mut b = word.to_ne_bytes();
+                if swap {
+                    b.reverse();
+                }
+                if let Some(dst) = pixels.get_mut(at..at + 4) {
+                    dst.copy_from_slice(&b);
+                }
             }
         }
     }

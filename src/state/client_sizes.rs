@@ -55,6 +55,16 @@ fn image_bytes(
     texpix::layout(store, dims, size, format, ty).map_or(0, |l| l.end)
 }
 
+/// Bytes of a `GL_DEPTH_STENCIL` rectangle (EXT_packed_depth_stencil) for `glReadPixels` and
+/// `glDrawPixels`: one 32-bit word a pixel with `GL_UNSIGNED_INT_24_8`, the one type taken.
+fn depth_stencil_bytes(store: &PixelStore, type_: GLenum, w: usize, h: usize) -> usize {
+    if type_ != GL_UNSIGNED_INT_24_8_EXT {
+        return 0;
+    }
+    let ty = TexPixelType::Packed(crate::common::values::PackedType::UInt248);
+    image_bytes(store, 2, TexPixelFormat::DepthStencil, ty, [w, h, 1])
+}
+
 impl Context {
     /// Bytes `glTexImage{1,2,3}D` and `glTexSubImage{1,2,3}D` read at `pixels` for an image of
     /// `size` (the first `dims` entries used) under the unpack state.
@@ -94,6 +104,9 @@ impl Context {
             return 0;
         };
         let u = &self.unpack;
+        if format == GL_DEPTH_STENCIL_EXT {
+            return depth_stencil_bytes(u, type_, w, h);
+        }
         match convert::draw_pixels_format(format) {
             Some(DrawPixelsFormat::Color(f)) => {
                 convert::tex_pixel_type(type_).map_or(0, |t| image_bytes(u, 2, f, t, [w, h, 1]))
@@ -128,6 +141,9 @@ impl Context {
         let Some([w, h, _]) = image_size(2, [width, height, 1], i32::MAX as i64) else {
             return 0;
         };
+        if format == GL_DEPTH_STENCIL_EXT {
+            return depth_stencil_bytes(&self.pack, type_, w, h);
+        }
         if let (Some(f), Some(t)) = (convert::pixel_format(format), convert::pixel_type(type_)) {
             return self.pack_bytes(f.components(), t.size(), w, h).unwrap_or(0);
         }

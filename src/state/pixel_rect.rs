@@ -10,10 +10,11 @@
 use glam::Vec4;
 
 use super::Context;
+use crate::common::fixed::depth_to_fixed;
 use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{
-    CopyPixelsType, DrawPixelsFormat, PixelIndexType, PixelMap, PixelRectQuery, PixelTransferParam,
-    TexPixelFormat, TexPixelType,
+    CopyPixelsType, DrawPixelsFormat, PackedType, PixelIndexType, PixelMap, PixelRectQuery,
+    PixelTransferParam, TexPixelFormat, TexPixelType,
 };
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::gl::convert;
@@ -175,6 +176,8 @@ enum PixelValue {
     Color([f32; 4]),
     Depth(f64),
     Stencil(u8),
+    /// A depth and a stencil index written directly (`GL_DEPTH_STENCIL`).
+    DepthStencil(f64, u8),
 }
 
 /// The window pixels a zoomed source pixel covers (section 3.6.4): those whose centres lie
@@ -542,6 +545,8 @@ impl Context {
         let (xr, yr) = ((xr + 0.5).floor(), (yr + 0.5).floor());
         let raster_color = self.raster_pos.color;
         let stencil_mask = self.fragment_ops.stencil_writemask as u8;
+        let depth_write = self.fragment_ops.depth_mask;
+        let depth_max = self.framebuffer.depth_max();
         let mut planes = Vec::with_capacity(ds.tile.attr_count);
         let mut color_planes_for: Option<[f32; 4]> = None;
         for j in 0..height {
@@ -560,6 +565,23 @@ impl Context {
                 let (color, z) = match value {
                     PixelValue::Color(c) => (c, zr),
                     PixelValue::Depth(d) => (raster_color, d),
+                    PixelValue::DepthStencil(d, s) => {
+                        let d = depth_write.then(|| depth_to_fixed(d, depth_max));
+                        for y in y0..y1 {
+                            for x in x0..x1 {
+                                if let Some(t) = self.framebuffer.tile_index(x as i32, y as i32) {
+                                    let tile = &mut self.framebuffer.tiles[t];
+                                    let idx = tile.index(x as i32, y as i32);
+                                    if let Some(d) = d {
+                                        tile.depth[idx] = d;
+                                    }
+                                    let old = tile.stencil[idx];
+                                    tile.stencil[idx] = (old & !stencil_mask) | (s & stencil_mask);
+                                }
+                            }
+                        }
+                        continue;
+                    }
                     PixelValue::Stencil(s) => {
                         for y in y0..y1 {
                             for x in x0..x1 {
@@ -595,6 +617,10 @@ impl Context {
         type_: GLenum,
         pixels: Option<&[u8]>,
     ) {
+        if format == GL_DEPTH_STENCIL_EXT {
+            self.draw_depth_stencil(width, height, type_, pixels);
+            return;
+        }
         let f = convert::draw_pixels_format(format);
         // Section 3.6.4: the packed types need format RGB (3_3_2, 5_6_5) or RGBA/BGRA (the
         // others), else INVALID_OPERATION. A format outside the command's set also makes
@@ -645,6 +671,76 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        self.draw_pixel_values(w, h, &values);
+    }
+
+    /// `glDrawPixels(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8)` (EXT_packed_depth_stencil): each
+    /// 32-bit word a depth (high 24 bits, then scale and bias) and a stencil index (low 8 bits,
+    /// then shift, offset and map). As OpenGL 3.0 states it (section 4.3.1), the pairs are not
+    /// fragments: only the pixel ownership and scissor tests apply, the depth is written
+    /// unless the depth mask is off (the depth test is ignored), the stencil index through
+    /// the stencil write mask, and colour is untouched. Another type is `GL_INVALID_ENUM`; a
+    /// framebuffer without both buffers is `GL_INVALID_OPERATION`.
+    fn draw_depth_stencil(
+        &mut self,
+        width: GLsizei,
+        height: GLsizei,
+        type_: GLenum,
+        pixels: Option<&[u8]>,
+    ) {
+        if type_ != GL_UNSIGNED_INT_24_8_EXT {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        if width < 0 || height < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let cfg = self.framebuffer.config;
+        if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if self.pixel_op_feedback(convert::FeedbackToken::DrawPixel) {
+            return;
+        }
+        let (w, h) = (width as usize, height as usize);
+        if w == 0 || h == 0 {
+            return;
+        }
+        let ty = TexPixelType::Packed(PackedType::UInt248);
+        let layout = texpix::layout(&self.unpack, 2, [w, h, 1], TexPixelFormat::DepthStencil, ty);
+        let (Some(data), Some(layout)) = (pixels, layout) else {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        };
+        if data.len() < layout.end {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        let t = &self.pixel_transfer;
+        let swap = self.unpack.swap_bytes;
+        let mut values = Vec::new();
+        if values.try_reserve(w * h).is_err() {
+            self.record_error(GL_OUT_OF_MEMORY);
+            return;
+        }
+        for j in 0..h {
+            for i in 0..w {
+                let at = layout.start + j * layout.row_stride + i * layout.group;
+                let mut b = [0u8; 4];
+                b.copy_from_slice(&data[at..at + 4]);
+                if swap {
+                    b.reverse();
+                }
+                let word = u32::from_ne_bytes(b);
+                let depth = t.depth((word >> 8) as f64 / 0x00FF_FFFF as f64);
+                values.push(PixelValue::DepthStencil(
+                    depth,
+                    t.stencil((word & 0xFF) as i64),
+                ));
+            }
+        }
         self.draw_pixel_values(w, h, &values);
     }
 

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use super::format::{InternalFormat, Storage};
 use super::s3tc;
+use crate::common::values::{TexPixelFormat, TexPixelType};
 
 /// Texel components, unsigned normalised, `components` per texel, rows bottom to top, images
 /// (3D slices) front to back, borders included.
@@ -42,6 +43,62 @@ impl Block {
                         if let Some(d) = t.get_mut(at + k) {
                             *d = to(clamp01(v[slot]) as f64);
                         }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A block of client groups being converted (see [`TexImage::store_converted`]).
+struct Converted<'a> {
+    dims: [usize; 3],
+    origin: [usize; 3],
+    size: [usize; 3],
+    layout: &'a super::pixels::Layout,
+    data: &'a [u8],
+    /// Per stored component: the byte offset of its client component in a group, or the
+    /// constant it takes.
+    sources: &'a [Result<usize, f32>],
+    /// Bytes of one client component.
+    elem: usize,
+}
+
+impl Converted<'_> {
+    /// Stores every texel: `value(bytes)` of the client component a stored component comes
+    /// from, `constant(v)` of the others.
+    #[inline(always)]
+    fn fill<T: Copy>(&self, t: &mut [T], value: impl Fn(&[u8]) -> T, constant: &impl Fn(f32) -> T) {
+        let c = self.sources.len();
+        let (o, n, l) = (self.origin, self.size, self.layout);
+        let row_bytes = n[0] * l.group;
+        let sources: Vec<Result<usize, T>> =
+            self.sources.iter().map(|s| s.map_err(constant)).collect();
+        let in_order = c * self.elem == l.group
+            && (self.sources.iter().enumerate()).all(|(k, s)| *s == Ok(k * self.elem));
+        for z in 0..n[2] {
+            for y in 0..n[1] {
+                let src = l.start + z * l.image_stride + y * l.row_stride;
+                let dst = (((o[2] + z) * self.dims[1] + o[1] + y) * self.dims[0] + o[0]) * c;
+                let (Some(src), Some(dst)) = (
+                    self.data.get(src..src + row_bytes),
+                    t.get_mut(dst..dst + n[0] * c),
+                ) else {
+                    continue;
+                };
+                if in_order {
+                    // Each client component is the next stored one: one flat loop.
+                    for (d, b) in dst.iter_mut().zip(src.chunks_exact(self.elem)) {
+                        *d = value(b);
+                    }
+                    continue;
+                }
+                for (g, out) in src.chunks_exact(l.group).zip(dst.chunks_exact_mut(c)) {
+                    for (d, s) in out.iter_mut().zip(&sources) {
+                        *d = match *s {
+                            Ok(at) => value(&g[at..at + self.elem]),
+                            Err(v) => v,
+                        };
                     }
                 }
             }
@@ -327,6 +384,135 @@ impl TexImage {
         true
     }
 
+    /// Stores the `size` block at `origin` (stored coordinates) from client groups of
+    /// `format` whose components are of the unpacked type `ty`, without byte swapping or pixel
+    /// transfer: what [`super::pixels::unpack_group`] then `store_block` store, with the
+    /// client type, the storage and each stored component's source looked up once per call
+    /// instead of per texel (float uploads were ten times slower than Mesa's). False, with
+    /// nothing stored, for packed types, depth data, compressed images, a block outside the
+    /// image or `data` shorter than `layout.end`.
+    pub fn store_converted(
+        &mut self,
+        data: &[u8],
+        layout: &super::pixels::Layout,
+        origin: [usize; 3],
+        size: [usize; 3],
+        format: TexPixelFormat,
+        ty: TexPixelType,
+    ) -> bool {
+        let dims = [self.width, self.height, self.depth].map(|s| s.max(0) as usize);
+        let fits = (0..3).all(|k| origin[k].checked_add(size[k]).is_some_and(|e| e <= dims[k]));
+        let elem = ty.size();
+        if matches!(ty, TexPixelType::Packed(_))
+            || format.is_depth()
+            || self.format.is_depth()
+            || self.format.compressed.is_some()
+            || !fits
+            || data.len() < layout.end
+            || layout.group != elem * format.components()
+        {
+            return false;
+        }
+        // Each stored component: the client component whose slot it takes (luminance also
+        // gives G and B; a later component wins a slot, as in `unpack_group`), or the
+        // missing components' 0 (alpha 1).
+        let client = format.slots();
+        let luminance = matches!(
+            format,
+            TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+        );
+        let sources: Vec<Result<usize, f32>> = self
+            .format
+            .base
+            .slots()
+            .iter()
+            .map(|&slot| {
+                let slot = if luminance && (slot == 1 || slot == 2) {
+                    0
+                } else {
+                    slot
+                };
+                match client.iter().rposition(|&s| s == slot) {
+                    Some(j) => Ok(j * elem),
+                    None => Err(if slot == 3 { 1.0 } else { 0.0 }),
+                }
+            })
+            .collect();
+        let block = Converted {
+            dims,
+            origin,
+            size,
+            layout,
+            data,
+            sources: &sources,
+            elem,
+        };
+        let texels = Arc::make_mut(&mut self.texels);
+        // `value` of a client component (table 2.9 as `unpack_group` computes it) into the
+        // storage (as `store_block` rounds).
+        macro_rules! by_type {
+            ($t:expr, $to:expr) => {{
+                let to = $to;
+                match ty {
+                    TexPixelType::UnsignedByte => block.fill($t, |b| to(b[0] as f32 / 255.0), &to),
+                    TexPixelType::Byte => {
+                        block.fill($t, |b| to((2.0 * (b[0] as i8) as f32 + 1.0) / 255.0), &to)
+                    }
+                    TexPixelType::UnsignedShort => block.fill(
+                        $t,
+                        |b| to(u16::from_ne_bytes([b[0], b[1]]) as f32 / 65535.0),
+                        &to,
+                    ),
+                    TexPixelType::Short => block.fill(
+                        $t,
+                        |b| to((2.0 * i16::from_ne_bytes([b[0], b[1]]) as f32 + 1.0) / 65535.0),
+                        &to,
+                    ),
+                    TexPixelType::UnsignedInt => block.fill(
+                        $t,
+                        |b| {
+                            to((u32::from_ne_bytes([b[0], b[1], b[2], b[3]]) as f64
+                                / u32::MAX as f64) as f32)
+                        },
+                        &to,
+                    ),
+                    TexPixelType::Int => block.fill(
+                        $t,
+                        |b| {
+                            let raw = i32::from_ne_bytes([b[0], b[1], b[2], b[3]]);
+                            to(((2.0 * raw as f64 + 1.0) / u32::MAX as f64) as f32)
+                        },
+                        &to,
+                    ),
+                    TexPixelType::Float => block.fill(
+                        $t,
+                        |b| to(f32::from_ne_bytes([b[0], b[1], b[2], b[3]])),
+                        &to,
+                    ),
+                    TexPixelType::Packed(_) => {}
+                }
+            }};
+        }
+        match texels {
+            Texels::U8(t) => {
+                if ty == TexPixelType::UnsignedByte {
+                    // A byte's value c / 255 stores as c again (`bytes_store_as_themselves`).
+                    block.fill(t, |b| b[0], &|v: f32| {
+                        (clamp01(v) as f64 * 255.0 + 0.5) as u8
+                    });
+                } else {
+                    by_type!(t, |v: f32| (clamp01(v) as f64 * 255.0 + 0.5) as u8)
+                }
+            }
+            Texels::U16(t) => by_type!(t, |v: f32| (clamp01(v) as f64 * 65535.0 + 0.5) as u16),
+            Texels::U32(t) => {
+                by_type!(t, |v: f32| (clamp01(v) as f64 * u32::MAX as f64 + 0.5)
+                    as u32)
+            }
+        }
+        true
+    }
+
     /// Stores the `size` block at `origin` (stored coordinates), its texel (x, y, z) being
     /// `texel(x, y, z)`: what `store` of each texel does, with the storage looked up once
     /// (the uploads' general path). Texels outside the image are skipped.
@@ -489,6 +675,125 @@ fn gather<T: Copy>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An unsigned byte stores as itself in 8-bit storage (`store_converted` copies it).
+    #[test]
+    fn bytes_store_as_themselves() {
+        for c in 0..=255u8 {
+            assert_eq!((clamp01(c as f32 / 255.0) as f64 * 255.0 + 0.5) as u8, c);
+        }
+    }
+
+    /// `store_converted` stores what the per-texel route (`unpack_group` of each group into
+    /// `store_block`) stores: every unpacked client type and colour format, into 8-, 16- and
+    /// 32-bit storage of every colour base format, whole images and sub-blocks under row
+    /// lengths, alignments and skips; client bytes pseudo-random (so floats include NaN,
+    /// infinities, negatives and values above 1).
+    #[test]
+    fn converted_uploads_store_what_the_per_texel_route_stores() {
+        use crate::texture::format::BaseFormat;
+        use crate::texture::pixels::{layout, unpack_group, PixelStore};
+        use TexPixelFormat as F;
+        use TexPixelType as T;
+        let formats = [
+            F::Red,
+            F::Green,
+            F::Blue,
+            F::Alpha,
+            F::Rgb,
+            F::Rgba,
+            F::Bgr,
+            F::Bgra,
+            F::Luminance,
+            F::LuminanceAlpha,
+        ];
+        let types = [
+            T::UnsignedByte,
+            T::Byte,
+            T::UnsignedShort,
+            T::Short,
+            T::UnsignedInt,
+            T::Int,
+            T::Float,
+        ];
+        let bases = [
+            BaseFormat::Alpha,
+            BaseFormat::Luminance,
+            BaseFormat::LuminanceAlpha,
+            BaseFormat::Intensity,
+            BaseFormat::Rgb,
+            BaseFormat::Rgba,
+            BaseFormat::Red,
+            BaseFormat::Rg,
+        ];
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let data: Vec<u8> = (0..4096)
+            .map(|_| {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                // Some floats near [0, 1]: exponent bytes 0x3F / 0x3E in the high byte.
+                match seed % 5 {
+                    0 => 0x3F,
+                    1 => 0x3E,
+                    _ => (seed >> 24) as u8,
+                }
+            })
+            .collect();
+        let (w, h) = (7usize, 5usize);
+        let mut checked = 0;
+        for format in formats {
+            for ty in types {
+                for base in bases {
+                    for bits in [8u8, 16, 32] {
+                        let ifmt = InternalFormat::new(0, base, bits);
+                        for (align, row_length, skip_px, skip_rows) in
+                            [(1, 0, 0, 0), (4, 11, 2, 1), (8, 0, 1, 2)]
+                        {
+                            let store = PixelStore {
+                                alignment: align,
+                                row_length,
+                                skip_pixels: skip_px,
+                                skip_rows,
+                                ..PixelStore::default()
+                            };
+                            for (origin, size) in [([0, 0, 0], [w, h, 1]), ([2, 1, 0], [4, 3, 1])] {
+                                let lay = layout(&store, 2, size, format, ty).unwrap();
+                                assert!(lay.end <= data.len());
+                                let image = || {
+                                    let mut img =
+                                        TexImage::new(2, [w as i32, h as i32, 1], 0, ifmt, false)
+                                            .unwrap();
+                                    // A non-zero background, so skipped texels show.
+                                    img.store_block([0; 3], [w, h, 1], |x, y, _| {
+                                        [x as f32 / 8.0, y as f32 / 8.0, 0.5, 0.25]
+                                    });
+                                    img
+                                };
+                                let mut fast = image();
+                                assert!(fast.store_converted(&data, &lay, origin, size, format, ty));
+                                let mut slow = image();
+                                slow.store_block(origin, size, |x, y, z| {
+                                    let at = lay.start
+                                        + z * lay.image_stride
+                                        + y * lay.row_stride
+                                        + x * lay.group;
+                                    unpack_group(&data, at, format, ty, false)
+                                });
+                                assert_eq!(
+                                    fast.texels, slow.texels,
+                                    "{format:?} {ty:?} into {base:?}/{bits}, unpack {align} \
+                                     {row_length} {skip_px} {skip_rows}, block {origin:?} {size:?}"
+                                );
+                                checked += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 10 * 7 * 8 * 3 * 3 * 2);
+    }
 
     #[test]
     fn images_over_the_byte_limit_are_out_of_memory_without_allocating() {

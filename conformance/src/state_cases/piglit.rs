@@ -13,6 +13,8 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
     piglit_sized_format_channels: "piglit's sized-texture-format-channels: the component sizes glGetTexLevelParameter reports for sized formats, GL_TEXTURE_STENCIL_SIZE among them (8 for the depth-stencil formats, 0 for the others). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_get_tex_image_luminance: "piglit's getteximage-luminance: an RGBA image read back as GL_LUMINANCE and GL_LUMINANCE_ALPHA, and a luminance image read back as RGBA. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_copy_pixels_depth_stencil: "piglit's depthstencil-default_fb-copypixels: glCopyPixels(GL_DEPTH_STENCIL) copies the depth and the stencil of a rectangle. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_depth_stencil_pixels: "piglit's depthstencil-default_fb-readpixels-24_8 and -drawpixels-24_8: glReadPixels and glDrawPixels with GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil), with depth scale and bias and (on read-back) index offset, the depth and stencil write masks, the depth test off, and the errors of other types and formats. Every answer equals Mesa's (24-bit depths within one unit).",
+    piglit_get_tex_image_depth_stencil: "piglit's getteximage-depth with EXT_packed_depth_stencil listed: depth-stencil images uploaded and read back with glGetTexImage(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8), the depth of each word compared (tilegl's depth textures keep no stencil), and the error of reading a colour image so. Every answer equals Mesa's (24-bit depths within one unit).",
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_beginend_coverage: "piglit's gl-1.0-beginend-coverage: glIndex*, glClearIndex and glIndexMask set colour-index state in an RGBA context without error (glIndex* also between glBegin and glEnd); glTexGenf/glTexGeni with a plane set (param, 0, 0, 0) (section 2.11.4 names no error for the scalar forms); glTexParameterf(GL_TEXTURE_BORDER_COLOR) is GL_INVALID_ENUM; glDrawArrays and glDrawElements from a display list executed between glBegin and glEnd are GL_INVALID_OPERATION. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
@@ -538,4 +540,211 @@ fn piglit_errors(gl: &mut dyn Gl, out: &mut Answers) {
             vec![on as f64, off as f64],
         );
     }
+}
+
+/// Reads a `w` x `h` rectangle as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 and records each
+/// word's depth (within one unit of 24 bits) and stencil index (exact).
+fn read_depth_stencil(gl: &mut dyn Gl, out: &mut Answers, label: &str, w: i32, h: i32) {
+    let mut words = vec![0u8; (w * h * 4) as usize];
+    gl.read_pixels(
+        0,
+        0,
+        w,
+        h,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        &mut words,
+    );
+    let words: Vec<u32> = words
+        .chunks(4)
+        .map(|c| u32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    out.push(Answer {
+        label: format!("{label}: depths (24 bits)"),
+        values: words.iter().map(|w| (w >> 8) as f64).collect(),
+        tolerance: 1.0,
+    });
+    exact(
+        out,
+        format!("{label}: stencil indices"),
+        words.iter().map(|w| (w & 0xff) as f64).collect(),
+    );
+    err(gl, out, label);
+}
+
+/// piglit's depthstencil-default_fb-readpixels-24_8 and -drawpixels-24_8: glReadPixels and
+/// glDrawPixels with GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil), with
+/// depth scale and bias and (on read-back) index offset, the depth and stencil write masks, the depth test off, and
+/// the errors of other types and formats.
+fn piglit_depth_stencil_pixels(gl: &mut dyn Gl, out: &mut Answers) {
+    gl.clear_color(0.0, 0.0, 0.0, 0.0);
+    gl.clear_depth(0.75);
+    gl.clear_stencil(0x12);
+    gl.clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    // The right half of a 4 x 2 rectangle at another depth and stencil.
+    gl.enable(GL_SCISSOR_TEST);
+    gl.scissor(2, 0, 2, 2);
+    gl.clear_depth(0.375);
+    gl.clear_stencil(0xc3);
+    gl.clear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    gl.disable(GL_SCISSOR_TEST);
+    gl.pixel_storei(GL_PACK_ALIGNMENT, 1);
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    read_depth_stencil(gl, out, "read cleared", 4, 2);
+    gl.pixel_transferf(GL_DEPTH_SCALE, 0.5);
+    gl.pixel_transferf(GL_DEPTH_BIAS, 0.125);
+    gl.pixel_transferi(GL_INDEX_OFFSET, 3);
+    read_depth_stencil(
+        gl,
+        out,
+        "read with depth scale 0.5, bias 0.125, index offset 3",
+        4,
+        2,
+    );
+
+    // Drawn with the same depth transfer (d / 2 + 1/8). The index offset is left out: llvmpipe
+    // applies it to glReadPixels' stencil but not to glDrawPixels' (tilegl does, as for
+    // GL_STENCIL_INDEX; tests/pixel_rect.rs checks that).
+    gl.pixel_transferi(GL_INDEX_OFFSET, 0);
+    let words: Vec<u8> = [
+        (0x00_0000u32, 0x00u32),
+        (0xff_ffff, 0xff),
+        (0x80_0000, 0x40),
+        (0x40_0000, 0x0f),
+        (0x12_3456, 0x81),
+        (0xc0_0000, 0xfc),
+    ]
+    .iter()
+    .flat_map(|&(d, s)| ((d << 8) | s).to_ne_bytes())
+    .collect();
+    gl.window_pos_2i(0, 0);
+    gl.draw_pixels(
+        3,
+        2,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        Some(&words),
+    );
+    err(
+        gl,
+        out,
+        "draw_pixels(GL_DEPTH_STENCIL) with transfer, depth test off",
+    );
+    gl.pixel_transferf(GL_DEPTH_SCALE, 1.0);
+    gl.pixel_transferf(GL_DEPTH_BIAS, 0.0);
+    read_depth_stencil(gl, out, "read after draw", 4, 2);
+    let mut color = [0u8; 4 * 4 * 2];
+    gl.read_pixels(0, 0, 4, 2, GL_RGBA, GL_UNSIGNED_BYTE, &mut color);
+    exact(
+        out,
+        "colour after draw".into(),
+        color.iter().map(|&c| c as f64).collect(),
+    );
+
+    // Depth mask off and stencil write mask 0x0f: the stencil's low bits only.
+    gl.depth_mask(0);
+    gl.stencil_mask(0x0f);
+    gl.enable(GL_DEPTH_TEST);
+    gl.depth_func(GL_NEVER);
+    gl.window_pos_2i(1, 1);
+    gl.draw_pixels(
+        3,
+        1,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        Some(&words[..12]),
+    );
+    err(gl, out, "draw_pixels with masks, depth func never");
+    gl.depth_mask(1);
+    gl.stencil_mask(0xff);
+    gl.disable(GL_DEPTH_TEST);
+    read_depth_stencil(gl, out, "read after masked draw", 4, 2);
+
+    // Other types with GL_DEPTH_STENCIL, and GL_UNSIGNED_INT_24_8 with other formats.
+    let mut buf = [0u8; 64];
+    for ty in [GL_UNSIGNED_INT, GL_FLOAT, GL_UNSIGNED_BYTE] {
+        gl.read_pixels(0, 0, 1, 1, GL_DEPTH_STENCIL_EXT, ty, &mut buf);
+        err(
+            gl,
+            out,
+            &format!("read_pixels(GL_DEPTH_STENCIL, 0x{ty:04x})"),
+        );
+        gl.draw_pixels(1, 1, GL_DEPTH_STENCIL_EXT, ty, Some(&buf));
+        err(
+            gl,
+            out,
+            &format!("draw_pixels(GL_DEPTH_STENCIL, 0x{ty:04x})"),
+        );
+    }
+    for format in [GL_DEPTH_COMPONENT, GL_STENCIL_INDEX, GL_RGBA] {
+        gl.read_pixels(0, 0, 1, 1, format, GL_UNSIGNED_INT_24_8_EXT, &mut buf);
+        err(gl, out, &format!("read_pixels(0x{format:04x}, 24_8)"));
+        gl.draw_pixels(1, 1, format, GL_UNSIGNED_INT_24_8_EXT, Some(&buf));
+        err(gl, out, &format!("draw_pixels(0x{format:04x}, 24_8)"));
+    }
+}
+
+/// piglit's getteximage-depth with EXT_packed_depth_stencil listed: depth-stencil images
+/// uploaded and read back with glGetTexImage(GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8), the
+/// depth of each word compared (tilegl's depth textures keep no stencil), and the error of
+/// reading a colour image so.
+fn piglit_get_tex_image_depth_stencil(gl: &mut dyn Gl, out: &mut Answers) {
+    let words: Vec<u8> = (0..8u32)
+        .flat_map(|x| ((0xffff_ff00u32 as f32 * (x as f32 / 7.0)) as u32 | 0x5a).to_ne_bytes())
+        .collect();
+    for (target, internal) in [
+        (GL_TEXTURE_2D, GL_DEPTH24_STENCIL8_EXT),
+        (GL_TEXTURE_2D, GL_DEPTH_STENCIL_EXT),
+        (GL_TEXTURE_RECTANGLE_ARB, GL_DEPTH24_STENCIL8_EXT),
+    ] {
+        gl.tex_image_2d(
+            target,
+            0,
+            internal as i32,
+            4,
+            2,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            Some(&words),
+        );
+        err(gl, out, &format!("upload 0x{target:04x} 0x{internal:04x}"));
+        let mut back = [0u8; 32];
+        gl.get_tex_image(
+            target,
+            0,
+            GL_DEPTH_STENCIL_EXT,
+            GL_UNSIGNED_INT_24_8_EXT,
+            &mut back,
+        );
+        err(gl, out, "get_tex_image(GL_DEPTH_STENCIL)");
+        out.push(Answer {
+            label: format!("0x{target:04x} 0x{internal:04x} depths read back (24 bits)"),
+            values: back
+                .chunks(4)
+                .map(|c| (u32::from_ne_bytes([c[0], c[1], c[2], c[3]]) >> 8) as f64)
+                .collect(),
+            tolerance: 1.0,
+        });
+    }
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        1,
+        1,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&[1, 2, 3, 4]),
+    );
+    let mut back = [0u8; 4];
+    gl.get_tex_image(
+        GL_TEXTURE_2D,
+        0,
+        GL_DEPTH_STENCIL_EXT,
+        GL_UNSIGNED_INT_24_8_EXT,
+        &mut back,
+    );
+    err(gl, out, "get_tex_image(GL_DEPTH_STENCIL) of an RGBA image");
 }

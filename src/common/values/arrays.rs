@@ -121,6 +121,8 @@ pub enum ArrayQuery {
     Size(ClientArray),
     Type(ClientArray),
     Stride(ClientArray),
+    /// EXT_vertex_array's `GL_*_ARRAY_COUNT_EXT`.
+    Count(ClientArray),
     BufferBinding(ClientArray),
     ArrayBufferBinding,
     ElementArrayBufferBinding,

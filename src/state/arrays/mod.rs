@@ -82,6 +82,9 @@ pub struct ArrayPointer {
     pub pointer: ClientPtr,
     /// `GL_*_ARRAY_BUFFER_BINDING`: the array buffer bound when the pointer was given.
     pub buffer: GLuint,
+    /// `GL_*_ARRAY_COUNT_EXT`: the `count` of EXT_vertex_array's `gl*PointerEXT` (the
+    /// elements the program says are valid; drawing does not depend on it).
+    pub count: i32,
 }
 
 impl ArrayPointer {
@@ -93,6 +96,7 @@ impl ArrayPointer {
             stride: 0,
             pointer: ClientPtr(0),
             buffer: 0,
+            count: 0,
         }
     }
 
@@ -328,6 +332,7 @@ impl Context {
             ArrayQuery::Size(a) => int1(self.client_array(a).size as i64),
             ArrayQuery::Type(a) => Enum(self.client_array(a).ty.to_gl()),
             ArrayQuery::Stride(a) => int1(self.client_array(a).stride as i64),
+            ArrayQuery::Count(a) => int1(self.client_array(a).count as i64),
             ArrayQuery::BufferBinding(a) => int1(self.client_array(a).buffer as i64),
             ArrayQuery::ArrayBufferBinding => int1(self.client.arrays.array_buffer as i64),
             ArrayQuery::ElementArrayBufferBinding => {

@@ -246,6 +246,7 @@ impl Context {
                         stride,
                         pointer: ptr,
                         buffer,
+                        count: p.count,
                     };
                 }
             };
@@ -307,5 +308,103 @@ impl Context {
             return;
         };
         self.client_memory.store_pointer(params, p.0);
+    }
+
+    // ----- EXT_vertex_array's entry points
+
+    /// A `gl*PointerEXT` call: `count` (the number of elements the program says are valid) is
+    /// `GL_INVALID_VALUE` when negative, and recorded as `GL_*_ARRAY_COUNT_EXT` when `set`
+    /// (the core call) succeeds.
+    fn pointer_with_count(&mut self, a: ClientArray, count: GLsizei, set: impl FnOnce(&mut Self)) {
+        if count < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        // Whether `set` fails: run it with the flag clear, then put back an unread earlier
+        // error (the first error is the one GL keeps).
+        let earlier = self.error.take();
+        set(self);
+        let failed = self.error.peek() != GL_NO_ERROR;
+        if earlier != GL_NO_ERROR {
+            self.error.take();
+            self.error.record(earlier);
+        }
+        if !failed {
+            self.client_array_mut(a).count = count;
+        }
+    }
+
+    pub(crate) fn vertex_pointer_ext(
+        &mut self,
+        size: GLint,
+        type_: GLenum,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::Vertex, count, |c| {
+            c.vertex_pointer(size, type_, stride, pointer)
+        });
+    }
+
+    pub(crate) fn normal_pointer_ext(
+        &mut self,
+        type_: GLenum,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::Normal, count, |c| {
+            c.normal_pointer(type_, stride, pointer)
+        });
+    }
+
+    pub(crate) fn color_pointer_ext(
+        &mut self,
+        size: GLint,
+        type_: GLenum,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::Color, count, |c| {
+            c.color_pointer(size, type_, stride, pointer)
+        });
+    }
+
+    pub(crate) fn index_pointer_ext(
+        &mut self,
+        type_: GLenum,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::Index, count, |c| {
+            c.index_pointer(type_, stride, pointer)
+        });
+    }
+
+    pub(crate) fn tex_coord_pointer_ext(
+        &mut self,
+        size: GLint,
+        type_: GLenum,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::TexCoord, count, |c| {
+            c.tex_coord_pointer(size, type_, stride, pointer)
+        });
+    }
+
+    pub(crate) fn edge_flag_pointer_ext(
+        &mut self,
+        stride: GLsizei,
+        count: GLsizei,
+        pointer: ClientPtr,
+    ) {
+        self.pointer_with_count(ClientArray::EdgeFlag, count, |c| {
+            c.edge_flag_pointer(stride, pointer)
+        });
     }
 }

@@ -87,7 +87,9 @@ impl Context {
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
             let depth = pf.is_depth();
             let copied = bytes_are_texels(xfer.is_some(), pf, pt, ifmt)
-                && img.store_byte_rows(data, &layout, [0; 3], usize3);
+                && img.store_byte_rows(data, &layout, [0; 3], usize3)
+                || converts_directly(xfer.is_some(), swap, pt)
+                    && img.store_converted(data, &layout, [0; 3], usize3, pf, pt);
             if !copied {
                 img.store_block([0; 3], usize3, |x, y, z| {
                     let at = layout.start
@@ -184,9 +186,13 @@ impl Context {
             let face = target.face();
             let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
-                let copied = bytes_are_texels(xfer.is_some(), pf, pt, img.format)
-                    && o.iter().all(|&v| v >= 0)
-                    && img.store_byte_rows(data, &layout, o.map(|v| v as usize), n);
+                let inside = o.iter().all(|&v| v >= 0);
+                let at = o.map(|v| v.max(0) as usize);
+                let copied = inside
+                    && (bytes_are_texels(xfer.is_some(), pf, pt, img.format)
+                        && img.store_byte_rows(data, &layout, at, n)
+                        || converts_directly(xfer.is_some(), swap, pt)
+                            && img.store_converted(data, &layout, at, n, pf, pt));
                 if !copied {
                     let origin = o.map(|v| v.max(0) as usize);
                     img.store_block(origin, n, |x, y, z| {

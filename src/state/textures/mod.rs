@@ -84,7 +84,8 @@ fn check_format_type(format: TexPixelFormat, ty: TexPixelType) -> Check<()> {
     }
 }
 
-/// The client format and type of a texture upload: those of [`pixel_format_type`] and
+/// The client format and type of a texture upload or `glGetTexImage`: the colour and depth
+/// formats with their types, and
 /// `GL_DEPTH_STENCIL` with `GL_UNSIGNED_INT_24_8` (EXT_packed_depth_stencil; another type
 /// with it is INVALID_ENUM, as that extension says). `GL_STENCIL_INDEX`, a pixel format
 /// texture images do not take, is INVALID_OPERATION (the rule GL 3.x states for formats
@@ -293,6 +294,13 @@ pub(super) fn bytes_are_texels(
         && internal.compressed.is_none()
         && internal.storage() == crate::texture::format::Storage::U8
         && format.slots() == internal.base.slots()
+}
+
+/// Whether an upload of unpacked `ty` components may take `TexImage::store_converted` (the
+/// conversion without per-texel dispatch): no pixel transfer and no byte swapping of
+/// multi-byte components.
+pub(super) fn converts_directly(transfer: bool, swap: bool, ty: TexPixelType) -> bool {
+    !transfer && (!swap || ty.size() == 1) && !matches!(ty, TexPixelType::Packed(_))
 }
 
 /// Whether an internal format may be used on a target (depth textures: 1D, 2D and, as
