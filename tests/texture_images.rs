@@ -3,26 +3,9 @@
 //! packing, copies from the colour and depth buffers, compressed images, proxies.
 
 use tilegl::enums::*;
-use tilegl::{Context, Gl};
-
-fn ctx() -> Context {
-    Context::new(16, 16)
-}
-
-fn level_param(gl: &mut Context, target: GLenum, level: i32, pname: GLenum) -> i32 {
-    let mut v = [0i32];
-    gl.get_tex_level_parameteriv(target, level, pname, &mut v);
-    v[0]
-}
-
-/// Reads level 0 of the bound 2D texture back as RGBA floats.
-fn read_rgba_f32(gl: &mut Context, target: GLenum, n: usize) -> Vec<f32> {
-    let mut out = vec![0u8; n * 16];
-    gl.get_tex_image(target, 0, GL_RGBA, GL_FLOAT, &mut out);
-    out.chunks(4)
-        .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
-        .collect()
-}
+mod common;
+use common::{ctx, level_param, read_rgba_f32};
+use tilegl::Gl;
 
 /// Every packed type, unpacked from a hand-built bit pattern and read back as floats.
 #[test]

@@ -230,3 +230,31 @@ pub fn assert_every_capture_listed(dir: &std::path::Path, all: &[&str]) {
         );
     }
 }
+
+/// A 16 x 16 context for texture tests.
+pub fn ctx() -> Context {
+    Context::new(16, 16)
+}
+
+/// A texture level parameter of `target`.
+pub fn level_param(gl: &mut Context, target: GLenum, level: i32, pname: GLenum) -> i32 {
+    let mut v = [0i32];
+    gl.get_tex_level_parameteriv(target, level, pname, &mut v);
+    v[0]
+}
+
+/// A texture parameter of `target`.
+pub fn tex_param(gl: &mut Context, target: GLenum, pname: GLenum) -> i32 {
+    let mut v = [0i32];
+    gl.get_tex_parameteriv(target, pname, &mut v);
+    v[0]
+}
+
+/// Reads level 0 of the bound 2D texture back as RGBA floats.
+pub fn read_rgba_f32(gl: &mut Context, target: GLenum, n: usize) -> Vec<f32> {
+    let mut out = vec![0u8; n * 16];
+    gl.get_tex_image(target, 0, GL_RGBA, GL_FLOAT, &mut out);
+    out.chunks(4)
+        .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
+        .collect()
+}
