@@ -184,20 +184,18 @@ fn bad_input_fails_with_a_message_naming_the_call() {
     let _ = std::fs::remove_dir_all(&tmp);
 }
 
-/// The xscreensaver starwars capture (smooth points of sizes 0.5 to 3) matches Mesa with the
-/// replay's default (Mesa's full-colour discs) and not with `--spec-points` (the
-/// specification's coverage shades the discs' rims: 0.37 % of the pixels off).
-#[test]
-fn spec_points_switches_smooth_points_to_coverage() {
-    let dir = common::traces_root().join("corpus");
+/// Replays `NAME.trace` of `dir` with `--compare` against `NAME.frames`: it must match with
+/// the replay's default and fail (exit status 1) with `spec_flag`, which switches a Mesa
+/// convention back to the specification's.
+fn matches_mesa_only_by_default(dir: &std::path::Path, name: &str, spec_flag: &str) {
     let run = |spec: bool| {
         let mut c = tilegl();
         c.arg("replay")
-            .arg(common::require(&dir.join("xss-starwars.trace")))
+            .arg(common::require(&dir.join(format!("{name}.trace"))))
             .arg("--compare")
-            .arg(common::require(&dir.join("xss-starwars.frames")));
+            .arg(common::require(&dir.join(format!("{name}.frames"))));
         if spec {
-            c.arg("--spec-points");
+            c.arg(spec_flag);
         }
         c.output().unwrap()
     };
@@ -216,34 +214,19 @@ fn spec_points_switches_smooth_points_to_coverage() {
     );
 }
 
+/// The xscreensaver starwars capture (smooth points of sizes 0.5 to 3) matches Mesa with the
+/// replay's default (Mesa's full-colour discs) and not with `--spec-points` (the
+/// specification's coverage shades the discs' rims: 0.37 % of the pixels off).
+#[test]
+fn spec_points_switches_smooth_points_to_coverage() {
+    let dir = common::traces_root().join("corpus");
+    matches_mesa_only_by_default(&dir, "xss-starwars", "--spec-points");
+}
+
 /// The evaluator teapot of tilegl's own capture matches Mesa with the replay's default
 /// (Mesa's triangle-strip meshes) and not with `--spec-meshes` (the specification's quad
 /// strips colour each flat-shaded quad once).
 #[test]
 fn spec_meshes_switches_evaluator_meshes_to_quad_strips() {
-    let dir = common::own_traces();
-    let run = |spec: bool| {
-        let mut c = tilegl();
-        c.arg("replay")
-            .arg(common::require(&dir.join("xss-polyhedra.trace")))
-            .arg("--compare")
-            .arg(common::require(&dir.join("xss-polyhedra.frames")));
-        if spec {
-            c.arg("--spec-meshes");
-        }
-        c.output().unwrap()
-    };
-    let default = run(false);
-    assert!(
-        default.status.success(),
-        "{}",
-        String::from_utf8_lossy(&default.stdout)
-    );
-    let spec = run(true);
-    assert_eq!(
-        spec.status.code(),
-        Some(1),
-        "{}",
-        String::from_utf8_lossy(&spec.stdout)
-    );
+    matches_mesa_only_by_default(&common::own_traces(), "xss-polyhedra", "--spec-meshes");
 }
