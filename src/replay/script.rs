@@ -311,10 +311,13 @@ impl ScriptReader {
                 let h = self.int_arg()?;
                 self.expect(b',')?;
                 let cell = self.int_arg()?.max(1);
-                if w < 0 || h < 0 || (w * h * 4) as usize > MAX_DATA {
-                    return Err(self.err("checker() size out of range"));
-                }
-                let mut out = Vec::with_capacity((w * h * 4) as usize);
+                // Checked: `inf` or a huge literal reads as i64::MAX, and w * h * 4 would overflow.
+                let bytes = w
+                    .checked_mul(h)
+                    .and_then(|n| n.checked_mul(4))
+                    .filter(|&n| w >= 0 && h >= 0 && n as u64 <= MAX_DATA as u64)
+                    .ok_or_else(|| self.err("checker() size out of range"))?;
+                let mut out = Vec::with_capacity(bytes as usize);
                 for y in 0..h {
                     for x in 0..w {
                         let v = if (x / cell + y / cell) % 2 == 0 {
@@ -790,6 +793,9 @@ mod tests {
             ("glFoo(file(\"/nonexistent/x\"));", "file("),
             ("glFoo({1, 2);", "array"),
             ("window(1);", "window"),
+            ("glFoo(checker(4, inf, 2));", "checker() size"),
+            ("glFoo(checker(4611686018427387904, 4, 1));", "checker() size"),
+            ("glFoo(checker(-2, 4, 1));", "checker() size"),
         ] {
             let e = calls(text).unwrap_err();
             assert!(e.contains(want), "{text}: {e}");
