@@ -101,6 +101,9 @@ impl Context {
             check_sub_region(dims, off, region, b, inner)?;
             check_compressed_alignment(&img, off, region)?;
             let depth = img.format.is_depth();
+            // Let go of the copy before writing: while it shares the texels, the write below
+            // would copy the whole image first (copy-on-write).
+            drop(img);
             if depth && self.framebuffer.config.depth_bits == 0 {
                 return Err(GL_INVALID_OPERATION);
             }
