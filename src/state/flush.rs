@@ -130,7 +130,7 @@ impl Context {
     /// way: each tile's rows straight to their place, by the thread that shaded the tile last,
     /// right after it (while the tile is in that core's cache), instead of the whole image
     /// gathered into rows on the caller's thread after the flush.
-    pub fn for_each_tile(&mut self, f: &(dyn Fn(&Tile) + Sync)) {
+    pub(crate) fn for_each_tile(&mut self, f: &(dyn Fn(&Tile) + Sync)) {
         use rayon::prelude::*;
         self.join_background();
         let fb = &self.framebuffer;
