@@ -588,6 +588,21 @@ fn main() {
             }
         }
     }
+    // EXT_framebuffer_object's "Dependencies on ARB_framebuffer_object and OpenGL 3.0" names
+    // the bind commands as the only ones that are not aliases (the ARB ones may not bind
+    // names of other contexts); in one context they do the same, and programs written for
+    // OpenGL 3.0 (piglit's triangle-rasterization -use_fbo) call them with GL_FRAMEBUFFER.
+    for (ext, arb) in [
+        ("glBindFramebufferEXT", "glBindFramebuffer"),
+        ("glBindRenderbufferEXT", "glBindRenderbuffer"),
+    ] {
+        if core_cmd_set.contains(&ext.to_string()) {
+            cmd_aliases
+                .entry(ext.to_string())
+                .or_default()
+                .push(arb.to_string());
+        }
+    }
     for v in cmd_aliases.values_mut() {
         v.sort();
     }
