@@ -293,3 +293,40 @@ fn the_window_keeps_its_buffers_while_an_object_is_bound() {
     gl.read_pixels(15, 15, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut p);
     assert_eq!(p, [0, 0, 255, 255]);
 }
+
+#[test]
+fn framebuffer_and_renderbuffer_objects_are_shared_like_textures() {
+    // "Framebuffer objects created with the commands defined by the
+    // GL_EXT_framebuffer_object extension are defined to be shared".
+    let mut a = Context::new(8, 8);
+    let mut b = Context::new(8, 8);
+    b.join_share_group(&a.share_group());
+    let fb = bound_fbo(&mut a);
+    let rb = renderbuffer(&mut a, GL_RGBA8, 4, 4);
+    a.framebuffer_renderbuffer_ext(
+        GL_FRAMEBUFFER_EXT,
+        GL_COLOR_ATTACHMENT0_EXT,
+        GL_RENDERBUFFER_EXT,
+        rb,
+    );
+    a.clear_color(1.0, 0.0, 1.0, 1.0);
+    a.clear(GL_COLOR_BUFFER_BIT);
+    // The drawing reaches the renderbuffer when A's binding changes.
+    a.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
+    assert_eq!(b.is_framebuffer_ext(fb), GL_TRUE as u8);
+    assert_eq!(b.is_renderbuffer_ext(rb), GL_TRUE as u8);
+    b.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, fb);
+    assert_eq!(
+        b.check_framebuffer_status_ext(GL_FRAMEBUFFER_EXT),
+        GL_FRAMEBUFFER_COMPLETE_EXT
+    );
+    let mut p = [0u8; 4];
+    b.read_pixels(3, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut p);
+    assert_eq!(p, [255, 0, 255, 255]);
+    // Deleted in one context, gone in the other; B's binding to it draws nothing, no panic.
+    a.delete_framebuffers_ext(1, &[fb]);
+    assert_eq!(b.is_framebuffer_ext(fb), GL_FALSE as u8);
+    b.clear(GL_COLOR_BUFFER_BIT);
+    b.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
+    assert_eq!(b.get_error(), GL_NO_ERROR);
+}

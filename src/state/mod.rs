@@ -10,7 +10,7 @@ mod client_sizes;
 pub mod color_buffers;
 pub mod draw;
 pub mod evaluators;
-mod fbo;
+pub mod fbo;
 mod flush;
 pub mod fog;
 mod fragment_key;

@@ -55,7 +55,7 @@ impl Context {
         let info = match a {
             Attachment::None => return Ok(None),
             Attachment::Renderbuffer(n) => {
-                renderbuffer_info(self.fbo.renderbuffers.get(&n).ok_or(())?)
+                renderbuffer_info(self.fbo.names().renderbuffers.get(&n).ok_or(())?)
             }
             Attachment::Texture {
                 name,
@@ -93,7 +93,7 @@ impl Context {
     /// The status of the bound object (`glCheckFramebufferStatusEXT`) and, when complete, the
     /// layout of its tiles. Rules in the order of section 4.4.4.2.
     pub(crate) fn fbo_status(&self) -> (GLenum, Option<Layout>) {
-        let Some(f) = self.fbo.framebuffers.get(&self.fbo.bound) else {
+        let Some(f) = self.fbo.bound_object() else {
             return (GL_FRAMEBUFFER_COMPLETE_EXT, None);
         };
         let mut images = [None; 3];
@@ -159,7 +159,9 @@ impl Context {
             self.replace_framebuffer(Framebuffer::new(0, 0, cfg));
             return;
         };
-        let f = self.fbo.framebuffers[&self.fbo.bound];
+        let Some(f) = self.fbo.bound_object() else {
+            return;
+        };
         let mut fb = Framebuffer::new(
             l.width,
             l.height,
@@ -195,7 +197,8 @@ impl Context {
         match a {
             Attachment::None => {}
             Attachment::Renderbuffer(n) => {
-                let Some(rb) = self.fbo.renderbuffers.get(&n) else {
+                let names = self.fbo.names();
+                let Some(rb) = names.renderbuffers.get(&n) else {
                     return;
                 };
                 for y in 0..l.height {
@@ -254,7 +257,9 @@ impl Context {
             return;
         }
         self.flush_scene();
-        let f = self.fbo.framebuffers[&self.fbo.bound];
+        let Some(f) = self.fbo.bound_object() else {
+            return;
+        };
         let fb = &self.framebuffer;
         let (w, h) = (fb.width, fb.height);
         let dmax = fb.depth_max().max(1) as f64;
@@ -262,7 +267,8 @@ impl Context {
             match a {
                 Attachment::None => {}
                 Attachment::Renderbuffer(n) => {
-                    let Some(rb) = self.fbo.renderbuffers.get_mut(&n) else {
+                    let mut names = self.fbo.names_mut();
+                    let Some(rb) = names.renderbuffers.get_mut(&n) else {
                         continue;
                     };
                     let opaque = rb.kind == RenderbufferKind::Color { alpha: false };

@@ -17,6 +17,9 @@
 mod images;
 
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
+
+use parking_lot::{RwLock, RwLockReadGuard, RwLockWriteGuard};
 
 use super::color_buffers::BufferSelection;
 use super::Context;
@@ -119,13 +122,20 @@ impl Default for Renderbuffer {
     }
 }
 
-/// Framebuffer and renderbuffer objects, the bindings and the parked window framebuffer.
+/// The framebuffer and renderbuffer objects of a share group (the extension's objects are
+/// shared like textures: `state::share`).
 #[derive(Debug, Default)]
-pub(crate) struct FboState {
+pub struct FboNames {
     framebuffers: HashMap<u32, FramebufferObject>,
     framebuffer_names: HashSet<u32>,
     renderbuffers: HashMap<u32, Renderbuffer>,
     renderbuffer_names: HashSet<u32>,
+}
+
+/// Framebuffer and renderbuffer objects, the bindings and the parked window framebuffer.
+#[derive(Debug, Default)]
+pub(crate) struct FboState {
+    names: Arc<RwLock<FboNames>>,
     /// `GL_FRAMEBUFFER_BINDING_EXT`.
     pub bound: u32,
     /// `GL_RENDERBUFFER_BINDING_EXT`.
@@ -136,6 +146,31 @@ pub(crate) struct FboState {
     pub stale: bool,
     /// The status of the bound object when its tiles were loaded.
     status: GLenum,
+}
+
+impl FboState {
+    pub(crate) fn names(&self) -> RwLockReadGuard<'_, FboNames> {
+        self.names.read_recursive()
+    }
+
+    pub(crate) fn names_mut(&self) -> RwLockWriteGuard<'_, FboNames> {
+        self.names.write()
+    }
+
+    /// The shared namespace (for `state::share`).
+    pub(crate) fn shared(&self) -> &Arc<RwLock<FboNames>> {
+        &self.names
+    }
+
+    /// Uses a share group's objects (for a new context: its own are dropped).
+    pub(crate) fn set_shared(&mut self, names: Arc<RwLock<FboNames>>) {
+        self.names = names;
+    }
+
+    /// The bound object's state (a copy), if it exists.
+    pub(crate) fn bound_object(&self) -> Option<FramebufferObject> {
+        self.names().framebuffers.get(&self.bound).copied()
+    }
 }
 
 fn gen_names(used: impl Fn(u32) -> bool, reserved: &mut HashSet<u32>, out: &mut [GLuint]) {
@@ -158,7 +193,8 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let s = &mut self.fbo;
+        let mut guard = self.fbo.names_mut();
+        let s = &mut *guard;
         let objects = &s.framebuffers;
         gen_names(
             |k| objects.contains_key(&k),
@@ -168,7 +204,7 @@ impl Context {
     }
 
     pub(crate) fn is_framebuffer_ext(&mut self, framebuffer: GLuint) -> GLboolean {
-        self.fbo.framebuffers.contains_key(&framebuffer) as GLboolean
+        self.fbo.names().framebuffers.contains_key(&framebuffer) as GLboolean
     }
 
     pub(crate) fn bind_framebuffer_ext(&mut self, target: GLenum, framebuffer: GLuint) {
@@ -177,8 +213,9 @@ impl Context {
             return;
         }
         if framebuffer != 0 {
-            self.fbo.framebuffer_names.remove(&framebuffer);
-            self.fbo.framebuffers.entry(framebuffer).or_default();
+            let mut names = self.fbo.names_mut();
+            names.framebuffer_names.remove(&framebuffer);
+            names.framebuffers.entry(framebuffer).or_default();
         }
         self.switch_framebuffer(framebuffer);
     }
@@ -195,8 +232,9 @@ impl Context {
             if name == self.fbo.bound {
                 self.switch_framebuffer(0);
             }
-            self.fbo.framebuffers.remove(&name);
-            self.fbo.framebuffer_names.remove(&name);
+            let mut names = self.fbo.names_mut();
+            names.framebuffers.remove(&name);
+            names.framebuffer_names.remove(&name);
         }
     }
 
@@ -222,7 +260,10 @@ impl Context {
             }
             self.fbo.stale = false;
         } else {
-            self.buffers = self.fbo.framebuffers[&name].buffers;
+            self.buffers = self
+                .fbo
+                .bound_object()
+                .map_or(FramebufferObject::default().buffers, |f| f.buffers);
             self.fbo_load();
         }
     }
@@ -317,7 +358,7 @@ impl Context {
         }
         self.fbo_store();
         self.fbo.stale = true;
-        if let Some(f) = self.fbo.framebuffers.get_mut(&bound) {
+        if let Some(f) = self.fbo.names_mut().framebuffers.get_mut(&bound) {
             for a in [&mut f.color, &mut f.depth, &mut f.stencil] {
                 if matches!(*a, Attachment::Texture { name: n, .. } if n == name) {
                     *a = Attachment::None;
@@ -359,7 +400,7 @@ impl Context {
         self.fbo_store();
         self.fbo.stale = true;
         let bound = self.fbo.bound;
-        if let Some(f) = self.fbo.framebuffers.get_mut(&bound) {
+        if let Some(f) = self.fbo.names_mut().framebuffers.get_mut(&bound) {
             *f.attachment_mut(point) = value;
         }
     }
@@ -476,7 +517,7 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         }
-        if !self.fbo.renderbuffers.contains_key(&renderbuffer) {
+        if !self.fbo.names().renderbuffers.contains_key(&renderbuffer) {
             self.record_error(GL_INVALID_OPERATION);
             return;
         }
@@ -497,7 +538,11 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
-        let a = self.fbo.framebuffers[&self.fbo.bound].attachment(point);
+        let Some(f) = self.fbo.bound_object() else {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        };
+        let a = f.attachment(point);
         let value = match (a, p) {
             (Attachment::None, AttachmentParam::ObjectType) => GL_NONE as GLint,
             (Attachment::None, AttachmentParam::ObjectName) => 0,
@@ -542,7 +587,8 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let s = &mut self.fbo;
+        let mut guard = self.fbo.names_mut();
+        let s = &mut *guard;
         let objects = &s.renderbuffers;
         gen_names(
             |k| objects.contains_key(&k),
@@ -552,7 +598,7 @@ impl Context {
     }
 
     pub(crate) fn is_renderbuffer_ext(&mut self, renderbuffer: GLuint) -> GLboolean {
-        self.fbo.renderbuffers.contains_key(&renderbuffer) as GLboolean
+        self.fbo.names().renderbuffers.contains_key(&renderbuffer) as GLboolean
     }
 
     pub(crate) fn bind_renderbuffer_ext(&mut self, target: GLenum, renderbuffer: GLuint) {
@@ -561,8 +607,9 @@ impl Context {
             return;
         }
         if renderbuffer != 0 {
-            self.fbo.renderbuffer_names.remove(&renderbuffer);
-            self.fbo.renderbuffers.entry(renderbuffer).or_default();
+            let mut names = self.fbo.names_mut();
+            names.renderbuffer_names.remove(&renderbuffer);
+            names.renderbuffers.entry(renderbuffer).or_default();
         }
         self.fbo.bound_renderbuffer = renderbuffer;
     }
@@ -584,7 +631,7 @@ impl Context {
             if bound != 0 {
                 self.fbo_store();
                 self.fbo.stale = true;
-                if let Some(f) = self.fbo.framebuffers.get_mut(&bound) {
+                if let Some(f) = self.fbo.names_mut().framebuffers.get_mut(&bound) {
                     for a in [&mut f.color, &mut f.depth, &mut f.stencil] {
                         if *a == Attachment::Renderbuffer(name) {
                             *a = Attachment::None;
@@ -592,8 +639,9 @@ impl Context {
                     }
                 }
             }
-            self.fbo.renderbuffers.remove(&name);
-            self.fbo.renderbuffer_names.remove(&name);
+            let mut names = self.fbo.names_mut();
+            names.renderbuffers.remove(&name);
+            names.renderbuffer_names.remove(&name);
         }
     }
 
@@ -660,7 +708,7 @@ impl Context {
         }
         self.fbo_store();
         self.fbo.stale = self.fbo.bound != 0;
-        self.fbo.renderbuffers.insert(
+        self.fbo.names_mut().renderbuffers.insert(
             name,
             Renderbuffer {
                 internal_format: internalformat,
@@ -688,7 +736,9 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
-        let Some(rb) = self.fbo.renderbuffers.get(&self.fbo.bound_renderbuffer) else {
+        let names = self.fbo.names();
+        let Some(rb) = names.renderbuffers.get(&self.fbo.bound_renderbuffer) else {
+            drop(names);
             self.record_error(GL_INVALID_OPERATION);
             return;
         };
@@ -747,7 +797,7 @@ impl Context {
             self.buffers.read = mode;
         }
         let bound = self.fbo.bound;
-        if let Some(f) = self.fbo.framebuffers.get_mut(&bound) {
+        if let Some(f) = self.fbo.names_mut().framebuffers.get_mut(&bound) {
             f.buffers = self.buffers;
         }
         self.fbo_store();
