@@ -62,6 +62,16 @@ fn read_source(name: GLenum, double: bool) -> Result<ColorBuffer, GLenum> {
     })
 }
 
+/// The colour buffer `fb` draws into (the back buffer for `GL_FRONT_AND_BACK` and `GL_NONE`
+/// when there is one).
+fn drawn_buffer(fb: &crate::framebuffer::Framebuffer) -> ColorBuffer {
+    match fb.draw {
+        DrawTarget::One(b) => b,
+        _ if fb.is_double_buffered() => ColorBuffer::Back,
+        _ => ColorBuffer::Front,
+    }
+}
+
 impl Context {
     pub(crate) fn draw_buffer(&mut self, mode: GLenum) {
         if self.fbo_bound() {
@@ -107,7 +117,7 @@ impl Context {
     /// (not through the scene) writes the buffer drawn to (the back buffer for
     /// `GL_FRONT_AND_BACK` and `GL_NONE`).
     fn make_draw_buffer_resident(&mut self) {
-        let b = self.draw_color_buffer();
+        let b = drawn_buffer(&self.framebuffer);
         self.framebuffer.make_resident(b);
     }
 
@@ -133,12 +143,9 @@ impl Context {
 
     /// The colour buffer a snapshot of "the draw buffer" shows: the one drawn to, the back
     /// buffer for `GL_FRONT_AND_BACK` and `GL_NONE` on a double-buffered context.
+    /// The window's, also while a framebuffer object is bound.
     pub fn draw_color_buffer(&self) -> ColorBuffer {
-        match self.framebuffer.draw {
-            DrawTarget::One(b) => b,
-            _ if self.framebuffer.is_double_buffered() => ColorBuffer::Back,
-            _ => ColorBuffer::Front,
-        }
+        drawn_buffer(self.window_framebuffer())
     }
 
     /// Whether the context has a back buffer.
