@@ -28,6 +28,9 @@ impl Context {
         size: [GLsizei; 2],
         border: GLint,
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
@@ -79,6 +82,9 @@ impl Context {
         y: GLint,
         size: [GLsizei; 2],
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;

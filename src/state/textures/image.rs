@@ -423,6 +423,7 @@ impl Context {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
+        self.fbo_before_texture_read();
         let r = (|| -> Check<()> {
             let target = convert::tex_image_target(target)
                 .filter(|t| !t.is_proxy())

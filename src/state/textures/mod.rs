@@ -372,6 +372,7 @@ impl Context {
             return;
         }
         for &name in &textures[..n as usize] {
+            self.fbo_detach_texture(name);
             self.textures.delete(name);
         }
         self.invalidate();
@@ -428,8 +429,49 @@ impl Context {
         if target.is_proxy() {
             ObjectMut::Own(self.textures.proxy_mut(t))
         } else {
+            self.fbo_before_texture_change();
             self.textures.bound_mut(self.active_texture, t)
         }
+    }
+
+    /// `glGenerateMipmapEXT`: levels base+1 ..= q of the texture bound to `target` on the
+    /// active unit, each the box-filtered level above (every face of a cube map, which must
+    /// be cube complete: `GL_INVALID_OPERATION` otherwise). Nothing without a base image.
+    pub(crate) fn generate_mipmaps_of_bound(&mut self, t: TextureTarget) -> Result<(), GLenum> {
+        let mut obj = self.textures.bound_mut(self.active_texture, t);
+        let base = obj.params.base_level.max(0) as usize;
+        let faces = if t == TextureTarget::CubeMap { 6 } else { 1 };
+        if t == TextureTarget::CubeMap {
+            let first = obj.image(0, base).map(|i| (i.width, i.height, i.format));
+            let cube_complete = first.is_some_and(|(w, h, f)| {
+                w == h
+                    && (0..6).all(|face| {
+                        obj.image(face, base)
+                            .is_some_and(|i| i.width == w && i.height == h && i.format == f)
+                    })
+            });
+            if !cube_complete {
+                return Err(GL_INVALID_OPERATION);
+            }
+        }
+        for face in 0..faces {
+            let Some(img) = obj.image(face, base) else {
+                continue;
+            };
+            let last = obj
+                .last_level(t, base, img.inner_size())
+                .min(level_count(t) - 1);
+            for l in base + 1..=last {
+                let Some(parent) = obj.image(face, l - 1) else {
+                    break;
+                };
+                match mipmap::downsample(parent) {
+                    Ok(child) => obj.images[face][l] = Some(child),
+                    Err(_) => return Err(GL_OUT_OF_MEMORY),
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The image at `target`/`level` (a copy sharing the texels).
