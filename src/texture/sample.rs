@@ -15,6 +15,7 @@
 
 use std::sync::Arc;
 
+use super::fixed;
 use super::format::{BaseFormat, InternalFormat};
 use super::image::{TexImage, Texels};
 use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
@@ -279,7 +280,7 @@ impl LodSelect {
 /// `floor(x)` as an integer and the fraction `x - floor(x)` in [0, 1): saturating, NaN as
 /// (0, 0). Avoids the libm call `f64::floor` becomes without SSE4.1.
 #[inline(always)]
-fn floor_frac(x: f64) -> (i64, f32) {
+pub(super) fn floor_frac(x: f64) -> (i64, f32) {
     if x.is_nan() {
         return (0, 0.0);
     }
@@ -746,7 +747,26 @@ impl BoundTexture {
         if levels.is_empty() {
             return [0.0, 0.0, 0.0, 1.0];
         }
-        let raw = match self.plan_for(lambda, levels.len() - 1) {
+        let plan = self.plan_for(lambda, levels.len() - 1);
+        if let Some(dims) = self.fixed_tier(&levels[0]) {
+            let wrap = self.inner.params.wrap;
+            let bytes = match plan {
+                LevelPlan::One { level, linear } => {
+                    fixed::filter_image(&levels[level], dims, wrap, linear, coords)
+                }
+                LevelPlan::Two {
+                    levels: [d1, d2],
+                    linear,
+                    weight,
+                } => fixed::lerp4(
+                    fixed::filter_image(&levels[d1], dims, wrap, linear, coords),
+                    fixed::filter_image(&levels[d2], dims, wrap, linear, coords),
+                    fixed::level_weight(weight),
+                ),
+            };
+            return self.finish(fixed::to_f32(bytes));
+        }
+        let raw = match plan {
             LevelPlan::One { level, linear } => self.filter(&levels[level], linear, coords),
             LevelPlan::Two {
                 levels: [d1, d2],
@@ -759,6 +779,26 @@ impl BoundTexture {
             }
         };
         self.finish(raw)
+    }
+
+    /// The number of dimensions filtered when the texture's images take the fixed-point
+    /// filter ([`fixed`]): 1D, 2D, 3D and cube-map images of unsigned-byte colour texels
+    /// without a border, every filtered axis wrapped by `REPEAT` or `CLAMP_TO_EDGE` (where
+    /// llvmpipe filters in 8-bit fixed point); `None` for the f32 filter.
+    #[inline]
+    fn fixed_tier(&self, img: &TexImage) -> Option<usize> {
+        let dims = match self.inner.target {
+            TextureTarget::T1D => 1,
+            TextureTarget::T2D | TextureTarget::CubeMap => 2,
+            TextureTarget::T3D => 3,
+            TextureTarget::Rectangle => return None,
+        };
+        let wrap = &self.inner.params.wrap;
+        (img.border == 0
+            && self.inner.base != BaseFormat::DepthComponent
+            && matches!(&*img.texels, Texels::U8(_))
+            && wrap[..dims].iter().all(|&w| fixed::simple_wrap(w)))
+        .then_some(dims)
     }
 
     /// Level selection for λ (section 3.8.8): magnification when λ <= c
@@ -1056,9 +1096,33 @@ impl BoundTexture {
         [self.inner.params.wrap[0], self.inner.params.wrap[1]]
     }
 
+    /// Two fast levels filtered at (s, t) and mixed with `weight` (the second's), as
+    /// [`BoundTexture::sample_grad`] mixes them: in 8-bit fixed point ([`fixed`]) when both
+    /// axes wrap by `REPEAT` or `CLAMP_TO_EDGE`, else in f32.
+    #[inline(always)]
+    pub fn filter_fast_mix<const C: usize>(
+        &self,
+        levels: [&FastLevel; 2],
+        linear: bool,
+        coords: [f32; 2],
+        weight: f32,
+    ) -> [f32; 4] {
+        let wrap = self.inner.params.wrap;
+        if fixed::simple_wrap(wrap[0]) && fixed::simple_wrap(wrap[1]) {
+            let wrap = [wrap[0], wrap[1]];
+            let a = fixed::filter_fast::<C>(levels[0], wrap, linear, coords);
+            let b = fixed::filter_fast::<C>(levels[1], wrap, linear, coords);
+            return fixed::to_f32(fixed::lerp4(a, b, fixed::level_weight(weight)));
+        }
+        let t1 = self.filter_fast::<C>(levels[0], linear, coords);
+        let t2 = self.filter_fast::<C>(levels[1], linear, coords);
+        lerp4(t1, t2, weight)
+    }
+
     /// NEAREST or LINEAR filtering of a fast level at (s, t), `C` components per texel (3 or
     /// 4, the base format's): the arithmetic of the general filter for a 2D image without
-    /// border, and the texture source colour it finishes into.
+    /// border (the fixed-point tier, [`fixed`], when both axes wrap by `REPEAT` or
+    /// `CLAMP_TO_EDGE`), and the texture source colour it finishes into.
     #[inline(always)]
     pub fn filter_fast<const C: usize>(
         &self,
@@ -1067,6 +1131,10 @@ impl BoundTexture {
         coords: [f32; 2],
     ) -> [f32; 4] {
         let wrap = self.inner.params.wrap;
+        if fixed::simple_wrap(wrap[0]) && fixed::simple_wrap(wrap[1]) {
+            let bytes = fixed::filter_fast::<C>(lvl, [wrap[0], wrap[1]], linear, coords);
+            return fixed::to_f32(bytes);
+        }
         let size = [lvl.width, lvl.height];
         if !linear {
             let i = [0, 1].map(|d| {
