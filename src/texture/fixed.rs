@@ -317,4 +317,118 @@ mod tests {
             }
         }
     }
+
+    /// A random RGBA8 image of `w` x `h` texels without a border.
+    fn random_image(w: i32, h: i32, seed: &mut u64) -> TexImage {
+        use super::super::format::InternalFormat;
+        let format = InternalFormat::new(0x8058, BaseFormat::Rgba, 8);
+        let mut img = TexImage::new(2, [w, h, 1], 0, format, false).expect("small image");
+        if let Texels::U8(v) = std::sync::Arc::make_mut(&mut img.texels) {
+            for b in v.iter_mut() {
+                *b = (crate::test_support::xorshift(seed) >> 24) as u8;
+            }
+        }
+        img
+    }
+
+    /// The specification's bilinear equation (section 3.8.8, equation 3.23 in 2D) in f64 on
+    /// the bytes of `img`, at (s, t), wrapped by `mode`: `i0 = wrap(floor(u - 1/2))`,
+    /// `alpha = frac(u - 1/2)`, the four texels weighted by `(1 - alpha)(1 - beta)` etc.
+    fn spec_bilinear(img: &TexImage, mode: WrapMode, s: f32, t: f32) -> [f64; 4] {
+        let Texels::U8(v) = &*img.texels else {
+            unreachable!()
+        };
+        let (w, h) = (img.width as i64, img.height as i64);
+        let axis = |c: f32, n: i64| {
+            let u = c as f64 * n as f64 - 0.5;
+            let f = u.floor();
+            let i = f as i64;
+            (
+                wrap_index(i, n, mode, true),
+                wrap_index(i + 1, n, mode, true),
+                u - f,
+            )
+        };
+        let (x0, x1, a) = axis(s, w);
+        let (y0, y1, b) = axis(t, h);
+        let at = |i: i64, j: i64, c: usize| v[((j * w + i) * 4) as usize + c] as f64;
+        [0, 1, 2, 3].map(|c| {
+            (1.0 - a) * (1.0 - b) * at(x0, y0, c)
+                + a * (1.0 - b) * at(x1, y0, c)
+                + (1.0 - a) * b * at(x0, y1, c)
+                + a * b * at(x1, y1, c)
+        })
+    }
+
+    /// The fixed-point bilinear filter against the specification's equation in real numbers,
+    /// within the bound derived in the module documentation: 2 bytes for power-of-two sizes,
+    /// 3 for others (their f32 product `s * size` rounds too), and a mix of two levels within
+    /// the levels' bound plus 1.5 bytes. The bounds are reached within a byte (so they are
+    /// not loose), and a filter with the weights truncated instead of rounded, or a lerp
+    /// without its rounding term, breaks them.
+    #[test]
+    fn bilinear_is_within_the_quantisation_bound_of_the_spec() {
+        let mut seed = 0x0123_4567_89AB_CDEFu64;
+        let mut worst = [0f64; 2];
+        for (w, h) in [
+            (8, 8),
+            (16, 4),
+            (1, 32),
+            (64, 64),
+            (5, 7),
+            (100, 3),
+            (13, 1),
+        ] {
+            let pot = (w as i64 & (w as i64 - 1)) == 0 && (h as i64 & (h as i64 - 1)) == 0;
+            let img = random_image(w, h, &mut seed);
+            for mode in [WrapMode::Repeat, WrapMode::ClampToEdge] {
+                for _ in 0..3000 {
+                    let r = crate::test_support::xorshift(&mut seed);
+                    let s = ((r >> 8) % 40_000) as f32 / 10_000.0 - 2.0;
+                    let t = ((r >> 32) % 40_000) as f32 / 10_000.0 - 2.0;
+                    let got = filter_image(&img, 2, [mode; 3], true, [s, t, 0.0]);
+                    let want = spec_bilinear(&img, mode, s, t);
+                    let bound = if pot { 2.0 } else { 3.0 };
+                    for c in 0..4 {
+                        let e = (got[c] as f64 - want[c]).abs();
+                        worst[pot as usize] = worst[pot as usize].max(e);
+                        assert!(
+                            e <= bound,
+                            "{w}x{h} {mode:?} ({s}, {t}) channel {c}: {} vs {}",
+                            got[c],
+                            want[c]
+                        );
+                    }
+                }
+            }
+        }
+        assert!(worst[1] > 1.0, "power-of-two worst {}", worst[1]);
+        // Two levels mixed: each within 2 bytes of its equation, the mix within 1.5 more.
+        let (l0, l1) = (
+            random_image(16, 16, &mut seed),
+            random_image(8, 8, &mut seed),
+        );
+        for k in 0..5000 {
+            let r = crate::test_support::xorshift(&mut seed);
+            let (s, t) = (
+                ((r >> 8) % 1000) as f32 / 997.0,
+                ((r >> 24) % 1000) as f32 / 991.0,
+            );
+            let f = (k % 256) as f32 / 256.0 + ((r >> 40) % 256) as f32 / 65536.0;
+            let mode = WrapMode::Repeat;
+            let got = lerp4(
+                filter_image(&l0, 2, [mode; 3], true, [s, t, 0.0]),
+                filter_image(&l1, 2, [mode; 3], true, [s, t, 0.0]),
+                level_weight(f),
+            );
+            let (a, b) = (
+                spec_bilinear(&l0, mode, s, t),
+                spec_bilinear(&l1, mode, s, t),
+            );
+            for c in 0..4 {
+                let want = a[c] + (b[c] - a[c]) * f as f64;
+                assert!((got[c] as f64 - want).abs() <= 3.5, "{s} {t} {f}: {got:?}");
+            }
+        }
+    }
 }
