@@ -40,7 +40,8 @@
 
 use super::format::BaseFormat;
 use super::image::{TexImage, Texels};
-use super::sample::{floor_frac, wrap_index, FastLevel};
+use super::sample::{floor_frac, lerp4 as lerp4_f32, wrap_index, BoundTexture, FastLevel};
+use crate::common::values::TextureTarget;
 use crate::common::values::WrapMode;
 
 /// Bits of a filter weight (and of the level weight): 8, as llvmpipe's AoS path.
@@ -229,6 +230,51 @@ pub fn filter_fast<const C: usize>(
         linear_axis(coords[0], w, wrap[0]),
         linear_axis(coords[1], h, wrap[1]),
     )
+}
+
+impl BoundTexture {
+    /// The number of dimensions filtered when the texture's images take the fixed-point
+    /// filter ([this module](self)): 1D, 2D, 3D and cube-map images of unsigned-byte colour texels
+    /// without a border, every filtered axis wrapped by `REPEAT` or `CLAMP_TO_EDGE` (where
+    /// llvmpipe filters in 8-bit fixed point); `None` for the f32 filter.
+    #[inline]
+    pub(super) fn fixed_tier(&self, img: &TexImage) -> Option<usize> {
+        let dims = match self.target() {
+            TextureTarget::T1D => 1,
+            TextureTarget::T2D | TextureTarget::CubeMap => 2,
+            TextureTarget::T3D => 3,
+            TextureTarget::Rectangle => return None,
+        };
+        let wrap = &self.params().wrap;
+        (img.border == 0
+            && img.format.base != BaseFormat::DepthComponent
+            && matches!(&*img.texels, Texels::U8(_))
+            && wrap[..dims].iter().all(|&w| simple_wrap(w)))
+        .then_some(dims)
+    }
+
+    /// Two fast levels filtered at (s, t) and mixed with `weight` (the second's), as
+    /// [`BoundTexture::sample_grad`] mixes them: in 8-bit fixed point (this module) when both
+    /// axes wrap by `REPEAT` or `CLAMP_TO_EDGE`, else in f32.
+    #[inline(always)]
+    pub fn filter_fast_mix<const C: usize>(
+        &self,
+        levels: [&FastLevel; 2],
+        linear: bool,
+        coords: [f32; 2],
+        weight: f32,
+    ) -> [f32; 4] {
+        let wrap = self.params().wrap;
+        if simple_wrap(wrap[0]) && simple_wrap(wrap[1]) {
+            let wrap = [wrap[0], wrap[1]];
+            let a = filter_fast::<C>(levels[0], wrap, linear, coords);
+            let b = filter_fast::<C>(levels[1], wrap, linear, coords);
+            return to_f32(lerp4(a, b, level_weight(weight)));
+        }
+        let t1 = self.filter_fast::<C>(levels[0], linear, coords);
+        let t2 = self.filter_fast::<C>(levels[1], linear, coords);
+        lerp4_f32(t1, t2, weight)
+    }
 }
 
 #[cfg(test)]

@@ -363,7 +363,7 @@ pub fn cube_face_derivatives(
 }
 
 #[inline]
-fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+pub(super) fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
     [
         a[0] + (b[0] - a[0]) * w,
         a[1] + (b[1] - a[1]) * w,
@@ -781,26 +781,6 @@ impl BoundTexture {
         self.finish(raw)
     }
 
-    /// The number of dimensions filtered when the texture's images take the fixed-point
-    /// filter ([`fixed`]): 1D, 2D, 3D and cube-map images of unsigned-byte colour texels
-    /// without a border, every filtered axis wrapped by `REPEAT` or `CLAMP_TO_EDGE` (where
-    /// llvmpipe filters in 8-bit fixed point); `None` for the f32 filter.
-    #[inline]
-    fn fixed_tier(&self, img: &TexImage) -> Option<usize> {
-        let dims = match self.inner.target {
-            TextureTarget::T1D => 1,
-            TextureTarget::T2D | TextureTarget::CubeMap => 2,
-            TextureTarget::T3D => 3,
-            TextureTarget::Rectangle => return None,
-        };
-        let wrap = &self.inner.params.wrap;
-        (img.border == 0
-            && self.inner.base != BaseFormat::DepthComponent
-            && matches!(&*img.texels, Texels::U8(_))
-            && wrap[..dims].iter().all(|&w| fixed::simple_wrap(w)))
-        .then_some(dims)
-    }
-
     /// Level selection for λ (section 3.8.8): magnification when λ <= c
     /// ([`BoundTexture::switch_over`]), otherwise the minification filter's choice of one
     /// level or two levels and the weight of the second. A NaN λ counts as 0. Levels are
@@ -1094,29 +1074,6 @@ impl BoundTexture {
     /// The s and t wrap modes.
     pub fn wrap_st(&self) -> [WrapMode; 2] {
         [self.inner.params.wrap[0], self.inner.params.wrap[1]]
-    }
-
-    /// Two fast levels filtered at (s, t) and mixed with `weight` (the second's), as
-    /// [`BoundTexture::sample_grad`] mixes them: in 8-bit fixed point ([`fixed`]) when both
-    /// axes wrap by `REPEAT` or `CLAMP_TO_EDGE`, else in f32.
-    #[inline(always)]
-    pub fn filter_fast_mix<const C: usize>(
-        &self,
-        levels: [&FastLevel; 2],
-        linear: bool,
-        coords: [f32; 2],
-        weight: f32,
-    ) -> [f32; 4] {
-        let wrap = self.inner.params.wrap;
-        if fixed::simple_wrap(wrap[0]) && fixed::simple_wrap(wrap[1]) {
-            let wrap = [wrap[0], wrap[1]];
-            let a = fixed::filter_fast::<C>(levels[0], wrap, linear, coords);
-            let b = fixed::filter_fast::<C>(levels[1], wrap, linear, coords);
-            return fixed::to_f32(fixed::lerp4(a, b, fixed::level_weight(weight)));
-        }
-        let t1 = self.filter_fast::<C>(levels[0], linear, coords);
-        let t2 = self.filter_fast::<C>(levels[1], linear, coords);
-        lerp4(t1, t2, weight)
     }
 
     /// NEAREST or LINEAR filtering of a fast level at (s, t), `C` components per texel (3 or
