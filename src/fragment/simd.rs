@@ -217,7 +217,9 @@ mod x86 {
     use super::{After8, Sampling8, Tail8};
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
     use crate::fragment::fog::EXP2_TAYLOR;
-    use crate::texture::simd::x86::{block_coords8, coords8, filter8, filter8_regs, lane_mask};
+    use crate::texture::simd::x86::{
+        block_coords8, coords8, filter8, filter8_mix, filter8_regs, lane_mask,
+    };
     use crate::texture::simd::{Level8, Texels8};
 
     /// [`super::fog_factors8`].
@@ -510,11 +512,10 @@ mod x86 {
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
-        let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
-        if let Some(w) = sm.weight {
-            let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
-            ct = crate::texture::simd::lerp8(&ct, &t2, w);
-        }
+        let ct = match sm.weight {
+            None => filter8(&sm.levels[0], sm.linear, &s, &t)?,
+            Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
+        };
         Some(shade8(tail, primary, &ct, dst, pass, after))
     }
 

@@ -139,12 +139,10 @@ impl<'a> FastUnit<'a> {
                     finite_or_zero((vs / a.q) as f32),
                     finite_or_zero((vt / a.q) as f32),
                 ];
-                let t1 = tex.filter_fast::<C>(&a.levels[0], a.linear, c);
                 return match a.weight {
-                    None => t1,
+                    None => tex.filter_fast::<C>(&a.levels[0], a.linear, c),
                     Some(w) => {
-                        let t2 = tex.filter_fast::<C>(&a.levels[1], a.linear, c);
-                        lerp4(t1, t2, w)
+                        tex.filter_fast_mix::<C>([&a.levels[0], &a.levels[1]], a.linear, c, w)
                     }
                 };
             }
@@ -162,11 +160,7 @@ impl<'a> FastUnit<'a> {
                 linear,
                 weight,
             } => match (tex.fast_level(levels[0]), tex.fast_level(levels[1])) {
-                (Some(l1), Some(l2)) => {
-                    let t1 = tex.filter_fast::<C>(&l1, linear, c2);
-                    let t2 = tex.filter_fast::<C>(&l2, linear, c2);
-                    lerp4(t1, t2, weight)
-                }
+                (Some(l1), Some(l2)) => tex.filter_fast_mix::<C>([&l1, &l2], linear, c2, weight),
                 _ => tex.sample_grad(c, dx, dy, self.unit.env.lod_bias),
             },
         }
@@ -188,12 +182,15 @@ impl<'a> FastUnit<'a> {
                 let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
                 let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
                 if let Some([s, t]) = texture_simd::coords8(planes, a.w, a.q, x, count) {
-                    let t1 = texture_simd::filter8(&levels[0], a.linear, &s, &t);
-                    let ct = match (t1, a.weight) {
-                        (Some(t1), None) => Some(t1),
-                        (Some(t1), Some(w)) => texture_simd::filter8(&levels[1], a.linear, &s, &t)
-                            .map(|t2| lerp8(&t1, &t2, w)),
-                        _ => None,
+                    let ct = match a.weight {
+                        None => texture_simd::filter8(&levels[0], a.linear, &s, &t),
+                        Some(w) => texture_simd::filter8_mix(
+                            [&levels[0], &levels[1]],
+                            a.linear,
+                            &s,
+                            &t,
+                            &[w; 8],
+                        ),
                     };
                     if let Some(ct) = ct {
                         for (j, o) in out.iter_mut().enumerate().take(count) {

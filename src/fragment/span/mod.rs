@@ -33,7 +33,7 @@ use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
+use crate::texture::simd::{self as texture_simd, Level8, Texels8};
 
 use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 
