@@ -794,7 +794,10 @@ mod tests {
             ("glFoo({1, 2);", "array"),
             ("window(1);", "window"),
             ("glFoo(checker(4, inf, 2));", "checker() size"),
-            ("glFoo(checker(4611686018427387904, 4, 1));", "checker() size"),
+            (
+                "glFoo(checker(4611686018427387904, 4, 1));",
+                "checker() size",
+            ),
             ("glFoo(checker(-2, 4, 1));", "checker() size"),
         ] {
             let e = calls(text).unwrap_err();
