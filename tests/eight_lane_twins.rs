@@ -1,7 +1,7 @@
 //! Twin tests of the eight-lane paths that took over from the per-fragment general path:
-//! the stencil test and its actions ahead of the eight-fragment tail, and cube maps on the
-//! eight-pixel samplers. Each state is drawn on the general path (forced) and on the chosen
-//! path, and the colour, depth and stencil buffers must be identical; each draw must also
+//! the stencil test and its actions ahead of the eight-fragment tail, cube maps on the
+//! eight-pixel samplers, and antialiased lines' edge pixels in the untextured tail. Each state
+//! is drawn on the general path (forced) and on the chosen path, and the colour, depth and stencil buffers must be identical; each draw must also
 //! change the picture (or the stencil), so that a state that drew nothing cannot pass.
 
 mod common;
@@ -496,6 +496,108 @@ fn facing_textured_quads_match_the_general_path() {
             gl.depth_func(GL_GREATER);
             facing_quads(gl, rng);
         }),
+    ];
+    twins(&states);
+}
+
+/// 150 antialiased segments of width `width`, each with one colour (random alpha) and both
+/// ends at one eye depth, so that every fragment of a segment has the same values and the
+/// pixels next to each other in a row, edge pixels included, are shaded as one run with a
+/// coverage per pixel (`span_untextured8_covered`); every fifth segment has ends at
+/// different depths (the per-fragment route).
+fn smooth_lines(gl: &mut Context, rng: &mut Rng, width: f32) {
+    gl.enable(GL_LINE_SMOOTH);
+    gl.line_width(width);
+    gl.begin(GL_LINES);
+    for k in 0..150 {
+        gl.color_4f(
+            rng.range(0.2, 1.0),
+            rng.range(0.2, 1.0),
+            rng.range(0.2, 1.0),
+            rng.range(0.1, 1.0),
+        );
+        let z = rng.range(-8.0, -1.2);
+        let z1 = if k % 5 == 4 { z + 0.7 } else { z };
+        let (x, y) = (rng.range(-1.2, 1.2) * -z, rng.range(-1.2, 1.2) * -z);
+        let (len, ang) = (rng.range(0.05, 1.0) * -z, rng.range(0.0, 6.3));
+        gl.vertex_3f(x, y, z);
+        gl.vertex_3f(x + len * ang.cos(), y + len * ang.sin(), z1);
+    }
+    gl.end();
+}
+
+/// Antialiased lines whose fragments have the same values: their runs of edge pixels go
+/// eight at a time through the untextured tail with the coverage multiplied into each lane's
+/// alpha, against each pixel alone on the general path; with blending (over, additive, a
+/// constant colour), the alpha test (where coverage decides), fog, the stencil test, depth
+/// tests with and without writes, a colour mask, stippling and widths from 1 to 7.5.
+#[test]
+fn antialiased_lines_on_eight_lane_paths_match_the_general_path() {
+    let states: [Setup; 7] = [
+        ("over, LESS with depth writes, width 2.5", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            smooth_lines(gl, rng, 2.5);
+        }),
+        ("no blending, alpha test GREATER 0.3, width 4", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.3);
+            smooth_lines(gl, rng, 4.0);
+        }),
+        (
+            "additive, EXP2 fog, colour mask, depth writes off",
+            |gl, rng| {
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE);
+                gl.enable(GL_FOG);
+                gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+                gl.fogf(GL_FOG_DENSITY, 0.2);
+                gl.fogfv(GL_FOG_COLOR, &[0.1, 0.6, 0.9, 1.0]);
+                gl.color_mask(1, 1, 0, 1);
+                gl.depth_mask(0);
+                smooth_lines(gl, rng, 2.5);
+            },
+        ),
+        ("over, stencil EQUAL with INCR, width 1", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_EQUAL, 0x11, 0xFF);
+            gl.stencil_op(GL_DECR, GL_INVERT, GL_INCR);
+            smooth_lines(gl, rng, 1.0);
+        }),
+        (
+            "constant-alpha blending, no depth test, width 7.5",
+            |gl, rng| {
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_BLEND);
+                gl.blend_color(0.2, 0.4, 0.6, 0.3);
+                gl.blend_func(GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_CONSTANT_ALPHA);
+                smooth_lines(gl, rng, 7.5);
+            },
+        ),
+        ("over, stippled, GREATER depth", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_LINE_STIPPLE);
+            gl.line_stipple(2, 0x39CF);
+            gl.depth_func(GL_GREATER);
+            smooth_lines(gl, rng, 3.0);
+        }),
+        (
+            "linear fog, alpha test with blending, width 1.5",
+            |gl, rng| {
+                gl.enable(GL_FOG);
+                gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+                gl.fogf(GL_FOG_START, 1.0);
+                gl.fogf(GL_FOG_END, 9.0);
+                gl.enable(GL_ALPHA_TEST);
+                gl.alpha_func(GL_LESS, 0.6);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                smooth_lines(gl, rng, 1.5);
+            },
+        ),
     ];
     twins(&states);
 }
