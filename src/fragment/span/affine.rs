@@ -214,7 +214,7 @@ impl<'a> FastUnit<'a> {
     /// filter applies.
     pub(super) fn sampling8(&self, it: &Interpolants) -> Option<Sampling8<'a>> {
         let a = self.affine?;
-        let levels = a.simd?;
+        let levels = a.simd.as_ref()?;
         let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
         Some(Sampling8 {
             planes: [[ps.a, self.by[0], ps.c], [pt.a, self.by[1], pt.c]],
