@@ -526,6 +526,57 @@ fn smooth_lines(gl: &mut Context, rng: &mut Rng, width: f32) {
     gl.end();
 }
 
+/// Flat sprites under an orthographic projection (the `sprites` workload's kind): each quad
+/// has one depth, one colour and a constant 1/w, so every fragment of its triangles has the
+/// same inputs and the one-unit textured span takes them once per primitive
+/// (`SpanRun::constant_group`). Quads of 1 to 40 pixels at fractional positions, so that
+/// spans start and end at every column relative to the restart columns and tile edges;
+/// trilinear RGBA texture with the alpha test and blending, depth tested with writes off
+/// and on; with fog (EXP, constant along a flat quad) and with colours that vary per vertex or
+/// depths that vary per quad (which keep the per-span steady or stepped routes), in one draw.
+fn sprites(gl: &mut Context, rng: &mut Rng, varied: bool) {
+    random_texture(gl, rng, GL_RGBA, 32, 32);
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.enable(GL_TEXTURE_2D);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, SIZE as f64, 0.0, SIZE as f64, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.begin(GL_QUADS);
+    for k in 0..400 {
+        let (x, y) = (rng.range(-8.0, SIZE as f32), rng.range(-8.0, SIZE as f32));
+        let half = rng.range(0.5, 20.0);
+        let z = rng.range(-0.9, 0.9);
+        gl.color_4f(
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.2, 1.0),
+        );
+        for (i, (dx, dy)) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .into_iter()
+            .enumerate()
+        {
+            if varied && k % 3 == 0 {
+                gl.color_4f(rng.range(0.3, 1.0), 0.5, rng.range(0.3, 1.0), 0.8);
+            }
+            let dz = if varied && k % 3 == 1 {
+                0.1 * i as f32
+            } else {
+                0.0
+            };
+            gl.tex_coord_2f((dx + 1.0) / 2.0, (dy + 1.0) / 2.0);
+            gl.vertex_3f(x + dx * half, y + dy * half, z + dz);
+        }
+    }
+    gl.end();
+}
+
 /// Antialiased lines whose fragments have the same values: their runs of edge pixels go
 /// eight at a time through the untextured tail with the coverage multiplied into each lane's
 /// alpha, against each pixel alone on the general path; with blending (over, additive, a
@@ -598,6 +649,43 @@ fn antialiased_lines_on_eight_lane_paths_match_the_general_path() {
                 smooth_lines(gl, rng, 1.5);
             },
         ),
+    ];
+    twins(&states);
+}
+
+#[test]
+fn flat_sprites_match_the_general_path() {
+    let states: [Setup; 4] = [
+        ("sprites: alpha test, over, depth writes off", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.35);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.depth_mask(0);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: depth writes on, LEQUAL", |gl, rng| {
+            gl.depth_func(GL_LEQUAL);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GEQUAL, 0.5);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: EXP fog, blended", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.7);
+            gl.fogfv(GL_FOG_COLOR, &[0.9, 0.2, 0.4, 1.0]);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: varied colours and depths", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.2);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            sprites(gl, rng, true);
+        }),
     ];
     twins(&states);
 }

@@ -134,8 +134,9 @@ pub struct Sampling8<'a> {
     /// The two divisors of the plane values (see [`coords8`](crate::texture::simd::coords8)), constant over the span.
     pub w: f64,
     pub q: f64,
-    /// The first level and, with a weight, the second.
-    pub levels: [Level8<'a>; 2],
+    /// The first level and, with a weight, the second (the primitive's, read in place: a
+    /// copy per span of a small sprite cost more than its groups' set-up).
+    pub levels: &'a [Level8<'a>; 2],
     pub linear: bool,
     pub weight: Option<f32>,
 }

@@ -169,6 +169,32 @@ impl<'i> SpanRun<'i> {
             && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
     }
 
+    /// Whether z, 1/w, the colours and the fog coordinate are the same over the whole
+    /// primitive (their planes are 0 x + 0 y + c, as on a flat sprite): then every pixel's
+    /// evaluated values are the same bits (pixel centres are positive, so the products by x
+    /// and y are zeros of fixed signs), and so are the stepped ones.
+    pub(super) fn is_constant(&self) -> bool {
+        let flat = |p: &Plane| p.a == 0.0 && p.b == 0.0;
+        let color = |c: usize| flat(&self.attrs[attr::color(c)]);
+        flat(self.z_plane)
+            && flat(self.inv_w_plane)
+            && (self.constant_primary || (0..self.count.min(4)).all(color))
+            && (4..self.count).all(color)
+            && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
+    }
+
+    /// For a run with [`Self::is_constant`] whose evaluated and stepped inputs are the same
+    /// bits: the group whose eight lanes all have them, fogged as the steady shortcut fogs
+    /// them ([`GroupInputs::uniform`]), which is then every group of every span of the
+    /// primitive (`PrimitiveShared::steady`). `None` otherwise.
+    pub(super) fn constant_group(&self, ds: &FragmentDraw) -> Option<GroupInputs> {
+        if !self.is_constant() {
+            return None;
+        }
+        let v = self.steady_values::<true>(Some(ds.depth_max));
+        same_bits(&v[0], &v[1]).then(|| GroupInputs::uniform(v[1], lane_fog(ds)))
+    }
+
     /// For a run with [`Self::is_steady`]: the inputs ([`Self::next`]) of the pixels where
     /// the run is evaluated (its first pixel and the restart columns), then of the others
     /// (the evaluation plus a step of zero, which changes at most the sign of a zero).
@@ -352,6 +378,7 @@ pub(super) fn lane_fog(ds: &FragmentDraw) -> Option<&FogDraw> {
 
 /// What the eight-fragment tail needs of a group besides the texels: the primary colours and
 /// depths of lanes `lo..hi`, which of them pass the depth test, and the stored colours.
+#[derive(Debug)]
 pub(super) struct GroupInputs {
     pub(super) primary: Texels8,
     pub(super) depth: [u32; 8],
