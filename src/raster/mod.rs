@@ -6,6 +6,7 @@ pub mod coarse;
 pub mod controls;
 pub mod draw;
 pub mod line;
+pub mod pixels;
 pub mod point;
 pub mod prefetch;
 pub mod scene;

@@ -9,6 +9,7 @@ use std::sync::{Arc, Mutex};
 use rayon::prelude::*;
 
 use super::coarse::CoarseDepth;
+use super::pixels;
 use super::prefetch;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
@@ -266,6 +267,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Triangle(t) => Some(t.state),
             Command::Rect(r) => Some(r.state),
             Command::Line(l) => Some(l.state),
+            Command::Bitmap(b) => Some(b.state),
+            Command::Pixels(p) => Some(p.state),
         };
         if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
             levels.prepare(&scene.states[state as usize].fragment);
@@ -303,6 +306,14 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     attrs,
                     r.coverage,
                 );
+            }
+            Command::Bitmap(b) => {
+                let ds = &scene.states[b.state as usize];
+                pixels::shade_bitmap(b, scene, ds, &levels, &mut coarse, tile);
+            }
+            Command::Pixels(p) => {
+                let ds = &scene.states[p.state as usize];
+                pixels::shade_pixels(p, scene, ds, &levels, &mut coarse, tile);
             }
             Command::Line(l) => {
                 let ds = &scene.states[l.state as usize];
