@@ -69,6 +69,23 @@ impl Context {
         if pixels.is_some_and(|data| data.len() < len) {
             return Err(GL_INVALID_VALUE);
         }
+        if let (Some(data), false, UploadSource::Groups(pf, pt)) = (pixels, target.is_proxy(), src)
+        {
+            // Bytes that are the texels: the image is made from the rows, not zeroed first
+            // and then overwritten.
+            let transfer = !self.pixel_transfer.is_identity();
+            if bytes_are_texels(transfer, pf, pt, ifmt) {
+                let layout =
+                    pixels::layout(&self.unpack, dims, usize3, pf, pt).ok_or(GL_INVALID_VALUE)?;
+                let made =
+                    TexImage::from_byte_rows(dims as u8, stored, border, ifmt, data, &layout)
+                        .map_err(|_| GL_OUT_OF_MEMORY)?;
+                if let Some(img) = made {
+                    self.install_image(target, level, img);
+                    return Ok(());
+                }
+            }
+        }
         let mut img = TexImage::new(dims as u8, stored, border, ifmt, target.is_proxy())
             .map_err(|_| GL_OUT_OF_MEMORY)?;
         if let (Some(data), false, UploadSource::ColorIndex(ty)) = (pixels, target.is_proxy(), src)
@@ -133,14 +150,22 @@ impl Context {
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
-            let (b, inner) = (img.borders(), img.inner_size());
-            check_sub_region(dims, offset, size, b, inner)?;
-            src.check_packed()?;
-            if src.is_depth() != img.format.is_depth() {
-                return Err(GL_INVALID_OPERATION);
-            }
-            check_compressed_alignment(&img, offset, size)?;
+            // The checks borrow the image: a copy of it (sharing its texels) held on would
+            // make the store below copy all the texels first (`Arc::make_mut`).
+            let b = {
+                let obj = self.image_object(target);
+                let img = obj
+                    .image(target.face(), level)
+                    .ok_or(GL_INVALID_OPERATION)?;
+                let (b, inner) = (img.borders(), img.inner_size());
+                check_sub_region(dims, offset, size, b, inner)?;
+                src.check_packed()?;
+                if src.is_depth() != img.format.is_depth() {
+                    return Err(GL_INVALID_OPERATION);
+                }
+                check_compressed_alignment(img, offset, size)?;
+                b
+            };
             let mut n = [1usize; 3];
             for d in 0..dims {
                 n[d] = size[d] as usize;
