@@ -87,11 +87,12 @@ const EXTRA_ENUMS: [&str; 7] = [
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
 /// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
-const COMMAND_EXTENSIONS: [&str; 4] = [
+const COMMAND_EXTENSIONS: [&str; 5] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_vertex_array",
     "GL_EXT_provoking_vertex",
+    "GL_EXT_framebuffer_object",
 ];
 
 const KEYWORDS: [&str; 12] = [
@@ -330,6 +331,17 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glMultiDrawElements",
     "glLockArraysEXT",
     "glUnlockArraysEXT",
+    // EXT_framebuffer_object's additions to section 5.4: executed immediately.
+    "glBindFramebufferEXT",
+    "glDeleteFramebuffersEXT",
+    "glBindRenderbufferEXT",
+    "glDeleteRenderbuffersEXT",
+    "glRenderbufferStorageEXT",
+    "glFramebufferTexture1DEXT",
+    "glFramebufferTexture2DEXT",
+    "glFramebufferTexture3DEXT",
+    "glFramebufferRenderbufferEXT",
+    "glGenerateMipmapEXT",
 ];
 
 /// Whether a display list being compiled records the command (instead of executing it).
@@ -574,6 +586,21 @@ fn main() {
                     .or_default()
                     .push(target.clone());
             }
+        }
+    }
+    // EXT_framebuffer_object's "Dependencies on ARB_framebuffer_object and OpenGL 3.0" names
+    // the bind commands as the only ones that are not aliases (the ARB ones may not bind
+    // names of other contexts); in one context they do the same, and programs written for
+    // OpenGL 3.0 (piglit's triangle-rasterization -use_fbo) call them with GL_FRAMEBUFFER.
+    for (ext, arb) in [
+        ("glBindFramebufferEXT", "glBindFramebuffer"),
+        ("glBindRenderbufferEXT", "glBindRenderbuffer"),
+    ] {
+        if core_cmd_set.contains(&ext.to_string()) {
+            cmd_aliases
+                .entry(ext.to_string())
+                .or_default()
+                .push(arb.to_string());
         }
     }
     for v in cmd_aliases.values_mut() {

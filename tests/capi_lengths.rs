@@ -228,6 +228,19 @@ unsafe fn three_queries() {
     glGenQueries(3, ids.as_mut_ptr());
 }
 
+/// A bound framebuffer object with an RGBA8 renderbuffer (bound too) at its colour point.
+unsafe fn framebuffer_with_renderbuffer() {
+    glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, 1);
+    glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_RGBA8, 2, 2);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 1);
+    glFramebufferRenderbufferEXT(
+        GL_FRAMEBUFFER_EXT,
+        GL_COLOR_ATTACHMENT0_EXT,
+        GL_RENDERBUFFER_EXT,
+        1,
+    );
+}
+
 unsafe fn finished_query() {
     glBeginQuery(GL_SAMPLES_PASSED, 1);
     glEndQuery(GL_SAMPLES_PASSED);
@@ -527,6 +540,63 @@ fn cases() -> Vec<Case> {
         case!("glDeleteTextures", "textures", 3 * F, F, no_setup, |p| {
             glDeleteTextures(3, p as *const GLuint)
         }),
+        case!(
+            "glGenFramebuffersEXT",
+            "framebuffers",
+            3 * F,
+            F,
+            no_setup,
+            |p| { glGenFramebuffersEXT(3, p as *mut GLuint) }
+        ),
+        case!(
+            "glDeleteFramebuffersEXT",
+            "framebuffers",
+            3 * F,
+            F,
+            no_setup,
+            |p| { glDeleteFramebuffersEXT(3, p as *const GLuint) }
+        ),
+        case!(
+            "glGenRenderbuffersEXT",
+            "renderbuffers",
+            3 * F,
+            F,
+            no_setup,
+            |p| { glGenRenderbuffersEXT(3, p as *mut GLuint) }
+        ),
+        case!(
+            "glDeleteRenderbuffersEXT",
+            "renderbuffers",
+            3 * F,
+            F,
+            no_setup,
+            |p| { glDeleteRenderbuffersEXT(3, p as *const GLuint) }
+        ),
+        case!(
+            "glGetRenderbufferParameterivEXT",
+            "params",
+            F,
+            F,
+            framebuffer_with_renderbuffer,
+            |p| glGetRenderbufferParameterivEXT(
+                GL_RENDERBUFFER_EXT,
+                GL_RENDERBUFFER_WIDTH_EXT,
+                p as *mut GLint
+            )
+        ),
+        case!(
+            "glGetFramebufferAttachmentParameterivEXT",
+            "params",
+            F,
+            F,
+            framebuffer_with_renderbuffer,
+            |p| glGetFramebufferAttachmentParameterivEXT(
+                GL_FRAMEBUFFER_EXT,
+                GL_COLOR_ATTACHMENT0_EXT,
+                GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_EXT,
+                p as *mut GLint
+            )
+        ),
         case!("glGenBuffers", "buffers", 3 * F, F, no_setup, |p| {
             glGenBuffers(3, p as *mut GLuint)
         }),

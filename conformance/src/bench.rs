@@ -76,6 +76,10 @@ pub struct BenchConfig {
     pub toggle: Option<usize>,
     /// Run the state-toggle matrix (`--workload toggles`).
     pub toggles_only: bool,
+    /// `--tiny-viewport`: the same calls with a 1x1 viewport set after the set-up, so the
+    /// frames clear, process vertices, bin, hand off, finish and present as before but shade
+    /// almost nothing (a diagnostic of the cost that does not depend on the pixels drawn).
+    pub tiny_viewport: bool,
 }
 
 impl Default for BenchConfig {
@@ -94,6 +98,7 @@ impl Default for BenchConfig {
             tilegl_threads: Vec::new(),
             toggle: None,
             toggles_only: false,
+            tiny_viewport: false,
         }
     }
 }

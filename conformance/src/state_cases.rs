@@ -21,6 +21,7 @@ pub mod arrays;
 pub mod attrib;
 pub mod basic;
 pub mod eval;
+pub mod fbo;
 pub mod piglit;
 
 /// The framebuffer size every state case runs with.
@@ -79,6 +80,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: arrays, buffers, lists", arrays::CASES),
     ("state cases: evaluators", eval::CASES),
     ("state cases: piglit scripts", piglit::CASES),
+    ("state cases: framebuffer objects", fbo::CASES),
 ];
 
 /// Every state and error case.

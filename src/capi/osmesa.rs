@@ -207,7 +207,9 @@ impl OsMesaContext {
         self.row_length.max(self.width) as usize * self.height.max(0) as usize * bpp
     }
 
-    /// Copies the finished colour buffer into the caller's buffer.
+    /// Copies the finished colour buffer into the caller's buffer: each tile's rows straight
+    /// to their place (one copy per row of a tile for `OSMESA_RGBA`, which is how the tiles
+    /// store pixels), the tiles split over the shading threads.
     pub(crate) fn present(&mut self) {
         if let Some(f) = self.window_present {
             f(&mut self.gl);
@@ -217,22 +219,43 @@ impl OsMesaContext {
             return;
         }
         let bpp = bytes_per_pixel(self.format).unwrap_or(4);
-        let len = self.buffer_len();
-        // SAFETY: OSMesaMakeCurrent's caller promised a buffer of at least
-        // row_length x height pixels of this format, alive while the context uses it.
-        let out = unsafe { std::slice::from_raw_parts_mut(self.buffer, len) };
-        let (w, h) = (self.width, self.height);
-        let format = self.format;
-        let offsets: Vec<usize> = (0..h).map(|y| self.row_offset(y)).collect();
-        let rows = self.gl.framebuffer().color_rows_bottom_up();
-        let pixels: &[[u8; 4]] = bytemuck::cast_slice(&rows);
-        for y in 0..h as usize {
-            let src = &pixels[y * w as usize..(y + 1) * w as usize];
-            for (x, &c) in src.iter().enumerate() {
-                let o = offsets[y] + x * bpp;
-                to_format(format, c, &mut out[o..o + bpp]);
+        let out = CallerBuffer {
+            ptr: self.buffer,
+            len: self.buffer_len(),
+        };
+        let (w, h) = (self.width.max(0) as usize, self.height.max(0) as usize);
+        let stride = self.row_length.max(self.width).max(0) as usize * bpp;
+        let (format, y_up) = (self.format, self.y_up);
+        self.gl.for_each_tile(&|tile| {
+            let (x0, y0) = (tile.x0.max(0) as usize, tile.y0.max(0) as usize);
+            if x0 >= w || y0 >= h {
+                return;
             }
-        }
+            let side = tile.side() as usize;
+            let n = side.min(w - x0);
+            for r in 0..side.min(h - y0) {
+                let y = y0 + r;
+                let row = if y_up { y } else { h - 1 - y };
+                let at = row * stride + x0 * bpp;
+                let Some(src) = tile.color.get(r * side..r * side + n) else {
+                    return;
+                };
+                // SAFETY: `row < h` and `x0 + n <= w <= row length`, so the range lies inside
+                // the buffer (checked again by `row_mut`); tiles cover disjoint pixels, so no
+                // two threads write the same bytes, and no one else touches the buffer while
+                // the context renders into it.
+                let Some(dst) = (unsafe { out.row_mut(at, n * bpp) }) else {
+                    return;
+                };
+                if format == OSMESA_RGBA {
+                    dst.copy_from_slice(bytemuck::cast_slice(src));
+                } else {
+                    for (&c, px) in src.iter().zip(dst.chunks_exact_mut(bpp)) {
+                        to_format(format, c, px);
+                    }
+                }
+            }
+        });
     }
 
     /// Resizes a window-system context's buffers to its drawable, if that changed size.
@@ -257,6 +280,33 @@ impl OsMesaContext {
                 fb.set_color(x, y, from_format(format, &src[o..o + bpp]));
             }
         }
+    }
+}
+
+/// The caller's colour buffer while tiles are copied into it from several threads.
+struct CallerBuffer {
+    ptr: *mut u8,
+    len: usize,
+}
+
+// SAFETY: the buffer is only written through `row_mut`, whose callers write disjoint ranges
+// (one tile's rows each); OSMesaMakeCurrent's caller keeps it alive while the context uses it.
+unsafe impl Sync for CallerBuffer {}
+
+impl CallerBuffer {
+    /// Bytes `at..at + n` of the buffer, or `None` past its end.
+    ///
+    /// # Safety
+    /// No other live reference may overlap the range (each tile's rows are written by the
+    /// one thread that visits the tile).
+    #[allow(clippy::mut_from_ref)]
+    unsafe fn row_mut(&self, at: usize, n: usize) -> Option<&mut [u8]> {
+        if at.checked_add(n)? > self.len {
+            return None;
+        }
+        // SAFETY: in bounds (checked above) of a buffer of `len` bytes that OSMesaMakeCurrent's
+        // caller promised; exclusive by this function's contract.
+        Some(unsafe { std::slice::from_raw_parts_mut(self.ptr.add(at), n) })
     }
 }
 

@@ -294,6 +294,21 @@ impl Framebuffer {
         }
     }
 
+    /// Overwrites the stored depth of window pixel (x, y) (framebuffer objects load their
+    /// attached images so).
+    pub fn set_depth(&mut self, x: i32, y: i32, depth: u32) {
+        if let Some((t, i)) = self.locate(x, y) {
+            self.tiles[t].depth[i] = depth;
+        }
+    }
+
+    /// Overwrites the stencil index of window pixel (x, y).
+    pub fn set_stencil(&mut self, x: i32, y: i32, stencil: u8) {
+        if let Some((t, i)) = self.locate(x, y) {
+            self.tiles[t].stencil[i] = stencil;
+        }
+    }
+
     /// The colour buffer the tiles hold (the only one of a single-buffered framebuffer) as
     /// tightly packed RGBA8 rows, bottom row first.
     pub fn color_rows_bottom_up(&self) -> Vec<u8> {

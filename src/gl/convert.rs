@@ -9,11 +9,13 @@ pub use crate::common::values::*;
 
 mod arrays;
 mod eval;
+mod fbo;
 mod state_ext;
 mod texture;
 #[allow(unused_imports)]
 pub use arrays::*;
 pub use eval::*;
+pub use fbo::*;
 #[allow(unused_imports)]
 pub use state_ext::*;
 #[allow(unused_imports)]
@@ -418,6 +420,10 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_INDEX_CLEAR_VALUE => IndexClearValue,
         GL_INDEX_WRITEMASK => IndexWritemask,
         GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT => QuadsFollowProvokingVertex,
+        GL_FRAMEBUFFER_BINDING_EXT => FramebufferBinding,
+        GL_RENDERBUFFER_BINDING_EXT => RenderbufferBinding,
+        GL_MAX_COLOR_ATTACHMENTS_EXT => MaxColorAttachments,
+        GL_MAX_RENDERBUFFER_SIZE_EXT => MaxRenderbufferSize,
         GL_BLEND_COLOR => BlendColor,
         GL_LOGIC_OP_MODE => LogicOpMode,
         GL_MAX_LIGHTS => MaxLights,

@@ -220,27 +220,43 @@ impl Background {
 /// development VM, whose two virtual CPUs are at times placed far apart, with a cache line's
 /// round trip between them at 400 ns instead of 100, that made spheremap 1T 21.6 ms instead of
 /// 18.7; the same time otherwise.)
-pub(crate) fn shade_here(scene: &Scene, tiles: &mut [Tile]) {
+pub(crate) fn shade_here(scene: &Scene, tiles: &mut [Tile], visit: TileVisit) {
     for (tile, bin) in tiles.iter_mut().zip(&scene.bins) {
         if !bin.is_empty() {
             shade_tile(scene, bin, tile);
         }
+        if let Some(f) = visit {
+            f(tile);
+        }
     }
 }
 
-pub(crate) fn shade_all(scene: &Scene, tiles: &mut [Tile]) {
+/// What runs on each tile right after the scene's commands for it (or at once when it has
+/// none), on the thread that shaded it, while its pixels are in that core's cache: the copy
+/// of a finished picture into a C caller's buffer (`Context::for_each_tile`).
+pub(crate) type TileVisit<'a> = Option<&'a (dyn Fn(&Tile) + Sync)>;
+
+pub(crate) fn shade_all(scene: &Scene, tiles: &mut [Tile], visit: TileVisit) {
     // The busiest tiles first, each its own task: the workers finish the scene together
     // instead of one waiting for the other's last large tile (scenes are shaded one after
-    // the other, so that wait is paid at every background hand-off).
+    // the other, so that wait is paid at every background hand-off). Tiles with nothing to
+    // shade come last, when they are visited.
     let mut work: Vec<(&mut Tile, &Vec<u32>)> = tiles
         .iter_mut()
         .zip(&scene.bins)
-        .filter(|(_, bin)| !bin.is_empty())
+        .filter(|(_, bin)| visit.is_some() || !bin.is_empty())
         .collect();
     work.sort_unstable_by_key(|(_, bin)| std::cmp::Reverse(bin.len()));
     work.into_par_iter()
         .with_max_len(1)
-        .for_each(|(tile, bin)| shade_tile(scene, bin, tile));
+        .for_each(|(tile, bin)| {
+            if !bin.is_empty() {
+                shade_tile(scene, bin, tile);
+            }
+            if let Some(f) = visit {
+                f(tile);
+            }
+        });
 }
 
 fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {

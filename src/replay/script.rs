@@ -183,11 +183,13 @@ impl ScriptReader {
             }
             let digits = std::str::from_utf8(&self.text[s..self.pos]).unwrap_or("");
             let v = u64::from_str_radix(digits, 16).map_err(|_| self.err("bad hex number"))?;
-            return Ok(if neg {
-                Value::SInt(-(v as i64))
-            } else {
-                Value::UInt(v)
-            });
+            if !neg {
+                return Ok(Value::UInt(v));
+            }
+            // -0x8000000000000000 is i64::MIN; anything larger has no i64 value.
+            return i64::try_from(-(v as i128))
+                .map(Value::SInt)
+                .map_err(|_| self.err("hex number out of range"));
         }
         let mut float = false;
         while let Some(c) = self.peek() {
@@ -479,7 +481,9 @@ impl ScriptReader {
             _ => (name, args, flags),
         };
         let sig = self.sig(&name, args.len());
-        self.next_no = no + 1;
+        self.next_no = no
+            .checked_add(1)
+            .ok_or_else(|| self.err("call number out of range"))?;
         Ok(Some(Call {
             no,
             thread: 0,
@@ -794,8 +798,13 @@ mod tests {
             ("glFoo({1, 2);", "array"),
             ("window(1);", "window"),
             ("glFoo(checker(4, inf, 2));", "checker() size"),
-            ("glFoo(checker(4611686018427387904, 4, 1));", "checker() size"),
+            (
+                "glFoo(checker(4611686018427387904, 4, 1));",
+                "checker() size",
+            ),
             ("glFoo(checker(-2, 4, 1));", "checker() size"),
+            ("18446744073709551615 glEnd();", "call number out of range"),
+            ("glFoo(-0x8000000000000001);", "out of range"),
         ] {
             let e = calls(text).unwrap_err();
             assert!(e.contains(want), "{text}: {e}");

@@ -82,6 +82,9 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
+        if !self.framebuffer_ready() {
+            return;
+        }
         if self.framebuffer.accum.is_empty() {
             self.record_error(GL_INVALID_OPERATION);
             return;

@@ -59,6 +59,9 @@ impl Context {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         if format == GL_DEPTH_STENCIL_EXT {
             self.read_depth_stencil(x, y, width, height, type_, pixels);
             return;

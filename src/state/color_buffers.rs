@@ -62,8 +62,27 @@ fn read_source(name: GLenum, double: bool) -> Result<ColorBuffer, GLenum> {
     })
 }
 
+/// The colour buffer `fb` draws into (the back buffer for `GL_FRONT_AND_BACK` and `GL_NONE`
+/// when there is one).
+fn drawn_buffer(fb: &crate::framebuffer::Framebuffer) -> ColorBuffer {
+    match fb.draw {
+        DrawTarget::One(b) => b,
+        _ if fb.is_double_buffered() => ColorBuffer::Back,
+        _ => ColorBuffer::Front,
+    }
+}
+
 impl Context {
     pub(crate) fn draw_buffer(&mut self, mode: GLenum) {
+        if self.fbo_bound() {
+            self.fbo_select_buffer(mode, true);
+            return;
+        }
+        if convert::color_attachment_index(mode).is_some() {
+            // EXT_framebuffer_object: no window buffer has these names.
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         match draw_target(mode, self.framebuffer.is_double_buffered()) {
             Ok(target) => {
                 // Work recorded so far goes to the previous buffer.
@@ -77,6 +96,14 @@ impl Context {
     }
 
     pub(crate) fn read_buffer(&mut self, mode: GLenum) {
+        if self.fbo_bound() {
+            self.fbo_select_buffer(mode, false);
+            return;
+        }
+        if convert::color_attachment_index(mode).is_some() {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
         match read_source(mode, self.framebuffer.is_double_buffered()) {
             Ok(source) => {
                 self.framebuffer.read = source;
@@ -90,12 +117,20 @@ impl Context {
     /// (not through the scene) writes the buffer drawn to (the back buffer for
     /// `GL_FRONT_AND_BACK` and `GL_NONE`).
     fn make_draw_buffer_resident(&mut self) {
-        let b = self.draw_color_buffer();
+        let b = drawn_buffer(&self.framebuffer);
         self.framebuffer.make_resident(b);
     }
 
     /// Re-applies the draw and read buffer settings to a new framebuffer (after a resize).
     pub(crate) fn apply_buffer_selection(&mut self) {
+        if self.fbo_bound() {
+            // An object's buffers (restored by glPopAttrib) are its only colour attachment.
+            self.framebuffer.draw = match self.buffers.draw {
+                GL_NONE => DrawTarget::None,
+                _ => DrawTarget::One(ColorBuffer::Front),
+            };
+            return;
+        }
         let double = self.framebuffer.is_double_buffered();
         if let Ok(t) = draw_target(self.buffers.draw, double) {
             self.framebuffer.draw = t;
@@ -108,17 +143,14 @@ impl Context {
 
     /// The colour buffer a snapshot of "the draw buffer" shows: the one drawn to, the back
     /// buffer for `GL_FRONT_AND_BACK` and `GL_NONE` on a double-buffered context.
+    /// The window's, also while a framebuffer object is bound.
     pub fn draw_color_buffer(&self) -> ColorBuffer {
-        match self.framebuffer.draw {
-            DrawTarget::One(b) => b,
-            _ if self.framebuffer.is_double_buffered() => ColorBuffer::Back,
-            _ => ColorBuffer::Front,
-        }
+        drawn_buffer(self.window_framebuffer())
     }
 
     /// Whether the context has a back buffer.
     pub fn is_double_buffered(&self) -> bool {
-        self.framebuffer.is_double_buffered()
+        self.window_framebuffer().is_double_buffered()
     }
 
     /// The window-system buffer swap (`glXSwapBuffers`, `eglSwapBuffers`): finishes pending
@@ -127,14 +159,14 @@ impl Context {
     /// single-buffered context other than the flush.
     pub fn swap_buffers(&mut self) {
         self.flush_scene();
-        self.framebuffer.swap_buffers();
+        self.window_framebuffer_mut().swap_buffers();
     }
 
     /// The colour of `buffer` as an RGBA image, top row first (after finishing pending
     /// rendering). A single-buffered context shows its front buffer for either.
     pub fn color_image(&mut self, buffer: ColorBuffer) -> image::RgbaImage {
         self.flush_scene();
-        crate::framebuffer::image::to_rgba_image_of(&self.framebuffer, buffer)
+        crate::framebuffer::image::to_rgba_image_of(self.window_framebuffer(), buffer)
     }
 }
 

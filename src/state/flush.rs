@@ -9,7 +9,7 @@ use super::Context;
 use crate::framebuffer::{ColorBuffer, DrawTarget, Tile};
 use crate::raster::scene::Scene;
 use crate::raster::schedule::{
-    lock, shade_all, shade_here, Background, InFlight, BACKGROUND_COMMANDS,
+    lock, shade_all, shade_here, Background, InFlight, TileVisit, BACKGROUND_COMMANDS,
     EARLY_BACKGROUND_COMMANDS, MAX_SCENES_IN_FLIGHT,
 };
 
@@ -124,6 +124,43 @@ impl Context {
         }
     }
 
+    /// Finishes pending rendering and runs `f` on every tile of the colour buffer the tiles
+    /// then hold (the front buffer of a single-buffered framebuffer), on the shading threads
+    /// when there are several. The C ABI copies a finished picture into a caller's buffer this
+    /// way: each tile's rows straight to their place, by the thread that shaded the tile last,
+    /// right after it (while the tile is in that core's cache), instead of the whole image
+    /// gathered into rows on the caller's thread after the flush.
+    pub(crate) fn for_each_tile(&mut self, f: &(dyn Fn(&Tile) + Sync)) {
+        use rayon::prelude::*;
+        self.join_background();
+        let fb = &self.framebuffer;
+        if matches!(fb.draw, DrawTarget::One(_))
+            && !self.scene.is_empty()
+            && self.scene.bins.len() == fb.tiles.len()
+        {
+            self.shade_scene(Some(f));
+            return;
+        }
+        self.flush_scene();
+        let tiles = &self.framebuffer.tiles;
+        if self.shading_threads < 2 {
+            tiles.iter().for_each(f);
+            return;
+        }
+        // One task per tile row of the framebuffer: enough to share between the threads,
+        // few enough that the hand-out costs nothing next to the copies.
+        let per_row = self.framebuffer.tiles_x.max(1);
+        let run = || {
+            tiles
+                .par_chunks(per_row)
+                .for_each(|row| row.iter().for_each(f))
+        };
+        match &self.pool {
+            Some(pool) => pool.install(run),
+            None => run(),
+        }
+    }
+
     /// Executes all recorded work. Called at every flush point (`glFinish`, `glFlush`,
     /// `glReadPixels`, framebuffer access, scene memory cap).
     pub(crate) fn flush_scene(&mut self) {
@@ -131,6 +168,13 @@ impl Context {
         if self.scene.is_empty() {
             return;
         }
+        self.shade_scene(None);
+    }
+
+    /// Shades the recorded scene (background work joined) and resets it; with one colour
+    /// buffer drawn, `visit` runs on each tile right after its shading (see
+    /// [`Context::for_each_tile`]), else on every tile after all shading.
+    fn shade_scene(&mut self, visit: TileVisit) {
         let fb = &mut self.framebuffer;
         let scene = &self.scene;
         let pool = &self.pool;
@@ -138,20 +182,20 @@ impl Context {
         // (and the tiles) to whichever core that thread runs on, which costs a tenth of the
         // frame when the cores are far apart (see `shade_here`).
         let one_thread = self.shading_threads < 2;
-        let shade = |tiles: &mut [Tile]| match pool {
-            _ if one_thread => shade_here(scene, tiles),
-            Some(pool) => pool.install(|| shade_all(scene, tiles)),
-            None => shade_all(scene, tiles),
+        let shade = |tiles: &mut [Tile], visit: TileVisit| match pool {
+            _ if one_thread => shade_here(scene, tiles, visit),
+            Some(pool) => pool.install(|| shade_all(scene, tiles, visit)),
+            None => shade_all(scene, tiles, visit),
         };
         match fb.draw {
             DrawTarget::One(buffer) => {
                 fb.make_resident(buffer);
-                shade(&mut fb.tiles);
+                shade(&mut fb.tiles, visit);
             }
             DrawTarget::None => {
                 // Depth and stencil are still written; the colour is put back afterwards.
                 let saved: Vec<Vec<[u8; 4]>> = fb.tiles.iter().map(|t| t.color.clone()).collect();
-                shade(&mut fb.tiles);
+                shade(&mut fb.tiles, None);
                 for (tile, color) in fb.tiles.iter_mut().zip(saved) {
                     tile.color = color;
                 }
@@ -166,7 +210,7 @@ impl Context {
                     .map(|t| (t.depth.clone(), t.stencil.clone()))
                     .collect();
                 fb.make_resident(ColorBuffer::Back);
-                shade(&mut fb.tiles);
+                shade(&mut fb.tiles, None);
                 for (tile, (depth, stencil)) in fb.tiles.iter_mut().zip(saved) {
                     tile.depth = depth;
                     tile.stencil = stencil;
@@ -174,12 +218,15 @@ impl Context {
                 // Occlusion queries count the fragments once, not once per buffer.
                 let counted: Vec<u64> = fb.tiles.iter().map(|t| t.samples_passed).collect();
                 fb.make_resident(ColorBuffer::Front);
-                shade(&mut fb.tiles);
+                shade(&mut fb.tiles, None);
                 for (tile, n) in fb.tiles.iter_mut().zip(counted) {
                     tile.samples_passed = n;
                 }
                 fb.make_resident(ColorBuffer::Back);
             }
+        }
+        if let (Some(f), false) = (visit, matches!(fb.draw, DrawTarget::One(_))) {
+            fb.tiles.iter().for_each(f);
         }
         self.scene.reset();
     }

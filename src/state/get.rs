@@ -249,6 +249,10 @@ impl Context {
             Query::IndexClearValue => Floats(vec![self.clear_values.index as f64]),
             Query::IndexWritemask => int1(ops.index_writemask as i32 as i64),
             Query::ProvokingVertex => Enum(self.raster.provoking_vertex.to_gl()),
+            Query::FramebufferBinding => int1(self.fbo.bound as i64),
+            Query::RenderbufferBinding => int1(self.fbo.bound_renderbuffer as i64),
+            Query::MaxColorAttachments => int1(super::fbo::MAX_COLOR_ATTACHMENTS as i64),
+            Query::MaxRenderbufferSize => int1(super::fbo::MAX_RENDERBUFFER_SIZE as i64),
             Query::QuadsFollowProvokingVertex => {
                 bool1(crate::primitive::assemble::QUADS_FOLLOW_PROVOKING_VERTEX)
             }
@@ -333,6 +337,8 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return None;
         };
+        // Framebuffer-dependent values (GL_DEPTH_BITS...) follow the bound object's images.
+        self.fbo_refresh();
         let v = self.state_value(q);
         if out_len < v.len() {
             self.record_error(GL_INVALID_VALUE);

@@ -19,6 +19,9 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
+        if !self.framebuffer_ready() {
+            return;
+        }
         self.immediate = Some(ImmediateBatch {
             mode,
             vertices: Vec::new(),

@@ -10,6 +10,7 @@ mod client_sizes;
 pub mod color_buffers;
 pub mod draw;
 pub mod evaluators;
+pub mod fbo;
 mod flush;
 pub mod fog;
 mod fragment_key;
@@ -80,7 +81,7 @@ GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_
 GL_ARB_texture_rectangle GL_ARB_transpose_matrix GL_ARB_vertex_array_bgra GL_ARB_vertex_buffer_object GL_ARB_window_pos GL_EXT_bgra \
 GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract \
-GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord \
+GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_object \
 GL_EXT_multi_draw_arrays GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_provoking_vertex \
 GL_EXT_rescale_normal GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs \
 GL_EXT_stencil_wrap GL_EXT_texture3D \
@@ -132,6 +133,8 @@ pub struct Context {
     /// Texture objects, bindings and per-unit enables.
     pub(crate) textures: crate::texture::TextureState,
     pub(crate) framebuffer: Framebuffer,
+    /// Framebuffer and renderbuffer objects (EXT_framebuffer_object).
+    pub(crate) fbo: fbo::FboState,
     /// `glDrawBuffer` / `glReadBuffer` settings.
     pub(crate) buffers: color_buffers::BufferSelection,
     pub(crate) scene: Scene,
@@ -249,6 +252,7 @@ impl Context {
             light_setup: None,
             buffers: color_buffers::BufferSelection::new(config.framebuffer.double_buffer),
             framebuffer,
+            fbo: Default::default(),
             scene,
             in_flight: None,
             recycle: Default::default(),
@@ -286,6 +290,22 @@ impl Context {
         self.flush_scene();
         let width = width.clamp(0, limits::MAX_VIEWPORT_DIM);
         let height = height.clamp(0, limits::MAX_VIEWPORT_DIM);
+        if self.fbo_bound() {
+            // The window's buffers are parked while a framebuffer object is bound.
+            let w = self.window_framebuffer_mut();
+            if (w.width, w.height) != (width, height) {
+                let (draw, read) = (w.draw, w.read);
+                *w = Framebuffer::new(width, height, w.config);
+                w.draw = draw;
+                w.read = read;
+                let b = match draw {
+                    crate::framebuffer::DrawTarget::One(b) => b,
+                    _ => w.read,
+                };
+                w.make_resident(b);
+            }
+            return;
+        }
         if width == self.framebuffer.width && height == self.framebuffer.height {
             return;
         }
@@ -299,20 +319,22 @@ impl Context {
 
     /// Width and height of the framebuffer.
     pub fn size(&self) -> (i32, i32) {
-        (self.framebuffer.width, self.framebuffer.height)
+        let fb = self.window_framebuffer();
+        (fb.width, fb.height)
     }
 
-    /// The framebuffer after finishing all pending rendering.
+    /// The window's framebuffer after finishing all pending rendering (while a framebuffer
+    /// object is bound too).
     pub fn framebuffer(&mut self) -> &Framebuffer {
         self.flush_scene();
-        &self.framebuffer
+        self.window_framebuffer()
     }
 
     /// Mutable framebuffer access after finishing pending rendering (the C ABI adopts caller
     /// buffers through it).
     pub fn framebuffer_mut(&mut self) -> &mut Framebuffer {
         self.flush_scene();
-        &mut self.framebuffer
+        self.window_framebuffer_mut()
     }
 
     /// True once after each `glFlush`/`glFinish`: the caller (the C ABI) copies the finished
@@ -642,6 +664,9 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if !self.framebuffer_ready() {
+            return;
+        }
         if self.select.mode != convert::RenderMode::Render {
             // Selection and feedback modes change no buffer (as in Mesa).
             return;

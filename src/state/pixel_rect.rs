@@ -622,6 +622,9 @@ impl Context {
         type_: GLenum,
         pixels: Option<&[u8]>,
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         if format == GL_DEPTH_STENCIL_EXT {
             self.draw_depth_stencil(width, height, type_, pixels);
             return;
@@ -848,6 +851,9 @@ impl Context {
         height: GLsizei,
         type_: GLenum,
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         if type_ == GL_DEPTH_STENCIL_EXT {
             self.copy_depth_stencil(x, y, width, height);
             return;
@@ -917,6 +923,9 @@ impl Context {
         ymove: GLfloat,
         bitmap: &[GLubyte],
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         if width < 0 || height < 0 {
             self.record_error(GL_INVALID_VALUE);
             return;

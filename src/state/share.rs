@@ -1,6 +1,8 @@
 //! Share groups (GLX 1.4 section 2.3, EGL 1.4 section 3.7.1, `OSMesaCreateContextExt`'s
 //! `sharelist`): contexts created sharing with another see the same texture objects, display
-//! lists and buffer objects, names and contents. Everything else (bindings, the default
+//! lists, buffer objects and EXT_framebuffer_object's framebuffer and renderbuffer objects,
+//! names and contents (a renderbuffer's content as last stored by the context drawing into it:
+//! at a change of its binding or attachments). Everything else (bindings, the default
 //! textures of name 0, the list being compiled, the framebuffer) stays per context.
 //!
 //! Each namespace sits behind its own `Arc<RwLock<..>>` in its module, held by every context
@@ -19,12 +21,13 @@ use super::lists::ListNames;
 use super::Context;
 use crate::texture::TextureNames;
 
-/// The shared namespaces of one share group (cheap to clone: three `Arc`s).
+/// The shared namespaces of one share group (cheap to clone: four `Arc`s).
 #[derive(Clone)]
 pub struct ShareGroup {
     textures: Arc<RwLock<TextureNames>>,
     lists: Arc<RwLock<ListNames>>,
     buffers: Arc<RwLock<BufferNames>>,
+    framebuffers: Arc<RwLock<super::fbo::FboNames>>,
 }
 
 impl ShareGroup {
@@ -33,6 +36,7 @@ impl ShareGroup {
         Arc::ptr_eq(&a.textures, &b.textures)
             && Arc::ptr_eq(&a.lists, &b.lists)
             && Arc::ptr_eq(&a.buffers, &b.buffers)
+            && Arc::ptr_eq(&a.framebuffers, &b.framebuffers)
     }
 }
 
@@ -43,6 +47,7 @@ impl Context {
             textures: self.textures.names().clone(),
             lists: self.lists.names().clone(),
             buffers: self.client.buffers.names().clone(),
+            framebuffers: self.fbo.shared().clone(),
         }
     }
 
@@ -51,6 +56,7 @@ impl Context {
         self.textures.set_names(group.textures.clone());
         self.lists.set_names(group.lists.clone());
         self.client.buffers.set_names(group.buffers.clone());
+        self.fbo.set_shared(group.framebuffers.clone());
         self.invalidate();
     }
 

@@ -172,6 +172,16 @@ impl InternalFormat {
         }
     }
 
+    /// Bytes one texel takes in storage (uncompressed).
+    pub fn texel_bytes(self) -> u64 {
+        let per_component = match self.storage() {
+            Storage::U8 => 1,
+            Storage::U16 => 2,
+            Storage::U32 => 4,
+        };
+        per_component * self.base.components() as u64
+    }
+
     /// The value `GL_TEXTURE_INTERNAL_FORMAT` reports.
     pub fn reported(self) -> i32 {
         match self.compressed {

@@ -568,6 +568,10 @@ pub fn setup(gl: &mut dyn Gl, cfg: &BenchConfig) {
         gl.fogfv(GL_FOG_COLOR, &[0.6, 0.65, 0.75, 1.0]);
         gl.clear_color(0.6, 0.65, 0.75, 1.0);
     }
+    if cfg.tiny_viewport {
+        // `--tiny-viewport`: every primitive lands in one pixel (clears still cover the window).
+        gl.viewport(0, 0, 1, 1);
+    }
 }
 
 /// Segment `k` of the `lightmap` corridor (4 wide, 3 high, 2 long): floor, ceiling and two

@@ -210,6 +210,7 @@ pub(super) fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<Stri
                 }
                 i += 1;
             }
+            ("--tiny-viewport", _) => cfg.tiny_viewport = true,
             ("--triangles", Some(v)) => {
                 cfg.triangles = v.parse().unwrap_or(cfg.triangles);
                 i += 1;
@@ -236,7 +237,7 @@ pub(super) fn parse_args(args: &[String], cfg: &mut BenchConfig) -> (Option<Stri
 /// What `--help` prints.
 pub const USAGE: &str = "bench [--workload NAME|all|toggles|ladder|lighting] [--no-ladder] \
 [--frames N] [--min-time SECONDS] [--budget SECONDS] [--threads N] [--toggle K] [--quality K] \
-[--no-mesa] [--no-xcore] [--scaling]
+[--no-mesa] [--no-xcore] [--scaling] [--tiny-viewport]
 
 Times each workload at 1024x768 on tilegl (through its C exports; --threads N: through the \
 Rust API with N threads) and Mesa (llvmpipe with LP_NUM_THREADS=2 in this process, softpipe in \
@@ -245,7 +246,8 @@ workload's picture error beside its times. Workloads: triangles sprites fog over
 lightmap spheremap tunnel tunnel-nofog objects objects-nofog lit-triangles combine4 cubemap \
 lines shadow text uploads accum; toggles: the state-toggle matrix; ladder: texture quality \
 against time; lighting: lighting cost against triangle count; --scaling: time against pixels \
-and triangles.";
+and triangles; --tiny-viewport: the same frames through a 1x1 viewport (what a frame costs \
+besides its pixels).";
 
 /// The benchmark's command line ([`USAGE`]). Prints one table per workload, then the ratio
 /// table, and returns the process exit code.

@@ -18,6 +18,7 @@ super::state_case_list!(source = include_str!("piglit.rs"), agree = |a: &Answer,
     piglit_errors: "Error codes piglit's copyteximage, max-texture-size-level and draw-pixels expect, and glEnable of an array's name (several piglit GL 1.x tests enable their arrays so). Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_depth_rectangle: "piglit's getteximage-depth on GL_TEXTURE_RECTANGLE: depth images on rectangles. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
     piglit_beginend_coverage: "piglit's gl-1.0-beginend-coverage: glIndex*, glClearIndex and glIndexMask set colour-index state in an RGBA context without error (glIndex* also between glBegin and glEnd); glTexGenf/glTexGeni with a plane set (param, 0, 0, 0) (section 2.11.4 names no error for the scalar forms); glTexParameterf(GL_TEXTURE_BORDER_COLOR) is GL_INVALID_ENUM; glDrawArrays and glDrawElements from a display list executed between glBegin and glEnd are GL_INVALID_OPERATION. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
+    piglit_proxy_memory_limit: "piglit's tex3d-maxsize and max-texture-size: proxy images (GL_PROXY_TEXTURE_2D/3D) of GL_INTENSITY8, GL_RGBA8 and GL_RGBA32F halved one side at a time from the largest side, as the test probes them; an image whose storage exceeds the implementation's per-image limit (llvmpipe's 2 GiB) reads back as width, height and depth 0 without an error. Every answer equals Mesa's.",
     piglit_depth_stencil_uploads: "piglit's texsubimage-depth-formats and teximage-errors: depth uploaded as GL_DEPTH_STENCIL / GL_UNSIGNED_INT_24_8 (EXT_packed_depth_stencil) into depth textures, depth-stencil textures keeping the stencil indices too (read back as GL_DEPTH_STENCIL, which a depth-only texture refuses), and the errors of formats that do not match the internal format's kind. Every answer equals Mesa's (depth read-backs within one unit of the 16-bit type).",
 );
 
@@ -747,4 +748,66 @@ fn piglit_get_tex_image_depth_stencil(gl: &mut dyn Gl, out: &mut Answers) {
         &mut back,
     );
     err(gl, out, "get_tex_image(GL_DEPTH_STENCIL) of an RGBA image");
+}
+
+/// piglit's tex3d-maxsize probe (and max-texture-size's 2D one): proxy images halved one side
+/// at a time, as the test does, until one is accepted; every step's answers are recorded, so
+/// the first size accepted is Mesa's.
+fn piglit_proxy_memory_limit(gl: &mut dyn Gl, out: &mut Answers) {
+    let probe = |gl: &mut dyn Gl, out: &mut Answers, target: GLenum, ifmt: GLenum, start: i32| {
+        let dims = if target == GL_PROXY_TEXTURE_3D { 3 } else { 2 };
+        let mut size = [start, start, if dims == 3 { start } else { 1 }];
+        let mut dim = 0;
+        while size.iter().all(|&s| s >= 1) {
+            if dims == 3 {
+                gl.tex_image_3d(
+                    target,
+                    0,
+                    ifmt as i32,
+                    size[0],
+                    size[1],
+                    size[2],
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    None,
+                );
+            } else {
+                gl.tex_image_2d(
+                    target,
+                    0,
+                    ifmt as i32,
+                    size[0],
+                    size[1],
+                    0,
+                    GL_RGBA,
+                    GL_UNSIGNED_BYTE,
+                    None,
+                );
+            }
+            let mut got = Vec::new();
+            for p in [GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH] {
+                let mut v = [-1];
+                gl.get_tex_level_parameteriv(target, 0, p, &mut v);
+                got.push(v[0] as f64);
+            }
+            let label = format!("proxy 0x{target:04x} 0x{ifmt:04x} {size:?}");
+            exact(out, label.clone(), got.clone());
+            err(gl, out, &label);
+            if got[0] as i32 == size[0] {
+                return;
+            }
+            size[dim] /= 2;
+            dim = (dim + 1) % dims;
+        }
+    };
+    let mut max = [0];
+    gl.get_integerv(GL_MAX_3D_TEXTURE_SIZE, &mut max);
+    for ifmt in [GL_INTENSITY8, GL_RGBA8, GL_RGBA32F_ARB] {
+        probe(gl, out, GL_PROXY_TEXTURE_3D, ifmt, max[0]);
+    }
+    gl.get_integerv(GL_MAX_TEXTURE_SIZE, &mut max);
+    for ifmt in [GL_RGBA8, GL_RGBA32F_ARB] {
+        probe(gl, out, GL_PROXY_TEXTURE_2D, ifmt, max[0]);
+    }
 }

@@ -5,10 +5,12 @@
 
 mod arrays;
 mod eval;
+mod fbo;
 mod state_ext;
 mod texture;
 pub use arrays::*;
 pub use eval::*;
+pub use fbo::*;
 pub use state_ext::*;
 pub use texture::*;
 
@@ -333,6 +335,11 @@ pub enum Query {
     BlendEquationAlpha,
     ProvokingVertex,
     QuadsFollowProvokingVertex,
+    /// EXT_framebuffer_object.
+    FramebufferBinding,
+    RenderbufferBinding,
+    MaxColorAttachments,
+    MaxRenderbufferSize,
     CurrentIndex,
     IndexClearValue,
     IndexWritemask,

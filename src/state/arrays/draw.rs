@@ -287,7 +287,7 @@ impl Context {
             self.list_aware_error(GL_INVALID_VALUE);
             return false;
         }
-        true
+        self.framebuffer_ready()
     }
 
     pub(crate) fn draw_arrays(&mut self, mode: GLenum, first: GLint, count: GLsizei) {

@@ -154,6 +154,9 @@ impl Context {
             let size = [width, height, 1];
             check_sub_region(2, offset, size, img.borders(), img.inner_size())?;
             check_compressed_alignment(&img, offset, size)?;
+            // Let go of the copy before writing: while it shares the texels, the write below
+            // would copy the whole image first (copy-on-write).
+            drop(img);
             let expected = f.image_bytes(width as usize, height as usize);
             if image_size < 0 || image_size as usize != expected {
                 return Err(GL_INVALID_VALUE);

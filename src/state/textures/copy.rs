@@ -28,6 +28,9 @@ impl Context {
         size: [GLsizei; 2],
         border: GLint,
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
@@ -79,6 +82,9 @@ impl Context {
         y: GLint,
         size: [GLsizei; 2],
     ) {
+        if !self.framebuffer_ready() {
+            return;
+        }
         let r = (|| -> Check<()> {
             let target =
                 convert::tex_image_target_for(target, dims, false).ok_or(GL_INVALID_ENUM)?;
@@ -101,6 +107,9 @@ impl Context {
             check_sub_region(dims, off, region, b, inner)?;
             check_compressed_alignment(&img, off, region)?;
             let depth = img.format.is_depth();
+            // Let go of the copy before writing: while it shares the texels, the write below
+            // would copy the whole image first (copy-on-write).
+            drop(img);
             if depth && self.framebuffer.config.depth_bits == 0 {
                 return Err(GL_INVALID_OPERATION);
             }

@@ -64,6 +64,13 @@ impl Context {
             return Err(GL_INVALID_OPERATION);
         }
         check_depth_target(target, ifmt)?;
+        if !fits_in_memory(stored, ifmt, target.is_proxy()) {
+            if target.is_proxy() {
+                self.image_object_mut(target).images[0][level] = None;
+                return Ok(());
+            }
+            return Err(GL_OUT_OF_MEMORY);
+        }
         let usize3 = stored.map(|s| s as usize);
         let len = self.upload_len(dims, usize3, src).ok_or(GL_INVALID_VALUE)?;
         if pixels.is_some_and(|data| data.len() < len) {
@@ -150,22 +157,17 @@ impl Context {
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
             }
-            // The checks borrow the image: a copy of it (sharing its texels) held on would
-            // make the store below copy all the texels first (`Arc::make_mut`).
-            let b = {
-                let obj = self.image_object(target);
-                let img = obj
-                    .image(target.face(), level)
-                    .ok_or(GL_INVALID_OPERATION)?;
-                let (b, inner) = (img.borders(), img.inner_size());
-                check_sub_region(dims, offset, size, b, inner)?;
-                src.check_packed()?;
-                if src.is_depth() != img.format.is_depth() {
-                    return Err(GL_INVALID_OPERATION);
-                }
-                check_compressed_alignment(img, offset, size)?;
-                b
-            };
+            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
+            let (b, inner) = (img.borders(), img.inner_size());
+            check_sub_region(dims, offset, size, b, inner)?;
+            src.check_packed()?;
+            if src.is_depth() != img.format.is_depth() {
+                return Err(GL_INVALID_OPERATION);
+            }
+            check_compressed_alignment(&img, offset, size)?;
+            // Let go of the copy before writing: while it shares the texels, the write below
+            // would copy the whole image first (copy-on-write).
+            drop(img);
             let mut n = [1usize; 3];
             for d in 0..dims {
                 n[d] = size[d] as usize;
@@ -438,6 +440,7 @@ impl Context {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
+        self.fbo_before_texture_read();
         let r = (|| -> Check<()> {
             let target = convert::tex_image_target(target)
                 .filter(|t| !t.is_proxy())
@@ -497,5 +500,65 @@ impl Context {
         if let Err(e) = r {
             self.record_error(e);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Arc;
+
+    fn texels_ptr(ctx: &Context, target: TexImageTarget) -> *const crate::texture::image::Texels {
+        Arc::as_ptr(&ctx.image_at(target, 0).unwrap().texels)
+    }
+
+    /// Sub-image uploads, copies and compressed sub-images write into the image's own
+    /// storage: nothing else shares it, so no copy of the whole image is made (a 1 GiB 3D
+    /// texture filled slice by slice would otherwise be copied once per slice).
+    #[test]
+    fn sub_image_writes_in_place() {
+        let mut ctx = Context::new(8, 8);
+        let t2d = TexImageTarget::T2D;
+        ctx.tex_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            GL_RGBA8 as i32,
+            4,
+            4,
+            0,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            None,
+        );
+        let before = texels_ptr(&ctx, t2d);
+        ctx.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            1,
+            1,
+            2,
+            2,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&[7u8; 16]),
+        );
+        ctx.copy_tex_sub_image_2d(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);
+        assert_eq!(ctx.get_error(), GL_NO_ERROR);
+        assert_eq!(texels_ptr(&ctx, t2d), before);
+        // While a copy is held (as a queued draw holds one), the write must not show in it.
+        let held = ctx.image_at(t2d, 0).unwrap();
+        ctx.tex_sub_image_2d(
+            GL_TEXTURE_2D,
+            0,
+            0,
+            0,
+            1,
+            1,
+            GL_RGBA,
+            GL_UNSIGNED_BYTE,
+            Some(&[200u8; 4]),
+        );
+        assert_ne!(texels_ptr(&ctx, t2d), Arc::as_ptr(&held.texels));
+        assert_eq!(held.fetch(0, 0, 0), [0.0; 4]);
     }
 }

@@ -15,7 +15,7 @@ use crate::gl::convert;
 use crate::gl::enums::*;
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
-use crate::texture::object::{level_count, max_size, MAX_TEXTURE_MAX_ANISOTROPY};
+use crate::texture::object::{level_count, max_size, MAX_IMAGE_BYTES, MAX_TEXTURE_MAX_ANISOTROPY};
 use crate::texture::{mipmap, pixels, ObjectMut, ObjectRef};
 
 mod compressed;
@@ -279,6 +279,25 @@ fn check_size(
     Ok(out)
 }
 
+/// Whether an uncompressed image of `size` (border included) fits the implementation's
+/// per-image limit (`MAX_IMAGE_BYTES`). A proxy asks for room for the whole mipmap chain
+/// down from `size`, as llvmpipe's proxy check does (the program may add the levels later):
+/// so a 1024 x 1024 x 2048 `GL_INTENSITY8` proxy (2 GiB, 16/7 GiB with its levels) is
+/// refused on both, and 1024^3 accepted.
+fn fits_in_memory(size: [i32; 3], format: InternalFormat, proxy: bool) -> bool {
+    let mut level = size.map(|s| s.max(0) as u64);
+    let mut bytes = 0u64;
+    loop {
+        let texels = level.iter().product::<u64>();
+        bytes = bytes.saturating_add(texels.saturating_mul(format.texel_bytes()));
+        if !proxy || level.iter().all(|&s| s <= 1) {
+            break;
+        }
+        level = level.map(|s| (s / 2).max(1));
+    }
+    bytes <= MAX_IMAGE_BYTES
+}
+
 /// Whether client groups of `format`/`type` are, byte for byte, texels of an uncompressed
 /// `internal` image with 8-bit storage (unsigned bytes, the same components in the same
 /// order, no pixel transfer): then uploads copy rows instead of converting each group
@@ -353,6 +372,7 @@ impl Context {
             return;
         }
         for &name in &textures[..n as usize] {
+            self.fbo_detach_texture(name);
             self.textures.delete(name);
         }
         self.invalidate();
@@ -409,8 +429,49 @@ impl Context {
         if target.is_proxy() {
             ObjectMut::Own(self.textures.proxy_mut(t))
         } else {
+            self.fbo_before_texture_change();
             self.textures.bound_mut(self.active_texture, t)
         }
+    }
+
+    /// `glGenerateMipmapEXT`: levels base+1 ..= q of the texture bound to `target` on the
+    /// active unit, each the box-filtered level above (every face of a cube map, which must
+    /// be cube complete: `GL_INVALID_OPERATION` otherwise). Nothing without a base image.
+    pub(crate) fn generate_mipmaps_of_bound(&mut self, t: TextureTarget) -> Result<(), GLenum> {
+        let mut obj = self.textures.bound_mut(self.active_texture, t);
+        let base = obj.params.base_level.max(0) as usize;
+        let faces = if t == TextureTarget::CubeMap { 6 } else { 1 };
+        if t == TextureTarget::CubeMap {
+            let first = obj.image(0, base).map(|i| (i.width, i.height, i.format));
+            let cube_complete = first.is_some_and(|(w, h, f)| {
+                w == h
+                    && (0..6).all(|face| {
+                        obj.image(face, base)
+                            .is_some_and(|i| i.width == w && i.height == h && i.format == f)
+                    })
+            });
+            if !cube_complete {
+                return Err(GL_INVALID_OPERATION);
+            }
+        }
+        for face in 0..faces {
+            let Some(img) = obj.image(face, base) else {
+                continue;
+            };
+            let last = obj
+                .last_level(t, base, img.inner_size())
+                .min(level_count(t) - 1);
+            for l in base + 1..=last {
+                let Some(parent) = obj.image(face, l - 1) else {
+                    break;
+                };
+                match mipmap::downsample(parent) {
+                    Ok(child) => obj.images[face][l] = Some(child),
+                    Err(_) => return Err(GL_OUT_OF_MEMORY),
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The image at `target`/`level` (a copy sharing the texels).

@@ -1,0 +1,12 @@
+//! EXT_framebuffer_object (the cases in `tilegl_conformance::state_cases::fbo`): every answer
+//! on Mesa and on tilegl (Rust API and C ABI) compared.
+
+/// Every case of the list against Mesa, one line per case, all failures listed at the end
+/// (`TILEGL_CASE=NAME` runs only the cases whose names contain NAME).
+#[test]
+fn fbo_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::fbo",
+        tilegl_conformance::state_cases::fbo::CASES,
+    );
+}
