@@ -88,6 +88,17 @@ impl FragmentKey {
             && !self.count_samples
     }
 
+    /// True when a fragment only has its colour converted to bytes and stored: no
+    /// texturing, colour sum, fog, alpha, stencil or depth test, no depth write, blending,
+    /// logic op or occlusion count, and every channel written (pixel rectangles then store
+    /// their colours directly, `raster::pixels`).
+    pub fn stores_color_only(&self) -> bool {
+        self.is_simple()
+            && self.depth_func.is_none()
+            && !self.depth_write
+            && self.color_mask == [true; 4]
+    }
+
     /// True when only the depth test and colour mask apply (the specialised fast paths).
     pub fn is_simple(&self) -> bool {
         self.alpha_func.is_none()

@@ -7,6 +7,7 @@ pub mod controls;
 pub mod draw;
 pub mod line;
 mod line_tile;
+pub mod pixels;
 pub mod point;
 pub mod prefetch;
 pub mod scene;

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use super::draw::TileDraw;
 use super::line::LineSetup;
+use super::pixels::{BitmapCommand, PixelsCommand};
 use super::prefetch;
 use super::setup::{Edge, Plane};
 use crate::common::rect::Rect;
@@ -128,6 +129,8 @@ pub enum Command {
     Triangle(TriangleCommand),
     Rect(RectCommand),
     Line(LineCommand),
+    Bitmap(BitmapCommand),
+    Pixels(PixelsCommand),
 }
 
 /// Commands recorded since the last flush, per-tile bins, and what they reference.
@@ -140,6 +143,12 @@ pub struct Scene {
     /// Line segments' set-ups and their end points' attributes.
     pub lines: Vec<LineSetup>,
     pub line_attrs: Vec<f32>,
+    /// The clipped bits of bitmaps (`pixels::BitmapCommand`).
+    pub bitmap_bits: Vec<u8>,
+    /// Pixel rectangles' colours (`pixels::PixelsCommand`): converted to bytes, or as the
+    /// fragments' colours.
+    pub pixel_bytes: Vec<[u8; 4]>,
+    pub pixel_colors: Vec<[f32; 4]>,
     tiles_x: usize,
     tiles_y: usize,
     /// log2 of the framebuffer's tile side.
@@ -151,6 +160,8 @@ pub struct Scene {
 pub const MAX_COMMANDS: usize = 1 << 20;
 /// Attribute planes that force a flush.
 pub const MAX_PLANES: usize = 1 << 23;
+/// Bytes of bitmap bits, and of pixel rectangles' colours, that force a flush.
+pub const MAX_PIXEL_BYTES: usize = 1 << 26;
 
 impl Scene {
     pub fn new(fb: &Framebuffer) -> Scene {
@@ -172,6 +183,8 @@ impl Scene {
         self.commands.len() >= MAX_COMMANDS
             || self.planes.len() >= MAX_PLANES
             || self.line_attrs.len() >= MAX_PLANES
+            || self.bitmap_bits.len() >= MAX_PIXEL_BYTES
+            || self.pixel_bytes.len() * 4 + self.pixel_colors.len() * 16 >= MAX_PIXEL_BYTES
     }
 
     /// Index of `ds` in the state table (reused when it is the last one added).
@@ -256,6 +269,9 @@ impl Scene {
         self.planes.clear();
         self.lines.clear();
         self.line_attrs.clear();
+        self.bitmap_bits.clear();
+        self.pixel_bytes.clear();
+        self.pixel_colors.clear();
     }
 }
 

@@ -10,6 +10,7 @@ use rayon::prelude::*;
 
 use super::coarse::CoarseDepth;
 use super::line_tile::LineShading;
+use super::pixels;
 use super::prefetch;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
@@ -284,6 +285,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
             Command::Triangle(t) => Some(t.state),
             Command::Rect(r) => Some(r.state),
             Command::Line(l) => Some(l.state),
+            Command::Bitmap(b) => Some(b.state),
+            Command::Pixels(p) => Some(p.state),
         };
         if let Some(state) = state.filter(|&s| levels_state != Some(s)) {
             levels.prepare(&scene.states[state as usize].fragment);
@@ -321,6 +324,14 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                     attrs,
                     r.coverage,
                 );
+            }
+            Command::Bitmap(b) => {
+                let ds = &scene.states[b.state as usize];
+                pixels::shade_bitmap(b, scene, ds, &levels, &mut coarse, tile);
+            }
+            Command::Pixels(p) => {
+                let ds = &scene.states[p.state as usize];
+                pixels::shade_pixels(p, scene, ds, &levels, &mut coarse, tile);
             }
             Command::Line(l) => {
                 let line = &scene.lines[l.line as usize];

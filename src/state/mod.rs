@@ -20,6 +20,7 @@ pub mod lighting;
 pub mod lists;
 pub mod matrices;
 pub mod per_fragment;
+mod pixel_queue;
 pub mod pixel_rect;
 pub mod queries;
 pub mod rasterization;

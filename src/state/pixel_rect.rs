@@ -191,7 +191,7 @@ fn centre_span(a: f64, b: f64) -> (i64, i64) {
 }
 
 /// How far below a whole pixel a raster position may be and still start a bitmap there.
-const BITMAP_MARGIN: f64 = 1e-4;
+pub(super) const BITMAP_MARGIN: f64 = 1e-4;
 
 impl Context {
     // ------------------------------------------------------------------ raster position
@@ -476,9 +476,14 @@ impl Context {
     /// Constant attribute planes of a pixel-rectangle fragment: `color` and the raster
     /// position's secondary colour, texture coordinates and distance.
     fn raster_planes(&self, ds: &TileDraw, color: [f32; 4], planes: &mut Vec<Plane>) {
-        let r = &self.raster_pos;
         planes.clear();
         planes.resize(ds.attr_count, Plane::constant(0.0));
+        self.raster_planes_into(ds, color, planes);
+    }
+
+    /// [`Context::raster_planes`] into `planes` (`ds.attr_count` long, other entries kept).
+    pub(super) fn raster_planes_into(&self, ds: &TileDraw, color: [f32; 4], planes: &mut [Plane]) {
+        let r = &self.raster_pos;
         for k in 0..4.min(ds.attr_count) {
             planes[attr::COLOR0 + k] = Plane::constant(color[k].clamp(0.0, 1.0) as f64);
         }
@@ -670,6 +675,14 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         };
+        if let (DrawPixelsFormat::Color(cf), Some(ty)) = (f, color_ty) {
+            if self.color_pixels_queueable() {
+                if !self.queue_color_pixels(data, [w, h], cf, ty) {
+                    self.record_error(GL_INVALID_VALUE);
+                }
+                return;
+            }
+        }
         let Some(values) = self.unpack_pixel_values(data, w, h, f, index_ty, color_ty) else {
             self.record_error(GL_INVALID_VALUE);
             return;
@@ -920,56 +933,75 @@ impl Context {
         if !self.raster_pos.valid {
             return;
         }
+        // Section 3.7: the bitmap starts at floor(x_r - x_o). A raster position given as a
+        // whole pixel comes out of the single-precision transform a few ulps off it, and
+        // below it the floor would move the bitmap a whole pixel: a margin of 1e-4 keeps it
+        // (llvmpipe places bitmaps with the same margin).
         let elsewhere = self.pixel_op_feedback(convert::FeedbackToken::Bitmap);
         let (w, h) = (width as usize, height as usize);
         if !elsewhere && w > 0 && h > 0 {
             let u = self.unpack;
-            let skip = u.skip_pixels.max(0) as usize;
             let Some(rows) = texpix::index_rows(&u, w, h, 1, 1).filter(|r| bitmap.len() >= r.end)
             else {
                 self.record_error(GL_INVALID_VALUE);
                 return;
             };
-            self.flush_scene();
-            let ds = self.snapshot();
-            let bounds = self.scissored_window();
-            // Section 3.7: the bitmap starts at floor(x_r - x_o). A raster position given as
-            // a whole pixel comes out of the single-precision transform a few ulps off it,
-            // and below it the floor would move the bitmap a whole pixel: a margin of 1e-4
-            // keeps it (llvmpipe places bitmaps with the same margin).
-            let [xr, yr, zr] = self.raster_pos.window;
+            let [xr, yr, _] = self.raster_pos.window;
             let x0 = (xr + BITMAP_MARGIN - xorig as f64).floor() as i64;
             let y0 = (yr + BITMAP_MARGIN - yorig as f64).floor() as i64;
-            let mut planes = Vec::new();
-            self.raster_planes(&ds.tile, self.raster_pos.color, &mut planes);
-            // The origin may be far outside the window (saturated from a huge float).
-            for j in 0..h {
-                let y = y0.saturating_add(j as i64);
-                if y < bounds.y0 as i64 || y >= bounds.y1 as i64 {
-                    continue;
-                }
-                let row = rows.first_row + j * rows.stride;
-                for i in 0..w {
-                    let x = x0.saturating_add(i as i64);
-                    if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {
-                        continue;
-                    }
-                    let set = texpix::read_index(
-                        bitmap,
-                        row,
-                        skip + i,
-                        PixelIndexType::Bitmap,
-                        false,
-                        u.lsb_first,
-                    ) != 0;
-                    if set {
-                        self.shade_pixel_now(&ds.tile, x as i32, y as i32, zr, &planes);
-                    }
-                }
+            if self.pixel_rects_queued() {
+                self.queue_bitmap([x0, y0], [w, h], bitmap, &rows);
+            } else {
+                self.bitmap_now([x0, y0], [w, h], bitmap, &rows);
             }
         }
         self.raster_pos.window[0] += xmove as f64;
         self.raster_pos.window[1] += ymove as f64;
+    }
+
+    /// The set bits of a bitmap whose lower left pixel is `origin` (section 3.7: the raster
+    /// position less the bitmap's origin, floored), shaded now, one fragment at a time (the
+    /// per-pixel route, see [`Context::pixel_rects_queued`]).
+    fn bitmap_now(
+        &mut self,
+        [x0, y0]: [i64; 2],
+        [w, h]: [usize; 2],
+        bitmap: &[GLubyte],
+        rows: &texpix::IndexRows,
+    ) {
+        let u = self.unpack;
+        let skip = u.skip_pixels.max(0) as usize;
+        self.flush_scene();
+        let ds = self.snapshot();
+        let bounds = self.scissored_window();
+        let zr = self.raster_pos.window[2];
+        let mut planes = Vec::new();
+        self.raster_planes(&ds.tile, self.raster_pos.color, &mut planes);
+        // The origin may be far outside the window (saturated from a huge float).
+        for j in 0..h {
+            let y = y0.saturating_add(j as i64);
+            if y < bounds.y0 as i64 || y >= bounds.y1 as i64 {
+                continue;
+            }
+            let row = rows.first_row + j * rows.stride;
+            for i in 0..w {
+                let x = x0.saturating_add(i as i64);
+                if x < bounds.x0 as i64 || x >= bounds.x1 as i64 {
+                    continue;
+                }
+                let set = texpix::read_index(
+                    bitmap,
+                    row,
+                    skip + i,
+                    PixelIndexType::Bitmap,
+                    false,
+                    u.lsb_first,
+                ) != 0;
+                if set {
+                    self.shade_pixel_now(&ds.tile, x as i32, y as i32, zr, &planes);
+                }
+            }
+        }
     }
 }
 

@@ -262,6 +262,56 @@ impl TexImage {
         })
     }
 
+    /// A whole image made of rows of client bytes that already are its texels (what
+    /// [`TexImage::new`] then [`TexImage::store_byte_rows`] of the whole image store), without
+    /// zeroing the texels first. `Ok(None)` where `store_byte_rows` would refuse (not 8-bit
+    /// storage, a group that is not one texel, compressed or stencil formats, `data` shorter
+    /// than `layout.end`).
+    pub fn from_byte_rows(
+        dims: u8,
+        size: [i32; 3],
+        border: i32,
+        format: InternalFormat,
+        data: &[u8],
+        layout: &super::pixels::Layout,
+    ) -> Result<Option<TexImage>, OutOfMemory> {
+        let c = format.base.components();
+        let d = size.map(|s| s.max(0) as usize);
+        if format.storage() != Storage::U8
+            || format.compressed.is_some()
+            || format.stencil
+            || layout.group != c
+            || data.len() < layout.end
+        {
+            return Ok(None);
+        }
+        let row = d[0].checked_mul(c).ok_or(OutOfMemory)?;
+        let n = row
+            .checked_mul(d[1])
+            .and_then(|n| n.checked_mul(d[2]))
+            .filter(|&n| n <= MAX_IMAGE_BYTES)
+            .ok_or(OutOfMemory)?;
+        let mut t = Vec::new();
+        t.try_reserve_exact(n).map_err(|_| OutOfMemory)?;
+        for z in 0..d[2] {
+            for y in 0..d[1] {
+                let src = layout.start + z * layout.image_stride + y * layout.row_stride;
+                t.extend_from_slice(&data[src..src + row]);
+            }
+        }
+        Ok(Some(TexImage {
+            width: size[0],
+            height: size[1],
+            depth: size[2],
+            border,
+            dims,
+            format,
+            texels: Arc::new(Texels::U8(t)),
+            blocks: None,
+            stencil: None,
+        }))
+    }
+
     /// The stencil index at stored coordinates (0 outside the image or without stencil).
     pub fn stencil_at(&self, x: i32, y: i32, z: i32) -> u8 {
         if x < 0 || y < 0 || z < 0 || x >= self.width || y >= self.height || z >= self.depth {

@@ -408,6 +408,59 @@ pub fn unpack_group(
     rgba.map(super::image::clamp01)
 }
 
+/// Unpacks `out.len()` consecutive groups from `at` (each `group` bytes apart): what
+/// [`unpack_group`] gives for each, with the format and type looked up once per row.
+/// Unsigned bytes (the common `glDrawPixels` data) take a loop of their own; other types
+/// go group by group through `unpack_group`.
+pub fn unpack_row(
+    data: &[u8],
+    at: usize,
+    group: usize,
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    swap: bool,
+    out: &mut [[f32; 4]],
+) {
+    let bytes = data
+        .get(at..)
+        .and_then(|d| d.get(..out.len().checked_mul(group)?));
+    match (ty, bytes) {
+        (TexPixelType::UnsignedByte, Some(bytes))
+            if format == TexPixelFormat::Rgba && group == 4 =>
+        {
+            // Each byte to its own slot: four divisions side by side.
+            for (o, g) in out.iter_mut().zip(bytes.chunks_exact(4)) {
+                let g = [g[0], g[1], g[2], g[3]];
+                *o = g.map(|b| b as f32 / 255.0);
+            }
+        }
+        (TexPixelType::UnsignedByte, Some(bytes)) if group == format.components() => {
+            let slots = format.slots();
+            let luminance = matches!(
+                format,
+                TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
+            );
+            // Every value `c / 255` of a byte is in [0, 1]: `clamp01` keeps it.
+            for (o, g) in out.iter_mut().zip(bytes.chunks_exact(group)) {
+                let mut rgba = [0.0f32, 0.0, 0.0, 1.0];
+                for (&slot, &b) in slots.iter().zip(g) {
+                    rgba[slot] = b as f32 / 255.0;
+                }
+                if luminance {
+                    rgba[1] = rgba[0];
+                    rgba[2] = rgba[0];
+                }
+                *o = rgba;
+            }
+        }
+        _ => {
+            for (x, o) in out.iter_mut().enumerate() {
+                *o = unpack_group(data, at + x * group, format, ty, swap);
+            }
+        }
+    }
+}
+
 /// Calls `f(x, y, z, rgba)` for every pixel of the image described by `layout` (the caller
 /// has checked that `data` holds `layout.end` bytes).
 pub fn unpack_image(
@@ -419,16 +472,13 @@ pub fn unpack_image(
     swap: bool,
     mut f: impl FnMut(usize, usize, usize, [f32; 4]),
 ) {
+    let mut row_values = vec![[0f32; 4]; size[0]];
     for z in 0..size[2] {
         for y in 0..size[1] {
             let row = layout.start + z * layout.image_stride + y * layout.row_stride;
-            for x in 0..size[0] {
-                f(
-                    x,
-                    y,
-                    z,
-                    unpack_group(data, row + x * layout.group, format, ty, swap),
-                );
+            unpack_row(data, row, layout.group, format, ty, swap, &mut row_values);
+            for (x, &v) in row_values.iter().enumerate() {
+                f(x, y, z, v);
             }
         }
     }
@@ -532,6 +582,69 @@ mod tests {
         );
         // (2 * -128 + 1) / 255 = -1 -> clamped 0; (2 * 127 + 1) / 255 = 1.
         assert_eq!(c, [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    /// `unpack_row` (with its unsigned-byte loop) gives what `unpack_group` gives for each
+    /// group: every format, every type, with and without byte swapping, from an offset, over
+    /// random bytes; and the same for a row that runs past the data (groups read as zero).
+    #[test]
+    fn unpack_row_is_unpack_group_of_each_group() {
+        use crate::common::values::PackedType;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let data: Vec<u8> = (0..4096)
+            .map(|_| {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                seed as u8
+            })
+            .collect();
+        let formats = [
+            TexPixelFormat::Red,
+            TexPixelFormat::Green,
+            TexPixelFormat::Blue,
+            TexPixelFormat::Alpha,
+            TexPixelFormat::Luminance,
+            TexPixelFormat::LuminanceAlpha,
+            TexPixelFormat::Rgb,
+            TexPixelFormat::Rgba,
+            TexPixelFormat::Bgr,
+            TexPixelFormat::Bgra,
+        ];
+        let types = [
+            TexPixelType::UnsignedByte,
+            TexPixelType::Byte,
+            TexPixelType::UnsignedShort,
+            TexPixelType::Short,
+            TexPixelType::UnsignedInt,
+            TexPixelType::Int,
+            TexPixelType::Float,
+            TexPixelType::Packed(PackedType::UByte332),
+            TexPixelType::Packed(PackedType::UShort565),
+            TexPixelType::Packed(PackedType::UInt8888Rev),
+        ];
+        let mut checked = 0;
+        for f in formats {
+            for t in types {
+                let group = t.group_size(f);
+                for swap in [false, true] {
+                    for (at, n) in [(0, 37), (5, 100), (data.len() - 3 * group, 6)] {
+                        let mut row = vec![[9f32; 4]; n];
+                        unpack_row(&data, at, group, f, t, swap, &mut row);
+                        for (x, v) in row.iter().enumerate() {
+                            let want = unpack_group(&data, at + x * group, f, t, swap);
+                            assert_eq!(
+                                v.map(f32::to_bits),
+                                want.map(f32::to_bits),
+                                "{f:?} {t:?} swap {swap} at {at} x {x}"
+                            );
+                            checked += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 10_000);
     }
 
     #[test]

@@ -76,6 +76,23 @@ impl Context {
         if pixels.is_some_and(|data| data.len() < len) {
             return Err(GL_INVALID_VALUE);
         }
+        if let (Some(data), false, UploadSource::Groups(pf, pt)) = (pixels, target.is_proxy(), src)
+        {
+            // Bytes that are the texels: the image is made from the rows, not zeroed first
+            // and then overwritten.
+            let transfer = !self.pixel_transfer.is_identity();
+            if bytes_are_texels(transfer, pf, pt, ifmt) {
+                let layout =
+                    pixels::layout(&self.unpack, dims, usize3, pf, pt).ok_or(GL_INVALID_VALUE)?;
+                let made =
+                    TexImage::from_byte_rows(dims as u8, stored, border, ifmt, data, &layout)
+                        .map_err(|_| GL_OUT_OF_MEMORY)?;
+                if let Some(img) = made {
+                    self.install_image(target, level, img);
+                    return Ok(());
+                }
+            }
+        }
         let mut img = TexImage::new(dims as u8, stored, border, ifmt, target.is_proxy())
             .map_err(|_| GL_OUT_OF_MEMORY)?;
         if let (Some(data), false, UploadSource::ColorIndex(ty)) = (pixels, target.is_proxy(), src)
