@@ -14,7 +14,7 @@ super::state_case_list!(source = include_str!("fbo_blit.rs"), agree = |a: &Answe
             .all(|(x, y)| (x - y).abs() <= a.tolerance)
 };
     fbo_blit_bindings_and_errors: "The read and draw bindings (GL_FRAMEBUFFER_EXT binds both), their queries, attachments and statuses through GL_READ_FRAMEBUFFER_EXT and GL_DRAW_FRAMEBUFFER_EXT, glReadPixels and GL_READ_BUFFER following the read binding, and the errors of glBlitFramebufferEXT: a bad mask bit (GL_INVALID_VALUE), a bad filter (GL_INVALID_ENUM), GL_LINEAR with depth or stencil and depth formats that differ (GL_INVALID_OPERATION), an incomplete read or draw framebuffer (GL_INVALID_FRAMEBUFFER_OPERATION_EXT); a buffer one side lacks is ignored. Every answer equals Mesa's.",
-    fbo_blit_color: "Colour blits from the window into a renderbuffer and back: 1:1, magnified 2x, mirrored in x and y, scissored (the scissor box applies to the destination only), then glCopyPixels, glCopyTexSubImage2D and glReadPixels from the read framebuffer while another is drawn. GL_NEAREST answers equal Mesa's; GL_LINEAR magnified and minified blits within one unit of 8 bits.",
+    fbo_blit_color: "Colour blits from the window into a renderbuffer and back: 1:1, magnified 2x, mirrored in x and y, scissored (the scissor box applies to the destination only), then glCopyPixels, glCopyTexImage2D, glCopyTexSubImage2D and glReadPixels from the read framebuffer while another is drawn, and a blit compiled into a display list. GL_NEAREST answers equal Mesa's; GL_LINEAR magnified and minified blits within one unit of 8 bits.",
     fbo_blit_depth_stencil: "Depth and stencil blits (GL_NEAREST) between the window's 24/8-bit buffers and a GL_DEPTH24_STENCIL8_EXT renderbuffer, each mask alone and both, 1:1 and mirrored, and a colour-only blit leaving depth and stencil alone. Every answer equals Mesa's.",
 );
 
@@ -324,6 +324,27 @@ fn fbo_blit_color(gl: &mut dyn Gl, out: &mut Answers) {
         texels.iter().map(|&v| v as f64).collect(),
     );
     gl.delete_textures(1, &t);
+    // A blit compiled into a display list runs when the list is called.
+    gl.bind_framebuffer_ext(GL_DRAW_FRAMEBUFFER_EXT, 0);
+    let list = gl.gen_lists(1);
+    gl.new_list(list, GL_COMPILE);
+    gl.blit_framebuffer_ext(0, 0, 4, 4, 60, 60, 64, 64, c, GL_NEAREST);
+    gl.end_list();
+    gl.bind_framebuffer_ext(GL_READ_FRAMEBUFFER_EXT, 0);
+    read_rgba(
+        gl,
+        out,
+        "of the window after compiling a blit",
+        60,
+        60,
+        4,
+        4,
+    );
+    gl.bind_framebuffer_ext(GL_READ_FRAMEBUFFER_EXT, fb);
+    gl.call_list(list);
+    gl.bind_framebuffer_ext(GL_READ_FRAMEBUFFER_EXT, 0);
+    read_rgba(gl, out, "of the window after calling it", 60, 60, 4, 4);
+    gl.delete_lists(list, 1);
     gl.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
     gl.delete_framebuffers_ext(1, &[fb]);
     err(gl, out, "the end");
