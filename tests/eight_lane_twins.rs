@@ -1,7 +1,7 @@
 //! Twin tests of the eight-lane paths that took over from the per-fragment general path:
-//! the stencil test and its actions ahead of the eight-fragment tail, and cube maps on the
-//! eight-pixel samplers. Each state is drawn on the general path (forced) and on the chosen
-//! path, and the colour, depth and stencil buffers must be identical; each draw must also
+//! the stencil test and its actions ahead of the eight-fragment tail, cube maps on the
+//! eight-pixel samplers, and antialiased lines' edge pixels in the untextured tail. Each state
+//! is drawn on the general path (forced) and on the chosen path, and the colour, depth and stencil buffers must be identical; each draw must also
 //! change the picture (or the stencil), so that a state that drew nothing cannot pass.
 
 mod common;
@@ -495,6 +495,196 @@ fn facing_textured_quads_match_the_general_path() {
         ("no fog, GREATER depth", |gl, rng| {
             gl.depth_func(GL_GREATER);
             facing_quads(gl, rng);
+        }),
+    ];
+    twins(&states);
+}
+
+/// 150 antialiased segments of width `width`, each with one colour (random alpha) and both
+/// ends at one eye depth, so that every fragment of a segment has the same values and the
+/// pixels next to each other in a row, edge pixels included, are shaded as one run with a
+/// coverage per pixel (`span_untextured8_covered`); every fifth segment has ends at
+/// different depths (the per-fragment route).
+fn smooth_lines(gl: &mut Context, rng: &mut Rng, width: f32) {
+    gl.enable(GL_LINE_SMOOTH);
+    gl.line_width(width);
+    gl.begin(GL_LINES);
+    for k in 0..150 {
+        gl.color_4f(
+            rng.range(0.2, 1.0),
+            rng.range(0.2, 1.0),
+            rng.range(0.2, 1.0),
+            rng.range(0.1, 1.0),
+        );
+        let z = rng.range(-8.0, -1.2);
+        let z1 = if k % 5 == 4 { z + 0.7 } else { z };
+        let (x, y) = (rng.range(-1.2, 1.2) * -z, rng.range(-1.2, 1.2) * -z);
+        let (len, ang) = (rng.range(0.05, 1.0) * -z, rng.range(0.0, 6.3));
+        gl.vertex_3f(x, y, z);
+        gl.vertex_3f(x + len * ang.cos(), y + len * ang.sin(), z1);
+    }
+    gl.end();
+}
+
+/// Flat sprites under an orthographic projection (the `sprites` workload's kind): each quad
+/// has one depth, one colour and a constant 1/w, so every fragment of its triangles has the
+/// same inputs and the one-unit textured span takes them once per primitive
+/// (`SpanRun::constant_group`). Quads of 1 to 40 pixels at fractional positions, so that
+/// spans start and end at every column relative to the restart columns and tile edges;
+/// trilinear RGBA texture with the alpha test and blending, depth tested with writes off
+/// and on; with fog (EXP, constant along a flat quad) and with colours that vary per vertex or
+/// depths that vary per quad (which keep the per-span steady or stepped routes), in one draw.
+fn sprites(gl: &mut Context, rng: &mut Rng, varied: bool) {
+    random_texture(gl, rng, GL_RGBA, 32, 32);
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.enable(GL_TEXTURE_2D);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(0.0, SIZE as f64, 0.0, SIZE as f64, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.begin(GL_QUADS);
+    for k in 0..400 {
+        let (x, y) = (rng.range(-8.0, SIZE as f32), rng.range(-8.0, SIZE as f32));
+        let half = rng.range(0.5, 20.0);
+        let z = rng.range(-0.9, 0.9);
+        gl.color_4f(
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.2, 1.0),
+        );
+        for (i, (dx, dy)) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .into_iter()
+            .enumerate()
+        {
+            if varied && k % 3 == 0 {
+                gl.color_4f(rng.range(0.3, 1.0), 0.5, rng.range(0.3, 1.0), 0.8);
+            }
+            let dz = if varied && k % 3 == 1 {
+                0.1 * i as f32
+            } else {
+                0.0
+            };
+            gl.tex_coord_2f((dx + 1.0) / 2.0, (dy + 1.0) / 2.0);
+            gl.vertex_3f(x + dx * half, y + dy * half, z + dz);
+        }
+    }
+    gl.end();
+}
+
+/// Antialiased lines whose fragments have the same values: their runs of edge pixels go
+/// eight at a time through the untextured tail with the coverage multiplied into each lane's
+/// alpha, against each pixel alone on the general path; with blending (over, additive, a
+/// constant colour), the alpha test (where coverage decides), fog, the stencil test, depth
+/// tests with and without writes, a colour mask, stippling and widths from 1 to 7.5.
+#[test]
+fn antialiased_lines_on_eight_lane_paths_match_the_general_path() {
+    let states: [Setup; 7] = [
+        ("over, LESS with depth writes, width 2.5", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            smooth_lines(gl, rng, 2.5);
+        }),
+        ("no blending, alpha test GREATER 0.3, width 4", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.3);
+            smooth_lines(gl, rng, 4.0);
+        }),
+        (
+            "additive, EXP2 fog, colour mask, depth writes off",
+            |gl, rng| {
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE);
+                gl.enable(GL_FOG);
+                gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+                gl.fogf(GL_FOG_DENSITY, 0.2);
+                gl.fogfv(GL_FOG_COLOR, &[0.1, 0.6, 0.9, 1.0]);
+                gl.color_mask(1, 1, 0, 1);
+                gl.depth_mask(0);
+                smooth_lines(gl, rng, 2.5);
+            },
+        ),
+        ("over, stencil EQUAL with INCR, width 1", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_STENCIL_TEST);
+            gl.stencil_func(GL_EQUAL, 0x11, 0xFF);
+            gl.stencil_op(GL_DECR, GL_INVERT, GL_INCR);
+            smooth_lines(gl, rng, 1.0);
+        }),
+        (
+            "constant-alpha blending, no depth test, width 7.5",
+            |gl, rng| {
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_BLEND);
+                gl.blend_color(0.2, 0.4, 0.6, 0.3);
+                gl.blend_func(GL_SRC_ALPHA_SATURATE, GL_ONE_MINUS_CONSTANT_ALPHA);
+                smooth_lines(gl, rng, 7.5);
+            },
+        ),
+        ("over, stippled, GREATER depth", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.enable(GL_LINE_STIPPLE);
+            gl.line_stipple(2, 0x39CF);
+            gl.depth_func(GL_GREATER);
+            smooth_lines(gl, rng, 3.0);
+        }),
+        (
+            "linear fog, alpha test with blending, width 1.5",
+            |gl, rng| {
+                gl.enable(GL_FOG);
+                gl.fogi(GL_FOG_MODE, GL_LINEAR as i32);
+                gl.fogf(GL_FOG_START, 1.0);
+                gl.fogf(GL_FOG_END, 9.0);
+                gl.enable(GL_ALPHA_TEST);
+                gl.alpha_func(GL_LESS, 0.6);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                smooth_lines(gl, rng, 1.5);
+            },
+        ),
+    ];
+    twins(&states);
+}
+
+#[test]
+fn flat_sprites_match_the_general_path() {
+    let states: [Setup; 4] = [
+        ("sprites: alpha test, over, depth writes off", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.35);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.depth_mask(0);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: depth writes on, LEQUAL", |gl, rng| {
+            gl.depth_func(GL_LEQUAL);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GEQUAL, 0.5);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: EXP fog, blended", |gl, rng| {
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.7);
+            gl.fogfv(GL_FOG_COLOR, &[0.9, 0.2, 0.4, 1.0]);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            sprites(gl, rng, false);
+        }),
+        ("sprites: varied colours and depths", |gl, rng| {
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.2);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            sprites(gl, rng, true);
         }),
     ];
     twins(&states);

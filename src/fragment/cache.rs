@@ -5,8 +5,8 @@ use super::key::{FastTexture, FragmentKey};
 use super::span::{
     blend_mode, depth_mode, depth_stencil_applies, pair_sampled8, pair_textured, sampled8_applies,
     span_depth_stencil, span_fogged, span_general, span_nothing, span_sampled, span_sampled8,
-    span_specialised, span_textured, span_untextured8, tail8_applies, tex_mode,
-    untextured8_applies, PairFn, SpanFn,
+    span_specialised, span_textured, span_untextured8, span_untextured8_covered, tail8_applies,
+    tex_mode, untextured8_applies, CoveredFn, PairFn, SpanFn,
 };
 use crate::common::values::CompareFunc;
 
@@ -76,6 +76,16 @@ pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
         }
         None => None,
     }
+}
+
+/// The row function with a coverage per pixel for `key`, when it has one: untextured keys
+/// whose fragments finish eight at a time (`force_general`: none, so each pixel goes to the
+/// general path alone).
+pub fn select_covered(key: &FragmentKey, force_general: bool) -> Option<CoveredFn> {
+    if force_general || key.writes_nothing() || !untextured8_applies(key) {
+        return None;
+    }
+    Some(span_untextured8_covered)
 }
 
 /// The fogged span for a key that is simple but for fog.

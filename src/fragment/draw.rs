@@ -2,7 +2,7 @@
 
 use super::fog::FogDraw;
 use super::key::{FragmentKey, Uniforms};
-use super::span::{PairFn, SpanFn};
+use super::span::{CoveredFn, PairFn, SpanFn};
 use super::texenv::TexEnv;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{BoundTexture, LodSelect};
@@ -36,4 +36,7 @@ pub struct FragmentDraw {
     pub span: SpanFn,
     /// The function that shades the rows of a triangle together, for keys that have one.
     pub span_pair: Option<PairFn>,
+    /// The function that shades a row of pixels with a coverage each (antialiased lines),
+    /// for keys that have one; otherwise each such pixel is a span of its own.
+    pub span_covered: Option<CoveredFn>,
 }

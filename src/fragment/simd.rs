@@ -134,8 +134,9 @@ pub struct Sampling8<'a> {
     /// The two divisors of the plane values (see [`coords8`](crate::texture::simd::coords8)), constant over the span.
     pub w: f64,
     pub q: f64,
-    /// The first level and, with a weight, the second.
-    pub levels: [Level8<'a>; 2],
+    /// The first level and, with a weight, the second (the primitive's, read in place: a
+    /// copy per span of a small sprite cost more than its groups' set-up).
+    pub levels: &'a [Level8<'a>; 2],
     pub linear: bool,
     pub weight: Option<f32>,
 }
@@ -217,7 +218,9 @@ mod x86 {
     use super::{After8, Sampling8, Tail8};
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
     use crate::fragment::fog::EXP2_TAYLOR;
-    use crate::texture::simd::x86::{block_coords8, coords8, filter8, filter8_regs, lane_mask};
+    use crate::texture::simd::x86::{
+        block_coords8, coords8, filter8, filter8_mix, filter8_regs, lane_mask,
+    };
     use crate::texture::simd::{Level8, Texels8};
 
     /// [`super::fog_factors8`].
@@ -510,11 +513,10 @@ mod x86 {
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
-        let mut ct = filter8(&sm.levels[0], sm.linear, &s, &t)?;
-        if let Some(w) = sm.weight {
-            let t2 = filter8(&sm.levels[1], sm.linear, &s, &t)?;
-            ct = crate::texture::simd::lerp8(&ct, &t2, w);
-        }
+        let ct = match sm.weight {
+            None => filter8(&sm.levels[0], sm.linear, &s, &t)?,
+            Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
+        };
         Some(shade8(tail, primary, &ct, dst, pass, after))
     }
 

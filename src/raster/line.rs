@@ -428,6 +428,12 @@ impl LineSetup {
         let (e0, e1) = ends.split_at(n);
         let (c0, c1) = (self.first.max(major.0), self.last.min(major.1));
         let ascending = self.a1 >= self.a0;
+        // A uniform segment's values, the same at every fragment (see `uniform_values`).
+        let z_uniform = if self.uniform {
+            self.uniform_values(ends, &mut a[..n])
+        } else {
+            0.0
+        };
         match &self.kind {
             LineKind::Aliased {
                 p0,
@@ -447,11 +453,11 @@ impl LineSetup {
                     // has the same columns as its width-1 line, as llvmpipe draws them); which
                     // rows: the moved segment's.
                     let m = self.b0 + (centre.clamp(self.lo, self.hi) - self.a0) * self.db_da;
-                    let minor_px = m.floor();
+                    let minor_px = floor(m);
                     if (minor_px as i64) > minor.1 || (minor_px as i64) + width <= minor.0 {
                         continue;
                     }
-                    let unshifted = (m + shift).floor();
+                    let unshifted = floor(m + shift);
                     let diamond = if self.x_major {
                         [c + 0.5, unshifted + 0.5]
                     } else {
@@ -467,15 +473,17 @@ impl LineSetup {
                     } else {
                         self.a0 - c
                     };
-                    let counter = self
-                        .start_counter
-                        .wrapping_add(exit.max(0.0).floor() as u32);
+                    let counter = self.start_counter.wrapping_add(floor(exit.max(0.0)) as u32);
                     if !stipple_passes(self.stipple, counter) {
                         continue;
                     }
-                    let t = ((centre - self.a0) / (self.a1 - self.a0)).clamp(0.0, 1.0);
-                    let z = self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset;
-                    self.attrs_at([e0, e1], t, &mut a[..n]);
+                    let z = if self.uniform {
+                        z_uniform
+                    } else {
+                        let t = ((centre - self.a0) / (self.a1 - self.a0)).clamp(0.0, 1.0);
+                        self.attrs_at([e0, e1], t, &mut a[..n]);
+                        self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset
+                    };
                     let (px, py) = if self.x_major {
                         (ci, minor_px as i64)
                     } else {
@@ -513,8 +521,8 @@ impl LineSetup {
                         }
                     }
                     let m = self.b0 + (centre.clamp(self.lo, self.hi) - self.a0) * self.db_da;
-                    let r0 = ((m - reach).floor() as i64).max(minor_rect.0).max(minor.0);
-                    let r1 = ((m + reach).floor() as i64).min(minor_rect.1).min(minor.1);
+                    let r0 = (floor(m - reach) as i64).max(minor_rect.0).max(minor.0);
+                    let r1 = (floor(m + reach) as i64).min(minor_rect.1).min(minor.1);
                     for row in r0..=r1 {
                         let (px, py) = if self.x_major { (c, row) } else { (row, c) };
                         let Some((cov, t)) = quad.fragment(px as f64 + 0.5, py as f64 + 0.5) else {
@@ -524,8 +532,12 @@ impl LineSetup {
                         // own), so they vary over the lengthened rectangle: then the depth of
                         // a smooth outline drawn before a polygon over the same edge decides
                         // the same pixels as Mesa's (xss-stonerview).
-                        self.attrs_at([e0, e1], t, &mut a[..n]);
-                        let z = self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset;
+                        let z = if self.uniform {
+                            z_uniform
+                        } else {
+                            self.attrs_at([e0, e1], t, &mut a[..n]);
+                            self.z[0] + t * (self.z[1] - self.z[0]) + self.z_offset
+                        };
                         f([px, py, px + 1, py + 1], z, &a[..n], cov as f32);
                     }
                 }
@@ -542,6 +554,18 @@ impl LineSetup {
         } else {
             (ys, xs)
         }
+    }
+
+    /// For a `uniform` segment: the depth and (into `out`, `n` of them) the attributes of
+    /// every fragment, computed once at `t = 0`. Its fragments' `t` lie in [0, 1], and where
+    /// the ends are equal the interpolation adds `t` times a difference that is +0 (or NaN
+    /// from infinite products, at every `t` alike), so each fragment's values are these,
+    /// bit for bit.
+    pub fn uniform_values(&self, ends: &[f32], out: &mut [f32]) -> f64 {
+        let n = self.n as usize;
+        let (e0, e1) = ends.split_at(n);
+        self.attrs_at([e0, e1], 0.0, out);
+        self.z[0] + 0.0 * (self.z[1] - self.z[0]) + self.z_offset
     }
 
     /// Attributes at parameter `t` of the segment, perspective-correct.
@@ -631,6 +655,24 @@ impl SmoothLineQuad {
     }
 }
 
+/// `v.floor()`, without the libm call the baseline x86-64 target makes of it (it has no
+/// rounding instruction before SSE4.1): the same value for every `v`, the sign of zero and
+/// NaN included (from 2^52 on every f64 is whole). The per-column and per-pixel floors of
+/// `LineSetup::fragments` were a tenth of a `lines` frame as calls.
+#[inline(always)]
+fn floor(v: f64) -> f64 {
+    if v.abs() < (1u64 << 52) as f64 {
+        let t = v as i64 as f64;
+        if t > v {
+            t - 1.0
+        } else {
+            t.copysign(v)
+        }
+    } else {
+        v
+    }
+}
+
 /// The tiny move of section 3.4.1's perturbed end points, across the major axis: far below
 /// the smallest distance (2^-29 pixel) at which a segment between sub-pixel positions of a
 /// 2^13-pixel window can pass a diamond without touching it, far above the rounding error
@@ -666,6 +708,47 @@ fn exits_diamond(p0: [f64; 2], p1: [f64; 2], end: [f64; 2], c: [f64; 2]) -> bool
 #[cfg(test)]
 mod tests {
     use super::SmoothLineQuad;
+
+    #[test]
+    fn floor_is_the_f64_floor() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut values = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            0.999_999_999_999_999_9,
+            -1e-300,
+            1e-300,
+            4503599627370495.5,
+            -4503599627370495.5,
+            4503599627370496.0,
+            -4503599627370497.0,
+            9.3e18,
+            -9.3e18,
+            1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MIN_POSITIVE,
+        ];
+        for _ in 0..100_000 {
+            let r = crate::test_support::xorshift(&mut seed);
+            // Random bit patterns (every magnitude) and values around whole numbers.
+            values.push(f64::from_bits(r));
+            let whole = (r >> 40) as i64 as f64 - 8_000_000.0;
+            values.push(whole + [0.0, 1e-9, -1e-9, 0.5, -0.5][(r % 5) as usize]);
+        }
+        for v in values {
+            if v.is_nan() {
+                assert!(super::floor(v).is_nan());
+            } else {
+                assert_eq!(super::floor(v).to_bits(), v.floor().to_bits(), "{v:e}");
+            }
+        }
+    }
 
     /// A quad from (10.25, 20.5) to (40.75, 31.5), width 4, with 1/w `q0` and `q1`.
     fn quad(q0: f64, q1: f64) -> SmoothLineQuad {

@@ -6,6 +6,7 @@ pub mod coarse;
 pub mod controls;
 pub mod draw;
 pub mod line;
+mod line_tile;
 pub mod point;
 pub mod prefetch;
 pub mod scene;

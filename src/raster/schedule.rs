@@ -9,11 +9,11 @@ use std::sync::{Arc, Mutex};
 use rayon::prelude::*;
 
 use super::coarse::CoarseDepth;
+use super::line_tile::LineShading;
 use super::prefetch;
 use super::scene::{ClearCommand, Command, Scene};
 use super::setup::Plane;
 use super::tri::{raster_triangle, AttrScratch};
-use crate::common::attr::MAX_ATTRS;
 use crate::common::rect::Rect;
 use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::{ColorBuffer, Tile};
@@ -266,6 +266,8 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
     // A triangle's attribute planes spread over the full layout.
     let mut attrs = AttrScratch::default();
     let mut coarse = CoarseDepth::default();
+    // The coverages of antialiased lines' pending runs (`LineShading`), made on first use.
+    let mut coverage = Vec::new();
     // The first entries, which the loop's look-ahead never reaches.
     for k in 0..PREFETCH_COMMAND_AHEAD {
         prefetch_command(scene, bin, k);
@@ -321,130 +323,30 @@ fn shade_tile(scene: &Scene, bin: &[u32], tile: &mut Tile) {
                 );
             }
             Command::Line(l) => {
-                let ds = &scene.states[l.state as usize];
                 let line = &scene.lines[l.line as usize];
+                let ds = &scene.states[l.state as usize];
                 let (at, n) = (line.attrs as usize, line.n as usize);
                 let ends = &scene.line_attrs[at..at + 2 * n];
-                let (major, minor) = line.tile_ranges(tile.x0, tile.y0, tile.side());
-                let mut planes = [Plane::constant(0.0); MAX_ATTRS];
-                let count = ds.attr_count.min(n);
-                let d = &ds.draw_rect;
-                let clip = |r: [i64; 4]| Rect {
-                    x0: r[0].max(d.x0 as i64) as i32,
-                    y0: r[1].max(d.y0 as i64) as i32,
-                    x1: r[2].min(d.x1 as i64) as i32,
-                    y1: r[3].min(d.y1 as i64) as i32,
+                let mut shading = LineShading {
+                    ds,
+                    levels: &levels,
+                    coarse: &mut coarse,
+                    coverage: &mut coverage,
                 };
-                let rows = tile.side() as usize;
-                if line.uniform && rows <= MAX_SIDE {
-                    // Every fragment has the same values: the fully covered pixels of each
-                    // row next to each other are one span (the same values per pixel as one
-                    // span per fragment; a segment's fragments never share a pixel).
-                    let mut runs = [(0i32, 0i32); MAX_SIDE];
-                    let mut z_uniform = 0.0;
-                    line.fragments(ends, major, minor, line.major_clip(ds), |r, z, a, cov| {
-                        let rect = clip(r).intersect(&tile.rect());
-                        if rect.is_empty() {
-                            return;
-                        }
-                        z_uniform = z;
-                        for (p, &v) in planes[..count].iter_mut().zip(a) {
-                            *p = Plane::constant(v as f64);
-                        }
-                        if cov != 1.0 {
-                            // An antialiased edge pixel: its own coverage.
-                            let p = &planes[..count];
-                            shade_rect(ds, tile, &levels, &mut coarse, rect, z, p, cov);
-                            return;
-                        }
-                        for y in rect.y0..rect.y1 {
-                            let run = &mut runs[(y - tile.y0) as usize];
-                            if run.0 < run.1 && run.1 == rect.x0 {
-                                run.1 = rect.x1;
-                                continue;
-                            }
-                            if run.0 < run.1 {
-                                let r = Rect {
-                                    x0: run.0,
-                                    y0: y,
-                                    x1: run.1,
-                                    y1: y + 1,
-                                };
-                                shade_rect(
-                                    ds,
-                                    tile,
-                                    &levels,
-                                    &mut coarse,
-                                    r,
-                                    z,
-                                    &planes[..count],
-                                    1.0,
-                                );
-                            }
-                            *run = (rect.x0, rect.x1);
-                        }
-                    });
-                    for (k, run) in runs[..rows].iter().enumerate() {
-                        if run.0 < run.1 {
-                            let y = tile.y0 + k as i32;
-                            let r = Rect {
-                                x0: run.0,
-                                y0: y,
-                                x1: run.1,
-                                y1: y + 1,
-                            };
-                            shade_rect(
-                                ds,
-                                tile,
-                                &levels,
-                                &mut coarse,
-                                r,
-                                z_uniform,
-                                &planes[..count],
-                                1.0,
-                            );
-                        }
-                    }
-                    continue;
-                }
-                line.fragments(
-                    ends,
-                    major,
-                    minor,
-                    line.major_clip(ds),
-                    |r, z, a, coverage| {
-                        let rect = clip(r);
-                        if rect.is_empty() {
-                            return;
-                        }
-                        for (p, &v) in planes[..count].iter_mut().zip(a) {
-                            *p = Plane::constant(v as f64);
-                        }
-                        shade_rect(
-                            ds,
-                            tile,
-                            &levels,
-                            &mut coarse,
-                            rect,
-                            z,
-                            &planes[..count],
-                            coverage,
-                        );
-                    },
-                );
+                shading.line(line, ends, tile);
             }
         }
     }
 }
 
 /// The largest tile side (`framebuffer::TILE_SIZES`).
-const MAX_SIDE: usize = 128;
+pub(super) const MAX_SIDE: usize = 128;
 
 /// Shades the pixels of `rect` (inside the draw rectangle) in `tile` with constant
 /// attributes: a point, a column of a line, or one pixel of an antialiased point or line.
 #[allow(clippy::too_many_arguments)]
 #[inline]
-fn shade_rect(
+pub(super) fn shade_rect(
     ds: &super::draw::TileDraw,
     tile: &mut Tile,
     levels: &UnitLevels,

@@ -11,7 +11,7 @@ use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::rect::Rect;
 use crate::common::values::{Face, PolygonMode, ProvokingVertex, ShadeModel, Winding};
 use crate::common::values::{TexEnvMode, TexGenMode};
-use crate::fragment::cache::{select_pair, select_span};
+use crate::fragment::cache::{select_covered, select_pair, select_span};
 pub use crate::fragment::fog::{fog_exp, FogDraw, EXP2_TAYLOR};
 use crate::fragment::key::{FastTexture, FragmentKey, Uniforms};
 use crate::texture::format::BaseFormat;
@@ -229,6 +229,7 @@ impl Context {
                     uniforms,
                     span: select_span(&key, self.force_general_path),
                     span_pair: select_pair(&key, self.force_general_path),
+                    span_covered: select_covered(&key, self.force_general_path),
                 },
             }),
             viewport_rect,

@@ -6,11 +6,13 @@
 //! - [`pixels`]: unpacking client images and packing for `glGetTexImage`.
 //! - [`mipmap`]: `GL_GENERATE_MIPMAP`'s box filter.
 //! - [`s3tc`]: DXT1/3/5 decoding and encoding.
+//! - [`fixed`]: the fixed-point filtering tier (8-bit weights, as llvmpipe).
 //! - [`sample`]: the sampler ([`BoundTexture`]): wrap, filters, λ, cube maps, 3D, depth
 //!   comparison, anisotropy.
 //!
 //! The entry points live in `state/textures.rs`.
 
+pub mod fixed;
 pub mod format;
 pub mod image;
 pub mod mipmap;

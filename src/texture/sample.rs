@@ -15,6 +15,7 @@
 
 use std::sync::Arc;
 
+use super::fixed;
 use super::format::{BaseFormat, InternalFormat};
 use super::image::{TexImage, Texels};
 use super::object::{SamplerParams, MAX_TEXTURE_LOD_BIAS};
@@ -279,7 +280,7 @@ impl LodSelect {
 /// `floor(x)` as an integer and the fraction `x - floor(x)` in [0, 1): saturating, NaN as
 /// (0, 0). Avoids the libm call `f64::floor` becomes without SSE4.1.
 #[inline(always)]
-fn floor_frac(x: f64) -> (i64, f32) {
+pub(super) fn floor_frac(x: f64) -> (i64, f32) {
     if x.is_nan() {
         return (0, 0.0);
     }
@@ -362,7 +363,7 @@ pub fn cube_face_derivatives(
 }
 
 #[inline]
-fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
+pub(super) fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
     [
         a[0] + (b[0] - a[0]) * w,
         a[1] + (b[1] - a[1]) * w,
@@ -746,7 +747,26 @@ impl BoundTexture {
         if levels.is_empty() {
             return [0.0, 0.0, 0.0, 1.0];
         }
-        let raw = match self.plan_for(lambda, levels.len() - 1) {
+        let plan = self.plan_for(lambda, levels.len() - 1);
+        if let Some(dims) = self.fixed_tier(&levels[0]) {
+            let wrap = self.inner.params.wrap;
+            let bytes = match plan {
+                LevelPlan::One { level, linear } => {
+                    fixed::filter_image(&levels[level], dims, wrap, linear, coords)
+                }
+                LevelPlan::Two {
+                    levels: [d1, d2],
+                    linear,
+                    weight,
+                } => fixed::lerp4(
+                    fixed::filter_image(&levels[d1], dims, wrap, linear, coords),
+                    fixed::filter_image(&levels[d2], dims, wrap, linear, coords),
+                    fixed::level_weight(weight),
+                ),
+            };
+            return self.finish(fixed::to_f32(bytes));
+        }
+        let raw = match plan {
             LevelPlan::One { level, linear } => self.filter(&levels[level], linear, coords),
             LevelPlan::Two {
                 levels: [d1, d2],
@@ -1058,7 +1078,8 @@ impl BoundTexture {
 
     /// NEAREST or LINEAR filtering of a fast level at (s, t), `C` components per texel (3 or
     /// 4, the base format's): the arithmetic of the general filter for a 2D image without
-    /// border, and the texture source colour it finishes into.
+    /// border (the fixed-point tier, [`fixed`], when both axes wrap by `REPEAT` or
+    /// `CLAMP_TO_EDGE`), and the texture source colour it finishes into.
     #[inline(always)]
     pub fn filter_fast<const C: usize>(
         &self,
@@ -1067,6 +1088,10 @@ impl BoundTexture {
         coords: [f32; 2],
     ) -> [f32; 4] {
         let wrap = self.inner.params.wrap;
+        if fixed::simple_wrap(wrap[0]) && fixed::simple_wrap(wrap[1]) {
+            let bytes = fixed::filter_fast::<C>(lvl, [wrap[0], wrap[1]], linear, coords);
+            return fixed::to_f32(bytes);
+        }
         let size = [lvl.width, lvl.height];
         if !linear {
             let i = [0, 1].map(|d| {

@@ -1,9 +1,12 @@
 //! The fast 2D path's filter for eight pixels at once with AVX2 (x86-64, detected at run
-//! time): RGBA8 texels, `REPEAT` on power-of-two sizes or `CLAMP_TO_EDGE`. Every lane does
-//! the arithmetic of [`BoundTexture::filter_fast`](super::sample::BoundTexture::filter_fast)
-//! in the same order and precision (f64 scaling and floor, f32 weights and lerps, no fused
-//! multiply-add), so the results are identical; `tests/raster.rs`
-//! `textured_fast_paths_match_the_general_path` checks it.
+//! time): one-byte texels, `REPEAT` on power-of-two sizes or `CLAMP_TO_EDGE`. Every lane does
+//! the arithmetic of the general sampler
+//! ([`BoundTexture::sample_grad`](super::sample::BoundTexture::sample_grad) and
+//! [`BoundTexture::filter_fast`](super::sample::BoundTexture::filter_fast)), so the results
+//! are identical: NEAREST by the f64 floor, LINEAR and the mix of two levels in the 8-bit fixed
+//! point of [`fixed`](super::fixed) (16-bit lanes: `pmulhrsw` of the weight and the difference
+//! shifted left by 7 is exactly `(w (b - a) + 128) >> 8`). `tests/eight_lane_twins.rs` and
+//! `tests/raster.rs` check it.
 
 use super::format::BaseFormat;
 use super::sample::{FastLevel, LevelPlan, LodSelect};
@@ -178,16 +181,27 @@ pub fn block_texels8(
     None
 }
 
-/// `t1 + (t2 - t1) * w` per channel, as the sampler mixes two levels.
-#[inline(always)]
-pub fn lerp8(t1: &Texels8, t2: &Texels8, w: f32) -> Texels8 {
-    let mut out = [[0f32; 8]; 4];
-    for c in 0..4 {
-        for i in 0..8 {
-            out[c][i] = t1[c][i] + (t2[c][i] - t1[c][i]) * w;
+/// Two levels of one texture filtered at eight (s, t) pairs and mixed per lane with the
+/// second's weight `weight[j]` (quantised by
+/// [`fixed::level_weight`](super::fixed::level_weight)), as the sampler mixes them; `None` as
+/// for [`filter8`].
+#[inline]
+pub fn filter8_mix(
+    levels: [&Level8; 2],
+    linear: bool,
+    s: &[f32; 8],
+    t: &[f32; 8],
+    weight: &[f32; 8],
+) -> Option<Texels8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe { x86::filter8_mix(levels, linear, s, t, weight) };
         }
     }
-    out
+    let _ = (levels, linear, s, t, weight);
+    None
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -240,17 +254,39 @@ pub(crate) mod x86 {
         }
     }
 
-    /// The stored components of the texels at (x, y) in order, each byte as
-    /// `byte as f32 * (1 / 255)` (the first `components` of the four).
+    /// The texel indices and weights of LINEAR filtering along an axis of `size` texels for
+    /// eight lanes, as [`fixed::linear_axis`](crate::texture::fixed::linear_axis) before
+    /// wrapping: `k = round_even(s * (size * 256)) - 128` in f32, the first index `k >> 8`,
+    /// the weight `k & 255`. `None` when |s * size * 256| reaches 2^30 (the caller filters
+    /// those pixels one by one).
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn stored8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
+    fn fixed8(s: __m256, size: i32) -> Option<(__m256i, __m256i)> {
+        let x = _mm256_mul_ps(s, _mm256_set1_ps((size as f32) * 256.0));
+        let limit = _mm256_set1_ps((1u32 << 30) as f32);
+        let abs = _mm256_andnot_ps(_mm256_set1_ps(-0.0), x);
+        if _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(abs, limit)) != 0 {
+            return None;
+        }
+        let r = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(x);
+        let k = _mm256_sub_epi32(_mm256_cvttps_epi32(r), _mm256_set1_epi32(128));
+        Some((
+            _mm256_srai_epi32::<8>(k),
+            _mm256_and_si256(k, _mm256_set1_epi32(255)),
+        ))
+    }
+
+    /// The stored components of the texels at (x, y), as in memory: byte k of each lane is
+    /// component k (the bytes past the texel's components are whatever follows it).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn words8(lvl: &Level8, x: __m256i, y: __m256i) -> __m256i {
         let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, _mm256_set1_epi32(lvl.size[0])), x);
         let base_ptr = match &lvl.tiny {
             Some(t) => t.as_ptr(),
             None => lvl.texels.as_ptr(),
         };
-        let texels = if lvl.components == 4 {
+        if lvl.components == 4 {
             // SAFETY: wrapping keeps 0 <= x < width and 0 <= y < height, so 0 <= idx < width *
             // height; `Level8::new` checked that `texels` holds width * height * 4 bytes, so
             // each 4-byte read at byte offset idx * 4 lies inside it. Gathers need no
@@ -273,31 +309,125 @@ pub(crate) mod x86 {
             // buffer read.
             let words = unsafe { _mm256_i32gather_epi32::<1>(base_ptr as *const i32, start) };
             _mm256_srlv_epi32(words, shift)
-        };
+        }
+    }
+
+    /// R, G, B, A of texels whose stored components are the bytes of `words` (as
+    /// [`words8`] reads them): each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch`
+    /// converts, expanded by the base format.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn texels_of_words(lvl: &Level8, words: __m256i) -> [__m256; 4] {
         let byte = _mm256_set1_epi32(0xFF);
         let k = _mm256_set1_ps(1.0 / 255.0);
         let ch = |v: __m256i| _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k);
         // The stored components in order (only the first `components` are read).
         let mut stored = [_mm256_setzero_ps(); 4];
-        stored[0] = ch(texels);
+        stored[0] = ch(words);
         if lvl.components > 1 {
-            stored[1] = ch(_mm256_srli_epi32::<8>(texels));
+            stored[1] = ch(_mm256_srli_epi32::<8>(words));
         }
         if lvl.components > 2 {
-            stored[2] = ch(_mm256_srli_epi32::<16>(texels));
+            stored[2] = ch(_mm256_srli_epi32::<16>(words));
         }
         if lvl.components > 3 {
-            stored[3] = ch(_mm256_srli_epi32::<24>(texels));
+            stored[3] = ch(_mm256_srli_epi32::<24>(words));
         }
-        stored
+        expand8(lvl.base, stored)
     }
 
-    /// The texels at (x, y) as four channel vectors (R, G, B, A after the base format's
-    /// expansion), each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch` converts.
+    /// Per-lane weights (0..=255 in 32-bit lanes) as 16-bit lanes matching
+    /// `_mm256_unpacklo_epi8` and `_mm256_unpackhi_epi8` of texel words: each weight four
+    /// times (one per component).
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn fetch8(lvl: &Level8, x: __m256i, y: __m256i) -> [__m256; 4] {
-        expand8(lvl.base, stored8(lvl, x, y))
+    fn weights16(w: __m256i) -> (__m256i, __m256i) {
+        let w2 = _mm256_or_si256(w, _mm256_slli_epi32::<16>(w));
+        (_mm256_unpacklo_epi32(w2, w2), _mm256_unpackhi_epi32(w2, w2))
+    }
+
+    /// `a + ((w (b - a) + 128) >> 8)` in 16-bit lanes holding bytes (`fixed::lerp`): the
+    /// difference times 128 fits 16 bits, and `pmulhrsw` gives `(w d 128 + 2^14) >> 15`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn lerp16(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+        let d = _mm256_slli_epi16::<7>(_mm256_sub_epi16(b, a));
+        _mm256_add_epi16(a, _mm256_mulhrs_epi16(w, d))
+    }
+
+    /// Texel words `a` and `b` mixed bytewise with per-lane weights `w` (`fixed::lerp4`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn lerp_words(a: __m256i, b: __m256i, w: __m256i) -> __m256i {
+        let z = _mm256_setzero_si256();
+        let (wl, wh) = weights16(w);
+        let lo = lerp16(_mm256_unpacklo_epi8(a, z), _mm256_unpacklo_epi8(b, z), wl);
+        let hi = lerp16(_mm256_unpackhi_epi8(a, z), _mm256_unpackhi_epi8(b, z), wh);
+        _mm256_packus_epi16(lo, hi)
+    }
+
+    /// The stored components of NEAREST or LINEAR filtering of `lvl` at `s`, `t`, as texel
+    /// words ([`words8`]); LINEAR in the fixed point of `texture::fixed`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn filter8_words(lvl: &Level8, linear: bool, s: __m256, t: __m256) -> Option<__m256i> {
+        let [w, h] = lvl.size;
+        let [mx, my] = lvl.repeat_mask;
+        if !linear {
+            let (x, _) = floor_frac8(s, w, 0.0)?;
+            let (y, _) = floor_frac8(t, h, 0.0)?;
+            return Some(words8(lvl, wrap8(x, w, mx), wrap8(y, h, my)));
+        }
+        let (x, wx) = fixed8(s, w)?;
+        let (y, wy) = fixed8(t, h)?;
+        let one = _mm256_set1_epi32(1);
+        let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
+        let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
+        let t00 = words8(lvl, x0, y0);
+        let t10 = words8(lvl, x1, y0);
+        let t01 = words8(lvl, x0, y1);
+        let t11 = words8(lvl, x1, y1);
+        let z = _mm256_setzero_si256();
+        let (wxl, wxh) = weights16(wx);
+        let (wyl, wyh) = weights16(wy);
+        // Pixels 0, 1 and 4, 5 (the low halves of the 128-bit lanes), then 2, 3 and 6, 7.
+        let lo = {
+            let row0 = lerp16(
+                _mm256_unpacklo_epi8(t00, z),
+                _mm256_unpacklo_epi8(t10, z),
+                wxl,
+            );
+            let row1 = lerp16(
+                _mm256_unpacklo_epi8(t01, z),
+                _mm256_unpacklo_epi8(t11, z),
+                wxl,
+            );
+            lerp16(row0, row1, wyl)
+        };
+        let hi = {
+            let row0 = lerp16(
+                _mm256_unpackhi_epi8(t00, z),
+                _mm256_unpackhi_epi8(t10, z),
+                wxh,
+            );
+            let row1 = lerp16(
+                _mm256_unpackhi_epi8(t01, z),
+                _mm256_unpackhi_epi8(t11, z),
+                wxh,
+            );
+            lerp16(row0, row1, wyh)
+        };
+        Some(_mm256_packus_epi16(lo, hi))
+    }
+
+    /// The eight lanes' level weights `weight` quantised
+    /// ([`fixed::level_weight`](crate::texture::fixed::level_weight)).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn level_weights8(weight: &[f32; 8]) -> __m256i {
+        let q = weight.map(|w| crate::texture::fixed::level_weight(w) as i32);
+        // SAFETY: eight i32; unaligned load.
+        unsafe { _mm256_loadu_si256(q.as_ptr() as *const __m256i) }
     }
 
     /// R, G, B, A from a texel's stored components by its base format. (Filtering the stored
@@ -315,12 +445,6 @@ pub(crate) mod x86 {
             BaseFormat::Alpha => [zero, zero, zero, c[0]],
             _ => [c[0], c[0], c[0], one],
         }
-    }
-
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn lerp(a: __m256, b: __m256, w: __m256) -> __m256 {
-        _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), w))
     }
 
     /// s/q and t/q at the four pixel centres `xv` of the row of `p` (its s, t and q planes
@@ -403,27 +527,25 @@ pub(crate) mod x86 {
         (s, t, ax, ay)
     }
 
-    /// The texels of one level plan at `s`, `t`, two levels mixed with `weight` per lane.
+    /// The texels of one level plan at `s`, `t`, two levels mixed with the quantised weight
+    /// `weight` (0..=255) per lane.
     #[inline]
     #[target_feature(enable = "avx2")]
     fn filter_plan8(
         levels: &[Option<Level8>],
         (first, second, linear): (usize, usize, bool),
-        weight: __m256,
+        weight: __m256i,
         s: __m256,
         t: __m256,
     ) -> Option<[__m256; 4]> {
         let level = |l: usize| levels.get(l)?.as_ref();
-        let t1 = filter8_regs(level(first)?, linear, s, t)?;
+        let l1 = level(first)?;
+        let t1 = filter8_words(l1, linear, s, t)?;
         if second == first {
-            return Some(t1);
+            return Some(texels_of_words(l1, t1));
         }
-        let t2 = filter8_regs(level(second)?, linear, s, t)?;
-        let mut mixed = t1;
-        for c in 0..4 {
-            mixed[c] = _mm256_add_ps(t1[c], _mm256_mul_ps(_mm256_sub_ps(t2[c], t1[c]), weight));
-        }
-        Some(mixed)
+        let t2 = filter8_words(level(second)?, linear, s, t)?;
+        Some(texels_of_words(l1, lerp_words(t1, t2, weight)))
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -447,9 +569,10 @@ pub(crate) mod x86 {
         let zero = _mm256_setzero_ps();
         if let Some((level, linear)) = fixed_plan {
             let (s, t, _, _) = block_coords8(planes, x, live, None);
+            let none = _mm256_setzero_si256();
             store(
                 out,
-                filter_plan8(levels, (level, level, linear), zero, s, t)?,
+                filter_plan8(levels, (level, level, linear), none, s, t)?,
             );
             return Some(());
         }
@@ -464,25 +587,29 @@ pub(crate) mod x86 {
         // Per quad (lanes 0, 1, 4, 5 and 2, 3, 6, 7), when it has live lanes: its levels and
         // its weight between them.
         let plan = |q: usize| match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
-            LevelPlan::One { level, linear } => ((level, level, linear), 0.0),
+            LevelPlan::One { level, linear } => ((level, level, linear), 0),
             LevelPlan::Two {
                 levels: [a, b],
                 linear,
                 weight,
-            } => ((a, b, linear), weight),
+            } => (
+                (a, b, linear),
+                crate::texture::fixed::level_weight(weight) as i32,
+            ),
         };
         let quad_lanes = [0x33u8, 0xCC];
         let plans = [0, 1].map(|q| (live & quad_lanes[q] != 0).then(|| plan(q)));
         let tex = match plans {
             [Some((p0, w0)), Some((p1, w1))] if p0 == p1 => {
                 // One plan: filtered together, each quad with its own weight.
+                let first = _mm256_castps_si256(lane_mask(0x33));
                 let weight =
-                    _mm256_blendv_ps(_mm256_set1_ps(w1), _mm256_set1_ps(w0), lane_mask(0x33));
+                    _mm256_blendv_epi8(_mm256_set1_epi32(w1), _mm256_set1_epi32(w0), first);
                 filter_plan8(levels, p0, weight, s, t)?
             }
             [Some((p0, w0)), Some((p1, w1))] => {
-                let a = filter_plan8(levels, p0, _mm256_set1_ps(w0), s, t)?;
-                let b = filter_plan8(levels, p1, _mm256_set1_ps(w1), s, t)?;
+                let a = filter_plan8(levels, p0, _mm256_set1_epi32(w0), s, t)?;
+                let b = filter_plan8(levels, p1, _mm256_set1_epi32(w1), s, t)?;
                 let first = lane_mask(0x33);
                 let mut tex = a;
                 for c in 0..4 {
@@ -491,7 +618,7 @@ pub(crate) mod x86 {
                 tex
             }
             [Some((p, w)), None] | [None, Some((p, w))] => {
-                filter_plan8(levels, p, _mm256_set1_ps(w), s, t)?
+                filter_plan8(levels, p, _mm256_set1_epi32(w), s, t)?
             }
             [None, None] => [zero; 4],
         };
@@ -611,31 +738,29 @@ pub(crate) mod x86 {
         s: __m256,
         t: __m256,
     ) -> Option<[__m256; 4]> {
-        let [w, h] = lvl.size;
-        let [mx, my] = lvl.repeat_mask;
-        let out: [__m256; 4] = if !linear {
-            let (x, _) = floor_frac8(s, w, 0.0)?;
-            let (y, _) = floor_frac8(t, h, 0.0)?;
-            fetch8(lvl, wrap8(x, w, mx), wrap8(y, h, my))
-        } else {
-            let (x, wx) = floor_frac8(s, w, 0.5)?;
-            let (y, wy) = floor_frac8(t, h, 0.5)?;
-            let one = _mm256_set1_epi32(1);
-            let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
-            let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
-            let t00 = stored8(lvl, x0, y0);
-            let t10 = stored8(lvl, x1, y0);
-            let t01 = stored8(lvl, x0, y1);
-            let t11 = stored8(lvl, x1, y1);
-            // Only the stored components are filtered, then expanded.
-            let mut out = [_mm256_setzero_ps(); 4];
-            for c in 0..lvl.components as usize {
-                let row0 = lerp(t00[c], t10[c], wx);
-                let row1 = lerp(t01[c], t11[c], wx);
-                out[c] = lerp(row0, row1, wy);
-            }
-            expand8(lvl.base, out)
-        };
-        Some(out)
+        Some(texels_of_words(lvl, filter8_words(lvl, linear, s, t)?))
+    }
+
+    /// [`filter8_mix`](super::filter8_mix).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn filter8_mix(
+        levels: [&Level8; 2],
+        linear: bool,
+        s: &[f32; 8],
+        t: &[f32; 8],
+        weight: &[f32; 8],
+    ) -> Option<Texels8> {
+        // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
+        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        let t1 = filter8_words(levels[0], linear, s, t)?;
+        let t2 = filter8_words(levels[1], linear, s, t)?;
+        let out = texels_of_words(levels[0], lerp_words(t1, t2, level_weights8(weight)));
+        let mut res = [[0f32; 8]; 4];
+        for c in 0..4 {
+            // SAFETY: `res[c]` holds eight f32; unaligned store.
+            unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
+        }
+        Some(res)
     }
 }

@@ -10,7 +10,10 @@ pub(super) struct FastUnit<'a> {
     /// Index of the unit's s plane.
     pub(super) base: usize,
     pub(super) modulate: bool,
-    pub(super) affine: Option<AffineSpan<'a>>,
+    /// The primitive's shared level selection, for an affine span.
+    pub(super) affine: Option<&'a AffineSpan<'a>>,
+    /// `b * y` of the s and t planes on the span's row.
+    pub(super) by: [f64; 2],
 }
 
 /// A span whose 1/w and q planes are constant (as under an orthographic projection): the
@@ -22,8 +25,6 @@ pub struct AffineSpan<'a> {
     /// finite), the form [`texture_simd::coords8`] takes.
     pub(super) w: f64,
     pub(super) q: f64,
-    /// `b * y` of the s and t planes on the span's row.
-    pub(super) by: [f64; 2],
     pub(super) levels: [FastLevel<'a>; 2],
     pub(super) linear: bool,
     /// The second level's weight, when two levels are mixed.
@@ -51,11 +52,13 @@ impl<'a> FastUnit<'a> {
         yc: f64,
     ) -> FastUnit<'a> {
         let base = attr::TEX + 4 * u.unit;
+        let p = &it.attrs[base..base + 2];
         FastUnit {
             unit: u,
             base,
             modulate: u.env.mode == TexEnvMode::Modulate,
             affine: Self::affine(u, it, base, xc0, yc),
+            by: [p[0].b * yc, p[1].b * yc],
         }
     }
 
@@ -69,15 +72,15 @@ impl<'a> FastUnit<'a> {
         base: usize,
         xc0: f64,
         yc: f64,
-    ) -> Option<AffineSpan<'a>> {
+    ) -> Option<&'a AffineSpan<'a>> {
         let p = &it.attrs[base..base + 4];
         // (Tested before the shared selection is read: that copies a few hundred bytes, and
         // only affine primitives have one.)
         if it.inv_w.a != 0.0 || it.inv_w.b != 0.0 || p[3].a != 0.0 || p[3].b != 0.0 {
             return None;
         }
-        if let Some(mut a) = it.shared.fast.get() {
-            a.by = [p[0].b * yc, p[1].b * yc];
+        let shared: &'a PrimitiveShared<'a> = it.shared;
+        if let Some(a) = shared.fast.get() {
             return Some(a);
         }
         // The coordinates are the s and t planes divided by the q plane ([`coords_at`]).
@@ -116,35 +119,31 @@ impl<'a> FastUnit<'a> {
         let a = AffineSpan {
             w,
             q,
-            by: [p[0].b * yc, p[1].b * yc],
             levels,
             linear,
             weight,
             simd,
         };
-        it.shared.fast.set(Some(a));
-        Some(a)
+        Some(shared.fast.get_or_init(|| a))
     }
 
     /// The texel at pixel centre (x, y), as the general path samples it.
     #[inline(always)]
     pub(super) fn texel<const C: usize>(&self, it: &Interpolants, x: f64, y: f64) -> [f32; 4] {
         let tex = &self.unit.texture;
-        if let Some(a) = &self.affine {
+        if let Some(a) = self.affine {
             let (s, t) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
-            let vs = (s.a * x + a.by[0] + s.c) / a.w;
-            let vt = (t.a * x + a.by[1] + t.c) / a.w;
+            let vs = (s.a * x + self.by[0] + s.c) / a.w;
+            let vt = (t.a * x + self.by[1] + t.c) / a.w;
             if vs.is_finite() && vt.is_finite() {
                 let c = [
                     finite_or_zero((vs / a.q) as f32),
                     finite_or_zero((vt / a.q) as f32),
                 ];
-                let t1 = tex.filter_fast::<C>(&a.levels[0], a.linear, c);
                 return match a.weight {
-                    None => t1,
+                    None => tex.filter_fast::<C>(&a.levels[0], a.linear, c),
                     Some(w) => {
-                        let t2 = tex.filter_fast::<C>(&a.levels[1], a.linear, c);
-                        lerp4(t1, t2, w)
+                        tex.filter_fast_mix::<C>([&a.levels[0], &a.levels[1]], a.linear, c, w)
                     }
                 };
             }
@@ -162,11 +161,7 @@ impl<'a> FastUnit<'a> {
                 linear,
                 weight,
             } => match (tex.fast_level(levels[0]), tex.fast_level(levels[1])) {
-                (Some(l1), Some(l2)) => {
-                    let t1 = tex.filter_fast::<C>(&l1, linear, c2);
-                    let t2 = tex.filter_fast::<C>(&l2, linear, c2);
-                    lerp4(t1, t2, weight)
-                }
+                (Some(l1), Some(l2)) => tex.filter_fast_mix::<C>([&l1, &l2], linear, c2, weight),
                 _ => tex.sample_grad(c, dx, dy, self.unit.env.lod_bias),
             },
         }
@@ -183,17 +178,20 @@ impl<'a> FastUnit<'a> {
         count: usize,
         out: &mut [[f32; 4]; 8],
     ) {
-        if let Some(a) = &self.affine {
+        if let Some(a) = self.affine {
             if let Some(levels) = &a.simd {
                 let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
-                let planes = [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]];
+                let planes = [[ps.a, self.by[0], ps.c], [pt.a, self.by[1], pt.c]];
                 if let Some([s, t]) = texture_simd::coords8(planes, a.w, a.q, x, count) {
-                    let t1 = texture_simd::filter8(&levels[0], a.linear, &s, &t);
-                    let ct = match (t1, a.weight) {
-                        (Some(t1), None) => Some(t1),
-                        (Some(t1), Some(w)) => texture_simd::filter8(&levels[1], a.linear, &s, &t)
-                            .map(|t2| lerp8(&t1, &t2, w)),
-                        _ => None,
+                    let ct = match a.weight {
+                        None => texture_simd::filter8(&levels[0], a.linear, &s, &t),
+                        Some(w) => texture_simd::filter8_mix(
+                            [&levels[0], &levels[1]],
+                            a.linear,
+                            &s,
+                            &t,
+                            &[w; 8],
+                        ),
                     };
                     if let Some(ct) = ct {
                         for (j, o) in out.iter_mut().enumerate().take(count) {
@@ -212,11 +210,11 @@ impl<'a> FastUnit<'a> {
     /// The span's sampling for [`simd::textured8`], when it is affine and the eight-pixel
     /// filter applies.
     pub(super) fn sampling8(&self, it: &Interpolants) -> Option<Sampling8<'a>> {
-        let a = self.affine.as_ref()?;
-        let levels = a.simd?;
+        let a = self.affine?;
+        let levels = a.simd.as_ref()?;
         let (ps, pt) = (&it.attrs[self.base], &it.attrs[self.base + 1]);
         Some(Sampling8 {
-            planes: [[ps.a, a.by[0], ps.c], [pt.a, a.by[1], pt.c]],
+            planes: [[ps.a, self.by[0], ps.c], [pt.a, self.by[1], pt.c]],
             w: a.w,
             q: a.q,
             levels,

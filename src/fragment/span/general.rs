@@ -235,7 +235,6 @@ pub(super) fn shade_textured<
     // Primary colour, then the secondary colour when the colour sum needs it (the eight-lane
     // route steps it only then: `SpanRun::next`).
     let colors = if !SIMPLE && key.color_sum { 8 } else { 4 };
-    let mut run = SpanRun::new(it, x0, yc, colors).with_fog(ds);
     let fast = match TEX {
         tex_mode::FAST_RGB | tex_mode::FAST_RGBA => {
             ds.units.first().map(|u| FastUnit::new(u, it, xc0, yc))
@@ -254,7 +253,26 @@ pub(super) fn shade_textured<
                 None
             };
             if sampling.is_some() || perspective.is_some() {
-                let tail = tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB);
+                // The draw's tail, built once per tile and draw state when the levels were
+                // prepared (the same arguments: the key's first unit and layout).
+                let tail = match it.shared.levels.textured_tail {
+                    Some(t) => t,
+                    None => tail8(ds, f.modulate, false, TEX == tex_mode::FAST_RGB),
+                };
+                if let Some(sm) = &sampling {
+                    // A flat sprite: every fragment of the primitive has the same inputs,
+                    // prepared by its first span.
+                    let constant = it.shared.steady.get_or_init(|| {
+                        SpanRun::new(it, x0, yc, colors)
+                            .with_fog(ds)
+                            .constant_group(ds)
+                    });
+                    if let Some(c) = constant {
+                        constant_groups::<TEX>(ds, tile, y, x0, x1, it, f, sm, &tail, c);
+                        return;
+                    }
+                }
+                let mut run = SpanRun::new(it, x0, yc, colors).with_fog(ds);
                 // With zero steps for z, 1/w and the colour (a flat, facing primitive), every
                 // pixel has the first pixel's values where they are evaluated (the first pixel
                 // and the restart columns) and the second pixel's elsewhere (adding a zero
@@ -357,6 +375,7 @@ pub(super) fn shade_textured<
         }
     }
     let mut texel_buf = [[0f32; 4]; 8];
+    let mut run = SpanRun::new(it, x0, yc, colors).with_fog(ds);
     run.each_pixel(n, |i, run| {
         let idx = row + i;
         let w = run.w();
@@ -389,4 +408,54 @@ pub(super) fn shade_textured<
             ds, tile, it, idx, fog_coord, color, secondary, z_here,
         );
     });
+}
+
+/// The eight-lane route of [`shade_textured`] for an affine span of a primitive whose
+/// fragments all have the inputs of `c` (`SpanRun::constant_group`): per group only the
+/// stored colours and the depth test are read (the steady shortcut's groups, from the span's
+/// first pixel on: its evaluated inputs are the stepped ones' bits).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn constant_groups<const TEX: u8>(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants,
+    f: &FastUnit,
+    sm: &Sampling8,
+    tail: &Tail8,
+    c: &GroupInputs,
+) {
+    let row = tile.index(x0, y);
+    let yc = y as f64 + 0.5;
+    // Lanes from `hi` keep the last group's stored colours, which nothing reads.
+    let mut dst = [0u32; 8];
+    let mut gx = x0;
+    while gx < x1 {
+        let hi = ((x1 - gx) as usize).min(8);
+        let base = row + (gx - x0) as usize;
+        let mut pass = 0u8;
+        for j in 0..hi {
+            pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
+            dst[j] = u32::from_le_bytes(tile.color[base + j]);
+        }
+        if pass != 0 {
+            let x = gx as f64 + 0.5;
+            let shaded = simd::textured8(sm, x, hi, tail, &c.primary, &dst, pass, &c.after)
+                .or_else(|| {
+                    let tex = if TEX == tex_mode::FAST_RGB {
+                        f.texels_scalar::<3>(it, x, yc, hi)
+                    } else {
+                        f.texels_scalar::<4>(it, x, yc, hi)
+                    };
+                    simd::shade8(tail, &c.primary, &tex, &dst, pass, &c.after)
+                });
+            if let Some((words, passed)) = shaded {
+                store_group(ds, tile, base, 0..hi, &words, passed, &c.depth);
+            }
+        }
+        gx += 8;
+    }
 }

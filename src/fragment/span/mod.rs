@@ -18,7 +18,7 @@
 //! (twin tests in `tests/raster.rs` and `tests/state_combinations.rs`). Texture coordinates and
 //! their per-quad derivatives come from `unit_coords` (one fragment) or `Perspective8` (eight).
 
-use std::cell::Cell;
+use std::cell::OnceCell;
 
 use super::blend::{blend, blend_alpha_over};
 use super::key::{FragmentKey, StencilKey, Uniforms};
@@ -33,7 +33,7 @@ use crate::fragment::simd::{self, After8, Sampling8, Tail8};
 use crate::framebuffer::Tile;
 use crate::texture::format::BaseFormat;
 use crate::texture::sample::{FastLevel, LevelPlan, LodSelect};
-use crate::texture::simd::{self as texture_simd, lerp8, Level8, Texels8};
+use crate::texture::simd::{self as texture_simd, Level8, Texels8};
 
 use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 
@@ -76,8 +76,13 @@ pub struct Interpolants<'a> {
 pub struct PrimitiveShared<'a> {
     /// The fast textured path's level selection where the primitive's 1/w and q are constant
     /// (then λ is the same at every fragment with finite coordinates): prepared by the first
-    /// span that needs it and reused by the others.
-    pub fast: Cell<Option<AffineSpan<'a>>>,
+    /// span that needs it and read in place by the others (a copy per span cost more than
+    /// the span's set-up arithmetic for small sprites).
+    pub fast: OnceCell<AffineSpan<'a>>,
+    /// The eight-lane inputs every fragment of the primitive has, when its depth, 1/w,
+    /// colour and fog planes are constant (a flat sprite): prepared by the first span of the
+    /// eight-lane textured route, `None` when they are not (`SpanRun::constant_group`).
+    steady: OnceCell<Option<GroupInputs>>,
     /// The draw's texture levels prepared for the eight-pixel filter.
     pub levels: &'a UnitLevels<'a>,
 }
@@ -85,7 +90,8 @@ pub struct PrimitiveShared<'a> {
 impl<'a> PrimitiveShared<'a> {
     pub fn new(levels: &'a UnitLevels<'a>) -> PrimitiveShared<'a> {
         PrimitiveShared {
-            fast: Cell::new(None),
+            fast: OnceCell::new(),
+            steady: OnceCell::new(),
             levels,
         }
     }

@@ -384,6 +384,43 @@ pub fn span_untextured8<'a>(
     if it.coverage != 1.0 {
         return span_general(ds, tile, y, x0, x1, it);
     }
+    untextured8(ds, tile, y, x0, x1, it, None)
+}
+
+/// A row of pixels with a coverage each: pixel `x0 + i` of row `y` has coverage
+/// `coverage[i]`, and is shaded as the span function shades it alone with that coverage
+/// (antialiased lines, whose edge pixels next to each other differ only in coverage).
+pub type CoveredFn = for<'a> fn(&'a FragmentDraw, &mut Tile, i32, i32, &[f32], &Interpolants<'a>);
+
+/// [`span_untextured8`] with a coverage per pixel ([`CoveredFn`]): `finish_fragment`
+/// multiplies the clamped alpha by the coverage after fog, before the alpha test; the
+/// eight-lane tail takes the lanes' alphas as they are at that point (fog and the colour sum
+/// leave alpha alone), so each lane's alpha is multiplied here, as the general path
+/// multiplies it, and the tail does the rest. `it.coverage` is not read.
+pub fn span_untextured8_covered<'a>(
+    ds: &'a FragmentDraw,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    coverage: &[f32],
+    it: &Interpolants<'a>,
+) {
+    let x1 = x0 + coverage.len() as i32;
+    untextured8(ds, tile, y, x0, x1, it, Some(coverage))
+}
+
+/// [`span_untextured8`]'s eight-lane loop; with `coverage`, pixel `x0 + i`'s alpha is
+/// multiplied by `coverage[i]` as `finish_fragment` does it.
+#[inline(always)]
+fn untextured8<'a>(
+    ds: &'a FragmentDraw,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+    coverage: Option<&[f32]>,
+) {
     let row = tile.index(x0, y);
     let yc = y as f64 + 0.5;
     let mut run = SpanRun::new(it, x0, yc, lane_colors(ds)).with_fog(ds);
@@ -393,13 +430,20 @@ pub fn span_untextured8<'a>(
     let fogged = fog.is_some();
     let mut gx = x0;
     let mut group = GroupInputs::EMPTY;
+    // Pixels of groups the stencil test rejected whole, not yet stepped over: one skip for
+    // a run of them (as many steps as one skip per group), none at the end of the span.
+    let mut skipped = 0;
     while gx < x1 {
         let n = ((x1 - gx) as usize).min(8);
         let base = row + (gx - x0) as usize;
         if stencil_rejects_all(ds, tile, base, 0..n) {
-            run.skip(n);
+            skipped += n;
             gx += 8;
             continue;
+        }
+        if skipped != 0 {
+            run.skip(skipped);
+            skipped = 0;
         }
         group.refill(ds, tile, base, 0..n, |_| {
             if fogged {
@@ -408,8 +452,16 @@ pub fn span_untextured8<'a>(
                 run.next::<false>(depth_max)
             }
         });
+        if let Some(cov) = coverage {
+            let at = (gx - x0) as usize;
+            for (a, &c) in group.primary[3][..n].iter_mut().zip(&cov[at..at + n]) {
+                if c != 1.0 {
+                    *a = a.clamp(0.0, 1.0) * c;
+                }
+            }
+        }
         if ds.key.stencil.is_some() {
-            group.pass = stencil_lanes(ds, tile, lane_bits(0..n), group.pass, |j| base + j);
+            group.pass = stencil_row(ds, tile, base, n, group.pass);
         }
         group.fog_factors(fog);
         let g = &group;
@@ -454,9 +506,14 @@ pub fn span_depth_stencil<'a>(
         let live = lane_bits(0..n);
         let mut z = [0f64; 8];
         let mut stored = [0u32; 8];
-        for j in 0..n {
-            z[j] = run.next_z();
-            stored[j] = tile.depth[start + j];
+        for v in &mut z[..n] {
+            *v = run.next_z();
+        }
+        if n == 8 {
+            // A whole group: one fixed-size copy.
+            stored.copy_from_slice(&tile.depth[start..start + 8]);
+        } else {
+            stored[..n].copy_from_slice(&tile.depth[start..start + n]);
         }
         let (depth, depth_pass) = simd::depth8(&z, &stored, live, ds.depth_max, key.depth_func)
             .unwrap_or_else(|| {
@@ -468,14 +525,13 @@ pub fn span_depth_stencil<'a>(
                 }
                 (depth, pass)
             });
-        let base = start;
-        let pass = stencil_lanes(ds, tile, live, depth_pass, |j| base + j);
+        let pass = stencil_row(ds, tile, start, n, depth_pass);
         if key.count_samples {
             tile.samples_passed += u64::from(pass.count_ones());
         }
         if key.depth_write {
             for j in (0..n).filter(|j| pass & (1 << j) != 0) {
-                tile.depth[base + j] = depth[j];
+                tile.depth[start + j] = depth[j];
             }
         }
         start += n;

@@ -300,18 +300,11 @@ impl<'a> Perspective8<'a> {
             lanes &= !done;
             done |= lanes;
             let all = done == 0xFF && lanes == live;
-            let t1 = texture_simd::filter8(self.level(d1)?, linear, s, t)?;
             let texels = if d2 == d1 {
-                t1
+                texture_simd::filter8(self.level(d1)?, linear, s, t)?
             } else {
-                let t2 = texture_simd::filter8(self.level(d2)?, linear, s, t)?;
-                let mut mixed = [[0f32; 8]; 4];
-                for c in 0..4 {
-                    for j in 0..8 {
-                        mixed[c][j] = t1[c][j] + (t2[c][j] - t1[c][j]) * weight[j];
-                    }
-                }
-                mixed
+                let levels = [self.level(d1)?, self.level(d2)?];
+                texture_simd::filter8_mix(levels, linear, s, t, &weight)?
             };
             // One plan for every live lane (the usual case): no merging.
             if all {
@@ -471,18 +464,10 @@ impl Perspective8<'_> {
             left &= !lanes;
             let (face, d1, d2, linear) = first;
             let level = |l: usize| cube.faces.get(face)?.get(l)?.as_ref();
-            let t1 = texture_simd::filter8(level(d1)?, linear, &s, &t)?;
             let texels = if d2 == d1 {
-                t1
+                texture_simd::filter8(level(d1)?, linear, &s, &t)?
             } else {
-                let t2 = texture_simd::filter8(level(d2)?, linear, &s, &t)?;
-                let mut mixed = [[0f32; 8]; 4];
-                for c in 0..4 {
-                    for j in 0..8 {
-                        mixed[c][j] = t1[c][j] + (t2[c][j] - t1[c][j]) * weight[j];
-                    }
-                }
-                mixed
+                texture_simd::filter8_mix([level(d1)?, level(d2)?], linear, &s, &t, &weight)?
             };
             if lanes == live {
                 *out = texels;
@@ -498,14 +483,4 @@ impl Perspective8<'_> {
         }
         Some(())
     }
-}
-
-#[inline(always)]
-pub(super) fn lerp4(a: [f32; 4], b: [f32; 4], w: f32) -> [f32; 4] {
-    [
-        a[0] + (b[0] - a[0]) * w,
-        a[1] + (b[1] - a[1]) * w,
-        a[2] + (b[2] - a[2]) * w,
-        a[3] + (b[3] - a[3]) * w,
-    ]
 }

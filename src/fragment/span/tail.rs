@@ -169,6 +169,32 @@ impl<'i> SpanRun<'i> {
             && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
     }
 
+    /// Whether z, 1/w, the colours and the fog coordinate are the same over the whole
+    /// primitive (their planes are 0 x + 0 y + c, as on a flat sprite): then every pixel's
+    /// evaluated values are the same bits (pixel centres are positive, so the products by x
+    /// and y are zeros of fixed signs), and so are the stepped ones.
+    pub(super) fn is_constant(&self) -> bool {
+        let flat = |p: &Plane| p.a == 0.0 && p.b == 0.0;
+        let color = |c: usize| flat(&self.attrs[attr::color(c)]);
+        flat(self.z_plane)
+            && flat(self.inv_w_plane)
+            && (self.constant_primary || (0..self.count.min(4)).all(color))
+            && (4..self.count).all(color)
+            && (self.fog.is_none() || flat(&self.attrs[attr::FOG]))
+    }
+
+    /// For a run with [`Self::is_constant`] whose evaluated and stepped inputs are the same
+    /// bits: the group whose eight lanes all have them, fogged as the steady shortcut fogs
+    /// them ([`GroupInputs::uniform`]), which is then every group of every span of the
+    /// primitive (`PrimitiveShared::steady`). `None` otherwise.
+    pub(super) fn constant_group(&self, ds: &FragmentDraw) -> Option<GroupInputs> {
+        if !self.is_constant() {
+            return None;
+        }
+        let v = self.steady_values::<true>(Some(ds.depth_max));
+        same_bits(&v[0], &v[1]).then(|| GroupInputs::uniform(v[1], lane_fog(ds)))
+    }
+
     /// For a run with [`Self::is_steady`]: the inputs ([`Self::next`]) of the pixels where
     /// the run is evaluated (its first pixel and the restart columns), then of the others
     /// (the evaluation plus a step of zero, which changes at most the sign of a zero).
@@ -352,6 +378,7 @@ pub(super) fn lane_fog(ds: &FragmentDraw) -> Option<&FogDraw> {
 
 /// What the eight-fragment tail needs of a group besides the texels: the primary colours and
 /// depths of lanes `lo..hi`, which of them pass the depth test, and the stored colours.
+#[derive(Debug)]
 pub(super) struct GroupInputs {
     pub(super) primary: Texels8,
     pub(super) depth: [u32; 8],
@@ -516,9 +543,26 @@ pub(super) fn stencil_lanes(
     pass
 }
 
-/// The lanes whose stored stencil values `old` pass the stencil test (every lane tested).
+/// The lanes whose stored stencil values `old` pass the stencil test (every lane tested):
+/// SSE2 (every x86-64 has it) or lane by lane ([`stencil_test8_lanes`], the same integer
+/// comparisons).
 #[inline(always)]
 pub(super) fn stencil_test8(st: &StencilKey, u: &Uniforms, old: &[u8; 8]) -> u8 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: SSE2 is part of the x86-64 baseline.
+        unsafe { stencil_test8_sse2(st, u, old) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        stencil_test8_lanes(st, u, old)
+    }
+}
+
+/// [`stencil_test8`] lane by lane, as `finish_fragment` tests one fragment.
+#[cfg_attr(target_arch = "x86_64", allow(dead_code))]
+#[inline(always)]
+pub(super) fn stencil_test8_lanes(st: &StencilKey, u: &Uniforms, old: &[u8; 8]) -> u8 {
     let mask = u.stencil_value_mask;
     let reference = u.stencil_ref & mask;
     let mut bits = 0u8;
@@ -559,7 +603,7 @@ pub(super) fn stencil8_lanes(
     old: &[u8; 8],
     depth_pass: u8,
 ) -> ([u8; 8], u8) {
-    let test = stencil_test8(st, u, old);
+    let test = stencil_test8_lanes(st, u, old);
     let mut new = [0u8; 8];
     for j in 0..8 {
         let bit = 1u8 << j;
@@ -586,22 +630,7 @@ fn stencil8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8], depth_pass: u8) -
     let ones = splat(0xFF);
     // SAFETY: `old` holds eight bytes; an unaligned 64-bit load.
     let o = unsafe { _mm_loadl_epi64(old.as_ptr() as *const __m128i) };
-    let m = _mm_and_si128(o, splat(u.stencil_value_mask));
-    let r = splat(u.stencil_ref & u.stencil_value_mask);
-    let max = _mm_max_epu8(r, m);
-    // Per lane: reference OP masked value.
-    let (r_ge, m_ge) = (_mm_cmpeq_epi8(max, r), _mm_cmpeq_epi8(max, m));
-    let eq = _mm_cmpeq_epi8(r, m);
-    let test = match st.func {
-        CompareFunc::Never => _mm_setzero_si128(),
-        CompareFunc::Less => _mm_xor_si128(r_ge, ones),
-        CompareFunc::Equal => eq,
-        CompareFunc::LessEqual => m_ge,
-        CompareFunc::Greater => _mm_xor_si128(m_ge, ones),
-        CompareFunc::NotEqual => _mm_xor_si128(eq, ones),
-        CompareFunc::GreaterEqual => r_ge,
-        CompareFunc::Always => ones,
-    };
+    let test = stencil_test_sse2(st, u, o);
     let wm = splat(u.stencil_write_mask);
     let action = |op: StencilOp| {
         let one = splat(1);
@@ -630,6 +659,75 @@ fn stencil8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8], depth_pass: u8) -
     unsafe { _mm_storel_epi64(out.as_mut_ptr() as *mut __m128i, new) };
     let pass = _mm_movemask_epi8(_mm_and_si128(test, dp)) as u8;
     (out, pass)
+}
+
+/// The stencil test of the low eight bytes of `o` (stored values) as byte masks (0xFF where
+/// `reference OP value` holds, both masked): unsigned comparisons through `max_epu8`.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "sse2")]
+fn stencil_test_sse2(
+    st: &StencilKey,
+    u: &Uniforms,
+    o: std::arch::x86_64::__m128i,
+) -> std::arch::x86_64::__m128i {
+    use std::arch::x86_64::*;
+    let splat = |b: u8| _mm_set1_epi8(b as i8);
+    let ones = splat(0xFF);
+    let m = _mm_and_si128(o, splat(u.stencil_value_mask));
+    let r = splat(u.stencil_ref & u.stencil_value_mask);
+    let max = _mm_max_epu8(r, m);
+    // Per lane: reference OP masked value.
+    let (r_ge, m_ge) = (_mm_cmpeq_epi8(max, r), _mm_cmpeq_epi8(max, m));
+    let eq = _mm_cmpeq_epi8(r, m);
+    match st.func {
+        CompareFunc::Never => _mm_setzero_si128(),
+        CompareFunc::Less => _mm_xor_si128(r_ge, ones),
+        CompareFunc::Equal => eq,
+        CompareFunc::LessEqual => m_ge,
+        CompareFunc::Greater => _mm_xor_si128(m_ge, ones),
+        CompareFunc::NotEqual => _mm_xor_si128(eq, ones),
+        CompareFunc::GreaterEqual => r_ge,
+        CompareFunc::Always => ones,
+    }
+}
+
+/// [`stencil_test8`] on SSE2.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "sse2")]
+fn stencil_test8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8]) -> u8 {
+    use std::arch::x86_64::*;
+    // SAFETY: `old` holds eight bytes; an unaligned 64-bit load.
+    let o = unsafe { _mm_loadl_epi64(old.as_ptr() as *const __m128i) };
+    (_mm_movemask_epi8(stencil_test_sse2(st, u, o)) & 0xFF) as u8
+}
+
+/// [`stencil_lanes`] for the lanes `0..n` (at most 8) of a row, lane `j` being pixel
+/// `base + j` of `tile`: the stored values read and written as one slice.
+#[inline(always)]
+pub(super) fn stencil_row(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    base: usize,
+    n: usize,
+    depth_pass: u8,
+) -> u8 {
+    let Some(st) = ds.key.stencil else {
+        return depth_pass;
+    };
+    let mut old = [0u8; 8];
+    let values = &mut tile.stencil[base..base + n];
+    if let Ok(whole) = <&mut [u8; 8]>::try_from(&mut *values) {
+        // A whole group: one eight-byte load and store.
+        let (new, pass) = stencil8(&st, &ds.uniforms, whole, depth_pass);
+        *whole = new;
+        return pass;
+    }
+    old[..n].copy_from_slice(values);
+    let (new, pass) = stencil8(&st, &ds.uniforms, &old, depth_pass);
+    values.copy_from_slice(&new[..n]);
+    pass
 }
 
 /// For a stencil key, whether every lane of `lanes` (pixel `base + j`) fails the stencil
@@ -874,6 +972,11 @@ mod tests {
                             stencil8(&st, &u, &old, dp),
                             stencil8_lanes(&st, &u, &old, dp),
                             "{st:?} {u:?} {old:?} {dp:#x}"
+                        );
+                        assert_eq!(
+                            stencil_test8(&st, &u, &old),
+                            stencil_test8_lanes(&st, &u, &old),
+                            "{st:?} {u:?} {old:?}"
                         );
                         checked += 1;
                     }
