@@ -87,12 +87,13 @@ const EXTRA_ENUMS: [&str; 7] = [
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
 /// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
-const COMMAND_EXTENSIONS: [&str; 5] = [
+const COMMAND_EXTENSIONS: [&str; 6] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_vertex_array",
     "GL_EXT_provoking_vertex",
     "GL_EXT_framebuffer_object",
+    "GL_EXT_framebuffer_blit",
 ];
 
 const KEYWORDS: [&str; 12] = [

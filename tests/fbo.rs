@@ -330,3 +330,70 @@ fn framebuffer_and_renderbuffer_objects_are_shared_like_textures() {
     b.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
     assert_eq!(b.get_error(), GL_NO_ERROR);
 }
+
+#[test]
+fn linear_blit_is_the_bilinear_mix_clamped_to_the_edge() {
+    // EXT_framebuffer_blit: "LINEAR filtering ... as though CLAMP_TO_EDGE texture sampling
+    // were being performed"; the mix is section 3.8.8's (1 - a) t0 + a t1, and destination
+    // pixel i of a 4x magnification samples source point (i + 0.5) / 4. Colours chosen so
+    // that every mix is a whole number (no rounding question). The source is the last two
+    // pixels of the window's row: right of it is the buffer's edge; left of it, where the
+    // implementation may or may not clamp to the source rectangle, a pixel equal to the
+    // first one.
+    let mut gl = ctx();
+    gl.clear_color(0.0, 0.0, 0.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    let px = [0u8, 0, 0, 255, 160, 80, 40, 255];
+    gl.window_pos_2i(14, 0);
+    gl.draw_pixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, Some(&px));
+    gl.blit_framebuffer_ext(14, 0, 16, 1, 0, 4, 8, 5, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut out = [0u8; 8 * 4];
+    gl.read_pixels(0, 4, 8, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut out);
+    let mix = |a: f64| [(160.0 * a) as u8, (80.0 * a) as u8, (40.0 * a) as u8, 255];
+    // Sample points minus one half: -0.375, -0.125 (clamped: pixel 0), 0.125 ... 0.875,
+    // 1.125, 1.375 (clamped: pixel 1).
+    let expected: Vec<u8> = [0.0, 0.0, 0.125, 0.375, 0.625, 0.875, 1.0, 1.0]
+        .into_iter()
+        .flat_map(mix)
+        .collect();
+    assert_eq!(out.to_vec(), expected);
+}
+
+#[test]
+fn read_commands_follow_the_read_binding() {
+    // EXT_framebuffer_blit: "ReadPixels, CopyPixels, CopyTex{Sub}Image* ... read from the
+    // framebuffer bound to READ_FRAMEBUFFER_EXT"; drawing goes to DRAW_FRAMEBUFFER_EXT.
+    let mut gl = ctx();
+    gl.clear_color(0.0, 0.0, 1.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    let fb = bound_fbo(&mut gl);
+    let rb = renderbuffer(&mut gl, GL_RGBA8, 4, 4);
+    gl.framebuffer_renderbuffer_ext(
+        GL_FRAMEBUFFER_EXT,
+        GL_COLOR_ATTACHMENT0_EXT,
+        GL_RENDERBUFFER_EXT,
+        rb,
+    );
+    gl.clear_color(1.0, 0.0, 0.0, 1.0);
+    gl.clear(GL_COLOR_BUFFER_BIT);
+    gl.bind_framebuffer_ext(GL_DRAW_FRAMEBUFFER_EXT, 0);
+    let mut px = [0u8; 4];
+    gl.read_pixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert_eq!(px, [255, 0, 0, 255], "read from the object");
+    // glCopyPixels: from the object into the window.
+    gl.window_pos_2i(8, 8);
+    gl.copy_pixels(0, 0, 2, 2, GL_COLOR);
+    gl.bind_framebuffer_ext(GL_READ_FRAMEBUFFER_EXT, 0);
+    gl.read_pixels(9, 9, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert_eq!(px, [255, 0, 0, 255], "copied into the window");
+    gl.read_pixels(7, 7, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert_eq!(px, [0, 0, 255, 255], "the window around it");
+    assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut b = [0];
+    gl.get_integerv(GL_DRAW_FRAMEBUFFER_BINDING_EXT, &mut b);
+    assert_eq!(b[0], 0);
+    gl.bind_framebuffer_ext(GL_READ_FRAMEBUFFER_EXT, fb);
+    gl.get_integerv(GL_READ_FRAMEBUFFER_BINDING_EXT, &mut b);
+    assert_eq!(b[0], fb as i32);
+}

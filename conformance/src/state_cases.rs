@@ -22,6 +22,7 @@ pub mod attrib;
 pub mod basic;
 pub mod eval;
 pub mod fbo;
+pub mod fbo_blit;
 pub mod piglit;
 
 /// The framebuffer size every state case runs with.
@@ -81,6 +82,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: evaluators", eval::CASES),
     ("state cases: piglit scripts", piglit::CASES),
     ("state cases: framebuffer objects", fbo::CASES),
+    ("state cases: framebuffer blits", fbo_blit::CASES),
 ];
 
 /// Every state and error case.

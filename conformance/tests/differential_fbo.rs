@@ -10,3 +10,12 @@ fn fbo_state_cases_agree_with_mesa() {
         tilegl_conformance::state_cases::fbo::CASES,
     );
 }
+
+/// EXT_framebuffer_blit (the cases in `tilegl_conformance::state_cases::fbo_blit`).
+#[test]
+fn fbo_blit_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::fbo_blit",
+        tilegl_conformance::state_cases::fbo_blit::CASES,
+    );
+}

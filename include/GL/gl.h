@@ -830,6 +830,7 @@ GLAPI void GLAPIENTRY glBlendEquation(GLenum mode);
 GLAPI void GLAPIENTRY glBlendEquationSeparateEXT(GLenum modeRGB, GLenum modeAlpha);
 GLAPI void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor);
 GLAPI void GLAPIENTRY glBlendFuncSeparate(GLenum sfactorRGB, GLenum dfactorRGB, GLenum sfactorAlpha, GLenum dfactorAlpha);
+GLAPI void GLAPIENTRY glBlitFramebufferEXT(GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter);
 GLAPI void GLAPIENTRY glBufferData(GLenum target, GLsizeiptr size, const void *data, GLenum usage);
 GLAPI void GLAPIENTRY glBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, const void *data);
 GLAPI void GLAPIENTRY glCallList(GLuint list);

@@ -486,6 +486,8 @@ impl Gl for Context {
         renderbuffer_storage_ext,
         get_renderbuffer_parameteriv_ext,
         generate_mipmap_ext,
+        // EXT_framebuffer_blit
+        blit_framebuffer_ext,
         unlock_arrays_ext,
         vertex_pointer_ext,
         normal_pointer_ext,

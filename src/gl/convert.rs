@@ -421,6 +421,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_INDEX_WRITEMASK => IndexWritemask,
         GL_QUADS_FOLLOW_PROVOKING_VERTEX_CONVENTION_EXT => QuadsFollowProvokingVertex,
         GL_FRAMEBUFFER_BINDING_EXT => FramebufferBinding,
+        GL_READ_FRAMEBUFFER_BINDING_EXT => ReadFramebufferBinding,
         GL_RENDERBUFFER_BINDING_EXT => RenderbufferBinding,
         GL_MAX_COLOR_ATTACHMENTS_EXT => MaxColorAttachments,
         GL_MAX_RENDERBUFFER_SIZE_EXT => MaxRenderbufferSize,

@@ -59,6 +59,13 @@ impl Context {
         type_: GLenum,
         pixels: &mut [u8],
     ) {
+        if self.reads_elsewhere() {
+            // EXT_framebuffer_blit: pixels come from the read framebuffer.
+            let read = self.fbo.read_bound;
+            return self.with_framebuffer_bound(read, |c| {
+                c.read_pixels(x, y, width, height, format, type_, pixels)
+            });
+        }
         if !self.framebuffer_ready() {
             return;
         }

@@ -96,6 +96,12 @@ impl Context {
     }
 
     pub(crate) fn read_buffer(&mut self, mode: GLenum) {
+        if self.reads_elsewhere() {
+            // EXT_framebuffer_blit: the read buffer of the read framebuffer.
+            let read = self.fbo.read_bound;
+            self.with_framebuffer_bound(read, |c| c.read_buffer(mode));
+            return;
+        }
         if self.fbo_bound() {
             self.fbo_select_buffer(mode, false);
             return;
@@ -116,7 +122,7 @@ impl Context {
     /// Keeps the tiles' colour storage on the draw buffer, so that code writing tiles directly
     /// (not through the scene) writes the buffer drawn to (the back buffer for
     /// `GL_FRONT_AND_BACK` and `GL_NONE`).
-    fn make_draw_buffer_resident(&mut self) {
+    pub(crate) fn make_draw_buffer_resident(&mut self) {
         let b = drawn_buffer(&self.framebuffer);
         self.framebuffer.make_resident(b);
     }

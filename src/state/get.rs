@@ -214,7 +214,7 @@ impl Context {
             }
             Query::Doublebuffer => bool1(cfg.double_buffer),
             Query::DrawBuffer => Enum(self.buffers.draw),
-            Query::ReadBuffer => Enum(self.buffers.read),
+            Query::ReadBuffer => Enum(self.read_buffer_selected()),
             Query::Stereo | Query::IndexMode => bool1(false),
             Query::RgbaMode => bool1(true),
             Query::PointSize => Floats(vec![self.raster.point_size as f64]),
@@ -250,6 +250,7 @@ impl Context {
             Query::IndexWritemask => int1(ops.index_writemask as i32 as i64),
             Query::ProvokingVertex => Enum(self.raster.provoking_vertex.to_gl()),
             Query::FramebufferBinding => int1(self.fbo.bound as i64),
+            Query::ReadFramebufferBinding => int1(self.fbo.read_bound as i64),
             Query::RenderbufferBinding => int1(self.fbo.bound_renderbuffer as i64),
             Query::MaxColorAttachments => int1(super::fbo::MAX_COLOR_ATTACHMENTS as i64),
             Query::MaxRenderbufferSize => int1(super::fbo::MAX_RENDERBUFFER_SIZE as i64),

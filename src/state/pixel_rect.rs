@@ -712,7 +712,7 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let cfg = self.framebuffer.config;
+        let cfg = self.read_framebuffer_config();
         if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
             self.record_error(GL_INVALID_OPERATION);
             return;
@@ -831,7 +831,7 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let cfg = self.framebuffer.config;
+        let cfg = self.read_framebuffer_config();
         if cfg.depth_bits == 0 || cfg.stencil_bits == 0 {
             self.record_error(GL_INVALID_OPERATION);
             return;
@@ -854,6 +854,13 @@ impl Context {
         if !self.framebuffer_ready() {
             return;
         }
+        if self.reads_elsewhere() {
+            // EXT_framebuffer_blit: the source is the read framebuffer, also checked.
+            let read = self.fbo.read_bound;
+            if !self.with_framebuffer_bound(read, |c| c.framebuffer_ready()) {
+                return;
+            }
+        }
         if type_ == GL_DEPTH_STENCIL_EXT {
             self.copy_depth_stencil(x, y, width, height);
             return;
@@ -866,7 +873,7 @@ impl Context {
             self.record_error(GL_INVALID_VALUE);
             return;
         }
-        let cfg = self.framebuffer.config;
+        let cfg = self.read_framebuffer_config();
         if (ty == CopyPixelsType::Depth && cfg.depth_bits == 0)
             || (ty == CopyPixelsType::Stencil && cfg.stencil_bits == 0)
         {
@@ -879,13 +886,37 @@ impl Context {
         if !self.raster_pos.valid || width == 0 || height == 0 {
             return;
         }
+        let (w, h) = (width as usize, height as usize);
+        let read = self.fbo.read_bound;
+        let Some(values) =
+            self.with_framebuffer_bound(read, |c| c.copy_pixels_source(x, y, width, height, ty))
+        else {
+            self.record_error(GL_OUT_OF_MEMORY);
+            return;
+        };
+        self.draw_pixel_values(w, h, &values);
+    }
+
+    /// The config of the read framebuffer (which buffers it has).
+    pub(crate) fn read_framebuffer_config(&mut self) -> crate::framebuffer::FramebufferConfig {
+        let read = self.fbo.read_bound;
+        self.with_framebuffer_bound(read, |c| c.framebuffer.config)
+    }
+
+    /// The values `glCopyPixels` reads from the current framebuffer, after the pixel
+    /// transfer operations (`None` when they do not fit in memory).
+    fn copy_pixels_source(
+        &mut self,
+        x: GLint,
+        y: GLint,
+        width: GLsizei,
+        height: GLsizei,
+        ty: CopyPixelsType,
+    ) -> Option<Vec<PixelValue>> {
         self.flush_scene();
         let (w, h) = (width as usize, height as usize);
         let mut values = Vec::new();
-        if values.try_reserve(w.saturating_mul(h)).is_err() {
-            self.record_error(GL_OUT_OF_MEMORY);
-            return;
-        }
+        values.try_reserve(w.saturating_mul(h)).ok()?;
         let fb = &self.framebuffer;
         let t = &self.pixel_transfer;
         let depth_max = fb.depth_max() as f64;
@@ -910,7 +941,7 @@ impl Context {
                 });
             }
         }
-        self.draw_pixel_values(w, h, &values);
+        Some(values)
     }
 
     pub(crate) fn bitmap(

@@ -25,12 +25,12 @@ use tilegl::Gl;
 /// One answer: a label, the values, and how far they may differ from Mesa's.
 #[derive(Debug)]
 pub struct Answer {
-    label: String,
-    values: Vec<f64>,
-    tolerance: f64,
+    pub(super) label: String,
+    pub(super) values: Vec<f64>,
+    pub(super) tolerance: f64,
 }
 
-type Answers = Vec<Answer>;
+pub(super) type Answers = Vec<Answer>;
 
 impl super::Recorded for Answer {
     fn label(&self) -> String {
@@ -41,7 +41,7 @@ impl super::Recorded for Answer {
     }
 }
 
-fn exact(out: &mut Answers, label: String, values: Vec<f64>) {
+pub(super) fn exact(out: &mut Answers, label: String, values: Vec<f64>) {
     out.push(Answer {
         label,
         values,
@@ -49,17 +49,17 @@ fn exact(out: &mut Answers, label: String, values: Vec<f64>) {
     });
 }
 
-fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
+pub(super) fn err(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
     let e = gl.get_error();
     exact(out, format!("glGetError after {label}"), vec![e as f64]);
 }
 
-fn status(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
+pub(super) fn status(gl: &mut dyn Gl, out: &mut Answers, label: &str) {
     let s = gl.check_framebuffer_status_ext(GL_FRAMEBUFFER_EXT);
     exact(out, format!("status {label}"), vec![s as f64]);
 }
 
-fn int(gl: &mut dyn Gl, out: &mut Answers, pname: GLenum) {
+pub(super) fn int(gl: &mut dyn Gl, out: &mut Answers, pname: GLenum) {
     let mut v = [-1];
     gl.get_integerv(pname, &mut v);
     exact(
@@ -80,7 +80,15 @@ fn attachment(gl: &mut dyn Gl, out: &mut Answers, point: GLenum, pname: GLenum) 
     err(gl, out, "glGetFramebufferAttachmentParameterivEXT");
 }
 
-fn read_rgba(gl: &mut dyn Gl, out: &mut Answers, label: &str, x: i32, y: i32, w: i32, h: i32) {
+pub(super) fn read_rgba(
+    gl: &mut dyn Gl,
+    out: &mut Answers,
+    label: &str,
+    x: i32,
+    y: i32,
+    w: i32,
+    h: i32,
+) {
     let mut px = vec![0u8; (w * h * 4) as usize];
     gl.read_pixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
     exact(
@@ -91,14 +99,14 @@ fn read_rgba(gl: &mut dyn Gl, out: &mut Answers, label: &str, x: i32, y: i32, w:
     err(gl, out, label);
 }
 
-fn floats(bytes: &[u8]) -> Vec<f32> {
+pub(super) fn floats(bytes: &[u8]) -> Vec<f32> {
     bytes
         .chunks_exact(4)
         .map(|b| f32::from_ne_bytes([b[0], b[1], b[2], b[3]]))
         .collect()
 }
 
-fn quad(gl: &mut dyn Gl, x0: f32, y0: f32, x1: f32, y1: f32, z: f32) {
+pub(super) fn quad(gl: &mut dyn Gl, x0: f32, y0: f32, x1: f32, y1: f32, z: f32) {
     gl.begin(GL_QUADS);
     gl.tex_coord_2f(0.0, 0.0);
     gl.vertex_3f(x0, y0, z);
@@ -112,7 +120,7 @@ fn quad(gl: &mut dyn Gl, x0: f32, y0: f32, x1: f32, y1: f32, z: f32) {
 }
 
 /// Window coordinates = object coordinates over a `w` x `h` target.
-fn pixel_space(gl: &mut dyn Gl, w: i32, h: i32) {
+pub(super) fn pixel_space(gl: &mut dyn Gl, w: i32, h: i32) {
     gl.viewport(0, 0, w, h);
     gl.matrix_mode(GL_PROJECTION);
     gl.load_identity();

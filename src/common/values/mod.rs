@@ -337,6 +337,8 @@ pub enum Query {
     QuadsFollowProvokingVertex,
     /// EXT_framebuffer_object.
     FramebufferBinding,
+    /// EXT_framebuffer_blit.
+    ReadFramebufferBinding,
     RenderbufferBinding,
     MaxColorAttachments,
     MaxRenderbufferSize,

@@ -5,9 +5,13 @@ use crate::common::values::*;
 use super::super::enums::*;
 use super::super::types::GLenum;
 
-/// `GL_FRAMEBUFFER_EXT`, the one framebuffer target.
+/// `GL_FRAMEBUFFER_EXT` and EXT_framebuffer_blit's `GL_READ_FRAMEBUFFER_EXT` and
+/// `GL_DRAW_FRAMEBUFFER_EXT`.
 pub fn is_framebuffer_target(e: GLenum) -> bool {
-    e == GL_FRAMEBUFFER_EXT
+    matches!(
+        e,
+        GL_FRAMEBUFFER_EXT | GL_READ_FRAMEBUFFER_EXT | GL_DRAW_FRAMEBUFFER_EXT
+    )
 }
 
 /// `GL_RENDERBUFFER_EXT`, the one renderbuffer target.

@@ -14,6 +14,7 @@
 //! of section 4.4.3) samples its content as of the last store: undefined by the
 //! specification, and never a crash.
 
+mod blit;
 mod images;
 
 use std::collections::{HashMap, HashSet};
@@ -136,8 +137,13 @@ pub struct FboNames {
 #[derive(Debug, Default)]
 pub(crate) struct FboState {
     names: Arc<RwLock<FboNames>>,
-    /// `GL_FRAMEBUFFER_BINDING_EXT`.
+    /// `GL_FRAMEBUFFER_BINDING_EXT` (= `GL_DRAW_FRAMEBUFFER_BINDING_EXT`): the object drawn
+    /// into, whose images the context's tiles hold.
     pub bound: u32,
+    /// `GL_READ_FRAMEBUFFER_BINDING_EXT` (EXT_framebuffer_blit): the object read from. When it
+    /// differs from `bound`, read commands make it current for their duration
+    /// (`Context::with_framebuffer_bound`).
+    pub read_bound: u32,
     /// `GL_RENDERBUFFER_BINDING_EXT`.
     pub bound_renderbuffer: u32,
     /// The window's framebuffer and buffer selection while an object is bound.
@@ -217,7 +223,62 @@ impl Context {
             names.framebuffer_names.remove(&framebuffer);
             names.framebuffers.entry(framebuffer).or_default();
         }
-        self.switch_framebuffer(framebuffer);
+        // EXT_framebuffer_blit: GL_FRAMEBUFFER_EXT binds both the draw and the read target.
+        if target != GL_READ_FRAMEBUFFER_EXT {
+            self.switch_framebuffer(framebuffer);
+        }
+        if target != GL_DRAW_FRAMEBUFFER_EXT {
+            self.fbo.read_bound = framebuffer;
+        }
+    }
+
+    /// Runs `f` with the framebuffer `name` (0: the window) current, as drawn and read
+    /// framebuffer, then makes the previous draw framebuffer current again. Read commands
+    /// use it when the read binding differs from the draw binding (EXT_framebuffer_blit):
+    /// the tiles are the draw framebuffer's only, so the read one is loaded for the command.
+    pub(crate) fn with_framebuffer_bound<R>(
+        &mut self,
+        name: u32,
+        f: impl FnOnce(&mut Context) -> R,
+    ) -> R {
+        let draw = self.fbo.bound;
+        if name == draw {
+            return f(self);
+        }
+        self.switch_framebuffer(name);
+        let r = f(self);
+        self.switch_framebuffer(draw);
+        r
+    }
+
+    /// Whether the read binding differs from the draw binding (the read commands then run
+    /// through [`Context::with_framebuffer_bound`]).
+    #[inline]
+    pub(crate) fn reads_elsewhere(&self) -> bool {
+        self.fbo.read_bound != self.fbo.bound
+    }
+
+    /// `GL_READ_BUFFER`: the read buffer of the read framebuffer.
+    pub(crate) fn read_buffer_selected(&self) -> GLenum {
+        if !self.reads_elsewhere() {
+            return self.buffers.read;
+        }
+        match (self.fbo.read_bound, &self.fbo.window) {
+            (0, Some((_, b))) => b.read,
+            (0, None) => self.buffers.read,
+            (n, _) => self
+                .fbo
+                .names()
+                .framebuffers
+                .get(&n)
+                .map_or(GL_COLOR_ATTACHMENT0_EXT, |f| f.buffers.read),
+        }
+    }
+
+    /// The binding a framebuffer target names when it is not the draw binding (the tiles):
+    /// `Some(read binding)` for `GL_READ_FRAMEBUFFER_EXT` while it differs.
+    fn other_binding(&self, target: GLenum) -> Option<u32> {
+        (target == GL_READ_FRAMEBUFFER_EXT && self.reads_elsewhere()).then_some(self.fbo.read_bound)
     }
 
     pub(crate) fn delete_framebuffers_ext(&mut self, n: GLsizei, framebuffers: &[GLuint]) {
@@ -231,6 +292,9 @@ impl Context {
             }
             if name == self.fbo.bound {
                 self.switch_framebuffer(0);
+            }
+            if name == self.fbo.read_bound {
+                self.fbo.read_bound = 0;
             }
             let mut names = self.fbo.names_mut();
             names.framebuffers.remove(&name);
@@ -372,6 +436,11 @@ impl Context {
             self.record_error(GL_INVALID_ENUM);
             return 0;
         }
+        if let Some(read) = self.other_binding(target) {
+            return self.with_framebuffer_bound(read, |c| {
+                c.check_framebuffer_status_ext(GL_FRAMEBUFFER_EXT)
+            });
+        }
         if self.fbo.bound == 0 {
             return GL_FRAMEBUFFER_COMPLETE_EXT;
         }
@@ -415,6 +484,19 @@ impl Context {
         level: GLint,
         zoffset: GLint,
     ) {
+        if let Some(read) = self.other_binding(target) {
+            return self.with_framebuffer_bound(read, |c| {
+                c.framebuffer_texture(
+                    dims,
+                    GL_FRAMEBUFFER_EXT,
+                    attachment,
+                    textarget,
+                    texture,
+                    level,
+                    zoffset,
+                )
+            });
+        }
         let Some(point) = self.attach_point(target, attachment) else {
             return;
         };
@@ -506,6 +588,16 @@ impl Context {
         renderbuffertarget: GLenum,
         renderbuffer: GLuint,
     ) {
+        if let Some(read) = self.other_binding(target) {
+            return self.with_framebuffer_bound(read, |c| {
+                c.framebuffer_renderbuffer_ext(
+                    GL_FRAMEBUFFER_EXT,
+                    attachment,
+                    renderbuffertarget,
+                    renderbuffer,
+                )
+            });
+        }
         let Some(point) = self.attach_point(target, attachment) else {
             return;
         };
@@ -531,6 +623,16 @@ impl Context {
         pname: GLenum,
         params: &mut [GLint],
     ) {
+        if let Some(read) = self.other_binding(target) {
+            return self.with_framebuffer_bound(read, |c| {
+                c.get_framebuffer_attachment_parameteriv_ext(
+                    GL_FRAMEBUFFER_EXT,
+                    attachment,
+                    pname,
+                    params,
+                )
+            });
+        }
         let Some(point) = self.attach_point(target, attachment) else {
             return;
         };

@@ -28,6 +28,13 @@ impl Context {
         size: [GLsizei; 2],
         border: GLint,
     ) {
+        if self.reads_elsewhere() {
+            // EXT_framebuffer_blit: the texels come from the read framebuffer.
+            let read = self.fbo.read_bound;
+            return self.with_framebuffer_bound(read, |c| {
+                c.copy_tex_image(dims, target, level, internalformat, x, y, size, border)
+            });
+        }
         if !self.framebuffer_ready() {
             return;
         }
@@ -82,6 +89,12 @@ impl Context {
         y: GLint,
         size: [GLsizei; 2],
     ) {
+        if self.reads_elsewhere() {
+            let read = self.fbo.read_bound;
+            return self.with_framebuffer_bound(read, |c| {
+                c.copy_tex_sub_image(dims, target, level, offset, x, y, size)
+            });
+        }
         if !self.framebuffer_ready() {
             return;
         }
