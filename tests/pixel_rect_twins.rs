@@ -157,7 +157,7 @@ fn scene(gl: &mut Context, setup: Setup) {
     gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 0);
     // Runs of equal colours (one span each on the queued route).
     let flat: Vec<u8> = (0..40 * 6)
-        .flat_map(|k| [200, 100, (k / 7) as u8 * 9, 255])
+        .flat_map(|k| [200, 100, ((k / 7) * 9) as u8, 255])
         .collect();
     assert_eq!(gl.get_error(), GL_NO_ERROR, "after the images");
     gl.raster_pos_2i(5, 5);
