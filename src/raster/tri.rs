@@ -99,9 +99,34 @@ pub fn raster_triangle<'a>(
         smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
         return;
     }
-    // The covered pixels `lo..hi` of each row, walked from the first row down the tile.
-    let mut walk = RowWalk::new(&edges, &bias, x_lo, x_hi, y_lo);
-    let mut row_interval = |y: i32| walk.row(y);
+    let half = SUBPIXEL / 2;
+    // The covered pixels `lo..hi` of row `y`, when there are any: the interval where all three
+    // edge functions pass, solved per edge.
+    let row_interval = |y: i32| -> Option<(i32, i32)> {
+        let py = y as i64 * SUBPIXEL + half;
+        let mut lo = x_lo as i64;
+        let mut hi = x_hi as i64; // exclusive
+        for (e, &bias) in edges.iter().zip(&bias) {
+            // E(x) = step * x + base, with px = x * SUBPIXEL + half.
+            let base = e.b * py + e.c + e.a * half;
+            let step = e.a * SUBPIXEL;
+            // Inside when step * x >= need.
+            let need = i64::from(bias) - base;
+            // Quotients by truncating division, rounded up or down by the remainder's sign
+            // (one division, fewer fix-ups than the Euclidean forms).
+            if step > 0 {
+                // ceil(need / step)
+                lo = lo.max(need / step + i64::from(need % step > 0));
+            } else if step < 0 {
+                // -|step| * x >= need  <=>  x <= floor(-need / |step|)
+                let (n, s) = (-need, -step);
+                hi = hi.min(n / s - i64::from(n % s < 0) + 1);
+            } else if need > 0 {
+                return None;
+            }
+        }
+        (lo < hi).then_some((lo as i32, hi as i32))
+    };
     match (&ds.raster.polygon_stipple, ds.fragment.span_pair) {
         (None, Some(pair)) => {
             // Rows in pairs (even y first), gathered for one call of the pair function, which
@@ -242,112 +267,6 @@ fn stippled_row<'a>(
         if start < x {
             (ds.fragment.span)(&ds.fragment, tile, y, start, x, it);
         }
-    }
-}
-
-/// One edge's bound on the covered columns of a row (see [`RowWalk`]): with `d` > 0 the
-/// floor of `num / d` as quotient `q` and remainder `r` (0 <= r < d); `lower` for an edge
-/// whose inside is to its right (the bound is the first covered column), else the last one.
-/// A vertical-free edge (`d` = 0) keeps `num` in `q`: the row is empty when it is negative.
-#[derive(Clone, Copy, Debug)]
-struct EdgeWalk {
-    q: i64,
-    r: i64,
-    d: i64,
-    /// `num`'s change from one row to the next, as quotient and remainder by `d`.
-    dq: i64,
-    dr: i64,
-    lower: bool,
-}
-
-/// The covered interval of each row of a triangle in a tile, the rows taken in increasing
-/// order. Each edge's bound is a floor division whose numerator grows by the same amount from
-/// row to row, so its quotient and remainder are stepped instead of divided again: the same
-/// integers as dividing on each row (`row_walk_matches_the_division_per_row`), with three
-/// divisions per triangle and tile instead of two or three per row (a 64-bit division costs
-/// tens of cycles, and a sprite's rows are a few pixels wide).
-struct RowWalk {
-    y: i32,
-    edges: [EdgeWalk; 3],
-    x_lo: i64,
-    x_hi: i64,
-}
-
-impl RowWalk {
-    fn new(edges: &[Edge; 3], bias: &[u8; 3], x_lo: i32, x_hi: i32, y: i32) -> RowWalk {
-        let half = SUBPIXEL / 2;
-        let py = y as i64 * SUBPIXEL + half;
-        let walk = |e: &Edge, bias: u8| {
-            // E(x) = step * x + base, with px = x * SUBPIXEL + half; the pixel is inside when
-            // step * x >= need = bias - base, i.e. x >= ceil(need / step) for step > 0 and
-            // x <= floor(-need / -step) for step < 0: floors of num = -need by |step|.
-            let base = e.b * py + e.c + e.a * half;
-            let step = e.a * SUBPIXEL;
-            let num = base - i64::from(bias);
-            let delta = e.b * SUBPIXEL;
-            let d = step.abs();
-            if d == 0 {
-                return EdgeWalk {
-                    q: num,
-                    r: 0,
-                    d: 0,
-                    dq: delta,
-                    dr: 0,
-                    lower: false,
-                };
-            }
-            EdgeWalk {
-                q: num.div_euclid(d),
-                r: num.rem_euclid(d),
-                d,
-                dq: delta.div_euclid(d),
-                dr: delta.rem_euclid(d),
-                lower: step > 0,
-            }
-        };
-        RowWalk {
-            y,
-            edges: [
-                walk(&edges[0], bias[0]),
-                walk(&edges[1], bias[1]),
-                walk(&edges[2], bias[2]),
-            ],
-            x_lo: x_lo as i64,
-            x_hi: x_hi as i64,
-        }
-    }
-
-    /// The covered pixels `lo..hi` of row `y` (at or after the last row asked for), when
-    /// there are any.
-    #[inline(always)]
-    fn row(&mut self, y: i32) -> Option<(i32, i32)> {
-        while self.y < y {
-            for e in &mut self.edges {
-                e.q += e.dq;
-                if e.d != 0 {
-                    e.r += e.dr;
-                    if e.r >= e.d {
-                        e.r -= e.d;
-                        e.q += 1;
-                    }
-                }
-            }
-            self.y += 1;
-        }
-        let (mut lo, mut hi) = (self.x_lo, self.x_hi);
-        for e in &self.edges {
-            if e.d == 0 {
-                if e.q < 0 {
-                    return None;
-                }
-            } else if e.lower {
-                // ceil(need / step) = -floor(num / d)
-                lo = lo.max(-e.q);
-            } else {
-                hi = hi.min(e.q + 1);
-            }
-        }
-        (lo < hi).then_some((lo as i32, hi as i32))
     }
 }
 
@@ -496,88 +415,5 @@ pub fn bin_triangle(
     let xy = [v[0].xy, v[1].xy, v[2].xy];
     if let Some(t) = TriangleCommand::new(state, offset, bbox, xy, constant_primary) {
         scene.bin(Command::Triangle(t), bbox);
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The covered interval of row `y` by dividing on the row (the form the walk replaces).
-    fn divided(
-        edges: &[Edge; 3],
-        bias: &[u8; 3],
-        x_lo: i32,
-        x_hi: i32,
-        y: i32,
-    ) -> Option<(i32, i32)> {
-        let half = SUBPIXEL / 2;
-        let py = y as i64 * SUBPIXEL + half;
-        let mut lo = x_lo as i64;
-        let mut hi = x_hi as i64;
-        for (e, &bias) in edges.iter().zip(bias) {
-            let base = e.b * py + e.c + e.a * half;
-            let step = e.a * SUBPIXEL;
-            let need = i64::from(bias) - base;
-            if step > 0 {
-                lo = lo.max(need / step + i64::from(need % step > 0));
-            } else if step < 0 {
-                let (n, s) = (-need, -step);
-                hi = hi.min(n / s - i64::from(n % s < 0) + 1);
-            } else if need > 0 {
-                return None;
-            }
-        }
-        (lo < hi).then_some((lo as i32, hi as i32))
-    }
-
-    #[test]
-    fn row_walk_matches_the_division_per_row() {
-        let mut seed = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = |m: i64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % (2 * m as u64 + 1)) as i64 - m
-        };
-        let mut rows = 0;
-        for k in 0..4000 {
-            // Vertices in sub-pixel units: small triangles, long thin ones, axis-aligned
-            // edges (every fourth triangle snaps to whole pixels), and far from the tile.
-            let spread = [40, 600, 5000, 70_000][k % 4];
-            let snap = |v: i64| if k % 4 == 1 { v & !(SUBPIXEL - 1) } else { v };
-            let c = [next(3000) + 2000, next(3000) + 2000];
-            let mut p = [[0i64; 2]; 3];
-            for v in &mut p {
-                *v = [snap(c[0] + next(spread)), snap(c[1] + next(spread))];
-            }
-            if k % 7 == 0 {
-                p[1][1] = p[0][1];
-            }
-            if k % 11 == 0 {
-                p[2][0] = p[1][0];
-            }
-            let [(e0, b0), (e1, b1), (e2, b2)] = [
-                Edge::new(p[0], p[1]),
-                Edge::new(p[1], p[2]),
-                Edge::new(p[2], p[0]),
-            ];
-            let (edges, bias) = ([e0, e1, e2], [b0, b1, b2]);
-            let (x_lo, x_hi) = (next(40) as i32 + 10, next(40) as i32 + 60);
-            let y_lo = next(40) as i32 + 10;
-            let mut walk = RowWalk::new(&edges, &bias, x_lo, x_hi, y_lo);
-            let mut y = y_lo;
-            while y < y_lo + 70 {
-                assert_eq!(
-                    walk.row(y),
-                    divided(&edges, &bias, x_lo, x_hi, y),
-                    "triangle {p:?}, row {y}"
-                );
-                rows += usize::from(walk.row(y).is_some());
-                // Rows one or two apart, as the pair loop asks for them.
-                y += 1 + (k as i32 + y).rem_euclid(2);
-            }
-        }
-        assert!(rows > 4000, "{rows} covered rows");
     }
 }
