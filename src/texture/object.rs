@@ -28,11 +28,12 @@ pub const MAX_TEXTURE_LOD_BIAS: f32 = 16.0;
 /// `GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT`.
 pub const MAX_TEXTURE_MAX_ANISOTROPY: f32 = 16.0;
 
-/// Largest texture image in bytes of storage: llvmpipe's per-resource limit (2 GiB), so a
-/// proxy query (`GL_PROXY_TEXTURE_*`) says "no" where Mesa's does, and a program that probes
-/// the largest size it can have (piglit's tex3d-maxsize) settles on the same one. A real
-/// image beyond it gives `GL_OUT_OF_MEMORY`.
-pub const MAX_IMAGE_BYTES: u64 = 2 << 30;
+/// Largest texture image a proxy query accepts, in bytes of storage with its whole mipmap
+/// chain: llvmpipe's per-resource limit (2 GiB) counted as llvmpipe's proxy check counts it,
+/// so a program that probes the largest size it can have (piglit's tex3d-maxsize) settles on
+/// the same one as on Mesa. Real images have their own limit, `image::MAX_IMAGE_BYTES` (1 GiB
+/// for the level itself); the two agree on every size measured on Mesa.
+pub const MAX_PROXY_BYTES: u64 = 2 << 30;
 
 /// Largest side for a target.
 pub fn max_size(target: TextureTarget) -> i32 {

@@ -64,12 +64,10 @@ impl Context {
             return Err(GL_INVALID_OPERATION);
         }
         check_depth_target(target, ifmt)?;
-        if !fits_in_memory(stored, ifmt, target.is_proxy()) {
-            if target.is_proxy() {
-                self.image_object_mut(target).images[0][level] = None;
-                return Ok(());
-            }
-            return Err(GL_OUT_OF_MEMORY);
+        // (A real image over its limit is GL_OUT_OF_MEMORY from `TexImage::new`.)
+        if target.is_proxy() && !proxy_fits(stored, ifmt) {
+            self.image_object_mut(target).images[0][level] = None;
+            return Ok(());
         }
         let usize3 = stored.map(|s| s as usize);
         let len = self.upload_len(dims, usize3, src).ok_or(GL_INVALID_VALUE)?;

@@ -15,7 +15,7 @@ use crate::gl::convert;
 use crate::gl::enums::*;
 use crate::texture::format::{BaseFormat, InternalFormat, S3tcFormat};
 use crate::texture::image::{clamp01, TexImage};
-use crate::texture::object::{level_count, max_size, MAX_IMAGE_BYTES, MAX_TEXTURE_MAX_ANISOTROPY};
+use crate::texture::object::{level_count, max_size, MAX_PROXY_BYTES, MAX_TEXTURE_MAX_ANISOTROPY};
 use crate::texture::{mipmap, pixels, ObjectMut, ObjectRef};
 
 mod compressed;
@@ -279,23 +279,22 @@ fn check_size(
     Ok(out)
 }
 
-/// Whether an uncompressed image of `size` (border included) fits the implementation's
-/// per-image limit (`MAX_IMAGE_BYTES`). A proxy asks for room for the whole mipmap chain
-/// down from `size`, as llvmpipe's proxy check does (the program may add the levels later):
-/// so a 1024 x 1024 x 2048 `GL_INTENSITY8` proxy (2 GiB, 16/7 GiB with its levels) is
-/// refused on both, and 1024^3 accepted.
-fn fits_in_memory(size: [i32; 3], format: InternalFormat, proxy: bool) -> bool {
+/// Whether a proxy image of `size` (border included) fits: its storage with the whole mipmap
+/// chain down from `size` within `MAX_PROXY_BYTES`, as llvmpipe's proxy check counts it (the
+/// program may add the levels later). So a 1024 x 1024 x 2048 `GL_INTENSITY8` proxy (2 GiB,
+/// 16/7 GiB with its levels) is refused on both, and 1024^3 accepted.
+fn proxy_fits(size: [i32; 3], format: InternalFormat) -> bool {
     let mut level = size.map(|s| s.max(0) as u64);
     let mut bytes = 0u64;
     loop {
         let texels = level.iter().product::<u64>();
         bytes = bytes.saturating_add(texels.saturating_mul(format.texel_bytes()));
-        if !proxy || level.iter().all(|&s| s <= 1) {
+        if level.iter().all(|&s| s <= 1) {
             break;
         }
         level = level.map(|s| (s / 2).max(1));
     }
-    bytes <= MAX_IMAGE_BYTES
+    bytes <= MAX_PROXY_BYTES
 }
 
 /// Whether client groups of `format`/`type` are, byte for byte, texels of an uncompressed
