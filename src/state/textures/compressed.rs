@@ -146,17 +146,16 @@ impl Context {
             if width < 0 || height < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
-            if img.format.compressed != Some(f) {
-                return Err(GL_INVALID_OPERATION);
-            }
             let offset = [xoffset, yoffset, 0];
             let size = [width, height, 1];
-            check_sub_region(2, offset, size, img.borders(), img.inner_size())?;
-            check_compressed_alignment(&img, offset, size)?;
-            // Let go of the copy before writing: while it shares the texels, the write below
-            // would copy the whole image first (copy-on-write).
-            drop(img);
+            self.with_image(target, level, |img| -> Check<()> {
+                if img.format.compressed != Some(f) {
+                    return Err(GL_INVALID_OPERATION);
+                }
+                check_sub_region(2, offset, size, img.borders(), img.inner_size())?;
+                check_compressed_alignment(img, offset, size)
+            })
+            .ok_or(GL_INVALID_OPERATION)??;
             let expected = f.image_bytes(width as usize, height as usize);
             if image_size < 0 || image_size as usize != expected {
                 return Err(GL_INVALID_VALUE);

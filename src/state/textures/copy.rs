@@ -105,8 +105,6 @@ impl Context {
             if size[0] < 0 || size[1] < 0 {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
-            let (b, inner) = (img.borders(), img.inner_size());
             let h = if dims >= 2 { size[1] } else { 1 };
             // The copied region is w x h x 1 at the offsets.
             let region = [size[0], h, 1];
@@ -117,12 +115,13 @@ impl Context {
             if dims < 3 {
                 off[2] = 0;
             }
-            check_sub_region(dims, off, region, b, inner)?;
-            check_compressed_alignment(&img, off, region)?;
-            let depth = img.format.is_depth();
-            // Let go of the copy before writing: while it shares the texels, the write below
-            // would copy the whole image first (copy-on-write).
-            drop(img);
+            let (b, depth) = self
+                .with_image(target, level, |img| -> Check<([i32; 3], bool)> {
+                    check_sub_region(dims, off, region, img.borders(), img.inner_size())?;
+                    check_compressed_alignment(img, off, region)?;
+                    Ok((img.borders(), img.format.is_depth()))
+                })
+                .ok_or(GL_INVALID_OPERATION)??;
             if depth && self.framebuffer.config.depth_bits == 0 {
                 return Err(GL_INVALID_OPERATION);
             }

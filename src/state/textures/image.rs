@@ -155,17 +155,17 @@ impl Context {
             if size[..dims].iter().any(|&s| s < 0) {
                 return Err(GL_INVALID_VALUE);
             }
-            let img = self.image_at(target, level).ok_or(GL_INVALID_OPERATION)?;
-            let (b, inner) = (img.borders(), img.inner_size());
-            check_sub_region(dims, offset, size, b, inner)?;
-            src.check_packed()?;
-            if src.is_depth() != img.format.is_depth() {
-                return Err(GL_INVALID_OPERATION);
-            }
-            check_compressed_alignment(&img, offset, size)?;
-            // Let go of the copy before writing: while it shares the texels, the write below
-            // would copy the whole image first (copy-on-write).
-            drop(img);
+            let b = self
+                .with_image(target, level, |img| -> Check<[i32; 3]> {
+                    check_sub_region(dims, offset, size, img.borders(), img.inner_size())?;
+                    src.check_packed()?;
+                    if src.is_depth() != img.format.is_depth() {
+                        return Err(GL_INVALID_OPERATION);
+                    }
+                    check_compressed_alignment(img, offset, size)?;
+                    Ok(img.borders())
+                })
+                .ok_or(GL_INVALID_OPERATION)??;
             let mut n = [1usize; 3];
             for d in 0..dims {
                 n[d] = size[d] as usize;

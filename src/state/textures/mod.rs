@@ -475,9 +475,19 @@ impl Context {
 
     /// The image at `target`/`level` (a copy sharing the texels).
     fn image_at(&self, target: TexImageTarget, level: usize) -> Option<TexImage> {
-        self.image_object(target)
-            .image(target.face(), level)
-            .cloned()
+        self.with_image(target, level, TexImage::clone)
+    }
+
+    /// `f` of the image at `target`/`level`, borrowed: what commands that then write into the
+    /// image check it with, since a copy still sharing the texels during the write would make
+    /// the write copy the whole image first (copy-on-write).
+    fn with_image<R>(
+        &self,
+        target: TexImageTarget,
+        level: usize,
+        f: impl FnOnce(&TexImage) -> R,
+    ) -> Option<R> {
+        self.image_object(target).image(target.face(), level).map(f)
     }
 
     fn image_object(&self, target: TexImageTarget) -> ObjectRef<'_> {
