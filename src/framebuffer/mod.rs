@@ -183,6 +183,11 @@ pub struct Framebuffer {
     /// fixed point over [-1, 1], row-major from the bottom row. Not tiled: only `glAccum` and
     /// its clear touch it, after the scene is flushed.
     pub accum: Vec<[i16; 4]>,
+    /// The colour components the colour buffer has (R, G, B, A), when not all four: reads
+    /// give 0 for a missing R, G or B and the largest value for a missing A (a framebuffer
+    /// object's luminance, alpha, red, RG or RGB image, ARB_framebuffer_object section
+    /// 4.3.2). The tiles hold what was drawn; the image keeps only its components.
+    pub(crate) components: Option<[bool; 4]>,
 }
 
 impl Framebuffer {
@@ -244,6 +249,7 @@ impl Framebuffer {
             draw: DrawTarget::One(initial),
             read: initial,
             accum,
+            components: None,
         }
     }
 
@@ -292,13 +298,22 @@ impl Framebuffer {
                     self.parked[t][i]
                 }
             };
-            if self.samples > 1 {
+            let c = if self.samples > 1 {
                 resolve(
                     (0..self.samples).map(|s| read(t + s * self.plane_tiles)),
                     self.samples,
                 )
             } else {
                 read(t)
+            };
+            match self.components {
+                None => c,
+                Some(has) => [
+                    if has[0] { c[0] } else { 0 },
+                    if has[1] { c[1] } else { 0 },
+                    if has[2] { c[2] } else { 0 },
+                    if has[3] { c[3] } else { 255 },
+                ],
             }
         })
     }
