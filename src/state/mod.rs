@@ -73,8 +73,9 @@ impl Default for ContextConfig {
 /// Each name ends with a space, the last too, as in Mesa's and other drivers' strings:
 /// programs that print the names one per line by turning spaces into newlines (piglit's
 /// glinfo) end their last line so.
-pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_map_buffer_range GL_ARB_multitexture \
-GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite GL_ARB_provoking_vertex \
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_map_buffer_range GL_ARB_multisample \
+GL_ARB_multitexture GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite \
+GL_ARB_provoking_vertex \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
@@ -170,6 +171,9 @@ pub struct Context {
     pub(crate) attrib_stack: Vec<Box<attrib::AttribEntry>>,
     /// Multisample enables and sample coverage.
     pub(crate) multisample: attrib::MultisampleState,
+    /// The sample passes of a multisample framebuffer's draws (`state::draw`), for the
+    /// snapshot they were made from.
+    pub(crate) sample_passes: Option<draw::SamplePasses>,
     /// Occlusion query objects and the active query.
     pub(crate) queries: queries::QueryState,
     /// Render mode, name stack, selection and feedback buffers.
@@ -271,6 +275,7 @@ impl Context {
             lists: Default::default(),
             attrib_stack: Vec::new(),
             multisample: Default::default(),
+            sample_passes: None,
             queries: Default::default(),
             select: Default::default(),
             eval: Default::default(),
