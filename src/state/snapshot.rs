@@ -151,6 +151,8 @@ impl Context {
         };
         let mut key =
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
+        // A framebuffer object's image without some components never gets them written.
+        key.color_mask = self.color_write_mask();
         key.texturing = !units.is_empty();
         key.fast_texture = match units.as_slice() {
             [u] if matches!(u.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
@@ -167,6 +169,12 @@ impl Context {
         key.simd_units = !units.is_empty() && units.iter().all(|u| u.texture.simd_2d());
         key.fog = fog.map(|f| f.mode);
         key.count_samples = self.queries.active.is_some();
+        // Multisample fragment operations apply with a multisample buffer and GL_MULTISAMPLE
+        // on (section 4.1.3); each sample pass sets its threshold (`state::draw`).
+        let ms = self.multisample;
+        let multisampling = self.framebuffer.samples > 1 && ms.multisample;
+        key.alpha_to_coverage = multisampling && ms.alpha_to_coverage;
+        key.alpha_to_one = multisampling && ms.alpha_to_one;
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let raster = self.raster_draw();
         let clip_planes: Vec<DVec4> = clip_planes;
