@@ -417,6 +417,47 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["triangle-rasterization", "-use_fbo", "-auto", "-fbo"],
     // Skipped before EXT_framebuffer_blit (docs/piglit.md, Dec 2 2026).
     &["fbo-depthstencil", "blit", "default_fb", "-auto"],
+    // Skipped before ARB_multisample (a multisample visual; docs/piglit.md, Dec 3 2026).
+    &[
+        "fbo-depthstencil",
+        "clear",
+        "default_fb",
+        "-samples=2",
+        "-auto",
+    ],
+    &[
+        "fbo-depthstencil",
+        "readpixels",
+        "default_fb",
+        "FLOAT-and-USHORT",
+        "-samples=4",
+        "-auto",
+    ],
+    &[
+        "fbo-depthstencil",
+        "drawpixels",
+        "default_fb",
+        "24_8",
+        "-samples=2",
+        "-auto",
+    ],
+    &[
+        "fbo-depthstencil",
+        "copypixels",
+        "default_fb",
+        "-samples=4",
+        "-auto",
+    ],
+    &[
+        "fbo-depthstencil",
+        "blit",
+        "default_fb",
+        "-samples=4",
+        "-auto",
+    ],
+    &["draw-pixels", "-samples=4", "-auto"],
+    &["copy-pixels", "-samples=2", "-auto"],
+    &["copyteximage", "3D", "-samples=4", "-auto"],
 ];
 
 #[test]
