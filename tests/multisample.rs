@@ -357,3 +357,35 @@ fn background_shading_keeps_each_sample_plane() {
     };
     assert_eq!(draw(2), draw(1));
 }
+
+/// Multisample rasterization ignores GL_POLYGON_SMOOTH and GL_LINE_SMOOTH (sections 3.5.7 and
+/// 3.4.4): with GL_MULTISAMPLE on they change no pixel; with it off they apply.
+#[test]
+fn smooth_polygons_and_lines_are_multisampled() {
+    let draw = |smooth: bool, multisample: bool| {
+        let mut gl = context(4, 32, 32);
+        if !multisample {
+            gl.disable(GL_MULTISAMPLE);
+        }
+        gl.clear(GL_COLOR_BUFFER_BIT);
+        gl.enable(GL_BLEND);
+        gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        if smooth {
+            gl.enable(GL_POLYGON_SMOOTH);
+            gl.enable(GL_LINE_SMOOTH);
+        }
+        gl.color_3f(1.0, 1.0, 1.0);
+        gl.begin(GL_TRIANGLES);
+        gl.vertex_2f(1.3, 0.7);
+        gl.vertex_2f(20.9, 3.1);
+        gl.vertex_2f(6.2, 18.45);
+        gl.end();
+        gl.begin(GL_LINES);
+        gl.vertex_2f(2.2, 30.1);
+        gl.vertex_2f(29.7, 12.4);
+        gl.end();
+        read_rgba(&mut gl)
+    };
+    assert_eq!(draw(true, true), draw(false, true));
+    assert_ne!(draw(true, false), draw(false, false));
+}
