@@ -23,6 +23,7 @@ pub mod basic;
 pub mod eval;
 pub mod fbo;
 pub mod fbo_blit;
+pub mod pbo;
 pub mod piglit;
 
 /// The framebuffer size every state case runs with.
@@ -83,6 +84,10 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: piglit scripts", piglit::CASES),
     ("state cases: framebuffer objects", fbo::CASES),
     ("state cases: framebuffer blits", fbo_blit::CASES),
+    (
+        "state cases: pixel buffer objects, buffer ranges",
+        pbo::CASES,
+    ),
 ];
 
 /// Every state and error case.

@@ -226,6 +226,7 @@ impl Context {
                 attr_count,
                 live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
                 coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
+                fast_lines: !self.force_general_path,
                 raster,
                 fragment: FragmentDraw {
                     units,
