@@ -283,7 +283,24 @@ impl Framebuffer {
 
     /// Colour of window pixel (x, y) in `buffer` (the front buffer when single-buffered); of
     /// a multisample buffer, the average of its samples (the resolve).
+    #[inline]
     pub fn color_in(&self, buffer: ColorBuffer, x: i32, y: i32) -> Option<[u8; 4]> {
+        if self.samples > 1 {
+            return self.resolved_in(buffer, x, y);
+        }
+        self.locate(x, y).map(|(t, i)| {
+            if buffer == self.resident || self.parked.len() != self.tiles.len() {
+                self.tiles[t].color[i]
+            } else {
+                self.parked[t][i]
+            }
+        })
+    }
+
+    /// [`Framebuffer::color_in`] of a multisample buffer.
+    #[cold]
+    #[inline(never)]
+    fn resolved_in(&self, buffer: ColorBuffer, x: i32, y: i32) -> Option<[u8; 4]> {
         self.locate(x, y).map(|(t, i)| {
             let read = |t: usize| {
                 if buffer == self.resident || self.parked.len() != self.tiles.len() {
@@ -292,14 +309,10 @@ impl Framebuffer {
                     self.parked[t][i]
                 }
             };
-            if self.samples > 1 {
-                resolve(
-                    (0..self.samples).map(|s| read(t + s * self.plane_tiles)),
-                    self.samples,
-                )
-            } else {
-                read(t)
-            }
+            resolve(
+                (0..self.samples).map(|s| read(t + s * self.plane_tiles)),
+                self.samples,
+            )
         })
     }
 
