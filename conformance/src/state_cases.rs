@@ -24,6 +24,7 @@ pub mod basic;
 pub mod eval;
 pub mod fbo;
 pub mod fbo_blit;
+pub mod pbo;
 pub mod piglit;
 
 /// The framebuffer size every state case runs with.
@@ -85,6 +86,10 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: framebuffer objects", fbo::CASES),
     ("state cases: framebuffer blits", fbo_blit::CASES),
     ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
+    (
+        "state cases: pixel buffer objects, buffer ranges",
+        pbo::CASES,
+    ),
 ];
 
 /// Every state and error case.

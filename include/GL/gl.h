@@ -935,6 +935,7 @@ GLAPI void GLAPIENTRY glEvalPoint2(GLint i, GLint j);
 GLAPI void GLAPIENTRY glFeedbackBuffer(GLsizei size, GLenum type, GLfloat *buffer);
 GLAPI void GLAPIENTRY glFinish(void);
 GLAPI void GLAPIENTRY glFlush(void);
+GLAPI void GLAPIENTRY glFlushMappedBufferRange(GLenum target, GLintptr offset, GLsizeiptr length);
 GLAPI void GLAPIENTRY glFogCoordPointer(GLenum type, GLsizei stride, const void *pointer);
 GLAPI void GLAPIENTRY glFogCoordd(GLdouble coord);
 GLAPI void GLAPIENTRY glFogCoorddv(const GLdouble *coord);
@@ -1043,6 +1044,7 @@ GLAPI void GLAPIENTRY glMap1f(GLenum target, GLfloat u1, GLfloat u2, GLint strid
 GLAPI void GLAPIENTRY glMap2d(GLenum target, GLdouble u1, GLdouble u2, GLint ustride, GLint uorder, GLdouble v1, GLdouble v2, GLint vstride, GLint vorder, const GLdouble *points);
 GLAPI void GLAPIENTRY glMap2f(GLenum target, GLfloat u1, GLfloat u2, GLint ustride, GLint uorder, GLfloat v1, GLfloat v2, GLint vstride, GLint vorder, const GLfloat *points);
 GLAPI void * GLAPIENTRY glMapBuffer(GLenum target, GLenum access);
+GLAPI void * GLAPIENTRY glMapBufferRange(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
 GLAPI void GLAPIENTRY glMapGrid1d(GLint un, GLdouble u1, GLdouble u2);
 GLAPI void GLAPIENTRY glMapGrid1f(GLint un, GLfloat u1, GLfloat u2);
 GLAPI void GLAPIENTRY glMapGrid2d(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);

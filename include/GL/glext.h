@@ -80,8 +80,17 @@ extern "C" {
 #ifndef GL_BUFFER_ACCESS_ARB
 #define GL_BUFFER_ACCESS_ARB 0x88BB
 #endif
+#ifndef GL_BUFFER_ACCESS_FLAGS
+#define GL_BUFFER_ACCESS_FLAGS 0x911F
+#endif
 #ifndef GL_BUFFER_MAPPED_ARB
 #define GL_BUFFER_MAPPED_ARB 0x88BC
+#endif
+#ifndef GL_BUFFER_MAP_LENGTH
+#define GL_BUFFER_MAP_LENGTH 0x9120
+#endif
+#ifndef GL_BUFFER_MAP_OFFSET
+#define GL_BUFFER_MAP_OFFSET 0x9121
 #endif
 #ifndef GL_BUFFER_MAP_POINTER_ARB
 #define GL_BUFFER_MAP_POINTER_ARB 0x88BD
@@ -680,6 +689,24 @@ extern "C" {
 #ifndef GL_LUMINANCE_ALPHA32F_ARB
 #define GL_LUMINANCE_ALPHA32F_ARB 0x8819
 #endif
+#ifndef GL_MAP_FLUSH_EXPLICIT_BIT
+#define GL_MAP_FLUSH_EXPLICIT_BIT 0x10
+#endif
+#ifndef GL_MAP_INVALIDATE_BUFFER_BIT
+#define GL_MAP_INVALIDATE_BUFFER_BIT 0x8
+#endif
+#ifndef GL_MAP_INVALIDATE_RANGE_BIT
+#define GL_MAP_INVALIDATE_RANGE_BIT 0x4
+#endif
+#ifndef GL_MAP_READ_BIT
+#define GL_MAP_READ_BIT 0x1
+#endif
+#ifndef GL_MAP_UNSYNCHRONIZED_BIT
+#define GL_MAP_UNSYNCHRONIZED_BIT 0x20
+#endif
+#ifndef GL_MAP_WRITE_BIT
+#define GL_MAP_WRITE_BIT 0x2
+#endif
 #ifndef GL_MAX_3D_TEXTURE_SIZE_EXT
 #define GL_MAX_3D_TEXTURE_SIZE_EXT 0x8073
 #endif
@@ -838,6 +865,42 @@ extern "C" {
 #endif
 #ifndef GL_PACK_SKIP_IMAGES_EXT
 #define GL_PACK_SKIP_IMAGES_EXT 0x806B
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER
+#define GL_PIXEL_PACK_BUFFER 0x88EB
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER_ARB
+#define GL_PIXEL_PACK_BUFFER_ARB 0x88EB
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER_BINDING
+#define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER_BINDING_ARB
+#define GL_PIXEL_PACK_BUFFER_BINDING_ARB 0x88ED
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER_BINDING_EXT
+#define GL_PIXEL_PACK_BUFFER_BINDING_EXT 0x88ED
+#endif
+#ifndef GL_PIXEL_PACK_BUFFER_EXT
+#define GL_PIXEL_PACK_BUFFER_EXT 0x88EB
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER
+#define GL_PIXEL_UNPACK_BUFFER 0x88EC
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER_ARB
+#define GL_PIXEL_UNPACK_BUFFER_ARB 0x88EC
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER_BINDING
+#define GL_PIXEL_UNPACK_BUFFER_BINDING 0x88EF
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER_BINDING_ARB
+#define GL_PIXEL_UNPACK_BUFFER_BINDING_ARB 0x88EF
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER_BINDING_EXT
+#define GL_PIXEL_UNPACK_BUFFER_BINDING_EXT 0x88EF
+#endif
+#ifndef GL_PIXEL_UNPACK_BUFFER_EXT
+#define GL_PIXEL_UNPACK_BUFFER_EXT 0x88EC
 #endif
 #ifndef GL_POINT_DISTANCE_ATTENUATION_ARB
 #define GL_POINT_DISTANCE_ATTENUATION_ARB 0x8129
@@ -1887,6 +1950,9 @@ typedef void (APIENTRYP PFNGLEVALPOINT2PROC)(GLint i, GLint j);
 typedef void (APIENTRYP PFNGLFEEDBACKBUFFERPROC)(GLsizei size, GLenum type, GLfloat *buffer);
 typedef void (APIENTRYP PFNGLFINISHPROC)(void);
 typedef void (APIENTRYP PFNGLFLUSHPROC)(void);
+typedef void (APIENTRYP PFNGLFLUSHMAPPEDBUFFERRANGEPROC)(GLenum target, GLintptr offset, GLsizeiptr length);
+GLAPI void GLAPIENTRY glFlushMappedBufferRangeEXT(GLenum target, GLintptr offset, GLsizeiptr length);
+typedef void (APIENTRYP PFNGLFLUSHMAPPEDBUFFERRANGEEXTPROC)(GLenum target, GLintptr offset, GLsizeiptr length);
 typedef void (APIENTRYP PFNGLFOGCOORDPOINTERPROC)(GLenum type, GLsizei stride, const void *pointer);
 GLAPI void GLAPIENTRY glFogCoordPointerEXT(GLenum type, GLsizei stride, const void *pointer);
 typedef void (APIENTRYP PFNGLFOGCOORDPOINTEREXTPROC)(GLenum type, GLsizei stride, const void *pointer);
@@ -2063,6 +2129,9 @@ typedef void (APIENTRYP PFNGLMAP2FPROC)(GLenum target, GLfloat u1, GLfloat u2, G
 typedef void * (APIENTRYP PFNGLMAPBUFFERPROC)(GLenum target, GLenum access);
 GLAPI void * GLAPIENTRY glMapBufferARB(GLenum target, GLenum access);
 typedef void * (APIENTRYP PFNGLMAPBUFFERARBPROC)(GLenum target, GLenum access);
+typedef void * (APIENTRYP PFNGLMAPBUFFERRANGEPROC)(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+GLAPI void * GLAPIENTRY glMapBufferRangeEXT(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
+typedef void * (APIENTRYP PFNGLMAPBUFFERRANGEEXTPROC)(GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access);
 typedef void (APIENTRYP PFNGLMAPGRID1DPROC)(GLint un, GLdouble u1, GLdouble u2);
 typedef void (APIENTRYP PFNGLMAPGRID1FPROC)(GLint un, GLfloat u1, GLfloat u2);
 typedef void (APIENTRYP PFNGLMAPGRID2DPROC)(GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2);

@@ -39,7 +39,7 @@ impl Context {
         if self.scene.is_full() {
             self.flush_scene();
         }
-        self.scene.bin(
+        self.scene.bin_all_planes(
             Command::Clear(ClearCommand {
                 rect,
                 color,

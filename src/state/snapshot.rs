@@ -169,6 +169,12 @@ impl Context {
         key.simd_units = !units.is_empty() && units.iter().all(|u| u.texture.simd_2d());
         key.fog = fog.map(|f| f.mode);
         key.count_samples = self.queries.active.is_some();
+        // Multisample fragment operations apply with a multisample buffer and GL_MULTISAMPLE
+        // on (section 4.1.3); each sample pass sets its threshold (`state::draw`).
+        let ms = self.multisample;
+        let multisampling = self.framebuffer.samples > 1 && ms.multisample;
+        key.alpha_to_coverage = multisampling && ms.alpha_to_coverage;
+        key.alpha_to_one = multisampling && ms.alpha_to_one;
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let raster = self.raster_draw();
         let clip_planes: Vec<DVec4> = clip_planes;
@@ -222,6 +228,7 @@ impl Context {
                 attr_count,
                 live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
                 coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
+                fast_lines: !self.force_general_path,
                 raster,
                 fragment: FragmentDraw {
                     units,

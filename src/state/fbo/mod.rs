@@ -1187,6 +1187,8 @@ impl Context {
             stencil_bits: if stencil { 8 } else { 0 },
             accum_bits: 0,
             double_buffer: false,
+            // Multisample renderbuffers (EXT_framebuffer_multisample) would set this.
+            samples: 0,
         }
     }
 }
