@@ -479,6 +479,37 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["draw-pixels", "-samples=4", "-auto"],
     &["copy-pixels", "-samples=2", "-auto"],
     &["copyteximage", "3D", "-samples=4", "-auto"],
+    // piglit's arb_framebuffer_object group, passing since ARB_framebuffer_object (docs/piglit.md,
+    // Dec 3 2026).
+    &[
+        "same-attachment-glFramebufferRenderbuffer-GL_DEPTH_STENCIL_ATTACHMENT",
+        "-auto",
+        "-fbo",
+    ],
+    &[
+        "arb_framebuffer_object-get-attachment-parameter-default-framebuffer",
+        "-auto",
+    ],
+    &["fbo-alpha", "-auto", "-fbo"],
+    &["fbo-blit-stretch", "-auto"],
+    &["fbo-luminance-alpha", "-auto", "-fbo"],
+    &["fbo-getframebufferattachmentparameter-01", "-auto", "-fbo"],
+    &["fbo-incomplete", "-auto", "-fbo"],
+    &["fbo-incomplete-invalid-texture", "-auto", "-fbo"],
+    &["fbo-incomplete-texture-01", "-auto", "-fbo"],
+    &["fbo-incomplete-texture-02", "-auto", "-fbo"],
+    &["fbo-incomplete-texture-03", "-auto", "-fbo"],
+    &["fbo-incomplete-texture-04", "-auto", "-fbo"],
+    &["fbo-mipmap-copypix", "-auto", "-fbo"],
+    &["fbo-viewport", "-auto"],
+    &["fbo-missing-attachment-blit", "to", "-auto", "-fbo"],
+    &["fbo-missing-attachment-blit", "from", "-auto", "-fbo"],
+    &["fbo-scissor-blit", "fbo", "-auto", "-fbo"],
+    &["fbo-scissor-blit", "window", "-auto"],
+    &["arb_framebuffer_object-mixed-buffer-sizes", "-auto", "-fbo"],
+    &["framebuffer-blit-mipmap", "-auto", "-fbo"],
+    &["framebuffer-blit-levels", "draw", "rgba", "-auto", "-fbo"],
+    &["framebuffer-blit-levels", "read", "rgba", "-auto", "-fbo"],
 ];
 
 #[test]
