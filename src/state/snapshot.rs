@@ -166,6 +166,8 @@ impl Context {
         };
         key.simd_units = !units.is_empty() && units.iter().all(|u| u.texture.simd_2d());
         key.fog = fog.map(|f| f.mode);
+        key.byte_env =
+            crate::common::cpu::available() && crate::fragment::bytenv::applies(&key, &units);
         key.count_samples = self.queries.active.is_some();
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let raster = self.raster_draw();
