@@ -254,7 +254,8 @@ mod x86 {
     /// What a unit reads besides the previous colour.
     struct Inputs<'a> {
         primary: Px,
-        texels: &'a [Option<Px>; MAX_TEXTURE_UNITS],
+        /// Each unit's texel by unit number, as colour words.
+        texels: &'a [Option<__m256i>; MAX_TEXTURE_UNITS],
     }
 
     #[inline]
@@ -262,7 +263,10 @@ mod x86 {
     fn source(s: CombineSource, cf: Px, ct: Px, cc: Px, inputs: &Inputs) -> Px {
         match s {
             CombineSource::Texture => ct,
-            CombineSource::TextureUnit(u) => inputs.texels[u as usize].unwrap_or(cf),
+            CombineSource::TextureUnit(u) => match inputs.texels[u as usize] {
+                Some(w) => Px::of_words(w),
+                None => cf,
+            },
             CombineSource::Constant => cc,
             CombineSource::PrimaryColor => inputs.primary,
             CombineSource::Previous => cf,
@@ -315,7 +319,11 @@ mod x86 {
             TexEnvMode::Decal if base == BaseFormat::Rgb => ct.with_alpha(cf),
             TexEnvMode::Combine => {
                 let k = &env.combine;
-                let cc = Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)));
+                let cc = if super::reads_constant(env) {
+                    Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)))
+                } else {
+                    Px::splat([0; 4])
+                };
                 let a0 = argument(k, 0, cf, ct, cc, inputs);
                 let a1 = argument(k, 1, cf, ct, cc, inputs);
                 let rgb = func(k.rgb, a0, a1, k.rgb_scale);
@@ -370,18 +378,14 @@ mod x86 {
         primary: __m256i,
         by_unit: &[Option<__m256i>; MAX_TEXTURE_UNITS],
     ) -> __m256i {
-        let mut texels = [None; MAX_TEXTURE_UNITS];
-        for (t, w) in texels.iter_mut().zip(by_unit) {
-            *t = w.map(|w| Px::of_words(w));
-        }
         let primary = Px::of_words(primary);
         let inputs = Inputs {
             primary,
-            texels: &texels,
+            texels: by_unit,
         };
         let mut color = primary;
         for (env, base, unit) in units {
-            let ct = texels[unit].unwrap_or(Px::splat([0; 4]));
+            let ct = Px::of_words(by_unit[unit].unwrap_or(_mm256_setzero_si256()));
             color = apply(env, base, color, ct, &inputs);
         }
         color.words()
