@@ -57,8 +57,10 @@ const EXTENSIONS: [&str; 2] = [
     "GL_EXT_texture_compression_s3tc",
 ];
 /// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see docs/features.md).
-const EXTRA_EXTENSIONS: [&str; 10] = [
+const EXTRA_EXTENSIONS: [&str; 11] = [
     "GL_NV_texture_env_combine4",
+    // The unsuffixed framebuffer-object enums (GL_FRAMEBUFFER, GL_MAX_SAMPLES, ...).
+    "GL_ARB_framebuffer_object",
     "GL_ARB_texture_rectangle",
     "GL_ATI_texture_mirror_once",
     "GL_EXT_texture_mirror_clamp",
@@ -74,7 +76,7 @@ const EXTRA_EXTENSIONS: [&str; 10] = [
 /// Enums of later core versions that captures use, generated like the others: generic
 /// compressed RED/RG (GL 3.0) and point sprites (ARB_point_sprite, GL 2.0's coordinate
 /// origin).
-const EXTRA_ENUMS: [&str; 7] = [
+const EXTRA_ENUMS: [&str; 18] = [
     "GL_COMPRESSED_RED",
     "GL_COMPRESSED_RG",
     "GL_POINT_SPRITE",
@@ -82,18 +84,87 @@ const EXTRA_ENUMS: [&str; 7] = [
     "GL_POINT_SPRITE_COORD_ORIGIN",
     "GL_LOWER_LEFT",
     "GL_UPPER_LEFT",
+    // ARB_pixel_buffer_object's targets under their GL 2.1 and EXT_pixel_buffer_object names.
+    "GL_PIXEL_PACK_BUFFER",
+    "GL_PIXEL_UNPACK_BUFFER",
+    "GL_PIXEL_PACK_BUFFER_BINDING",
+    "GL_PIXEL_UNPACK_BUFFER_BINDING",
+    "GL_PIXEL_PACK_BUFFER_EXT",
+    "GL_PIXEL_UNPACK_BUFFER_EXT",
+    "GL_PIXEL_PACK_BUFFER_BINDING_EXT",
+    "GL_PIXEL_UNPACK_BUFFER_BINDING_EXT",
+    // The buffer state ARB_map_buffer_range's mappings set (GL 3.0 names, no suffix).
+    "GL_BUFFER_ACCESS_FLAGS",
+    "GL_BUFFER_MAP_LENGTH",
+    "GL_BUFFER_MAP_OFFSET",
 ];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
 /// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
-const COMMAND_EXTENSIONS: [&str; 6] = [
+const COMMAND_EXTENSIONS: [&str; 8] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_vertex_array",
     "GL_EXT_provoking_vertex",
     "GL_EXT_framebuffer_object",
     "GL_EXT_framebuffer_blit",
+    "GL_ARB_map_buffer_range",
+    // No entry points: its targets and binding queries.
+    "GL_ARB_pixel_buffer_object",
+];
+
+/// The pixel commands of ARB_pixel_buffer_object (its issues 16 and 17) among tilegl's entry
+/// points: (command, pointer parameter, whether it packs into `GL_PIXEL_PACK_BUFFER` rather
+/// than unpacking from `GL_PIXEL_UNPACK_BUFFER`). While a buffer is bound to that target, the
+/// pointer is an offset into it: the `Gl` trait has a `<method>_pbo` variant taking the offset
+/// as `usize`, which the C exports call instead when a buffer is bound (and `ForeignGl`
+/// implements by passing the offset as the pointer).
+const PBO_COMMANDS: &[(&str, &str, bool)] = &[
+    ("glBitmap", "bitmap", false),
+    ("glCompressedTexImage1D", "data", false),
+    ("glCompressedTexImage2D", "data", false),
+    ("glCompressedTexImage3D", "data", false),
+    ("glCompressedTexSubImage1D", "data", false),
+    ("glCompressedTexSubImage2D", "data", false),
+    ("glCompressedTexSubImage3D", "data", false),
+    ("glDrawPixels", "pixels", false),
+    ("glPixelMapfv", "values", false),
+    ("glPixelMapuiv", "values", false),
+    ("glPixelMapusv", "values", false),
+    ("glPolygonStipple", "mask", false),
+    ("glTexImage1D", "pixels", false),
+    ("glTexImage2D", "pixels", false),
+    ("glTexImage3D", "pixels", false),
+    ("glTexSubImage1D", "pixels", false),
+    ("glTexSubImage2D", "pixels", false),
+    ("glTexSubImage3D", "pixels", false),
+    ("glGetCompressedTexImage", "img", true),
+    ("glGetPixelMapfv", "values", true),
+    ("glGetPixelMapuiv", "values", true),
+    ("glGetPixelMapusv", "values", true),
+    ("glGetPolygonStipple", "mask", true),
+    ("glGetTexImage", "pixels", true),
+    ("glReadPixels", "pixels", true),
+];
+
+/// The `PBO_COMMANDS` entry of a command: its pointer parameter and whether it packs.
+fn pbo_command(name: &str) -> Option<(&'static str, bool)> {
+    PBO_COMMANDS
+        .iter()
+        .find(|(c, _, _)| *c == name)
+        .map(|&(_, p, pack)| (p, pack))
+}
+
+/// ARB_framebuffer_object's commands that are not aliases of EXT_framebuffer_object's or
+/// EXT_framebuffer_blit's (the spec's "Dependencies on EXT_framebuffer_object": the bind
+/// commands differ, as they refuse names not made by `glGen*`) and its two new ones; the
+/// other unsuffixed names are aliases of the EXT commands (below).
+const ARB_FBO_COMMANDS: [&str; 4] = [
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
 ];
 
 const KEYWORDS: [&str; 12] = [
@@ -343,6 +414,13 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glFramebufferTexture3DEXT",
     "glFramebufferRenderbufferEXT",
     "glGenerateMipmapEXT",
+    // Buffer object commands execute immediately (like glBufferSubData).
+    "glFlushMappedBufferRange",
+    // ARB_framebuffer_object's own commands, likewise.
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
 ];
 
 /// Whether a display list being compiled records the command (instead of executing it).
@@ -545,6 +623,11 @@ fn main() {
             }
         }
     }
+    for n in ARB_FBO_COMMANDS {
+        if !core_cmds.iter().any(|c| c == n) {
+            core_cmds.push(n.to_string());
+        }
+    }
     // Single later-core enums captures use (generic compressed RED/RG of GL 3.0).
     for n in EXTRA_ENUMS {
         ext_enums.insert(n.to_string());
@@ -587,21 +670,6 @@ fn main() {
                     .or_default()
                     .push(target.clone());
             }
-        }
-    }
-    // EXT_framebuffer_object's "Dependencies on ARB_framebuffer_object and OpenGL 3.0" names
-    // the bind commands as the only ones that are not aliases (the ARB ones may not bind
-    // names of other contexts); in one context they do the same, and programs written for
-    // OpenGL 3.0 (piglit's triangle-rasterization -use_fbo) call them with GL_FRAMEBUFFER.
-    for (ext, arb) in [
-        ("glBindFramebufferEXT", "glBindFramebuffer"),
-        ("glBindRenderbufferEXT", "glBindRenderbuffer"),
-    ] {
-        if core_cmd_set.contains(&ext.to_string()) {
-            cmd_aliases
-                .entry(ext.to_string())
-                .or_default()
-                .push(arb.to_string());
         }
     }
     for v in cmd_aliases.values_mut() {
@@ -732,6 +800,81 @@ fn main() {
             names.join(", ")
         )
         .unwrap();
+        if let Some((pname, pack)) = pbo_command(&c.name) {
+            // The pixel-buffer variant: the pointer parameter becomes an offset.
+            let pbo_params: Vec<String> = c
+                .params
+                .iter()
+                .map(|p| {
+                    if p.name == pname {
+                        format!("{}: usize", ident(&p.name))
+                    } else {
+                        format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p))
+                    }
+                })
+                .collect();
+            let target = if pack {
+                "GL_PIXEL_PACK_BUFFER"
+            } else {
+                "GL_PIXEL_UNPACK_BUFFER"
+            };
+            writeln!(
+                s,
+                "    /// `{}` with a buffer bound to `{target}`: `{}` is an offset into it\n    /// (ARB_pixel_buffer_object).",
+                c.name,
+                ident(pname)
+            )
+            .unwrap();
+            writeln!(
+                s,
+                "    fn {rname}_pbo(&mut self, {}) {{",
+                pbo_params.join(", ")
+            )
+            .unwrap();
+            writeln!(s, "        let _ = ({},);", names.join(", ")).unwrap();
+            writeln!(s, "        self.unsupported(\"{}\");\n    }}", c.name).unwrap();
+            // Packing commands (never compiled into display lists) forward as they are. An
+            // unpacking one takes its data out of the buffer (the inherent `_pbo` method checks
+            // the access and returns the data) and goes on as the call with that data in client
+            // memory, so that a display list being compiled keeps the data (section 5.4 of
+            // OpenGL 2.1: buffer data is dereferenced when the list is compiled).
+            let body = if pack {
+                format!("{guard}Self::{rname}_pbo(self, {})", names.join(", "))
+            } else {
+                let p = c
+                    .params
+                    .iter()
+                    .find(|p| p.name == pname)
+                    .expect("pbo parameter");
+                let data = if trait_param_type(&c.name, p).starts_with("Option<") {
+                    "Some(&data)"
+                } else {
+                    "&data"
+                };
+                let args: Vec<String> = c
+                    .params
+                    .iter()
+                    .map(|p| {
+                        if p.name == pname {
+                            data.to_string()
+                        } else {
+                            ident(&p.name)
+                        }
+                    })
+                    .collect();
+                format!(
+                    "if !self.list_recording() {{ {guard}}} if let Some(data) = Self::{rname}_pbo(self, {}) {{ crate::api::Gl::{rname}(self, {}) }}",
+                    names.join(", "),
+                    args.join(", ")
+                )
+            };
+            writeln!(
+                forward_arms,
+                "    ({rname}_pbo) => {{ fn {rname}_pbo(&mut self, {}) {{ {body} }} }};",
+                pbo_params.join(", ")
+            )
+            .unwrap();
+        }
     }
     writeln!(s, "}}").unwrap();
     writeln!(
@@ -872,6 +1015,27 @@ fn main() {
         )
         .unwrap();
         writeln!(ex, "    with_current(|ctx| {{").unwrap();
+        if let Some((pname, pack)) = pbo_command(&c.name) {
+            // ARB_pixel_buffer_object: with a buffer bound, the pointer is an offset into it.
+            let args: Vec<String> = c
+                .params
+                .iter()
+                .map(|p| {
+                    let n = ident(&p.name);
+                    if p.name == pname {
+                        format!("{n} as usize")
+                    } else {
+                        n
+                    }
+                })
+                .collect();
+            writeln!(
+                ex,
+                "        if ctx.pixel_buffer_bound({pack}) {{ return Gl::{rname}_pbo(ctx, {}); }}",
+                args.join(", ")
+            )
+            .unwrap();
+        }
         ex.push_str(&conv);
         writeln!(
             ex,
@@ -970,6 +1134,62 @@ fn main() {
         )
         .unwrap();
         writeln!(fo, "    }}").unwrap();
+        if let Some((pname, _)) = pbo_command(&c.name) {
+            let pbo_params: Vec<String> = c
+                .params
+                .iter()
+                .map(|p| {
+                    if p.name == pname {
+                        format!("{}: usize", ident(&p.name))
+                    } else {
+                        format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p))
+                    }
+                })
+                .collect();
+            let pbo_args: Vec<String> = c
+                .params
+                .iter()
+                .zip(&f_args)
+                .map(|(p, a)| {
+                    if p.name == pname {
+                        format!("{} as {}", ident(&p.name), c_param_type(p))
+                    } else {
+                        a.clone()
+                    }
+                })
+                .collect();
+            writeln!(
+                fo,
+                "    fn {rname}_pbo(&mut self, {}) {{",
+                pbo_params.join(", ")
+            )
+            .unwrap();
+            writeln!(fo, "        let fp = self.fns[{idx}];").unwrap();
+            writeln!(
+                fo,
+                "        if fp.is_null() {{ self.unsupported(\"{}\"); return; }}",
+                c.name
+            )
+            .unwrap();
+            writeln!(
+                fo,
+                "        // SAFETY: as for `{rname}`; the offset travels as the pointer, as\n        // ARB_pixel_buffer_object has it while a pixel buffer is bound."
+            )
+            .unwrap();
+            writeln!(
+                fo,
+                "        let fp: unsafe extern \"C\" fn({}){c_ret} = unsafe {{ std::mem::transmute(fp) }};",
+                c_types.join(", ")
+            )
+            .unwrap();
+            writeln!(
+                fo,
+                "        #[allow(unused_variables)] let r = unsafe {{ fp({}) }};",
+                pbo_args.join(", ")
+            )
+            .unwrap();
+            writeln!(fo, "    }}").unwrap();
+        }
     }
     writeln!(fo, "}}").unwrap();
     capi_audit_tables(&mut ex, &core);

@@ -653,6 +653,75 @@ fn antialiased_lines_on_eight_lane_paths_match_the_general_path() {
     twins(&states);
 }
 
+/// 200 aliased segments of width `width` (one colour each, ends at one depth), window
+/// x-major and y-major, some through the window's edges.
+fn aliased_lines(gl: &mut Context, rng: &mut Rng, width: f32) {
+    gl.line_width(width);
+    gl.begin(GL_LINES);
+    for _ in 0..200 {
+        gl.color_4f(
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+        );
+        let z = rng.range(-8.0, -1.2);
+        let (x, y) = (rng.range(-1.3, 1.3) * -z, rng.range(-1.3, 1.3) * -z);
+        let (len, ang) = (rng.range(0.02, 1.5) * -z, rng.range(0.0, 6.3));
+        gl.vertex_3f(x, y, z);
+        gl.vertex_3f(x + len * ang.cos(), y + len * ang.sin(), z);
+    }
+    gl.end();
+}
+
+/// Antialiased lines walked row by row (their coverages eight at a time) and aliased lines
+/// whose colour is stored directly, against the general path's column walk and per-fragment
+/// stage: with a scissor rectangle cutting segments on both axes, tiles of every size the
+/// window makes, and the states that keep the direct store (no depth test, no blending) or
+/// leave it (a colour mask, depth writes).
+#[test]
+fn lines_by_rows_and_direct_stores_match_the_general_path() {
+    let states: [Setup; 6] = [
+        ("aliased width 3, no depth test", |gl, rng| {
+            gl.disable(GL_DEPTH_TEST);
+            aliased_lines(gl, rng, 3.0);
+        }),
+        ("aliased widths 1 and 4, scissor", |gl, rng| {
+            gl.disable(GL_DEPTH_TEST);
+            gl.enable(GL_SCISSOR_TEST);
+            gl.scissor(7, 13, 61, 70);
+            aliased_lines(gl, rng, 1.0);
+            aliased_lines(gl, rng, 4.0);
+        }),
+        ("aliased width 2, colour mask, depth writes", |gl, rng| {
+            gl.color_mask(1, 0, 1, 1);
+            aliased_lines(gl, rng, 2.0);
+        }),
+        (
+            "smooth over, no depth test, scissor, width 2.5",
+            |gl, rng| {
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_SCISSOR_TEST);
+                gl.scissor(5, 11, 70, 63);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                smooth_lines(gl, rng, 2.5);
+            },
+        ),
+        ("smooth without blending, width 1 then 6", |gl, rng| {
+            smooth_lines(gl, rng, 1.0);
+            smooth_lines(gl, rng, 6.0);
+        }),
+        ("smooth over with LEQUAL depth, width 11", |gl, rng| {
+            gl.depth_func(GL_LEQUAL);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            smooth_lines(gl, rng, 11.0);
+        }),
+    ];
+    twins(&states);
+}
+
 #[test]
 fn flat_sprites_match_the_general_path() {
     let states: [Setup; 4] = [

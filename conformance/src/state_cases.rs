@@ -17,12 +17,14 @@ use crate::c_route::CAbiContext;
 use crate::known_failures;
 use crate::mesa::{self, MesaContext, Oracle};
 
+pub mod arb_fbo;
 pub mod arrays;
 pub mod attrib;
 pub mod basic;
 pub mod eval;
 pub mod fbo;
 pub mod fbo_blit;
+pub mod pbo;
 pub mod piglit;
 
 /// The framebuffer size every state case runs with.
@@ -83,6 +85,11 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: piglit scripts", piglit::CASES),
     ("state cases: framebuffer objects", fbo::CASES),
     ("state cases: framebuffer blits", fbo_blit::CASES),
+    (
+        "state cases: pixel buffer objects, buffer ranges",
+        pbo::CASES,
+    ),
+    ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
 ];
 
 /// Every state and error case.

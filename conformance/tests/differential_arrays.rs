@@ -19,3 +19,13 @@ fn arrays_state_cases_agree_with_mesa() {
         tilegl_conformance::state_cases::arrays::CASES,
     );
 }
+
+/// ARB_pixel_buffer_object and ARB_map_buffer_range (the cases in
+/// `tilegl_conformance::state_cases::pbo`) against Mesa (`TILEGL_CASE` narrows them).
+#[test]
+fn pbo_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::pbo",
+        tilegl_conformance::state_cases::pbo::CASES,
+    );
+}

@@ -10,7 +10,7 @@
 //!
 //! Limits, reported through `eglGetError`: only `EGL_OPENGL_API` (up to OpenGL 1.5) can be
 //! bound, only window surfaces can be made (pbuffer and pixmap surfaces fail with
-//! `EGL_BAD_MATCH`), no multisample configurations, and swaps never wait
+//! `EGL_BAD_MATCH`), multisample configurations have 2 or 4 samples (`EGL_SAMPLES`), and swaps never wait
 //! (`eglSwapInterval` is recorded, `EGL_MAX_SWAP_INTERVAL` is 0).
 
 #![allow(non_snake_case)]
@@ -419,7 +419,8 @@ fn config_attrib(c: &FbConfig, a: EGLint) -> Option<EGLint> {
         EGL_NATIVE_RENDERABLE => TRUE as EGLint,
         EGL_NATIVE_VISUAL_ID => c.visualid as EGLint,
         EGL_NATIVE_VISUAL_TYPE => x11_dl::xlib::TrueColor,
-        EGL_SAMPLES | EGL_SAMPLE_BUFFERS => 0,
+        EGL_SAMPLES => c.samples,
+        EGL_SAMPLE_BUFFERS => (c.samples > 0) as EGLint,
         EGL_SURFACE_TYPE => EGL_WINDOW_BIT,
         EGL_TRANSPARENT_TYPE => EGL_NONE,
         EGL_TRANSPARENT_RED_VALUE | EGL_TRANSPARENT_GREEN_VALUE | EGL_TRANSPARENT_BLUE_VALUE => 0,
@@ -570,12 +571,13 @@ pub unsafe extern "C" fn eglChooseConfig(
         .map(|(_, b)| b)
         .sum::<i32>()
     };
-    // EGL 1.4 section 3.4.1: larger requested colour bits, smaller buffer size, smaller
-    // depth, smaller stencil, then the config id.
+    // EGL 1.4 section 3.4.1: larger requested colour bits, smaller buffer size, fewer
+    // samples, smaller depth, smaller stencil, then the config id.
     found.sort_by_key(|c| {
         (
             -colour(c),
             c.buffer_size(),
+            c.samples,
             c.depth_bits,
             c.stencil_bits,
             c.id,

@@ -5,8 +5,9 @@
 //! objects, display lists and buffer objects (`state::share`). `libGL.so.1` (a link to this
 //! library) exports these with the GL functions.
 //!
-//! Limits, reported honestly to the caller: no colour-index, stereo, auxiliary-buffer,
-//! multisample or pbuffer configurations (choosing one finds none); reading from a
+//! Limits, reported honestly to the caller: no colour-index, stereo, auxiliary-buffer
+//! or pbuffer configurations (choosing one finds none); multisample configurations have 2 or 4
+//! samples (`GLX_SAMPLES`) with depth and stencil; reading from a
 //! drawable other than the one drawn to (`glXMakeContextCurrent` with `read != draw`) reads the
 //! draw drawable; swaps never wait for a vertical blank, so the swap-interval extensions record
 //! the interval and report 0 as the interval in effect and as the maximum.
@@ -186,7 +187,8 @@ fn config_attrib(c: &FbConfig, attr: c_int) -> Option<c_int> {
         GLX_X_RENDERABLE => TRUE,
         GLX_FBCONFIG_ID => c.id,
         GLX_MAX_PBUFFER_WIDTH | GLX_MAX_PBUFFER_HEIGHT | GLX_MAX_PBUFFER_PIXELS => 0,
-        GLX_SAMPLE_BUFFERS | GLX_SAMPLES => 0,
+        GLX_SAMPLE_BUFFERS => (c.samples > 0) as c_int,
+        GLX_SAMPLES => c.samples,
         _ => return None,
     })
 }
@@ -284,7 +286,7 @@ fn choose(
             * c.accum
     };
     // Sort keys in GLX's priority order: larger requested colour bits, smaller buffer size,
-    // single-buffered first, larger depth, smaller stencil, larger requested accumulation
+    // single-buffered first, fewer samples, larger depth, smaller stencil, larger requested accumulation
     // bits, then the id. Configurations without an accumulation buffer come before those
     // with one when none is asked for (it costs memory and time).
     out.sort_by_key(|c| {
@@ -292,6 +294,7 @@ fn choose(
             -colour_bits(c),
             c.buffer_size(),
             c.double,
+            c.samples,
             -c.depth_bits,
             c.stencil_bits,
             -accum_bits(c),
@@ -333,7 +336,7 @@ fn config_for_visual(dpy: *mut Display, vis: *const XVisualInfo) -> Option<&'sta
     window::configs(dpy, vi.screen)
         .into_iter()
         .filter(|c| c.visualid == vi.visualid)
-        .max_by_key(|c| (c.double, c.depth_bits, c.stencil_bits, c.accum))
+        .max_by_key(|c| (c.double, c.depth_bits, c.stencil_bits, c.accum, -c.samples))
 }
 
 /// `glXQueryExtension`: GLX is always there (it needs no server extension).
@@ -465,14 +468,21 @@ pub unsafe extern "C" fn glXChooseVisual(
     // program choosing, say, a single- and a double-buffered visual gets two visuals.
     let mut picked = chosen().lock().unwrap_or_else(|e| e.into_inner());
     let same = |c: &FbConfig| {
-        (c.double, c.depth_bits, c.stencil_bits, c.accum, c.depth)
-            == (
-                best.double,
-                best.depth_bits,
-                best.stencil_bits,
-                best.accum,
-                best.depth,
-            )
+        (
+            c.double,
+            c.depth_bits,
+            c.stencil_bits,
+            c.accum,
+            c.depth,
+            c.samples,
+        ) == (
+            best.double,
+            best.depth_bits,
+            best.stencil_bits,
+            best.accum,
+            best.depth,
+            best.samples,
+        )
     };
     let best = found
         .iter()

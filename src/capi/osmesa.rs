@@ -346,6 +346,7 @@ pub extern "C" fn OSMesaCreateContextExt(
             stencil_bits: if stencil_bits > 0 { 8 } else { 0 },
             accum_bits: if accum_bits > 0 { 16 } else { 0 },
             double_buffer: false,
+            samples: 0,
         },
         threads: 0,
     };

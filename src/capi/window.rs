@@ -47,6 +47,8 @@ pub struct FbConfig {
     pub stencil_bits: i32,
     /// Bits per accumulation channel.
     pub accum: i32,
+    /// Samples per pixel of the multisample buffer (0: none).
+    pub samples: i32,
 }
 
 impl FbConfig {
@@ -64,6 +66,7 @@ impl FbConfig {
                 stencil_bits: self.stencil_bits as u32,
                 accum_bits: self.accum as u32,
                 double_buffer: self.double,
+                samples: self.samples as u32,
             },
             threads: 0,
         }
@@ -123,7 +126,9 @@ pub(crate) fn configs(dpy: *mut Display, screen: i32) -> Vec<&'static FbConfig> 
         let mut id = 0;
         for vi in infos.iter().filter(|vi| vi.depth >= 15) {
             for double in [true, false] {
-                for (depth_bits, stencil_bits) in [(24, 8), (0, 0)] {
+                // Multisample buffers (ARB_multisample) come with depth and stencil.
+                let kinds = [(24, 8, 0), (0, 0, 0), (24, 8, 2), (24, 8, 4)];
+                for (depth_bits, stencil_bits, samples) in kinds {
                     for accum in [0, 16] {
                         id += 1;
                         out.push(&*Box::leak(Box::new(FbConfig {
@@ -140,6 +145,7 @@ pub(crate) fn configs(dpy: *mut Display, screen: i32) -> Vec<&'static FbConfig> 
                             depth_bits,
                             stencil_bits,
                             accum,
+                            samples,
                         })));
                     }
                 }

@@ -15,7 +15,7 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
     if key.writes_nothing() {
         return span_nothing;
     }
-    if force_general {
+    if force_general || key.alpha_to_coverage || key.alpha_to_one {
         return span_general;
     }
     if depth_stencil_applies(key) {
@@ -64,7 +64,13 @@ pub fn select_span(key: &FragmentKey, force_general: bool) -> SpanFn {
 pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
     // The eight-fragment tail (no stencil, logic op, colour sum, fog or sample counting) and
     // eight-pixel samplers for every unit.
-    if force_general || key.writes_nothing() || !key.simd_units || !tail8_applies(key) {
+    if force_general
+        || key.writes_nothing()
+        || !key.simd_units
+        || !tail8_applies(key)
+        || key.alpha_to_coverage
+        || key.alpha_to_one
+    {
         return None;
     }
     match key.fast_texture {
@@ -82,7 +88,12 @@ pub fn select_pair(key: &FragmentKey, force_general: bool) -> Option<PairFn> {
 /// whose fragments finish eight at a time (`force_general`: none, so each pixel goes to the
 /// general path alone).
 pub fn select_covered(key: &FragmentKey, force_general: bool) -> Option<CoveredFn> {
-    if force_general || key.writes_nothing() || !untextured8_applies(key) {
+    if force_general
+        || key.writes_nothing()
+        || !untextured8_applies(key)
+        || key.alpha_to_coverage
+        || key.alpha_to_one
+    {
         return None;
     }
     Some(span_untextured8_covered)

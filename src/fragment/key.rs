@@ -69,6 +69,12 @@ pub struct FragmentKey {
     /// An occlusion query is active: count the fragments that pass the depth and stencil
     /// tests (only the general path counts, so draws without a query pay nothing).
     pub count_samples: bool,
+    /// GL_SAMPLE_ALPHA_TO_COVERAGE on a multisample buffer (section 4.1.3): a fragment of
+    /// the sample pass whose threshold is `Uniforms::coverage_alpha_ref` passes only with a
+    /// greater alpha (general path only).
+    pub alpha_to_coverage: bool,
+    /// GL_SAMPLE_ALPHA_TO_ONE on a multisample buffer: alpha becomes 1 before the alpha test.
+    pub alpha_to_one: bool,
 }
 
 /// Per-draw values read by the fragment stage.
@@ -80,6 +86,9 @@ pub struct Uniforms {
     pub stencil_value_mask: u8,
     pub stencil_write_mask: u8,
     pub blend_color: [f32; 4],
+    /// The alpha a fragment must exceed to cover this sample pass's sample under
+    /// `FragmentKey::alpha_to_coverage`: sample `s` of `n` is covered when alpha > s / n.
+    pub coverage_alpha_ref: f32,
 }
 
 impl FragmentKey {
@@ -112,5 +121,7 @@ impl FragmentKey {
             && !self.texturing
             && self.fog.is_none()
             && !self.count_samples
+            && !self.alpha_to_coverage
+            && !self.alpha_to_one
     }
 }

@@ -91,6 +91,10 @@ pub struct FramebufferConfig {
     pub accum_bits: u32,
     /// Front and back colour buffers (a GLX/EGL window); `false` is one front buffer (OSMesa).
     pub double_buffer: bool,
+    /// Samples per pixel of a multisample buffer (ARB_multisample, GL 1.3): 0 or 1 for none
+    /// (`GL_SAMPLE_BUFFERS` 0), else 2 or 4 ([`SAMPLE_POSITIONS`]). Each sample has its own
+    /// plane of tiles (colour, depth, stencil).
+    pub samples: u32,
 }
 
 impl Default for FramebufferConfig {
@@ -100,9 +104,36 @@ impl Default for FramebufferConfig {
             stencil_bits: 8,
             accum_bits: 0,
             double_buffer: false,
+            samples: 0,
         }
     }
 }
+
+/// The sample counts a multisample framebuffer may have.
+pub const SAMPLE_COUNTS: [u32; 2] = [2, 4];
+
+/// The position of each sample within its pixel, in GL window convention (y up, (0, 0) the
+/// pixel's lower-left corner), for `n` samples (`None` for a count without a pattern). 4x is
+/// the standard pattern llvmpipe uses, (0.375, 0.125), (0.875, 0.375), (0.125, 0.625),
+/// (0.625, 0.875) in its y-down convention, flipped; 2x the standard 2x pattern, (0.75, 0.75),
+/// (0.25, 0.25) y-down, flipped.
+pub fn sample_positions(n: u32) -> Option<&'static [[f64; 2]]> {
+    match n {
+        2 => Some(&SAMPLE_POSITIONS_2X),
+        4 => Some(&SAMPLE_POSITIONS),
+        _ => None,
+    }
+}
+
+/// The 4x sample positions (see [`sample_positions`]).
+pub const SAMPLE_POSITIONS: [[f64; 2]; 4] = [
+    [0.375, 0.875],
+    [0.875, 0.625],
+    [0.125, 0.375],
+    [0.625, 0.125],
+];
+/// The 2x sample positions (see [`sample_positions`]).
+pub const SAMPLE_POSITIONS_2X: [[f64; 2]; 2] = [[0.75, 0.25], [0.25, 0.75]];
 
 /// One of the colour buffers of a window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -131,7 +162,13 @@ pub struct Framebuffer {
     pub tiles_y: usize,
     /// log2 of the tiles' side ([`tile_shift`] when the framebuffer was made).
     pub tile_shift: u32,
+    /// The tiles of every sample plane: sample `s`'s tile `t` (of `tiles_x * tiles_y`) is
+    /// `tiles[s * plane_tiles + t]`. Without a multisample buffer there is one plane.
     pub tiles: Vec<Tile>,
+    /// Tiles per sample plane (`tiles_x * tiles_y`).
+    pub plane_tiles: usize,
+    /// Sample planes (1 without a multisample buffer).
+    pub samples: usize,
     pub config: FramebufferConfig,
     /// Which colour buffer the tiles' `color` storage holds at the moment.
     pub(crate) resident: ColorBuffer,
@@ -146,6 +183,11 @@ pub struct Framebuffer {
     /// fixed point over [-1, 1], row-major from the bottom row. Not tiled: only `glAccum` and
     /// its clear touch it, after the scene is flushed.
     pub accum: Vec<[i16; 4]>,
+    /// The colour components the colour buffer has (R, G, B, A), when not all four: reads
+    /// give 0 for a missing R, G or B and the largest value for a missing A (a framebuffer
+    /// object's luminance, alpha, red, RG or RGB image, ARB_framebuffer_object section
+    /// 4.3.2). The tiles hold what was drawn; the image keeps only its components.
+    pub(crate) components: Option<[bool; 4]>,
 }
 
 impl Framebuffer {
@@ -160,18 +202,26 @@ impl Framebuffer {
         let tiles_x = (width as usize).div_ceil(side);
         let tiles_y = (height as usize).div_ceil(side);
         let depth_max = depth_max(config.depth_bits);
-        let mut tiles = Vec::with_capacity(tiles_x * tiles_y);
-        for ty in 0..tiles_y {
-            for tx in 0..tiles_x {
-                tiles.push(Tile {
-                    x0: (tx * side) as i32,
-                    y0: (ty * side) as i32,
-                    shift,
-                    color: vec![[0; 4]; pixels],
-                    depth: vec![depth_max; pixels],
-                    stencil: vec![0; pixels],
-                    samples_passed: 0,
-                });
+        let samples = if sample_positions(config.samples).is_some() {
+            config.samples as usize
+        } else {
+            1
+        };
+        let plane_tiles = tiles_x * tiles_y;
+        let mut tiles = Vec::with_capacity(plane_tiles * samples);
+        for _ in 0..samples {
+            for ty in 0..tiles_y {
+                for tx in 0..tiles_x {
+                    tiles.push(Tile {
+                        x0: (tx * side) as i32,
+                        y0: (ty * side) as i32,
+                        shift,
+                        color: vec![[0; 4]; pixels],
+                        depth: vec![depth_max; pixels],
+                        stencil: vec![0; pixels],
+                        samples_passed: 0,
+                    });
+                }
             }
         }
         let (parked, initial) = if config.double_buffer {
@@ -191,12 +241,15 @@ impl Framebuffer {
             tiles_y,
             tile_shift: shift,
             tiles,
+            plane_tiles,
+            samples,
             config,
             resident: initial,
             parked,
             draw: DrawTarget::One(initial),
             read: initial,
             accum,
+            components: None,
         }
     }
 
@@ -234,15 +287,42 @@ impl Framebuffer {
         }
     }
 
-    /// Colour of window pixel (x, y) in `buffer` (the front buffer when single-buffered).
+    /// Colour of window pixel (x, y) in `buffer` (the front buffer when single-buffered); of
+    /// a multisample buffer, the average of its samples (the resolve).
     pub fn color_in(&self, buffer: ColorBuffer, x: i32, y: i32) -> Option<[u8; 4]> {
         self.locate(x, y).map(|(t, i)| {
-            if buffer == self.resident || self.parked.len() != self.tiles.len() {
-                self.tiles[t].color[i]
+            let read = |t: usize| {
+                if buffer == self.resident || self.parked.len() != self.tiles.len() {
+                    self.tiles[t].color[i]
+                } else {
+                    self.parked[t][i]
+                }
+            };
+            let c = if self.samples > 1 {
+                resolve(
+                    (0..self.samples).map(|s| read(t + s * self.plane_tiles)),
+                    self.samples,
+                )
             } else {
-                self.parked[t][i]
+                read(t)
+            };
+            match self.components {
+                None => c,
+                Some(has) => [
+                    if has[0] { c[0] } else { 0 },
+                    if has[1] { c[1] } else { 0 },
+                    if has[2] { c[2] } else { 0 },
+                    if has[3] { c[3] } else { 255 },
+                ],
             }
         })
+    }
+
+    /// The indices in `tiles` of tile `t` (of the first plane) in every sample plane.
+    #[inline]
+    pub fn sample_tiles(&self, t: usize) -> impl Iterator<Item = usize> {
+        let plane = self.plane_tiles;
+        (0..self.samples).map(move |s| t + s * plane)
     }
 
     /// The largest stored depth value.
@@ -271,11 +351,6 @@ impl Framebuffer {
         self.locate(x, y).map(|(t, _)| t)
     }
 
-    /// The colour of window pixel (x, y), for writing.
-    pub fn color_mut(&mut self, x: i32, y: i32) -> Option<&mut [u8; 4]> {
-        self.locate(x, y).map(|(t, i)| &mut self.tiles[t].color[i])
-    }
-
     /// Depth of window pixel (x, y) as stored.
     pub fn depth_at(&self, x: i32, y: i32) -> Option<u32> {
         self.locate(x, y).map(|(t, i)| self.tiles[t].depth[i])
@@ -290,7 +365,10 @@ impl Framebuffer {
     /// ABI, single-buffered, to adopt a caller's buffer).
     pub fn set_color(&mut self, x: i32, y: i32, rgba: [u8; 4]) {
         if let Some((t, i)) = self.locate(x, y) {
-            self.tiles[t].color[i] = rgba;
+            for s in 0..self.samples {
+                let t = t + s * self.plane_tiles;
+                self.tiles[t].color[i] = rgba;
+            }
         }
     }
 
@@ -298,14 +376,20 @@ impl Framebuffer {
     /// attached images so).
     pub fn set_depth(&mut self, x: i32, y: i32, depth: u32) {
         if let Some((t, i)) = self.locate(x, y) {
-            self.tiles[t].depth[i] = depth;
+            for s in 0..self.samples {
+                let t = t + s * self.plane_tiles;
+                self.tiles[t].depth[i] = depth;
+            }
         }
     }
 
     /// Overwrites the stencil index of window pixel (x, y).
     pub fn set_stencil(&mut self, x: i32, y: i32, stencil: u8) {
         if let Some((t, i)) = self.locate(x, y) {
-            self.tiles[t].stencil[i] = stencil;
+            for s in 0..self.samples {
+                let t = t + s * self.plane_tiles;
+                self.tiles[t].stencil[i] = stencil;
+            }
         }
     }
 
@@ -320,11 +404,37 @@ impl Framebuffer {
                 let tile = &self.tiles[(y >> s) * self.tiles_x + tx];
                 let row = (y & (side - 1)) << s;
                 let n = side.min(w - tx * side);
-                out.extend_from_slice(bytemuck::cast_slice(&tile.color[row..row + n]));
+                if self.samples > 1 {
+                    let t = (y >> s) * self.tiles_x + tx;
+                    for i in row..row + n {
+                        let rgba = resolve(
+                            self.sample_tiles(t).map(|t| self.tiles[t].color[i]),
+                            self.samples,
+                        );
+                        out.extend_from_slice(&rgba);
+                    }
+                } else {
+                    out.extend_from_slice(bytemuck::cast_slice(&tile.color[row..row + n]));
+                }
             }
         }
         out
     }
+}
+
+/// The resolved colour of a pixel's `n` samples: each channel's average, rounded to nearest
+/// (the stored bytes are unsigned normalised, so the average of the values is the average of
+/// the bytes).
+#[inline]
+pub fn resolve(samples: impl Iterator<Item = [u8; 4]>, n: usize) -> [u8; 4] {
+    let mut sum = [0u32; 4];
+    for c in samples {
+        for k in 0..4 {
+            sum[k] += u32::from(c[k]);
+        }
+    }
+    let n = n.max(1) as u32;
+    sum.map(|v| ((2 * v + n) / (2 * n)) as u8)
 }
 
 /// The largest depth value for a depth buffer of `bits` bits (0 bits behaves like 24 for

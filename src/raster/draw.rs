@@ -21,6 +21,9 @@ pub struct TileDraw {
     /// (`raster::coarse`): the key allows it (`coarse::applies`), and off on the general path,
     /// so twin tests compare both.
     pub coarse_depth: bool,
+    /// Whether aliased lines whose fragments only store a colour may store it directly
+    /// (`raster::line_tile`): off on the general path, so twin tests compare both.
+    pub fast_lines: bool,
     /// Point, line and polygon rasterization controls.
     pub raster: RasterDraw,
     /// What the span functions read.

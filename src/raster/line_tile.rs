@@ -5,11 +5,14 @@
 use super::coarse::CoarseDepth;
 use super::draw::TileDraw;
 use super::line::LineSetup;
+use super::pixels::stores_directly;
 use super::schedule::{shade_rect, MAX_SIDE};
 use super::setup::Plane;
+use crate::common::attr;
 use crate::common::attr::MAX_ATTRS;
+use crate::common::fixed::color4_to_u8;
 use crate::common::rect::Rect;
-use crate::fragment::span::{CoveredFn, Interpolants, PrimitiveShared, UnitLevels};
+use crate::fragment::span::{CoveredFn, CoveredRows, Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::Tile;
 
 /// What shading a tile's line commands needs besides the tile.
@@ -78,6 +81,59 @@ impl LineShading<'_, '_> {
             *p = Plane::constant(v as f64);
         }
         let p = &planes[..count];
+        if line.by_rows() {
+            // Antialiased: each row's pixels with their coverages at once, through the
+            // key's covered row function with the segment's inputs prepared once.
+            let shared = PrimitiveShared::new(self.levels);
+            let it = Interpolants {
+                z: Plane::constant(z),
+                inv_w: Plane::constant(1.0),
+                attrs: p,
+                perspective: false,
+                constant_primary: false,
+                coverage: 1.0,
+                shared: &shared,
+            };
+            if let Some(rows) = CoveredRows::new(&ds.fragment, &it) {
+                let clip = if line.x_major() {
+                    (d.x0 as i64, d.x1 as i64 - 1)
+                } else {
+                    (d.y0 as i64, d.y1 as i64 - 1)
+                };
+                let depth_write = ds.fragment.key.depth_write;
+                line.smooth_rows(major, minor, clip, |y, x0, coverage| {
+                    if depth_write {
+                        let x1 = x0 + coverage.len() as i32;
+                        let rect = Rect {
+                            x0,
+                            y0: y,
+                            x1,
+                            y1: y + 1,
+                        };
+                        self.coarse.forget(tile, rect);
+                    }
+                    rows.row(&ds.fragment, tile, y, x0, coverage);
+                });
+                return;
+            }
+        } else if line.is_aliased() && ds.fast_lines && stores_directly(ds) {
+            // Aliased, and the fragment stage only stores the colour: its bytes, stored
+            // directly (what the span function would store for the constant planes).
+            let rgba = color4_to_u8(std::array::from_fn(|k| {
+                p.get(attr::color(k)).map_or(0.0, |c| c.at(0.5, 0.5)) as f32
+            }));
+            line.fragments(ends, major, minor, line.major_clip(ds), |r, _, _, _| {
+                let rect = clip(r).intersect(&tile.rect());
+                if rect.is_empty() {
+                    return;
+                }
+                for y in rect.y0..rect.y1 {
+                    let at = tile.index(rect.x0, y);
+                    tile.color[at..at + (rect.x1 - rect.x0) as usize].fill(rgba);
+                }
+            });
+            return;
+        }
         let covered = ds.fragment.span_covered;
         if covered.is_some() && self.coverage.len() < side * side {
             self.coverage.resize(side * side, 0.0);

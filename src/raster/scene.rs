@@ -153,6 +153,11 @@ pub struct Scene {
     tiles_y: usize,
     /// log2 of the framebuffer's tile side.
     tile_shift: u32,
+    /// Bins per sample plane of a multisample framebuffer (`tiles_x * tiles_y`).
+    plane_tiles: usize,
+    /// The first bin of the sample plane that commands are binned into now (0 but while a
+    /// multisample draw records one sample's pass, `Scene::set_sample_plane`).
+    bin_base: usize,
 }
 
 /// Recorded commands that force a flush: bounds the scene's memory (each command costs at most a
@@ -166,10 +171,13 @@ pub const MAX_PIXEL_BYTES: usize = 1 << 26;
 impl Scene {
     pub fn new(fb: &Framebuffer) -> Scene {
         Scene {
-            bins: vec![Vec::new(); fb.tiles_x * fb.tiles_y],
+            // Not `fb.tiles.len()`: the tiles are away while workers shade in the background.
+            bins: vec![Vec::new(); fb.plane_tiles * fb.samples],
             tiles_x: fb.tiles_x,
             tiles_y: fb.tiles_y,
             tile_shift: fb.tile_shift,
+            plane_tiles: fb.plane_tiles,
+            bin_base: 0,
             ..Scene::default()
         }
     }
@@ -203,6 +211,32 @@ impl Scene {
         let offset = self.planes.len() as u32;
         self.planes.extend_from_slice(planes);
         offset
+    }
+
+    /// Bins commands into sample plane `sample` from now on (see `Framebuffer::tiles`).
+    pub fn set_sample_plane(&mut self, sample: usize) {
+        self.bin_base = sample * self.plane_tiles;
+    }
+
+    /// The sample plane commands are binned into.
+    pub fn sample_plane(&self) -> usize {
+        self.bin_base.checked_div(self.plane_tiles).unwrap_or(0)
+    }
+
+    /// Records `cmd` in every tile that `rect` touches, in every sample plane (clears and
+    /// pixel rectangles cover every sample of their pixels).
+    pub fn bin_all_planes(&mut self, cmd: Command, rect: Rect) {
+        if rect.is_empty() {
+            return;
+        }
+        let index = self.push(cmd);
+        let base = self.bin_base;
+        let planes = self.bins.len().checked_div(self.plane_tiles).unwrap_or(1);
+        for p in 0..planes {
+            self.bin_base = p * self.plane_tiles;
+            self.bin_again(index, rect);
+        }
+        self.bin_base = base;
     }
 
     /// log2 of the tiles' side.
@@ -251,7 +285,7 @@ impl Scene {
         let ty1 = (((rect.y1 - 1).max(0) >> s) as usize).min(self.tiles_y.saturating_sub(1));
         for ty in ty0..=ty1 {
             for tx in tx0..=tx1 {
-                let bin = &mut self.bins[ty * self.tiles_x + tx];
+                let bin = &mut self.bins[self.bin_base + ty * self.tiles_x + tx];
                 // The bin's next line (its entries are 4 bytes, written one by one).
                 prefetch::write_past(bin, 64, 4);
                 bin.push(index);

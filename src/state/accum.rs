@@ -216,11 +216,27 @@ fn accum_bands(
         AccumOp::Load | AccumOp::Accum => {
             // Read from the read buffer: the tiles' colours, or the parked buffer's.
             let parked = fb.read != fb.resident && fb.parked.len() == fb.tiles.len();
-            let sources: Vec<&[[u8; 4]]> = if parked {
+            let mut sources: Vec<&[[u8; 4]]> = if parked {
                 fb.parked.iter().map(|c| &c[..]).collect()
             } else {
                 fb.tiles.iter().map(|t| &t.color[..]).collect()
             };
+            // A multisample buffer's colours are read resolved (the samples' average).
+            let resolved: Vec<Vec<[u8; 4]>>;
+            if fb.samples > 1 {
+                let plane = fb.plane_tiles;
+                resolved = (0..plane)
+                    .map(|t| {
+                        (0..sources[t].len())
+                            .map(|i| {
+                                let each = (0..fb.samples).map(|s| sources[t + s * plane][i]);
+                                crate::framebuffer::resolve(each, fb.samples)
+                            })
+                            .collect()
+                    })
+                    .collect();
+                sources = resolved.iter().map(|c| &c[..]).collect();
+            }
             let keep = op == AccumOp::Accum;
             accum
                 .par_chunks_mut(side * w)
@@ -248,15 +264,18 @@ fn accum_bands(
             if mask == [false; 4] {
                 return;
             }
-            fb.tiles
-                .par_chunks_mut(tiles_x)
-                .zip(accum.par_chunks(side * w))
-                .enumerate()
-                .for_each(|(ty, (tiles, acc))| {
-                    pieces(ty, &mut |tx, t, a, n| {
-                        (k.ret)(&mut tiles[tx].color[t..t + n], &acc[a..a + n], value, mask)
-                    })
-                });
+            // Every sample of a multisample buffer gets the returned value.
+            for plane in fb.tiles.chunks_mut(fb.plane_tiles.max(1)) {
+                plane
+                    .par_chunks_mut(tiles_x)
+                    .zip(accum.par_chunks(side * w))
+                    .enumerate()
+                    .for_each(|(ty, (tiles, acc))| {
+                        pieces(ty, &mut |tx, t, a, n| {
+                            (k.ret)(&mut tiles[tx].color[t..t + n], &acc[a..a + n], value, mask)
+                        })
+                    });
+            }
         }
     }
 }

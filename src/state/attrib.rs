@@ -16,8 +16,9 @@ use crate::common::values::{AttribGroups, MatrixMode, MultisampleCap};
 use crate::gl::convert;
 use crate::gl::enums::*;
 
-/// Multisample state (table 6.x "multisample"). tilegl has no multisample buffer
-/// (`GL_SAMPLE_BUFFERS` is 0), so this state has no effect on rendering (section 3.2.1).
+/// Multisample state (table 6.x "multisample"). It acts on a framebuffer with a multisample
+/// buffer (`GL_SAMPLE_BUFFERS` 1: a GLX/EGL configuration with samples) and is ignored
+/// otherwise (section 3.2.1); the sample passes are made in `state::draw`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MultisampleState {
     pub multisample: bool,
@@ -383,6 +384,7 @@ impl Context {
     pub(crate) fn sample_coverage(&mut self, value: GLfloat, invert: GLboolean) {
         self.multisample.coverage_value = super::clamp01(value as f64) as f32;
         self.multisample.coverage_invert = invert != 0;
+        self.invalidate();
     }
 
     /// Depth of the attribute stack (`GL_ATTRIB_STACK_DEPTH`).

@@ -9,9 +9,9 @@
 //! invalid enum, a negative or over-limit size, a missing image): GL then records the call's
 //! own error without reading the data, and no slice longer than the caller meant is formed.
 //!
-//! Pixel buffer objects (`ARB_pixel_buffer_object`, OpenGL 2.1) are not part of OpenGL 1.5 and
-//! not offered: `glBindBuffer(GL_PIXEL_UNPACK_BUFFER, ..)` records `GL_INVALID_ENUM`, so a
-//! pixel pointer is always client memory (or NULL, "no data").
+//! With a pixel buffer object bound (`ARB_pixel_buffer_object`, `state/arrays/pixel_buffers.rs`)
+//! the same sizes bound the access to the buffer: the pointer is then an offset, and the C ABI
+//! calls the `*_pbo` entry points instead of sizing a client pointer.
 
 use super::Context;
 use crate::common::values::{DrawPixelsFormat, TexPixelFormat, TexPixelType};

@@ -38,7 +38,8 @@ impl Context {
         // not once per triangle that shares it (a strip's vertex belongs to three).
         let mut windows = std::mem::take(&mut self.window_buffer);
         windows.clear();
-        let shared_windows = ds.tile.raster.polygon_mode == [PolygonMode::Fill; 2]
+        let multisample = self.framebuffer.samples > 1;
+        let shared = ds.tile.raster.polygon_mode == [PolygonMode::Fill; 2]
             && !ds.vertex.two_sided
             && !matches!(
                 mode,
@@ -47,6 +48,8 @@ impl Context {
                     | PrimitiveMode::LineLoop
                     | PrimitiveMode::LineStrip
             );
+        // A multisample framebuffer takes each sample's window positions in its own pass.
+        let shared_windows = shared && !multisample;
         // Large batches are transformed on the worker threads too (each vertex independently,
         // results in order, so the output does not depend on the thread count).
         match &self.pool {
@@ -75,9 +78,52 @@ impl Context {
                 }
             }
         }
-        self.draw_clipped(&ds, mode, &clip, shared_windows.then_some(&windows[..]));
+        if multisample {
+            self.draw_sample_passes(&ds, mode, &clip, shared, &mut windows);
+        } else {
+            self.draw_clipped(&ds, mode, &clip, shared_windows.then_some(&windows[..]));
+        }
         self.clip_buffer = clip;
         self.window_buffer = windows;
+    }
+
+    /// Draws the primitives of `clip` once per sample of the multisample framebuffer, each
+    /// pass with the viewport shifted so that the pixel centres the rasterizer tests fall on
+    /// the sample's position, into that sample's plane of tiles. Samples outside the sample
+    /// coverage mask get no pass. With `GL_MULTISAMPLE` off every sample gets the unshifted
+    /// fragments (section 3.2.1: single-sample rasterization, values to every sample).
+    fn draw_sample_passes(
+        &mut self,
+        ds: &Arc<DrawState>,
+        mode: PrimitiveMode,
+        clip: &[ClipVertex],
+        shared: bool,
+        windows: &mut Vec<Option<WindowVertex>>,
+    ) {
+        let passes = match &self.sample_passes {
+            Some(p) if Arc::ptr_eq(&p.base, ds) => p.passes.clone(),
+            _ => {
+                let p = SamplePasses::new(
+                    ds,
+                    &self.multisample,
+                    self.framebuffer.samples,
+                    self.force_general_path,
+                );
+                let passes = p.passes.clone();
+                self.sample_passes = Some(p);
+                passes
+            }
+        };
+        for (sample, pass) in &passes {
+            if shared {
+                windows.clear();
+                windows.resize(clip.len(), None);
+                guard_band_windows(&pass.viewport, clip, windows);
+            }
+            self.scene.set_sample_plane(*sample);
+            self.draw_clipped(pass, mode, clip, shared.then_some(&windows[..]));
+        }
+        self.scene.set_sample_plane(0);
     }
 
     /// Assembles, clips and bins the primitives of `clip`. `windows`, when given, holds each
@@ -301,5 +347,77 @@ impl Context {
                 }
             }
         }
+    }
+}
+
+/// The per-sample draw states of one snapshot (see `Context::draw_sample_passes`).
+#[derive(Clone, Debug)]
+pub(crate) struct SamplePasses {
+    /// The snapshot they were made from.
+    base: Arc<DrawState>,
+    /// Each covered sample's plane and draw state.
+    passes: Vec<(usize, Arc<DrawState>)>,
+}
+
+impl SamplePasses {
+    fn new(
+        ds: &Arc<DrawState>,
+        ms: &super::attrib::MultisampleState,
+        samples: usize,
+        force_general: bool,
+    ) -> SamplePasses {
+        let positions = crate::framebuffer::sample_positions(samples as u32).unwrap_or(&[]);
+        let mask = if ms.multisample {
+            sample_coverage_mask(ms, samples)
+        } else {
+            u32::MAX
+        };
+        let mut passes = Vec::with_capacity(samples);
+        for (s, &[sx, sy]) in positions.iter().enumerate() {
+            if mask & (1 << s) == 0 {
+                continue;
+            }
+            let mut pass = (**ds).clone();
+            if ms.multisample {
+                let vp = &mut pass.viewport;
+                vp.viewport_offset[0] += 0.5 - sx;
+                vp.viewport_offset[1] += 0.5 - sy;
+                if vp.guard != crate::primitive::clip::EXACT {
+                    vp.guard = crate::primitive::clip::guard_factors(
+                        [vp.viewport_scale[0], vp.viewport_scale[1]],
+                        [vp.viewport_offset[0], vp.viewport_offset[1]],
+                    );
+                }
+            }
+            let key = ds.tile.fragment.key;
+            if key.alpha_to_coverage {
+                let mut tile = (*ds.tile).clone();
+                tile.fragment.uniforms.coverage_alpha_ref = s as f32 / samples as f32;
+                debug_assert!(force_general || tile.fragment.span_pair.is_none());
+                pass.tile = Arc::new(tile);
+            }
+            passes.push((s, Arc::new(pass)));
+        }
+        SamplePasses {
+            base: ds.clone(),
+            passes,
+        }
+    }
+}
+
+/// The samples `GL_SAMPLE_COVERAGE` leaves covered (bit `s` for sample `s`; all when it is
+/// off): the lowest floor(value x samples) samples, or the others when inverted (section
+/// 4.1.3 leaves the choice of bits to the implementation; this is Mesa's).
+pub(crate) fn sample_coverage_mask(ms: &super::attrib::MultisampleState, samples: usize) -> u32 {
+    let all = (1u32 << samples.min(31)) - 1;
+    if !ms.coverage {
+        return all;
+    }
+    let bits = ((ms.coverage_value * samples as f32) as u32).min(samples as u32);
+    let mask = (1u32 << bits) - 1;
+    if ms.coverage_invert {
+        all & !mask
+    } else {
+        mask
     }
 }

@@ -104,7 +104,7 @@ impl Context {
                 std::thread::park_timeout(std::time::Duration::from_micros(200));
             }
         }
-        let next = match self
+        let mut next = match self
             .spare_scene
             .take()
             .or_else(|| lock(&self.recycle.scenes).pop())
@@ -112,6 +112,8 @@ impl Context {
             Some(s) => s,
             None => Scene::new(&self.framebuffer),
         };
+        // A multisample draw hands off in the middle of one sample's pass.
+        next.set_sample_plane(self.scene.sample_plane());
         let scene = std::mem::replace(&mut self.scene, next);
         shared.enqueue(scene);
         for _ in 0..workers {

@@ -70,6 +70,8 @@ impl FragmentKey {
             byte_env: false,
             fog: None,
             count_samples: false,
+            alpha_to_coverage: false,
+            alpha_to_one: false,
         }
     }
 }
@@ -87,6 +89,7 @@ impl Uniforms {
             stencil_value_mask: (ops.stencil_value_mask & max.max(0) as u32) as u8,
             stencil_write_mask: (ops.stencil_writemask & max.max(0) as u32) as u8,
             blend_color: ops.blend_color,
+            coverage_alpha_ref: 0.0,
         }
     }
 }

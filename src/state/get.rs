@@ -229,7 +229,12 @@ impl Context {
                 Enum(convert::texture_unit_enum(self.client_active_texture))
             }
             Query::MaxAttribStackDepth => int1(limits::MAX_ATTRIB_STACK_DEPTH as i64),
-            Query::SampleBuffers | Query::Samples => int1(0),
+            Query::SampleBuffers => int1((self.framebuffer.samples > 1) as i64),
+            Query::Samples => int1(if self.framebuffer.samples > 1 {
+                self.framebuffer.samples as i64
+            } else {
+                0
+            }),
             Query::AlphaTestFunc => Enum(ops.alpha_func.to_gl()),
             // The alpha reference is a colour-like value: integer queries scale it.
             Query::AlphaTestRef => Normalized(vec![ops.alpha_ref as f64]),
@@ -254,6 +259,7 @@ impl Context {
             Query::RenderbufferBinding => int1(self.fbo.bound_renderbuffer as i64),
             Query::MaxColorAttachments => int1(super::fbo::MAX_COLOR_ATTACHMENTS as i64),
             Query::MaxRenderbufferSize => int1(super::fbo::MAX_RENDERBUFFER_SIZE as i64),
+            Query::MaxSamples => int1(super::fbo::MAX_SAMPLES as i64),
             Query::QuadsFollowProvokingVertex => {
                 bool1(crate::primitive::assemble::QUADS_FOLLOW_PROVOKING_VERTEX)
             }

@@ -73,7 +73,9 @@ impl Default for ContextConfig {
 /// Each name ends with a space, the last too, as in Mesa's and other drivers' strings:
 /// programs that print the names one per line by turning spaces into newlines (piglit's
 /// glinfo) end their last line so.
-pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_multitexture GL_ARB_point_parameters GL_ARB_point_sprite \
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_map_buffer_range \
+GL_ARB_multisample GL_ARB_multitexture GL_ARB_pixel_buffer_object GL_ARB_point_parameters \
+GL_ARB_point_sprite \
 GL_ARB_provoking_vertex \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
@@ -83,7 +85,8 @@ GL_EXT_blend_color GL_EXT_blend_equation_separate GL_EXT_blend_func_separate \
 GL_EXT_blend_minmax GL_EXT_blend_subtract \
 GL_EXT_compiled_vertex_array GL_EXT_draw_range_elements GL_EXT_fog_coord GL_EXT_framebuffer_blit \
 GL_EXT_framebuffer_object \
-GL_EXT_multi_draw_arrays GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_provoking_vertex \
+GL_EXT_multi_draw_arrays GL_EXT_packed_depth_stencil GL_EXT_packed_pixels GL_EXT_pixel_buffer_object \
+GL_EXT_provoking_vertex \
 GL_EXT_rescale_normal GL_EXT_secondary_color GL_EXT_separate_specular_color GL_EXT_shadow_funcs \
 GL_EXT_stencil_wrap GL_EXT_texture3D \
 GL_EXT_texture_compression_s3tc GL_EXT_texture_edge_clamp GL_EXT_texture_env_add \
@@ -169,6 +172,9 @@ pub struct Context {
     pub(crate) attrib_stack: Vec<Box<attrib::AttribEntry>>,
     /// Multisample enables and sample coverage.
     pub(crate) multisample: attrib::MultisampleState,
+    /// The sample passes of a multisample framebuffer's draws (`state::draw`), for the
+    /// snapshot they were made from.
+    pub(crate) sample_passes: Option<draw::SamplePasses>,
     /// Occlusion query objects and the active query.
     pub(crate) queries: queries::QueryState,
     /// Render mode, name stack, selection and feedback buffers.
@@ -270,6 +276,7 @@ impl Context {
             lists: Default::default(),
             attrib_stack: Vec::new(),
             multisample: Default::default(),
+            sample_passes: None,
             queries: Default::default(),
             select: Default::default(),
             eval: Default::default(),

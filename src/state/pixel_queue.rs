@@ -140,7 +140,7 @@ impl Context {
         }
         let z = self.raster_pos.window[2];
         if let Some(c) = BitmapCommand::new(state, rect, z, attrs, at as u32, direct) {
-            self.scene.bin(Command::Bitmap(c), rect);
+            self.scene.bin_all_planes(Command::Bitmap(c), rect);
         }
     }
 
@@ -206,7 +206,7 @@ impl Context {
             }
         }
         if let Some(c) = PixelsCommand::new(state, rect, z, attrs, image as u32, direct) {
-            scene.bin(Command::Pixels(c), rect);
+            scene.bin_all_planes(Command::Pixels(c), rect);
         }
         true
     }

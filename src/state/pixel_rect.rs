@@ -523,14 +523,12 @@ impl Context {
             coverage: 1.0,
             shared: &shared,
         };
-        (ds.fragment.span)(
-            &ds.fragment,
-            &mut self.framebuffer.tiles[t],
-            y,
-            x,
-            x + 1,
-            &it,
-        );
+        // A pixel rectangle's fragment covers every sample of its pixel.
+        let fb = &mut self.framebuffer;
+        for s in 0..fb.samples {
+            let t = t + s * fb.plane_tiles;
+            (ds.fragment.span)(&ds.fragment, &mut fb.tiles[t], y, x, x + 1, &it);
+        }
     }
 
     /// Draws a converted `width` x `height` image at the raster position with the zoom.
@@ -574,14 +572,18 @@ impl Context {
                         let d = depth_write.then(|| depth_to_fixed(d, depth_max));
                         for y in y0..y1 {
                             for x in x0..x1 {
-                                if let Some(t) = self.framebuffer.tile_index(x as i32, y as i32) {
-                                    let tile = &mut self.framebuffer.tiles[t];
-                                    let idx = tile.index(x as i32, y as i32);
-                                    if let Some(d) = d {
-                                        tile.depth[idx] = d;
+                                let fb = &mut self.framebuffer;
+                                if let Some(t) = fb.tile_index(x as i32, y as i32) {
+                                    for k in 0..fb.samples {
+                                        let tile = &mut fb.tiles[t + k * fb.plane_tiles];
+                                        let idx = tile.index(x as i32, y as i32);
+                                        if let Some(d) = d {
+                                            tile.depth[idx] = d;
+                                        }
+                                        let old = tile.stencil[idx];
+                                        tile.stencil[idx] =
+                                            (old & !stencil_mask) | (s & stencil_mask);
                                     }
-                                    let old = tile.stencil[idx];
-                                    tile.stencil[idx] = (old & !stencil_mask) | (s & stencil_mask);
                                 }
                             }
                         }
@@ -590,11 +592,15 @@ impl Context {
                     PixelValue::Stencil(s) => {
                         for y in y0..y1 {
                             for x in x0..x1 {
-                                if let Some(t) = self.framebuffer.tile_index(x as i32, y as i32) {
-                                    let tile = &mut self.framebuffer.tiles[t];
-                                    let idx = tile.index(x as i32, y as i32);
-                                    let old = tile.stencil[idx];
-                                    tile.stencil[idx] = (old & !stencil_mask) | (s & stencil_mask);
+                                let fb = &mut self.framebuffer;
+                                if let Some(t) = fb.tile_index(x as i32, y as i32) {
+                                    for k in 0..fb.samples {
+                                        let tile = &mut fb.tiles[t + k * fb.plane_tiles];
+                                        let idx = tile.index(x as i32, y as i32);
+                                        let old = tile.stencil[idx];
+                                        tile.stencil[idx] =
+                                            (old & !stencil_mask) | (s & stencil_mask);
+                                    }
                                 }
                             }
                         }

@@ -151,6 +151,8 @@ impl Context {
         };
         let mut key =
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
+        // A framebuffer object's image without some components never gets them written.
+        key.color_mask = self.color_write_mask();
         key.texturing = !units.is_empty();
         key.fast_texture = match units.as_slice() {
             [u] if matches!(u.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
@@ -169,6 +171,12 @@ impl Context {
         key.byte_env =
             crate::common::cpu::available() && crate::fragment::bytenv::applies(&key, &units);
         key.count_samples = self.queries.active.is_some();
+        // Multisample fragment operations apply with a multisample buffer and GL_MULTISAMPLE
+        // on (section 4.1.3); each sample pass sets its threshold (`state::draw`).
+        let ms = self.multisample;
+        let multisampling = self.framebuffer.samples > 1 && ms.multisample;
+        key.alpha_to_coverage = multisampling && ms.alpha_to_coverage;
+        key.alpha_to_one = multisampling && ms.alpha_to_one;
         let uniforms = Uniforms::from_state(ops, cfg.stencil_bits);
         let raster = self.raster_draw();
         let clip_planes: Vec<DVec4> = clip_planes;
@@ -222,6 +230,7 @@ impl Context {
                 attr_count,
                 live_attrs: live_attrs(&units, fog.is_some(), color_sum, attr_count),
                 coarse_depth: !self.force_general_path && crate::raster::coarse::applies(&key),
+                fast_lines: !self.force_general_path,
                 raster,
                 fragment: FragmentDraw {
                     units,

@@ -95,6 +95,10 @@ pub enum InterleavedFormat {
 pub enum BufferTarget {
     Array,
     ElementArray,
+    /// ARB_pixel_buffer_object: where pixel commands pack (write) to.
+    PixelPack,
+    /// ARB_pixel_buffer_object: where pixel commands unpack (read) from.
+    PixelUnpack,
 }
 
 /// `glMapBuffer` access modes.
@@ -112,6 +116,11 @@ pub enum BufferParam {
     Usage,
     Access,
     Mapped,
+    /// ARB_map_buffer_range's mapping state (`GL_BUFFER_ACCESS_FLAGS`, `GL_BUFFER_MAP_OFFSET`,
+    /// `GL_BUFFER_MAP_LENGTH`).
+    AccessFlags,
+    MapOffset,
+    MapLength,
 }
 
 /// What a vertex-array, buffer or display-list `glGet` asks (table 6.8, 6.9, 6.37).
@@ -126,6 +135,8 @@ pub enum ArrayQuery {
     BufferBinding(ClientArray),
     ArrayBufferBinding,
     ElementArrayBufferBinding,
+    PixelPackBufferBinding,
+    PixelUnpackBufferBinding,
     MaxElementsVertices,
     MaxElementsIndices,
     ClientAttribStackDepth,

@@ -43,6 +43,15 @@ pub(super) fn finish_fragment<
     if it.coverage != 1.0 {
         color[3] = color[3].clamp(0.0, 1.0) * it.coverage;
     }
+    if !SIMPLE && (key.alpha_to_coverage || key.alpha_to_one) {
+        // Multisample fragment operations (section 4.1.3), before the alpha test.
+        if key.alpha_to_coverage && color[3].clamp(0.0, 1.0) <= u.coverage_alpha_ref {
+            return;
+        }
+        if key.alpha_to_one {
+            color[3] = 1.0;
+        }
+    }
     if !SIMPLE {
         if let Some(f) = key.alpha_func {
             if !f.test(color[3].clamp(0.0, 1.0), u.alpha_ref) {

@@ -442,6 +442,70 @@ pub fn span_untextured8_covered<'a>(
     untextured8(ds, tile, y, x0, x1, it, Some(coverage))
 }
 
+/// [`span_untextured8_covered`] for a primitive whose fragments all have the same inputs (an
+/// antialiased line with one colour and one depth, the constant planes of
+/// `raster::line_tile`): the eight-lane inputs and the tail are prepared once
+/// ([`CoveredRows::new`]) instead of per row, and each row only reads the stored colours and
+/// depths, multiplies the lanes' alphas by their coverages and runs the tail, as
+/// [`untextured8`] does for every lane of such a primitive.
+#[derive(Debug)]
+pub struct CoveredRows {
+    tail: Tail8,
+    /// Every lane's inputs, fog factors made (`SpanRun::constant_group`).
+    group: GroupInputs,
+}
+
+impl CoveredRows {
+    /// The rows' set-up for interpolants `it` (constant planes: `Plane::constant`), when the
+    /// key has the covered row function (`FragmentDraw::span_covered`: none on the general
+    /// path) and every pixel's evaluated and stepped inputs are the same bits.
+    pub fn new(ds: &FragmentDraw, it: &Interpolants) -> Option<CoveredRows> {
+        ds.span_covered?;
+        // Pixel centres are positive, so the evaluation at the first one is every pixel's.
+        let group = SpanRun::new(it, 0, 0.5, lane_colors(ds))
+            .with_fog(ds)
+            .constant_group(ds)?;
+        Some(CoveredRows {
+            tail: tail8(ds, false, false, false),
+            group,
+        })
+    }
+
+    /// Shades pixels `x0..x0 + coverage.len()` of row `y` (in `tile`), pixel `x0 + i` with
+    /// coverage `coverage[i]`, as [`span_untextured8_covered`] shades them.
+    pub fn row(&self, ds: &FragmentDraw, tile: &mut Tile, y: i32, x0: i32, coverage: &[f32]) {
+        let row = tile.index(x0, y);
+        let c = &self.group;
+        let mut dst = [0u32; 8];
+        for (g, cov) in coverage.chunks(8).enumerate() {
+            let n = cov.len();
+            let base = row + 8 * g;
+            if stencil_rejects_all(ds, tile, base, 0..n) {
+                continue;
+            }
+            let mut pass = 0u8;
+            for j in 0..n {
+                pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
+                dst[j] = u32::from_le_bytes(tile.color[base + j]);
+            }
+            let mut primary = c.primary;
+            for (a, &k) in primary[3].iter_mut().zip(cov) {
+                if k != 1.0 {
+                    *a = a.clamp(0.0, 1.0) * k;
+                }
+            }
+            if ds.key.stencil.is_some() {
+                pass = stencil_row(ds, tile, base, n, pass);
+            }
+            if let Some((words, passed)) =
+                simd::shade8(&self.tail, &primary, &primary, &dst, pass, &c.after)
+            {
+                store_group(ds, tile, base, 0..n, &words, passed, &c.depth);
+            }
+        }
+    }
+}
+
 /// [`span_untextured8`]'s eight-lane loop; with `coverage`, pixel `x0 + i`'s alpha is
 /// multiplied by `coverage[i]` as `finish_fragment` does it.
 #[inline(always)]

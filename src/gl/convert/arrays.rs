@@ -85,6 +85,8 @@ pub fn buffer_target(e: GLenum) -> Option<BufferTarget> {
     Some(match e {
         GL_ARRAY_BUFFER => BufferTarget::Array,
         GL_ELEMENT_ARRAY_BUFFER => BufferTarget::ElementArray,
+        GL_PIXEL_PACK_BUFFER => BufferTarget::PixelPack,
+        GL_PIXEL_UNPACK_BUFFER => BufferTarget::PixelUnpack,
         _ => return None,
     })
 }
@@ -131,6 +133,9 @@ pub fn buffer_param(e: GLenum) -> Option<BufferParam> {
         GL_BUFFER_USAGE => BufferParam::Usage,
         GL_BUFFER_ACCESS => BufferParam::Access,
         GL_BUFFER_MAPPED => BufferParam::Mapped,
+        GL_BUFFER_ACCESS_FLAGS => BufferParam::AccessFlags,
+        GL_BUFFER_MAP_OFFSET => BufferParam::MapOffset,
+        GL_BUFFER_MAP_LENGTH => BufferParam::MapLength,
         _ => return None,
     })
 }
@@ -194,6 +199,8 @@ pub fn array_query(e: GLenum) -> Option<ArrayQuery> {
         GL_INDEX_ARRAY_BUFFER_BINDING => BufferBinding(A::Index),
         GL_ARRAY_BUFFER_BINDING => ArrayBufferBinding,
         GL_ELEMENT_ARRAY_BUFFER_BINDING => ElementArrayBufferBinding,
+        GL_PIXEL_PACK_BUFFER_BINDING => PixelPackBufferBinding,
+        GL_PIXEL_UNPACK_BUFFER_BINDING => PixelUnpackBufferBinding,
         GL_MAX_ELEMENTS_VERTICES => MaxElementsVertices,
         GL_MAX_ELEMENTS_INDICES => MaxElementsIndices,
         GL_CLIENT_ATTRIB_STACK_DEPTH => ClientAttribStackDepth,

@@ -7,6 +7,8 @@ impl Context {
         match target {
             BufferTarget::Array => self.client.arrays.array_buffer,
             BufferTarget::ElementArray => self.client.arrays.element_array_buffer,
+            BufferTarget::PixelPack => self.client.pixel_buffers[0],
+            BufferTarget::PixelUnpack => self.client.pixel_buffers[1],
         }
     }
 
@@ -64,6 +66,8 @@ impl Context {
         match t {
             BufferTarget::Array => a.array_buffer = buffer,
             BufferTarget::ElementArray => a.element_array_buffer = buffer,
+            BufferTarget::PixelPack => self.client.pixel_buffers[0] = buffer,
+            BufferTarget::PixelUnpack => self.client.pixel_buffers[1] = buffer,
         }
     }
 
@@ -77,6 +81,11 @@ impl Context {
                 continue;
             }
             // A deleted buffer is unbound from every binding point (section 2.9).
+            for b in &mut self.client.pixel_buffers {
+                if *b == name {
+                    *b = 0;
+                }
+            }
             let a = &mut self.client.arrays;
             for b in [&mut a.array_buffer, &mut a.element_array_buffer] {
                 if *b == name {
@@ -146,8 +155,7 @@ impl Context {
             *b = BufferObject {
                 data: store,
                 usage,
-                access: BufferAccess::ReadWrite,
-                mapped: false,
+                ..BufferObject::default()
             };
             Ok(())
         });
@@ -230,6 +238,13 @@ impl Context {
             }
             b.mapped = true;
             b.access = access;
+            b.map_offset = 0;
+            b.map_length = b.data.len();
+            b.access_flags = match access {
+                BufferAccess::ReadOnly => GL_MAP_READ_BIT,
+                BufferAccess::WriteOnly => GL_MAP_WRITE_BIT,
+                BufferAccess::ReadWrite => GL_MAP_READ_BIT | GL_MAP_WRITE_BIT,
+            };
             // The store is not reallocated while mapped (every call that would is refused or
             // ends the mapping first), so the address stays valid until glUnmapBuffer.
             Ok(ClientPtr(b.data.as_mut_ptr() as usize))
@@ -247,8 +262,12 @@ impl Context {
         target: GLenum,
     ) -> Option<MappedRwLockWriteGuard<'_, [u8]>> {
         let b = self.bound_buffer(target).ok()?;
-        b.mapped
-            .then(|| MappedRwLockWriteGuard::map(b, |b| &mut b.data[..]))
+        b.mapped.then(|| {
+            MappedRwLockWriteGuard::map(b, |b| {
+                let r = b.map_offset..b.map_offset + b.map_length;
+                &mut b.data[r]
+            })
+        })
     }
 
     pub(crate) fn unmap_buffer(&mut self, target: GLenum) -> GLboolean {
@@ -257,6 +276,9 @@ impl Context {
                 return Err(GL_INVALID_OPERATION);
             }
             b.mapped = false;
+            b.map_offset = 0;
+            b.map_length = 0;
+            b.access_flags = 0;
             Ok(())
         });
         match r {
@@ -283,6 +305,9 @@ impl Context {
             BufferParam::Usage => b.usage as GLint,
             BufferParam::Access => b.access.to_gl() as GLint,
             BufferParam::Mapped => b.mapped as GLint,
+            BufferParam::AccessFlags => b.access_flags as GLint,
+            BufferParam::MapOffset => b.map_offset.min(i32::MAX as usize) as GLint,
+            BufferParam::MapLength => b.map_length.min(i32::MAX as usize) as GLint,
         });
         let v = match r {
             Ok(v) => v,
@@ -301,7 +326,7 @@ impl Context {
         }
         let r = self.bound_buffer(target).map(|mut b| {
             if b.mapped {
-                b.data.as_mut_ptr() as usize
+                b.data.as_mut_ptr() as usize + b.map_offset
             } else {
                 0
             }
@@ -309,6 +334,80 @@ impl Context {
         match r {
             Ok(p) => self.client_memory.store_pointer(params, p),
             Err(e) => self.record_error(e),
+        }
+    }
+
+    /// `glMapBufferRange` (ARB_map_buffer_range): maps `length` bytes at `offset`.
+    pub(crate) fn map_buffer_range(
+        &mut self,
+        target: GLenum,
+        offset: GLintptr,
+        length: GLsizeiptr,
+        access: GLbitfield,
+    ) -> ClientPtr {
+        const READ_EXCLUDES: GLbitfield =
+            GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT;
+        const ALL: GLbitfield =
+            GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | READ_EXCLUDES | GL_MAP_FLUSH_EXPLICIT_BIT;
+        let r = (|| {
+            let mut b = self.bound_buffer(target)?;
+            if offset < 0 || length < 0 || access & !ALL != 0 {
+                return Err(GL_INVALID_VALUE);
+            }
+            let rw = access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
+            if rw == 0
+                || access & GL_MAP_READ_BIT != 0 && access & READ_EXCLUDES != 0
+                || access & GL_MAP_FLUSH_EXPLICIT_BIT != 0 && access & GL_MAP_WRITE_BIT == 0
+            {
+                return Err(GL_INVALID_OPERATION);
+            }
+            if offset as u64 + length as u64 > b.data.len() as u64 {
+                return Err(GL_INVALID_VALUE);
+            }
+            if b.mapped {
+                return Err(GL_INVALID_OPERATION);
+            }
+            b.mapped = true;
+            b.access = match rw {
+                GL_MAP_READ_BIT => BufferAccess::ReadOnly,
+                GL_MAP_WRITE_BIT => BufferAccess::WriteOnly,
+                _ => BufferAccess::ReadWrite,
+            };
+            b.map_offset = offset as usize;
+            b.map_length = length as usize;
+            b.access_flags = access;
+            // As for glMapBuffer: the store stays put until the mapping ends.
+            Ok(ClientPtr(b.data.as_mut_ptr() as usize + offset as usize))
+        })();
+        r.unwrap_or_else(|e| {
+            self.record_error(e);
+            ClientPtr(0)
+        })
+    }
+
+    /// `glFlushMappedBufferRange` (ARB_map_buffer_range). Writes through the mapping reach the
+    /// store directly, so a valid flush has nothing left to do.
+    pub(crate) fn flush_mapped_buffer_range(
+        &mut self,
+        target: GLenum,
+        offset: GLintptr,
+        length: GLsizeiptr,
+    ) {
+        let r = (|| {
+            let b = self.bound_buffer(target)?;
+            if offset < 0 || length < 0 {
+                return Err(GL_INVALID_VALUE);
+            }
+            if !b.mapped || b.access_flags & GL_MAP_FLUSH_EXPLICIT_BIT == 0 {
+                return Err(GL_INVALID_OPERATION);
+            }
+            if offset as u64 + length as u64 > b.map_length as u64 {
+                return Err(GL_INVALID_VALUE);
+            }
+            Ok(())
+        })();
+        if let Err(e) = r {
+            self.record_error(e);
         }
     }
 }

@@ -10,7 +10,7 @@ impl Context {
         }
         let (pixel, arrays) = convert::client_attrib_mask(mask);
         let entry = ClientAttribEntry {
-            pixel_store: pixel.then_some((self.pack, self.unpack)),
+            pixel_store: pixel.then_some((self.pack, self.unpack, self.client.pixel_buffers)),
             arrays: arrays.then(|| {
                 (
                     Box::new(self.client.arrays.clone()),
@@ -26,9 +26,18 @@ impl Context {
             self.record_error(GL_STACK_UNDERFLOW);
             return;
         };
-        if let Some((pack, unpack)) = e.pixel_store {
+        if let Some((pack, unpack, pixel_buffers)) = e.pixel_store {
             self.pack = pack;
             self.unpack = unpack;
+            // A buffer deleted since the push is not bound again.
+            let live = self.client.buffers.read();
+            self.client.pixel_buffers = pixel_buffers.map(|b| {
+                if matches!(live.objects.get(&b), Some(Some(_))) {
+                    b
+                } else {
+                    0
+                }
+            });
         }
         if let Some((arrays, unit)) = e.arrays {
             self.client.arrays = *arrays;

@@ -44,6 +44,7 @@ use crate::vertex::immediate::{norm_i16, norm_i32, norm_i8, norm_u16, norm_u32, 
 mod buffer_objects;
 mod client_attrib;
 mod draw;
+mod pixel_buffers;
 mod pointers;
 
 /// Current values saved across an array draw (see `Context::keep_current_values`).
@@ -164,6 +165,11 @@ pub struct BufferObject {
     pub usage: GLenum,
     pub access: BufferAccess,
     pub mapped: bool,
+    /// ARB_map_buffer_range: the mapped range (`GL_BUFFER_MAP_OFFSET`, `GL_BUFFER_MAP_LENGTH`)
+    /// and the `glMapBufferRange` access bits (`GL_BUFFER_ACCESS_FLAGS`); zeros when unmapped.
+    pub map_offset: usize,
+    pub map_length: usize,
+    pub access_flags: GLbitfield,
 }
 
 impl Default for BufferObject {
@@ -173,6 +179,9 @@ impl Default for BufferObject {
             usage: GL_STATIC_DRAW,
             access: BufferAccess::ReadWrite,
             mapped: false,
+            map_offset: 0,
+            map_length: 0,
+            access_flags: 0,
         }
     }
 }
@@ -217,7 +226,9 @@ impl Buffers {
 /// One entry of the client attribute stack.
 #[derive(Clone, Debug)]
 struct ClientAttribEntry {
-    pixel_store: Option<(PixelStore, PixelStore)>,
+    /// Pack and unpack modes with the pixel pack and unpack buffer bindings (issue 7 of
+    /// ARB_pixel_buffer_object: they are pixel-store client state).
+    pixel_store: Option<(PixelStore, PixelStore, [GLuint; 2])>,
     arrays: Option<(Box<ArrayState>, usize)>,
 }
 
@@ -226,6 +237,9 @@ struct ClientAttribEntry {
 pub struct ClientState {
     pub arrays: ArrayState,
     pub buffers: Buffers,
+    /// `GL_PIXEL_PACK_BUFFER_BINDING` and `GL_PIXEL_UNPACK_BUFFER_BINDING`
+    /// (ARB_pixel_buffer_object).
+    pub pixel_buffers: [GLuint; 2],
     stack: Vec<ClientAttribEntry>,
     /// `glLockArraysEXT` range (first, count), if locked.
     locked: Option<(GLint, GLsizei)>,
@@ -338,6 +352,8 @@ impl Context {
             ArrayQuery::ElementArrayBufferBinding => {
                 int1(self.client.arrays.element_array_buffer as i64)
             }
+            ArrayQuery::PixelPackBufferBinding => int1(self.client.pixel_buffers[0] as i64),
+            ArrayQuery::PixelUnpackBufferBinding => int1(self.client.pixel_buffers[1] as i64),
             ArrayQuery::MaxElementsVertices | ArrayQuery::MaxElementsIndices => int1(MAX_ELEMENTS),
             ArrayQuery::ClientAttribStackDepth => int1(self.client.stack.len() as i64),
             ArrayQuery::MaxClientAttribStackDepth => int1(MAX_CLIENT_ATTRIB_STACK_DEPTH as i64),
