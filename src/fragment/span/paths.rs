@@ -309,10 +309,18 @@ pub fn pair_sampled8<'a>(
         mut by_unit,
     } = Sampled8::new(ds, it, first_y, true);
     let mut samplers_y = first_y;
+    let byte_env = ds.key.byte_env && crate::common::cpu::available();
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
             Sampled8::place_samplers(&mut samplers, ds, it, y, true);
             samplers_y = y;
+        }
+        #[cfg(target_arch = "x86_64")]
+        if byte_env {
+            // SAFETY: AVX2 is present (`byte_env` checked it).
+            if let Some(done) = unsafe { byte_block(ds, &samplers, &tail, gx, group) } {
+                return Some(done);
+            }
         }
         for (k, unit) in ds.units.iter().enumerate() {
             let Some(out) = by_unit[unit.unit].as_mut() else {
@@ -334,6 +342,31 @@ pub fn pair_sampled8<'a>(
         }
         sampled8_shade(ds, single, &tail, group, &by_unit)
     });
+}
+
+/// A block of a `FragmentKey::byte_env` draw on bytes (`fragment::bytenv`): every unit's
+/// texels as bytes from its block sampler, the cascade in 8-bit integers and the tail from the
+/// colour bytes; the same colour words as the f32 route. `None` (the caller takes the f32
+/// route) when the primary colour is not a converted byte at a passing lane or a unit's block
+/// sampler does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn byte_block(
+    ds: &FragmentDraw,
+    samplers: &[Option<Perspective8>; MAX_TEXTURE_UNITS],
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    let primary = crate::fragment::bytenv::exact_words(&group.primary, group.pass)?;
+    let mut by_unit = [None; MAX_TEXTURE_UNITS];
+    let x = gx as f64 + 0.5;
+    for (k, unit) in ds.units.iter().enumerate() {
+        by_unit[unit.unit] = Some(samplers[k].as_ref()?.block_bytes(x, group.pass)?);
+    }
+    Some(crate::fragment::bytenv::shade(
+        ds, tail, primary, &by_unit, &group.dst, group.pass,
+    ))
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
