@@ -57,8 +57,10 @@ const EXTENSIONS: [&str; 2] = [
     "GL_EXT_texture_compression_s3tc",
 ];
 /// Extra enums outside GL 1.5 that the shared captures use and tilegl implements (see docs/features.md).
-const EXTRA_EXTENSIONS: [&str; 10] = [
+const EXTRA_EXTENSIONS: [&str; 11] = [
     "GL_NV_texture_env_combine4",
+    // The unsuffixed framebuffer-object enums (GL_FRAMEBUFFER, GL_MAX_SAMPLES, ...).
+    "GL_ARB_framebuffer_object",
     "GL_ARB_texture_rectangle",
     "GL_ATI_texture_mirror_once",
     "GL_EXT_texture_mirror_clamp",
@@ -153,6 +155,17 @@ fn pbo_command(name: &str) -> Option<(&'static str, bool)> {
         .find(|(c, _, _)| *c == name)
         .map(|&(_, p, pack)| (p, pack))
 }
+
+/// ARB_framebuffer_object's commands that are not aliases of EXT_framebuffer_object's or
+/// EXT_framebuffer_blit's (the spec's "Dependencies on EXT_framebuffer_object": the bind
+/// commands differ, as they refuse names not made by `glGen*`) and its two new ones; the
+/// other unsuffixed names are aliases of the EXT commands (below).
+const ARB_FBO_COMMANDS: [&str; 4] = [
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
+];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -403,6 +416,11 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glGenerateMipmapEXT",
     // Buffer object commands execute immediately (like glBufferSubData).
     "glFlushMappedBufferRange",
+    // ARB_framebuffer_object's own commands, likewise.
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
 ];
 
 /// Whether a display list being compiled records the command (instead of executing it).
@@ -605,6 +623,11 @@ fn main() {
             }
         }
     }
+    for n in ARB_FBO_COMMANDS {
+        if !core_cmds.iter().any(|c| c == n) {
+            core_cmds.push(n.to_string());
+        }
+    }
     // Single later-core enums captures use (generic compressed RED/RG of GL 3.0).
     for n in EXTRA_ENUMS {
         ext_enums.insert(n.to_string());
@@ -647,21 +670,6 @@ fn main() {
                     .or_default()
                     .push(target.clone());
             }
-        }
-    }
-    // EXT_framebuffer_object's "Dependencies on ARB_framebuffer_object and OpenGL 3.0" names
-    // the bind commands as the only ones that are not aliases (the ARB ones may not bind
-    // names of other contexts); in one context they do the same, and programs written for
-    // OpenGL 3.0 (piglit's triangle-rasterization -use_fbo) call them with GL_FRAMEBUFFER.
-    for (ext, arb) in [
-        ("glBindFramebufferEXT", "glBindFramebuffer"),
-        ("glBindRenderbufferEXT", "glBindRenderbuffer"),
-    ] {
-        if core_cmd_set.contains(&ext.to_string()) {
-            cmd_aliases
-                .entry(ext.to_string())
-                .or_default()
-                .push(arb.to_string());
         }
     }
     for v in cmd_aliases.values_mut() {

@@ -1,6 +1,7 @@
 //! EXT_framebuffer_object where the extension and Mesa 22 differ (Mesa follows OpenGL 3.0 and
 //! later there; the agreeing cases are in `conformance/src/state_cases/fbo.rs`): each expected
-//! value is the extension's text, quoted beside it. Also the undefined cases that must not
+//! value is the extension's text, quoted beside it, or ARB_framebuffer_object's where that
+//! extension (listed too, one set of rules per context) replaced it. Also the undefined cases that must not
 //! crash (a texture sampled while it is drawn into) and the window's buffers surviving a
 //! framebuffer object.
 
@@ -23,7 +24,11 @@ fn texture(gl: &mut Context, format: GLenum, w: i32, h: i32) -> u32 {
         w,
         h,
         0,
-        GL_RGBA,
+        if format == GL_DEPTH_COMPONENT24 {
+            GL_DEPTH_COMPONENT
+        } else {
+            GL_RGBA
+        },
         GL_UNSIGNED_BYTE,
         None,
     );
@@ -50,9 +55,11 @@ fn status(gl: &mut Context) -> GLenum {
 }
 
 #[test]
-fn images_of_different_sizes_are_incomplete_dimensions() {
-    // 4.4.4.2: "All attached images have the same width and height.
-    // { FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT }"
+fn images_of_different_sizes_draw_into_the_common_rectangle() {
+    // EXT_framebuffer_object made this FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT; with
+    // ARB_framebuffer_object listed its section 4.4.1 applies: "If the attachment sizes are
+    // not all identical, rendering will be limited to the largest area that can fit in all of
+    // the attachments".
     let mut gl = ctx();
     let t = texture(&mut gl, GL_RGBA8, 8, 8);
     bound_fbo(&mut gl);
@@ -70,14 +77,19 @@ fn images_of_different_sizes_are_incomplete_dimensions() {
         GL_RENDERBUFFER_EXT,
         rb,
     );
-    assert_eq!(status(&mut gl), GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT);
-    // "it is an error to attempt to use the framebuffer for writing or reading"
-    gl.clear(GL_COLOR_BUFFER_BIT);
-    assert_eq!(gl.get_error(), GL_INVALID_FRAMEBUFFER_OPERATION_EXT);
-    gl.renderbuffer_storage_ext(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, 8, 8);
     assert_eq!(status(&mut gl), GL_FRAMEBUFFER_COMPLETE_EXT);
+    gl.clear_color(1.0, 0.0, 0.0, 1.0);
     gl.clear(GL_COLOR_BUFFER_BIT);
     assert_eq!(gl.get_error(), GL_NO_ERROR);
+    let mut px = vec![0u8; 8 * 4 * 4];
+    gl.read_pixels(0, 0, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, &mut px);
+    assert!(px.chunks(4).all(|p| p == [255, 0, 0, 255]));
+    // The texture got the common 8 x 4 rectangle; its upper half keeps its zeros.
+    gl.bind_framebuffer_ext(GL_FRAMEBUFFER_EXT, 0);
+    let mut img = vec![0u8; 8 * 8 * 4];
+    gl.get_tex_image(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, &mut img);
+    assert!(img[..8 * 4 * 4].chunks(4).all(|p| p == [255, 0, 0, 255]));
+    assert!(img[8 * 4 * 4..].iter().all(|&v| v == 0));
 }
 
 #[test]
@@ -113,32 +125,41 @@ fn draw_and_read_buffers_need_a_colour_attachment() {
 
 #[test]
 fn only_color_renderable_formats_attach_to_the_colour_point() {
-    // 4.4.4: "RGB, RGBA ... are color-renderable ... No other formats, including compressed
-    // internal formats, are color-renderable."
+    // ARB_framebuffer_object 4.4.4: "The following base internal formats ... are
+    // color-renderable: ALPHA, LUMINANCE, LUMINANCE_ALPHA, INTENSITY, RED, RG, RGB, RGBA ...
+    // No other formats, including compressed internal formats, are color-renderable."
     let mut gl = ctx();
-    let lum = texture(&mut gl, GL_LUMINANCE8, 4, 4);
+    let depth = texture(&mut gl, GL_DEPTH_COMPONENT24, 4, 4);
     bound_fbo(&mut gl);
     gl.framebuffer_texture_2dext(
         GL_FRAMEBUFFER_EXT,
         GL_COLOR_ATTACHMENT0_EXT,
         GL_TEXTURE_2D,
-        lum,
+        depth,
         0,
     );
     assert_eq!(status(&mut gl), GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_EXT);
-    let rgb = texture(&mut gl, GL_RGB8, 4, 4);
-    gl.framebuffer_texture_2dext(
-        GL_FRAMEBUFFER_EXT,
-        GL_COLOR_ATTACHMENT0_EXT,
-        GL_TEXTURE_2D,
-        rgb,
-        0,
-    );
-    assert_eq!(status(&mut gl), GL_FRAMEBUFFER_COMPLETE_EXT);
-    // "INVALID_ENUM ... RenderbufferStorageEXT is called with an <internalformat> that is not
-    // RGB, RGBA, DEPTH_COMPONENT, STENCIL_INDEX, or one of the internal formats from table
-    // 3.16 or table 2.nnn that has a base internal format of RGB, RGBA, DEPTH_COMPONENT, or
-    // STENCIL_INDEX."
+    for format in [
+        GL_LUMINANCE8,
+        GL_ALPHA8,
+        GL_LUMINANCE8_ALPHA8,
+        GL_INTENSITY8,
+        GL_RGB8,
+    ] {
+        let t = texture(&mut gl, format, 4, 4);
+        gl.framebuffer_texture_2dext(
+            GL_FRAMEBUFFER_EXT,
+            GL_COLOR_ATTACHMENT0_EXT,
+            GL_TEXTURE_2D,
+            t,
+            0,
+        );
+        assert_eq!(status(&mut gl), GL_FRAMEBUFFER_COMPLETE_EXT, "0x{format:x}");
+    }
+    // Errors: "INVALID_ENUM is generated if RenderbufferStorage is called with an
+    // <internalformat> that is not RGB, RGBA, DEPTH_COMPONENT, STENCIL_INDEX, DEPTH_STENCIL,
+    // or one of the internal formats from table 3.16 or table 2.nnn that has a base internal
+    // format of RGB, RGBA, DEPTH_COMPONENT, STENCIL_INDEX, or DEPTH_STENCIL."
     let _ = renderbuffer(&mut gl, GL_RGB5, 4, 4);
     gl.renderbuffer_storage_ext(GL_RENDERBUFFER_EXT, GL_LUMINANCE_ALPHA, 4, 4);
     assert_eq!(gl.get_error(), GL_INVALID_ENUM);
@@ -149,8 +170,10 @@ fn only_color_renderable_formats_attach_to_the_colour_point() {
 #[test]
 fn error_codes_of_the_extension_text() {
     let mut gl = ctx();
-    // "INVALID_OPERATION is generated if GetFramebufferAttachmentParameterivEXT is called
-    // while the value of FRAMEBUFFER_BINDING_EXT is zero."
+    // With the window bound, ARB_framebuffer_object section 6.1.3: "If the default
+    // framebuffer is bound to <target>, then <attachment> must be one of FRONT_LEFT,
+    // FRONT_RIGHT, BACK_LEFT, BACK_RIGHT, or AUXi, ...; DEPTH, ...; or STENCIL" (the
+    // extension's own INVALID_OPERATION applied before ARB_framebuffer_object).
     let mut v = [0];
     gl.get_framebuffer_attachment_parameteriv_ext(
         GL_FRAMEBUFFER_EXT,
@@ -158,7 +181,7 @@ fn error_codes_of_the_extension_text() {
         GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_EXT,
         &mut v,
     );
-    assert_eq!(gl.get_error(), GL_INVALID_OPERATION);
+    assert_eq!(gl.get_error(), GL_INVALID_ENUM);
     bound_fbo(&mut gl);
     // "INVALID_ENUM is generated if FramebufferRenderbufferEXT or
     // FramebufferTexture{1D|2D|3D}EXT is called with an <attachment> that is not an accepted

@@ -17,6 +17,7 @@ use crate::c_route::CAbiContext;
 use crate::known_failures;
 use crate::mesa::{self, MesaContext, Oracle};
 
+pub mod arb_fbo;
 pub mod arrays;
 pub mod attrib;
 pub mod basic;
@@ -88,6 +89,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
         "state cases: pixel buffer objects, buffer ranges",
         pbo::CASES,
     ),
+    ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
 ];
 
 /// Every state and error case.

@@ -1,5 +1,6 @@
-//! EXT_framebuffer_object (the cases in `tilegl_conformance::state_cases::fbo`): every answer
-//! on Mesa and on tilegl (Rust API and C ABI) compared.
+//! EXT_framebuffer_object, EXT_framebuffer_blit and ARB_framebuffer_object (the cases in
+//! `tilegl_conformance::state_cases::{fbo, fbo_blit, arb_fbo}`): every answer on Mesa and on
+//! tilegl (Rust API and C ABI) compared.
 
 /// Every case of the list against Mesa, one line per case, all failures listed at the end
 /// (`TILEGL_CASE=NAME` runs only the cases whose names contain NAME).
@@ -17,5 +18,14 @@ fn fbo_blit_state_cases_agree_with_mesa() {
     tilegl_conformance::state_cases::run_list(
         "state_cases::fbo_blit",
         tilegl_conformance::state_cases::fbo_blit::CASES,
+    );
+}
+
+/// ARB_framebuffer_object (the cases in `tilegl_conformance::state_cases::arb_fbo`).
+#[test]
+fn arb_fbo_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::arb_fbo",
+        tilegl_conformance::state_cases::arb_fbo::CASES,
     );
 }

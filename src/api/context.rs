@@ -515,6 +515,11 @@ impl Gl for Context {
         renderbuffer_storage_ext,
         get_renderbuffer_parameteriv_ext,
         generate_mipmap_ext,
+        // ARB_framebuffer_object
+        bind_framebuffer,
+        bind_renderbuffer,
+        renderbuffer_storage_multisample,
+        framebuffer_texture_layer,
         // EXT_framebuffer_blit
         blit_framebuffer_ext,
         unlock_arrays_ext,

@@ -425,6 +425,7 @@ pub fn query(e: GLenum) -> Option<Query> {
         GL_RENDERBUFFER_BINDING_EXT => RenderbufferBinding,
         GL_MAX_COLOR_ATTACHMENTS_EXT => MaxColorAttachments,
         GL_MAX_RENDERBUFFER_SIZE_EXT => MaxRenderbufferSize,
+        GL_MAX_SAMPLES => MaxSamples,
         GL_BLEND_COLOR => BlendColor,
         GL_LOGIC_OP_MODE => LogicOpMode,
         GL_MAX_LIGHTS => MaxLights,

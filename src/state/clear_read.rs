@@ -15,10 +15,11 @@ impl Context {
     /// (section 4.2.3). Dithering does not apply to tilegl's 8-bit channels.
     pub(crate) fn record_clear(&mut self, mask: ClearMask) {
         let rect = self.scissored_window();
+        let color_mask = self.color_write_mask();
         let ops = &self.fragment_ops;
         let cfg = self.framebuffer.config;
-        let color = (mask.color && ops.color_mask != [false; 4])
-            .then(|| (self.clear_values.color.map(color_to_u8), ops.color_mask));
+        let color = (mask.color && color_mask != [false; 4])
+            .then(|| (self.clear_values.color.map(color_to_u8), color_mask));
         let depth = (mask.depth && ops.depth_mask && cfg.depth_bits > 0)
             .then(|| depth_to_fixed(self.clear_values.depth, self.framebuffer.depth_max()));
         let stencil_bits_mask = if cfg.stencil_bits >= 8 {

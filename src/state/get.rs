@@ -259,6 +259,7 @@ impl Context {
             Query::RenderbufferBinding => int1(self.fbo.bound_renderbuffer as i64),
             Query::MaxColorAttachments => int1(super::fbo::MAX_COLOR_ATTACHMENTS as i64),
             Query::MaxRenderbufferSize => int1(super::fbo::MAX_RENDERBUFFER_SIZE as i64),
+            Query::MaxSamples => int1(super::fbo::MAX_SAMPLES as i64),
             Query::QuadsFollowProvokingVertex => {
                 bool1(crate::primitive::assemble::QUADS_FOLLOW_PROVOKING_VERTEX)
             }

@@ -151,6 +151,8 @@ impl Context {
         };
         let mut key =
             FragmentKey::from_state(ops, cfg.depth_bits > 0, cfg.stencil_bits > 0, color_sum);
+        // A framebuffer object's image without some components never gets them written.
+        key.color_mask = self.color_write_mask();
         key.texturing = !units.is_empty();
         key.fast_texture = match units.as_slice() {
             [u] if matches!(u.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)

@@ -8,6 +8,9 @@ pub enum FboAttachment {
     Color0,
     Depth,
     Stencil,
+    /// ARB_framebuffer_object's `GL_DEPTH_STENCIL_ATTACHMENT`: the depth and the stencil
+    /// points at once.
+    DepthStencil,
 }
 
 /// `glGetFramebufferAttachmentParameterivEXT` parameter names.
@@ -17,7 +20,17 @@ pub enum AttachmentParam {
     ObjectName,
     TextureLevel,
     CubeMapFace,
+    /// `GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT` = ARB's `..._TEXTURE_LAYER`.
     ZOffset,
+    /// ARB_framebuffer_object's queries of the attached image's format (section 6.1.3).
+    ColorEncoding,
+    ComponentType,
+    RedSize,
+    GreenSize,
+    BlueSize,
+    AlphaSize,
+    DepthSize,
+    StencilSize,
 }
 
 /// `glGetRenderbufferParameterivEXT` parameter names.
@@ -32,6 +45,8 @@ pub enum RenderbufferParam {
     AlphaSize,
     DepthSize,
     StencilSize,
+    /// ARB_framebuffer_object's `GL_RENDERBUFFER_SAMPLES` (always 0: `GL_MAX_SAMPLES` is 0).
+    Samples,
 }
 
 /// What a renderbuffer's internal format stores (section 4.4.2.1): colour (with or without

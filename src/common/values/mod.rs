@@ -342,6 +342,8 @@ pub enum Query {
     RenderbufferBinding,
     MaxColorAttachments,
     MaxRenderbufferSize,
+    /// ARB_framebuffer_object.
+    MaxSamples,
     CurrentIndex,
     IndexClearValue,
     IndexWritemask,

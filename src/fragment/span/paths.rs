@@ -443,23 +443,28 @@ impl CoveredRows {
     pub fn row(&self, ds: &FragmentDraw, tile: &mut Tile, y: i32, x0: i32, coverage: &[f32]) {
         let row = tile.index(x0, y);
         let c = &self.group;
+        // Without a depth or stencil test every lane of the row passes them.
+        let tested = ds.key.depth_func.is_some() || ds.key.stencil.is_some();
         let mut dst = [0u32; 8];
+        let mut primary = c.primary;
         for (g, cov) in coverage.chunks(8).enumerate() {
             let n = cov.len();
             let base = row + 8 * g;
-            if stencil_rejects_all(ds, tile, base, 0..n) {
-                continue;
-            }
-            let mut pass = 0u8;
-            for j in 0..n {
-                pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
-                dst[j] = u32::from_le_bytes(tile.color[base + j]);
-            }
-            let mut primary = c.primary;
-            for (a, &k) in primary[3].iter_mut().zip(cov) {
-                if k != 1.0 {
-                    *a = a.clamp(0.0, 1.0) * k;
+            let mut pass = lane_bits(0..n);
+            if tested {
+                if stencil_rejects_all(ds, tile, base, 0..n) {
+                    continue;
                 }
+                pass = 0;
+                for j in 0..n {
+                    pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
+                }
+            }
+            for (d, p) in dst.iter_mut().zip(&tile.color[base..base + n]) {
+                *d = u32::from_le_bytes(*p);
+            }
+            for ((a, &k), &v) in primary[3].iter_mut().zip(cov).zip(&c.primary[3]) {
+                *a = if k != 1.0 { v.clamp(0.0, 1.0) * k } else { v };
             }
             if ds.key.stencil.is_some() {
                 pass = stencil_row(ds, tile, base, n, pass);

@@ -25,6 +25,7 @@ pub fn fbo_attachment(e: GLenum) -> Option<FboAttachment> {
         GL_COLOR_ATTACHMENT0_EXT => FboAttachment::Color0,
         GL_DEPTH_ATTACHMENT_EXT => FboAttachment::Depth,
         GL_STENCIL_ATTACHMENT_EXT => FboAttachment::Stencil,
+        GL_DEPTH_STENCIL_ATTACHMENT => FboAttachment::DepthStencil,
         _ => return None,
     })
 }
@@ -43,6 +44,14 @@ pub fn attachment_param(e: GLenum) -> Option<AttachmentParam> {
         GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_EXT => AttachmentParam::TextureLevel,
         GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_EXT => AttachmentParam::CubeMapFace,
         GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_3D_ZOFFSET_EXT => AttachmentParam::ZOffset,
+        GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING => AttachmentParam::ColorEncoding,
+        GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE => AttachmentParam::ComponentType,
+        GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE => AttachmentParam::RedSize,
+        GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE => AttachmentParam::GreenSize,
+        GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE => AttachmentParam::BlueSize,
+        GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE => AttachmentParam::AlphaSize,
+        GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE => AttachmentParam::DepthSize,
+        GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE => AttachmentParam::StencilSize,
         _ => return None,
     })
 }
@@ -59,6 +68,7 @@ pub fn renderbuffer_param(e: GLenum) -> Option<RenderbufferParam> {
         GL_RENDERBUFFER_ALPHA_SIZE_EXT => AlphaSize,
         GL_RENDERBUFFER_DEPTH_SIZE_EXT => DepthSize,
         GL_RENDERBUFFER_STENCIL_SIZE_EXT => StencilSize,
+        GL_RENDERBUFFER_SAMPLES => Samples,
         _ => return None,
     })
 }

@@ -47,7 +47,70 @@ fn renderbuffer_info(rb: &Renderbuffer) -> ImageInfo {
     }
 }
 
+/// The bits of each component of an attached image (ARB_framebuffer_object's
+/// `GL_FRAMEBUFFER_ATTACHMENT_*_SIZE`): 0 for a component the image lacks.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct ImageBits {
+    pub rgba: [i32; 4],
+    pub depth: i32,
+    pub stencil: i32,
+}
+
 impl Context {
+    /// The component sizes of the image `a` names (all 0 without one).
+    pub(crate) fn attachment_bits(&self, a: Attachment) -> ImageBits {
+        let mut b = ImageBits::default();
+        match a {
+            Attachment::None => {}
+            Attachment::Renderbuffer(n) => {
+                let names = self.fbo.names();
+                let Some(rb) = names.renderbuffers.get(&n) else {
+                    return b;
+                };
+                if rb.width <= 0 || rb.height <= 0 {
+                    return b;
+                }
+                match rb.kind {
+                    RenderbufferKind::Color { alpha } => {
+                        b.rgba = [8, 8, 8, if alpha { 8 } else { 0 }];
+                    }
+                    RenderbufferKind::Depth { bits } => b.depth = bits as i32,
+                    RenderbufferKind::Stencil => b.stencil = 8,
+                    RenderbufferKind::DepthStencil => {
+                        b.depth = 24;
+                        b.stencil = 8;
+                    }
+                }
+            }
+            Attachment::Texture {
+                name,
+                target,
+                level,
+                ..
+            } => {
+                let Some(obj) = self.textures.object(name) else {
+                    return b;
+                };
+                let Some(img) = obj.image(target.face(), level) else {
+                    return b;
+                };
+                let f = img.format;
+                if f.is_depth() {
+                    b.depth = (f.bits as i32).clamp(16, 32);
+                    b.stencil = if f.stencil { 8 } else { 0 };
+                } else {
+                    // Colour is drawn through 8-bit tiles; luminance and intensity are
+                    // the red component of a framebuffer (section 4.3.2).
+                    let bits = (f.bits as i32).min(8);
+                    for &slot in f.base.slots() {
+                        b.rgba[slot] = bits;
+                    }
+                }
+            }
+        }
+        b
+    }
+
     /// The image an attachment names, or `Err(())` when the attachment is not "framebuffer
     /// attachment complete" for want of an object or an image (section 4.4.4.1), `Ok(None)`
     /// when nothing is attached.
@@ -76,8 +139,9 @@ impl Context {
                 ImageInfo {
                     width: inner[0],
                     height: if img.dims >= 2 { inner[1] } else { 1 },
-                    color: matches!(f.base, BaseFormat::Rgb | BaseFormat::Rgba)
-                        && f.compressed.is_none(),
+                    // ARB_framebuffer_object section 4.4.4: every uncompressed colour
+                    // base format is colour-renderable.
+                    color: f.base != BaseFormat::DepthComponent && f.compressed.is_none(),
                     depth: f.is_depth(),
                     stencil: f.is_depth() && f.stencil,
                     depth_bits: (f.bits as u32).clamp(16, 32),
@@ -116,16 +180,13 @@ impl Context {
             }
             images[k] = info;
         }
-        let Some(first) = images.iter().flatten().next().copied() else {
+        if images.iter().flatten().next().is_none() {
             return (GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT_EXT, None);
-        };
-        if images
-            .iter()
-            .flatten()
-            .any(|i| i.width != first.width || i.height != first.height)
-        {
-            return (GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT, None);
         }
+        // ARB_framebuffer_object section 4.4.1: images of different sizes are complete, and
+        // drawing is limited to the rectangle common to all of them.
+        let width = images.iter().flatten().map(|i| i.width).min().unwrap_or(0);
+        let height = images.iter().flatten().map(|i| i.height).min().unwrap_or(0);
         // One colour attachment point: GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT cannot arise.
         let color = images[0].is_some();
         if f.buffers.draw != GL_NONE && !color {
@@ -134,14 +195,18 @@ impl Context {
         if f.buffers.read != GL_NONE && !color {
             return (GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER_EXT, None);
         }
-        if first.width > MAX_RENDERBUFFER_SIZE || first.height > MAX_RENDERBUFFER_SIZE {
+        if images
+            .iter()
+            .flatten()
+            .any(|i| i.width > MAX_RENDERBUFFER_SIZE || i.height > MAX_RENDERBUFFER_SIZE)
+        {
             return (GL_FRAMEBUFFER_UNSUPPORTED_EXT, None);
         }
         (
             GL_FRAMEBUFFER_COMPLETE_EXT,
             Some(Layout {
-                width: first.width,
-                height: first.height,
+                width,
+                height,
                 depth_bits: images[1].map_or(0, |i| i.depth_bits),
                 stencil: images[2].is_some(),
             }),
@@ -173,9 +238,17 @@ impl Context {
             DrawTarget::One(ColorBuffer::Front)
         };
         fb.read = ColorBuffer::Front;
+        fb.components = self.color_components(f.color);
         let dmax = depth_max(l.depth_bits) as f64;
+        let has = fb.components.unwrap_or([true; 4]);
         self.for_each_texel(f.color, l, |x, y, t| {
             if let Some(c) = t.color {
+                // Components the image lacks: 0, alpha 1 (what blending and reads see).
+                let c = [0, 1, 2, 3].map(|k| match (has[k], k) {
+                    (true, _) => c[k],
+                    (false, 3) => 255,
+                    (false, _) => 0,
+                });
                 fb.set_color(x, y, c);
             }
         });
@@ -190,6 +263,32 @@ impl Context {
             }
         });
         self.replace_framebuffer(fb);
+    }
+
+    /// The components of the colour image `a` when it lacks some of R, G, B and A (what
+    /// reads of the tiles keep: [`Framebuffer::components`]).
+    fn color_components(&self, a: Attachment) -> Option<[bool; 4]> {
+        let mut has = [false; 4];
+        match a {
+            Attachment::None => return None,
+            Attachment::Renderbuffer(n) => match self.fbo.names().renderbuffers.get(&n)?.kind {
+                RenderbufferKind::Color { alpha: false } => has = [true, true, true, false],
+                _ => return None,
+            },
+            Attachment::Texture {
+                name,
+                target,
+                level,
+                ..
+            } => {
+                let obj = self.textures.object(name)?;
+                let img = obj.image(target.face(), level)?;
+                for &slot in img.format.base.slots() {
+                    has[slot] = true;
+                }
+            }
+        }
+        (has != [true; 4]).then_some(has)
     }
 
     /// Calls `each(x, y, value)` for every pixel of the attached image of `a`.

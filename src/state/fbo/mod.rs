@@ -1,5 +1,16 @@
-//! EXT_framebuffer_object: framebuffer and renderbuffer objects, attachments, completeness
-//! (section 4.4 of the extension) and `glGenerateMipmapEXT`.
+//! EXT_framebuffer_object and ARB_framebuffer_object: framebuffer and renderbuffer objects,
+//! attachments, completeness (section 4.4 of the extensions) and `glGenerateMipmap`.
+//!
+//! ARB_framebuffer_object is EXT_framebuffer_object, EXT_framebuffer_blit,
+//! EXT_framebuffer_multisample and EXT_packed_depth_stencil in one, with these differences,
+//! which tilegl applies whichever name a command is called by (one context has one set of
+//! rules; Mesa does the same): attachments of different sizes are complete (drawing is
+//! limited to the common rectangle), ALPHA, LUMINANCE, LUMINANCE_ALPHA, INTENSITY, RED and RG
+//! images are colour-renderable, `GL_DEPTH_STENCIL_ATTACHMENT` names both the depth and the
+//! stencil points, and attachment queries report the image's format. Only the unsuffixed
+//! `glBindFramebuffer`/`glBindRenderbuffer` refuse names `glGen*` did not return (the EXT
+//! commands create objects for any name). `GL_MAX_SAMPLES` is 0 (the state table's minimum:
+//! no multisample renderbuffers).
 //!
 //! How drawing reaches an attached image: while a framebuffer object is bound, the context's
 //! tiled [`Framebuffer`] (what the scene, clears and pixel commands write and read) is one
@@ -37,6 +48,8 @@ use crate::texture::object::{level_count, MAX_3D_TEXTURE_SIZE};
 pub const MAX_RENDERBUFFER_SIZE: i32 = crate::common::limits::MAX_VIEWPORT_DIM;
 /// `GL_MAX_COLOR_ATTACHMENTS_EXT` (without ARB_draw_buffers one colour buffer is drawn).
 pub const MAX_COLOR_ATTACHMENTS: i32 = 1;
+/// `GL_MAX_SAMPLES` (ARB_framebuffer_object): 0, no multisample renderbuffers.
+pub const MAX_SAMPLES: i32 = 0;
 
 /// What an attachment point holds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -78,19 +91,27 @@ impl Default for FramebufferObject {
 }
 
 impl FramebufferObject {
-    pub(crate) fn attachment_mut(&mut self, a: FboAttachment) -> &mut Attachment {
+    /// Sets the attachment point `a` (both points for `GL_DEPTH_STENCIL_ATTACHMENT`).
+    pub(crate) fn attach(&mut self, a: FboAttachment, value: Attachment) {
         match a {
-            FboAttachment::Color0 => &mut self.color,
-            FboAttachment::Depth => &mut self.depth,
-            FboAttachment::Stencil => &mut self.stencil,
+            FboAttachment::Color0 => self.color = value,
+            FboAttachment::Depth => self.depth = value,
+            FboAttachment::Stencil => self.stencil = value,
+            FboAttachment::DepthStencil => {
+                self.depth = value;
+                self.stencil = value;
+            }
         }
     }
 
-    fn attachment(&self, a: FboAttachment) -> Attachment {
+    /// What the point `a` holds; `None` for `GL_DEPTH_STENCIL_ATTACHMENT` when the depth and
+    /// stencil points hold different images.
+    fn attachment(&self, a: FboAttachment) -> Option<Attachment> {
         match a {
-            FboAttachment::Color0 => self.color,
-            FboAttachment::Depth => self.depth,
-            FboAttachment::Stencil => self.stencil,
+            FboAttachment::Color0 => Some(self.color),
+            FboAttachment::Depth => Some(self.depth),
+            FboAttachment::Stencil => Some(self.stencil),
+            FboAttachment::DepthStencil => (self.depth == self.stencil).then_some(self.depth),
         }
     }
 }
@@ -232,6 +253,26 @@ impl Context {
         }
     }
 
+    /// ARB_framebuffer_object's `glBindFramebuffer`: as `glBindFramebufferEXT`, but a name
+    /// that `glGenFramebuffers` did not return (or that was deleted since) is
+    /// `GL_INVALID_OPERATION` (section 4.4.1).
+    pub(crate) fn bind_framebuffer(&mut self, target: GLenum, framebuffer: GLuint) {
+        if !convert::is_framebuffer_target(target) {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        let known = framebuffer == 0 || {
+            let names = self.fbo.names();
+            names.framebuffers.contains_key(&framebuffer)
+                || names.framebuffer_names.contains(&framebuffer)
+        };
+        if !known {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.bind_framebuffer_ext(target, framebuffer);
+    }
+
     /// Runs `f` with the framebuffer `name` (0: the window) current, as drawn and read
     /// framebuffer, then makes the previous draw framebuffer current again. Read commands
     /// use it when the read binding differs from the draw binding (EXT_framebuffer_blit):
@@ -360,6 +401,22 @@ impl Context {
         }
     }
 
+    /// `glColorMask` limited to the components the drawn colour buffer has (a framebuffer
+    /// object's luminance, alpha, red, RG or RGB image keeps only its own: the others hold
+    /// 0, alpha 1, as loaded, and are never written).
+    pub(crate) fn color_write_mask(&self) -> [bool; 4] {
+        let m = self.fragment_ops.color_mask;
+        match self.framebuffer.components {
+            None => m,
+            Some(has) => [
+                m[0] && has[0],
+                m[1] && has[1],
+                m[2] && has[2],
+                m[3] && has[3],
+            ],
+        }
+    }
+
     /// Whether a framebuffer object is bound.
     #[inline]
     pub(crate) fn fbo_bound(&self) -> bool {
@@ -470,7 +527,7 @@ impl Context {
         self.fbo.stale = true;
         let bound = self.fbo.bound;
         if let Some(f) = self.fbo.names_mut().framebuffers.get_mut(&bound) {
-            *f.attachment_mut(point) = value;
+            f.attach(point, value);
         }
     }
 
@@ -581,6 +638,40 @@ impl Context {
         self.framebuffer_texture(3, target, attachment, textarget, texture, level, zoffset);
     }
 
+    /// `glFramebufferTextureLayer`: a layer of a 3D texture (tilegl has no array textures),
+    /// as `glFramebufferTexture3D` without the `textarget`.
+    pub(crate) fn framebuffer_texture_layer(
+        &mut self,
+        target: GLenum,
+        attachment: GLenum,
+        texture: GLuint,
+        level: GLint,
+        layer: GLint,
+    ) {
+        if let Some(read) = self.other_binding(target) {
+            return self.with_framebuffer_bound(read, |c| {
+                c.framebuffer_texture_layer(GL_FRAMEBUFFER_EXT, attachment, texture, level, layer)
+            });
+        }
+        let Some(point) = self.attach_point(target, attachment) else {
+            return;
+        };
+        if texture == 0 {
+            self.set_attachment(point, Attachment::None);
+            return;
+        }
+        let object_target = self.textures.object(texture).map(|o| o.target);
+        if object_target != Some(Some(TextureTarget::T3D)) {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        if layer < 0 {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.framebuffer_texture(3, target, attachment, GL_TEXTURE_3D, texture, level, layer);
+    }
+
     pub(crate) fn framebuffer_renderbuffer_ext(
         &mut self,
         target: GLenum,
@@ -633,25 +724,52 @@ impl Context {
                 )
             });
         }
-        let Some(point) = self.attach_point(target, attachment) else {
+        if !convert::is_framebuffer_target(target) {
+            self.record_error(GL_INVALID_ENUM);
             return;
-        };
+        }
         let Some(p) = convert::attachment_param(pname) else {
             self.record_error(GL_INVALID_ENUM);
             return;
         };
-        let Some(f) = self.fbo.bound_object() else {
-            self.record_error(GL_INVALID_OPERATION);
-            return;
+        let r = if self.fbo.bound == 0 {
+            self.default_attachment_parameter(attachment, p)
+        } else {
+            self.object_attachment_parameter(attachment, p)
         };
-        let a = f.attachment(point);
-        let value = match (a, p) {
+        match r {
+            Ok(value) => {
+                if let Some(out) = params.first_mut() {
+                    *out = value;
+                }
+            }
+            Err(e) => self.record_error(e),
+        }
+    }
+
+    /// An attachment query on a framebuffer object (section 6.1.3 of ARB_framebuffer_object).
+    fn object_attachment_parameter(
+        &self,
+        attachment: GLenum,
+        p: AttachmentParam,
+    ) -> Result<GLint, GLenum> {
+        let point = convert::fbo_attachment(attachment).ok_or(GL_INVALID_ENUM)?;
+        let f = self.fbo.bound_object().ok_or(GL_INVALID_OPERATION)?;
+        // Different images at the depth and stencil points: the combined query fails.
+        let a = f.attachment(point).ok_or(GL_INVALID_OPERATION)?;
+        if let Some(v) = self.format_parameter(a, point, p)? {
+            return Ok(v);
+        }
+        Ok(match (a, p) {
             (Attachment::None, AttachmentParam::ObjectType) => GL_NONE as GLint,
             (Attachment::None, AttachmentParam::ObjectName) => 0,
+            // Anything else of an empty point (ARB_framebuffer_object section 6.1.3).
+            (Attachment::None, _) => return Err(GL_INVALID_OPERATION),
             (Attachment::Renderbuffer(_), AttachmentParam::ObjectType) => {
                 GL_RENDERBUFFER_EXT as GLint
             }
             (Attachment::Renderbuffer(n), AttachmentParam::ObjectName) => n as GLint,
+            (Attachment::Renderbuffer(_), _) => return Err(GL_INVALID_ENUM),
             (
                 Attachment::Texture {
                     name,
@@ -671,15 +789,103 @@ impl Context {
                     _ => 0,
                 },
                 AttachmentParam::ZOffset => zoffset,
+                _ => return Err(GL_INVALID_ENUM),
             },
-            _ => {
-                self.record_error(GL_INVALID_ENUM);
-                return;
-            }
-        };
-        if let Some(out) = params.first_mut() {
-            *out = value;
+        })
+    }
+
+    /// The format queries (`GL_FRAMEBUFFER_ATTACHMENT_*_SIZE`, `_COMPONENT_TYPE`,
+    /// `_COLOR_ENCODING`) of an attached image; `Ok(None)` for the other queries.
+    fn format_parameter(
+        &self,
+        a: Attachment,
+        point: FboAttachment,
+        p: AttachmentParam,
+    ) -> Result<Option<GLint>, GLenum> {
+        use AttachmentParam::*;
+        if !matches!(
+            p,
+            ColorEncoding
+                | ComponentType
+                | RedSize
+                | GreenSize
+                | BlueSize
+                | AlphaSize
+                | DepthSize
+                | StencilSize
+        ) {
+            return Ok(None);
         }
+        if a == Attachment::None {
+            return Err(GL_INVALID_OPERATION);
+        }
+        let bits = self.attachment_bits(a);
+        let value = match p {
+            ColorEncoding => GL_LINEAR as GLint,
+            ComponentType => {
+                // Stencil indices are unsigned integers; colour and depth are normalised.
+                let stencil_only = point == FboAttachment::Stencil && bits.depth == 0;
+                if stencil_only {
+                    GL_UNSIGNED_INT as GLint
+                } else {
+                    GL_UNSIGNED_NORMALIZED as GLint
+                }
+            }
+            RedSize => bits.rgba[0],
+            GreenSize => bits.rgba[1],
+            BlueSize => bits.rgba[2],
+            AlphaSize => bits.rgba[3],
+            DepthSize => bits.depth,
+            _ => bits.stencil,
+        };
+        Ok(Some(value))
+    }
+
+    /// An attachment query on the window's framebuffer (ARB_framebuffer_object: its buffers
+    /// are `GL_FRONT_LEFT`, `GL_BACK_LEFT`, ..., `GL_DEPTH` and `GL_STENCIL`, of type
+    /// `GL_FRAMEBUFFER_DEFAULT`).
+    fn default_attachment_parameter(
+        &self,
+        attachment: GLenum,
+        p: AttachmentParam,
+    ) -> Result<GLint, GLenum> {
+        let cfg = self.window_framebuffer().config;
+        let present = match attachment {
+            GL_FRONT_LEFT => true,
+            GL_BACK_LEFT => cfg.double_buffer,
+            GL_FRONT_RIGHT | GL_BACK_RIGHT => false,
+            GL_DEPTH => cfg.depth_bits > 0,
+            GL_STENCIL => cfg.stencil_bits > 0,
+            _ => return Err(GL_INVALID_ENUM),
+        };
+        use AttachmentParam::*;
+        if !present {
+            return match p {
+                ObjectType => Ok(GL_NONE as GLint),
+                ObjectName => Ok(0),
+                _ => Err(GL_INVALID_OPERATION),
+            };
+        }
+        let color = !matches!(attachment, GL_DEPTH | GL_STENCIL);
+        let stencil = attachment == GL_STENCIL;
+        Ok(match p {
+            ObjectType => GL_FRAMEBUFFER_DEFAULT as GLint,
+            ObjectName => 0,
+            ColorEncoding => GL_LINEAR as GLint,
+            ComponentType if stencil => GL_UNSIGNED_INT as GLint,
+            ComponentType => GL_UNSIGNED_NORMALIZED as GLint,
+            RedSize | GreenSize | BlueSize | AlphaSize => {
+                if color {
+                    8
+                } else {
+                    0
+                }
+            }
+            DepthSize if attachment == GL_DEPTH => cfg.depth_bits as GLint,
+            StencilSize if stencil => cfg.stencil_bits as GLint,
+            DepthSize | StencilSize => 0,
+            _ => return Err(GL_INVALID_ENUM),
+        })
     }
 
     // ----- renderbuffer objects
@@ -714,6 +920,25 @@ impl Context {
             names.renderbuffers.entry(renderbuffer).or_default();
         }
         self.fbo.bound_renderbuffer = renderbuffer;
+    }
+
+    /// ARB_framebuffer_object's `glBindRenderbuffer`: names not returned by
+    /// `glGenRenderbuffers` are `GL_INVALID_OPERATION` (section 4.4.2.1).
+    pub(crate) fn bind_renderbuffer(&mut self, target: GLenum, renderbuffer: GLuint) {
+        if !convert::is_renderbuffer_target(target) {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        let known = renderbuffer == 0 || {
+            let names = self.fbo.names();
+            names.renderbuffers.contains_key(&renderbuffer)
+                || names.renderbuffer_names.contains(&renderbuffer)
+        };
+        if !known {
+            self.record_error(GL_INVALID_OPERATION);
+            return;
+        }
+        self.bind_renderbuffer_ext(target, renderbuffer);
     }
 
     pub(crate) fn delete_renderbuffers_ext(&mut self, n: GLsizei, renderbuffers: &[GLuint]) {
@@ -824,6 +1049,32 @@ impl Context {
         );
     }
 
+    /// `glRenderbufferStorageMultisample`: `samples` above `GL_MAX_SAMPLES` (0) is
+    /// `GL_INVALID_VALUE`; 0 is `glRenderbufferStorage`.
+    pub(crate) fn renderbuffer_storage_multisample(
+        &mut self,
+        target: GLenum,
+        samples: GLsizei,
+        internalformat: GLenum,
+        width: GLsizei,
+        height: GLsizei,
+    ) {
+        if !convert::is_renderbuffer_target(target)
+            || convert::renderbuffer_kind(internalformat).is_none()
+        {
+            self.record_error(GL_INVALID_ENUM);
+            return;
+        }
+        if !(0..=MAX_RENDERBUFFER_SIZE).contains(&width)
+            || !(0..=MAX_RENDERBUFFER_SIZE).contains(&height)
+            || !(0..=MAX_SAMPLES).contains(&samples)
+        {
+            self.record_error(GL_INVALID_VALUE);
+            return;
+        }
+        self.renderbuffer_storage_ext(target, internalformat, width, height);
+    }
+
     pub(crate) fn get_renderbuffer_parameteriv_ext(
         &mut self,
         target: GLenum,
@@ -863,6 +1114,7 @@ impl Context {
             RenderbufferParam::AlphaSize => sized(alpha),
             RenderbufferParam::DepthSize => sized(depth),
             RenderbufferParam::StencilSize => sized(stencil),
+            RenderbufferParam::Samples => 0,
         };
         if let Some(out) = params.first_mut() {
             *out = value;
