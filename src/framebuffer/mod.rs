@@ -312,7 +312,7 @@ impl Framebuffer {
         })
     }
 
-    /// [`Framebuffer::color_in`] of a multisample buffer.
+    /// [`Framebuffer::color_in`] of a multisample buffer, before the components mask.
     #[cold]
     #[inline(never)]
     fn resolved_in(&self, buffer: ColorBuffer, x: i32, y: i32) -> Option<[u8; 4]> {
@@ -436,12 +436,11 @@ impl Framebuffer {
 }
 
 /// The resolved colour of a pixel's `n` samples, `samples` in sample order: each channel's
-/// average, computed as llvmpipe's resolve computes it (each byte to a float c x f32(1 / 255), summed
-/// in f32 in sample order, times 1 / n, times 255, rounded to nearest with ties to even), so
-/// that the ties of half-covered pixels fall the same way: 255, 255, 26, 26 resolve to 141
-/// but 26, 26, 255, 255 to 140, and 0, 0, 0, 26 to 7, not 6 (`tests/x11.rs`
-/// `glx_multisample_frame_matches_mesa`). Within
-/// half a unit of the exact average either way.
+/// average, computed as llvmpipe's resolve computes it (each byte to a float c x f32(1 / 255),
+/// summed in f32 in sample order, times 1 / n, times 255, rounded to nearest with ties to
+/// even), so that the ties of half-covered pixels fall the same way: 255, 255, 26, 26 resolve
+/// to 141 but 26, 26, 255, 255 to 140, and 0, 0, 0, 26 to 7, not 6 (`tests/x11.rs`
+/// `glx_multisample_frame_matches_mesa`). Within half a unit of the exact average either way.
 #[inline]
 pub fn resolve(samples: impl Iterator<Item = [u8; 4]>, n: usize) -> [u8; 4] {
     let mut sum = [0f32; 4];
