@@ -115,17 +115,6 @@ const COMMAND_EXTENSIONS: [&str; 9] = [
     "GL_ARB_texture_storage",
 ];
 
-/// ARB_framebuffer_object's commands that are not aliases of EXT_framebuffer_object's or
-/// EXT_framebuffer_blit's (the spec's "Dependencies on EXT_framebuffer_object": the bind
-/// commands differ, as they refuse names not made by `glGen*`) and its two new ones; the
-/// other unsuffixed names are aliases of the EXT commands (below).
-const ARB_FBO_COMMANDS: [&str; 4] = [
-    "glBindFramebuffer",
-    "glBindRenderbuffer",
-    "glRenderbufferStorageMultisample",
-    "glFramebufferTextureLayer",
-];
-
 /// The pixel commands of ARB_pixel_buffer_object (its issues 16 and 17) among tilegl's entry
 /// points: (command, pointer parameter, whether it packs into `GL_PIXEL_PACK_BUFFER` rather
 /// than unpacking from `GL_PIXEL_UNPACK_BUFFER`). While a buffer is bound to that target, the
@@ -167,6 +156,17 @@ fn pbo_command(name: &str) -> Option<(&'static str, bool)> {
         .find(|(c, _, _)| *c == name)
         .map(|&(_, p, pack)| (p, pack))
 }
+
+/// ARB_framebuffer_object's commands that are not aliases of EXT_framebuffer_object's or
+/// EXT_framebuffer_blit's (the spec's "Dependencies on EXT_framebuffer_object": the bind
+/// commands differ, as they refuse names not made by `glGen*`) and its two new ones; the
+/// other unsuffixed names are aliases of the EXT commands (below).
+const ARB_FBO_COMMANDS: [&str; 4] = [
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
+];
 
 const KEYWORDS: [&str; 12] = [
     "type", "ref", "in", "box", "fn", "mod", "use", "impl", "loop", "move", "match", "where",
@@ -415,17 +415,17 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glFramebufferTexture3DEXT",
     "glFramebufferRenderbufferEXT",
     "glGenerateMipmapEXT",
-    // ARB_framebuffer_object's own commands, likewise.
-    "glBindFramebuffer",
-    "glBindRenderbuffer",
-    "glRenderbufferStorageMultisample",
-    "glFramebufferTextureLayer",
     // Buffer object commands execute immediately (like glBufferSubData).
     "glFlushMappedBufferRange",
     // ARB_texture_storage: "add TexStorage* to the list of commands that cannot be used".
     "glTexStorage1D",
     "glTexStorage2D",
     "glTexStorage3D",
+    // ARB_framebuffer_object's own commands, likewise.
+    "glBindFramebuffer",
+    "glBindRenderbuffer",
+    "glRenderbufferStorageMultisample",
+    "glFramebufferTextureLayer",
 ];
 
 /// Whether a display list being compiled records the command (instead of executing it).

@@ -86,12 +86,12 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: piglit scripts", piglit::CASES),
     ("state cases: framebuffer objects", fbo::CASES),
     ("state cases: framebuffer blits", fbo_blit::CASES),
-    ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
     ("state cases: ARB_texture_storage", tex_storage::CASES),
     (
         "state cases: pixel buffer objects, buffer ranges",
         pbo::CASES,
     ),
+    ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
 ];
 
 /// Every state and error case.

@@ -73,8 +73,9 @@ impl Default for ContextConfig {
 /// Each name ends with a space, the last too, as in Mesa's and other drivers' strings:
 /// programs that print the names one per line by turning spaces into newlines (piglit's
 /// glinfo) end their last line so.
-pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_map_buffer_range GL_ARB_multisample \
-GL_ARB_multitexture GL_ARB_pixel_buffer_object GL_ARB_point_parameters GL_ARB_point_sprite \
+pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_map_buffer_range \
+GL_ARB_multisample GL_ARB_multitexture GL_ARB_pixel_buffer_object GL_ARB_point_parameters \
+GL_ARB_point_sprite \
 GL_ARB_provoking_vertex \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
