@@ -5,11 +5,11 @@ use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
 #[test]
-fn the_base_level_query_keeps_the_value_set_and_sampling_clamps_it() {
+fn base_and_max_levels_are_clamped_to_the_storage() {
     // Section 3.8.6: "if TEXTURE_IMMUTABLE_FORMAT is TRUE, then level_base is clamped to the
     // range [0, <levels> - 1] and level_max is then clamped to the range [level_base,
-    // <levels> - 1]": the clamp is of the level used, the parameter keeps its value (Mesa
-    // stores the clamped value, as OpenGL 4.3 later specified).
+    // <levels> - 1]"; the value kept is the clamped one (OpenGL 4.3's wording, what Mesa and
+    // piglit's texture-storage expect).
     let mut gl = Context::new(8, 8);
     let mut t = [0];
     gl.gen_textures(1, &mut t);
@@ -30,7 +30,10 @@ fn the_base_level_query_keeps_the_value_set_and_sampling_clamps_it() {
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 7);
     let mut v = [-1];
     gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &mut v);
-    assert_eq!(v[0], 7);
+    assert_eq!(v[0], 1);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &mut v);
+    assert_eq!(v[0], 1, "max is clamped to [base, levels - 1]");
     gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_FORMAT, &mut v);
     assert_eq!(v[0], 1);
     // level_base = 1: complete, and every fragment samples level 1.

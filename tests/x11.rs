@@ -510,6 +510,9 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["framebuffer-blit-mipmap", "-auto", "-fbo"],
     &["framebuffer-blit-levels", "draw", "rgba", "-auto", "-fbo"],
     &["framebuffer-blit-levels", "read", "rgba", "-auto", "-fbo"],
+    // piglit's arb_texture_storage group, passing since ARB_texture_storage (Dec 3 2026).
+    &["arb_texture_storage-texture-storage", "-auto"],
+    &["arb_texture_storage-texture-storage-attach-before", "-auto"],
 ];
 
 #[test]

@@ -9,7 +9,7 @@ super::state_case_list!(source = include_str!("tex_storage.rs"), agree = |a: &An
             .zip(&b.values)
             .all(|(x, y)| (x - y).abs() <= a.tolerance)
 };
-    tex_storage_levels_and_immutability: "glTexStorage2D of 3 levels of an 8x4 GL_RGBA8 texture: each level's size and internal format (level 3 undefined), GL_TEXTURE_IMMUTABLE_FORMAT before and after, glTexImage2D, glCopyTexImage2D and a second glTexStorage2D refused with GL_INVALID_OPERATION, glTexSubImage2D of each level accepted, then the texture drawn with mipmapping and GL_TEXTURE_BASE_LEVEL 5 (level_base clamped to the last level, 2). Every answer equals Mesa's.",
+    tex_storage_levels_and_immutability: "glTexStorage2D of 3 levels of an 8x4 GL_RGBA8 texture: each level's size and internal format (level 3 undefined), GL_TEXTURE_IMMUTABLE_FORMAT before and after, glTexImage2D, glCopyTexImage2D and a second glTexStorage2D refused with GL_INVALID_OPERATION, glTexSubImage2D of each level accepted, then the texture drawn with mipmapping and GL_TEXTURE_BASE_LEVEL 5 (clamped to the last level, 2, the value queried too). Every answer equals Mesa's.",
     tex_storage_errors_and_targets: "The errors of the extension (a bad target, an unsized or generic compressed format, zero levels or size, more levels than the size allows), glTexStorage1D and glTexStorage3D level sizes, a cube map's six faces, a depth format, and proxies (sizes recorded, GL_TEXTURE_IMMUTABLE_FORMAT stays false). Every answer equals Mesa's.",
 );
 
@@ -141,9 +141,14 @@ fn tex_storage_levels_and_immutability(gl: &mut dyn Gl, out: &mut Answers) {
     // 8x4 texels over 8x4 pixels: level 0; over 2x1 pixels: level 2.
     quad(gl, 0.0, 0.0, 8.0, 4.0, 0.0);
     quad(gl, 16.0, 0.0, 18.0, 1.0, 0.0);
-    // (The query of GL_TEXTURE_BASE_LEVEL is not compared: Mesa stores the clamped value,
-    // as OpenGL 4.3 does; the extension clamps the level_base used, tests/arb_fbo.rs.)
     gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 5);
+    let mut v = [-1];
+    gl.get_tex_parameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &mut v);
+    exact(
+        out,
+        "GL_TEXTURE_BASE_LEVEL set to 5".into(),
+        vec![v[0] as f64],
+    );
     // level_base is clamped to 2: the texture is complete and samples level 2.
     quad(gl, 24.0, 0.0, 32.0, 4.0, 0.0);
     gl.disable(GL_TEXTURE_2D);

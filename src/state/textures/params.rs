@@ -62,10 +62,15 @@ impl Context {
                     if n < 0 {
                         return Err(GL_INVALID_VALUE);
                     }
+                    // ARB_texture_storage: an immutable texture's levels are clamped to its
+                    // storage, base to [0, levels - 1], max to [base, levels - 1]; the value
+                    // kept is the clamped one, as Mesa and piglit's texture-storage have it
+                    // (OpenGL 4.3 words it so).
+                    let last = obj.immutable_levels.map(|l| l.saturating_sub(1) as i32);
                     if p == TexParam::BaseLevel {
-                        params.base_level = n;
+                        params.base_level = last.map_or(n, |l| n.min(l));
                     } else {
-                        params.max_level = n;
+                        params.max_level = last.map_or(n, |l| n.clamp(params.base_level.min(l), l));
                     }
                 }
                 TexParam::LodBias => params.lod_bias = v.float(0),
