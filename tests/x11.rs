@@ -381,6 +381,9 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     &["draw-pixels", "-auto", "-fbo"],
     &["getteximage-luminance", "-auto", "-fbo"],
     &["getteximage-depth", "-auto", "-fbo"],
+    // ARB_texture_float (Dec 3 2026).
+    &["getteximage-simple", "-auto", "-fbo"],
+    &["arb_texture_float-get-tex3d", "-auto", "-fbo"],
     &["fbo-depthstencil", "copypixels", "default_fb", "-auto"],
     &["gl-1.1-color-material-array", "-auto", "-fbo"],
     &["glinfo", "-auto", "-fbo"],
