@@ -102,7 +102,7 @@ const EXTRA_ENUMS: [&str; 18] = [
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
 /// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
-const COMMAND_EXTENSIONS: [&str; 8] = [
+const COMMAND_EXTENSIONS: [&str; 9] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_vertex_array",
@@ -112,6 +112,7 @@ const COMMAND_EXTENSIONS: [&str; 8] = [
     "GL_ARB_map_buffer_range",
     // No entry points: its targets and binding queries.
     "GL_ARB_pixel_buffer_object",
+    "GL_ARB_texture_storage",
 ];
 
 /// The pixel commands of ARB_pixel_buffer_object (its issues 16 and 17) among tilegl's entry
@@ -416,6 +417,10 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glGenerateMipmapEXT",
     // Buffer object commands execute immediately (like glBufferSubData).
     "glFlushMappedBufferRange",
+    // ARB_texture_storage: "add TexStorage* to the list of commands that cannot be used".
+    "glTexStorage1D",
+    "glTexStorage2D",
+    "glTexStorage3D",
     // ARB_framebuffer_object's own commands, likewise.
     "glBindFramebuffer",
     "glBindRenderbuffer",

@@ -758,3 +758,285 @@ fn flat_sprites_match_the_general_path() {
     ];
     twins(&states);
 }
+
+/// A strip of 120 random vertices with texture coordinates on units 0-2, all of colour
+/// `color` (or random colours with `None`).
+fn multi_strip(gl: &mut Context, rng: &mut Rng, color: Option<[f32; 4]>) {
+    gl.begin(GL_TRIANGLE_STRIP);
+    for _ in 0..120 {
+        let c = color.unwrap_or_else(|| {
+            [
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            ]
+        });
+        gl.color_4f(c[0], c[1], c[2], c[3]);
+        for unit in [GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE2] {
+            gl.multi_tex_coord_2f(unit, rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+        }
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+}
+
+/// A random texture of `format` and `size` on `unit`, enabled, filtered by `min`, under
+/// `mode` (for `GL_COMBINE`, the RGB and alpha functions, the first two sources of each and
+/// the scales).
+#[allow(clippy::too_many_arguments)]
+fn unit(
+    gl: &mut Context,
+    rng: &mut Rng,
+    unit: GLenum,
+    format: GLenum,
+    size: i32,
+    min: GLenum,
+    mode: GLenum,
+    combine: Option<([GLenum; 2], [GLenum; 2], [f32; 2])>,
+) {
+    gl.active_texture(unit);
+    random_texture(gl, rng, format, size, size);
+    if min != GL_LINEAR && min != GL_NEAREST {
+        gl.generate_mipmap_ext(GL_TEXTURE_2D);
+    }
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as i32);
+    if let Some(([rgb, alpha], [s0, s1], [rgb_scale, alpha_scale])) = combine {
+        gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, rgb as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, alpha as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, s0 as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, s1 as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, s0 as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, s1 as i32);
+        gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, rgb_scale);
+        gl.tex_envf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, alpha_scale);
+    }
+    gl.active_texture(GL_TEXTURE0);
+}
+
+/// Cascades that the byte environment takes (`fragment::bytenv`: units before the last
+/// selecting, the last computed in 8-bit integers, white or black primary colours) against the
+/// general path's f32 environment, with blending and masks after them; and the same cascades
+/// with random colours, whose blocks go back to the f32 route.
+#[test]
+fn byte_environment_matches_the_general_path() {
+    let states: [Setup; 7] = [
+        (
+            "lightmap: RGB trilinear REPLACE, LUMINANCE COMBINE MODULATE x2",
+            |gl, rng| {
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_RGB,
+                    32,
+                    GL_LINEAR_MIPMAP_LINEAR,
+                    GL_REPLACE,
+                    None,
+                );
+                let c = (
+                    [GL_MODULATE, GL_MODULATE],
+                    [GL_PREVIOUS, GL_TEXTURE],
+                    [2.0, 1.0],
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    GL_LUMINANCE,
+                    16,
+                    GL_LINEAR,
+                    GL_COMBINE,
+                    Some(c),
+                );
+                multi_strip(gl, rng, Some([1.0; 4]));
+            },
+        ),
+        ("lightmap with random colours (f32 route)", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGB,
+                32,
+                GL_LINEAR_MIPMAP_LINEAR,
+                GL_REPLACE,
+                None,
+            );
+            let c = (
+                [GL_MODULATE, GL_MODULATE],
+                [GL_PREVIOUS, GL_TEXTURE],
+                [2.0, 1.0],
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_LUMINANCE,
+                16,
+                GL_LINEAR,
+                GL_COMBINE,
+                Some(c),
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("RGBA REPLACE, INTENSITY ADD, alpha over", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGBA,
+                16,
+                GL_NEAREST_MIPMAP_LINEAR,
+                GL_REPLACE,
+                None,
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_INTENSITY,
+                8,
+                GL_LINEAR,
+                GL_ADD,
+                None,
+            );
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            multi_strip(gl, rng, Some([1.0; 4]));
+        }),
+        (
+            "LUMINANCE_ALPHA COMBINE SUBTRACT x4 / ADD_SIGNED x2, colour mask",
+            |gl, rng| {
+                let c = (
+                    [GL_SUBTRACT, GL_ADD_SIGNED],
+                    [GL_TEXTURE, GL_PRIMARY_COLOR],
+                    [4.0, 2.0],
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_LUMINANCE_ALPHA,
+                    16,
+                    GL_LINEAR,
+                    GL_COMBINE,
+                    Some(c),
+                );
+                gl.color_mask(1, 1, 0, 1);
+                multi_strip(gl, rng, Some([0.0, 0.0, 0.0, 1.0]));
+            },
+        ),
+        ("ALPHA REPLACE, RGBA MODULATE, ONE ONE", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_ALPHA,
+                16,
+                GL_LINEAR_MIPMAP_NEAREST,
+                GL_REPLACE,
+                None,
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_RGBA,
+                16,
+                GL_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_ONE, GL_ONE);
+            multi_strip(gl, rng, Some([1.0; 4]));
+        }),
+        (
+            "three units: REPLACE, RGB DECAL, COMBINE ADD of the constant colour",
+            |gl, rng| {
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_LUMINANCE,
+                    16,
+                    GL_LINEAR,
+                    GL_REPLACE,
+                    None,
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    GL_RGB,
+                    16,
+                    GL_LINEAR_MIPMAP_LINEAR,
+                    GL_DECAL,
+                    None,
+                );
+                let c = (
+                    [GL_ADD, GL_MODULATE],
+                    [GL_PREVIOUS, GL_CONSTANT],
+                    [1.0, 4.0],
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE2,
+                    GL_RGBA,
+                    8,
+                    GL_LINEAR,
+                    GL_COMBINE,
+                    Some(c),
+                );
+                gl.active_texture(GL_TEXTURE2);
+                gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.0, 1.0, 0.0, 1.0]);
+                gl.active_texture(GL_TEXTURE0);
+                multi_strip(gl, rng, Some([1.0; 4]));
+            },
+        ),
+        (
+            "COMBINE MODULATE of a non-byte constant colour (f32 draw)",
+            |gl, rng| {
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_RGB,
+                    16,
+                    GL_LINEAR,
+                    GL_REPLACE,
+                    None,
+                );
+                let c = (
+                    [GL_MODULATE, GL_MODULATE],
+                    [GL_PREVIOUS, GL_CONSTANT],
+                    [2.0, 1.0],
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    GL_LUMINANCE,
+                    16,
+                    GL_LINEAR,
+                    GL_COMBINE,
+                    Some(c),
+                );
+                gl.active_texture(GL_TEXTURE1);
+                gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.3, 0.7, 0.9, 0.8]);
+                gl.active_texture(GL_TEXTURE0);
+                multi_strip(gl, rng, Some([1.0; 4]));
+            },
+        ),
+    ];
+    twins(&states);
+}

@@ -26,6 +26,7 @@ pub mod fbo;
 pub mod fbo_blit;
 pub mod pbo;
 pub mod piglit;
+pub mod tex_storage;
 
 /// The framebuffer size every state case runs with.
 pub const SIZE: i32 = 64;
@@ -85,6 +86,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
     ("state cases: piglit scripts", piglit::CASES),
     ("state cases: framebuffer objects", fbo::CASES),
     ("state cases: framebuffer blits", fbo_blit::CASES),
+    ("state cases: ARB_texture_storage", tex_storage::CASES),
     (
         "state cases: pixel buffer objects, buffer ranges",
         pbo::CASES,

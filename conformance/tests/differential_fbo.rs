@@ -29,3 +29,13 @@ fn arb_fbo_state_cases_agree_with_mesa() {
         tilegl_conformance::state_cases::arb_fbo::CASES,
     );
 }
+
+/// ARB_texture_storage (the cases in `tilegl_conformance::state_cases::tex_storage`; with
+/// the framebuffer objects as piglit's tex-miplevel-selection needs both).
+#[test]
+fn tex_storage_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::tex_storage",
+        tilegl_conformance::state_cases::tex_storage::CASES,
+    );
+}

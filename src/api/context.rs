@@ -520,6 +520,10 @@ impl Gl for Context {
         bind_renderbuffer,
         renderbuffer_storage_multisample,
         framebuffer_texture_layer,
+        // ARB_texture_storage
+        tex_storage_1d,
+        tex_storage_2d,
+        tex_storage_3d,
         // EXT_framebuffer_blit
         blit_framebuffer_ext,
         unlock_arrays_ext,

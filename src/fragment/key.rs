@@ -61,6 +61,9 @@ pub struct FragmentKey {
     /// Every texture unit may be sampled eight pixels at a time
     /// (`BoundTexture::simd_2d`): the general path's `span_sampled` form applies.
     pub simd_units: bool,
+    /// The texture environment runs on bytes where the primary colour allows
+    /// (`fragment::bytenv::applies`; the eight-lane sampled route's blocks).
+    pub byte_env: bool,
     /// Fog, after the colour sum (parameters in the `FragmentDraw`).
     pub fog: Option<FogMode>,
     /// An occlusion query is active: count the fragments that pass the depth and stencil

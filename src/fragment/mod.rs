@@ -2,6 +2,7 @@
 //! A stage that the draw's state disables is absent from the chosen function.
 
 pub mod blend;
+pub mod bytenv;
 pub mod cache;
 pub mod draw;
 pub mod fog;

@@ -212,6 +212,9 @@ pub fn fog_factors8(
 }
 
 #[cfg(target_arch = "x86_64")]
+pub(crate) use x86::shade8_bytes;
+
+#[cfg(target_arch = "x86_64")]
 mod x86 {
     use std::arch::x86_64::*;
 
@@ -417,12 +420,40 @@ mod x86 {
             };
             keep = _mm256_and_ps(keep, ok);
         }
-        // SAFETY: `dst` holds eight u32; unaligned load.
-        let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
         let mut src = [_mm256_setzero_si256(); 4];
         for c in 0..4 {
             src[c] = to_u8(color[c]);
         }
+        finish8(tail, &src, keep, dst)
+    }
+
+    /// [`shade8`]'s blending, colour mask and lanes for eight fragments whose colours after
+    /// the environment are the bytes of `rgba` (R in the low byte), for a tail without an
+    /// alpha test, colour sum or fog and whose environment was applied before (none of
+    /// `modulate`, `rgb_from_primary`, `alpha_from_primary`): the colour words and the lanes
+    /// of `pass`, as [`shade8`] gives them for colours whose `to_u8` are these bytes. The
+    /// caller checked that the processor has AVX2.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn shade8_bytes(tail: &Tail8, rgba: __m256i, dst: &[u32; 8], pass: u8) -> ([u32; 8], u8) {
+        let byte = _mm256_set1_epi32(0xFF);
+        let src = [
+            _mm256_and_si256(rgba, byte),
+            _mm256_and_si256(_mm256_srli_epi32::<8>(rgba), byte),
+            _mm256_and_si256(_mm256_srli_epi32::<16>(rgba), byte),
+            _mm256_srli_epi32::<24>(rgba),
+        ];
+        finish8(tail, &src, lane_mask(pass), dst)
+    }
+
+    /// The tail from the fragments' colours as bytes `src` (one channel per array, 0..=255 in
+    /// 32-bit lanes): blending with `dst`, the colour mask, and the lanes of `keep`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn finish8(tail: &Tail8, src: &[__m256i; 4], keep: __m256, dst: &[u32; 8]) -> ([u32; 8], u8) {
+        let one = _mm256_set1_ps(1.0);
+        // SAFETY: `dst` holds eight u32; unaligned load.
+        let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
         let k = _mm256_set1_ps(255.0);
         let byte = _mm256_set1_epi32(0xFF);
         let d = [
@@ -445,7 +476,7 @@ mod x86 {
             // s and d (the f32 errors stay far below the 0.5 of rounding;
             // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
             // saturation.
-            _mm256_adds_epu8(pack(&src), old)
+            _mm256_adds_epu8(pack(src), old)
         } else if tail.blend == super::TailBlend::AlphaOver {
             let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
             let inv = _mm256_sub_ps(one, sa);
@@ -489,7 +520,7 @@ mod x86 {
             }
             pack(&out)
         } else {
-            pack(&src)
+            pack(src)
         };
         let cm = _mm256_set1_epi32(tail.color_mask as i32);
         let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));

@@ -206,8 +206,19 @@ fn plan_aliased(
     v: [&WindowVertex; 2],
 ) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
     let s = SUBPIXEL as f64;
-    let (mut x0, mut y0) = (v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s);
-    let (mut x1, mut y1) = (v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s);
+    let p0 = [v[0].xy[0] as f64 / s, v[0].xy[1] as f64 / s];
+    let p1 = [v[1].xy[0] as f64 / s, v[1].xy[1] as f64 / s];
+    aliased_plan(p0, p1, ds.raster.line_width)
+}
+
+/// [`plan_aliased`] for the window positions `p0`, `p1` and the line width.
+#[allow(clippy::type_complexity)]
+fn aliased_plan(
+    p0: [f64; 2],
+    p1: [f64; 2],
+    line_width: f32,
+) -> Option<(LineKind, bool, [f64; 4], (i64, i64))> {
+    let ([mut x0, mut y0], [mut x1, mut y1]) = (p0, p1);
     let (dx, dy) = (x1 - x0, y1 - y0);
     if dx == 0.0 && dy == 0.0 {
         return None;
@@ -232,7 +243,7 @@ fn plan_aliased(
         x1 -= PERTURBATION;
     }
     let [wlo, whi] = limits::LINE_WIDTH_RANGE;
-    let rounded = (ds.raster.line_width as f64).round();
+    let rounded = (line_width as f64).round();
     let width = if rounded.is_nan() {
         1
     } else {
@@ -464,7 +475,8 @@ impl LineSetup {
                     } else {
                         [unshifted + 0.5, c + 0.5]
                     };
-                    if !exits_diamond(*p0, *p1, *end, diamond) {
+                    let inner = centre > self.lo && centre < self.hi;
+                    if !exits_column(*p0, *p1, *end, diamond, inner, m + shift - unshifted) {
                         continue;
                     }
                     // The fragment's place along the segment: where the segment leaves its
@@ -603,19 +615,20 @@ impl LineSetup {
         let mut coverage = [0f32; MAX_SIDE];
         let mut emit = |y: i64, xa: i64, xb: i64| {
             let cov = &mut coverage[..(xb - xa + 1) as usize];
-            quad.coverage_row(xa, y, cov);
-            // Runs of pixels inside the quad.
-            let mut i = 0;
-            while i < cov.len() {
-                if cov[i] == OUTSIDE {
-                    i += 1;
-                    continue;
-                }
-                let start = i;
-                while i < cov.len() && cov[i] != OUTSIDE {
-                    i += 1;
-                }
-                f(y as i32, (xa + start as i64) as i32, &cov[start..i]);
+            // Runs of pixels inside the quad (one: the quad is convex, and each of its
+            // tests is monotonic along a row).
+            let mut inside = quad.coverage_row(xa, y, cov);
+            while inside != 0 {
+                let start = inside.trailing_zeros();
+                let len = (!(inside >> start)).trailing_zeros();
+                let (a, b) = (start as usize, (start + len) as usize);
+                f(y as i32, (xa + start as i64) as i32, &cov[a..b]);
+                let run = if len >= 128 {
+                    u128::MAX
+                } else {
+                    ((1u128 << len) - 1) << start
+                };
+                inside &= !run;
             }
         };
         if !self.x_major {
@@ -629,22 +642,33 @@ impl LineSetup {
             return;
         }
         // A window row holds the columns whose row range contains it: an interval, since
-        // both bounds are monotonic in the column (the same direction: `m` is a rounded
+        // both bounds are monotonic in the column, in the same direction (`m` is a rounded
         // linear function of the clamped centre, and floor, max and min keep the order).
-        let mut lo = [i64::MAX; MAX_SIDE];
-        let mut hi = [i64::MIN; MAX_SIDE];
-        for c in c0..=c1 {
-            let (r0, r1) = rows(c);
-            for y in r0..=r1 {
-                let k = (y - minor.0) as usize;
-                lo[k] = lo[k].min(c);
-                hi[k] = hi[k].max(c);
-            }
+        // Taken in the order in which the bounds do not decrease, the columns whose upper
+        // bound reaches row y start at `a` and those whose lower bound does end at `b`, both
+        // moving on as y grows.
+        let n = (c1 - c0 + 1) as usize;
+        let mut bounds = [(0i64, 0i64); MAX_SIDE];
+        for (k, b) in bounds[..n].iter_mut().enumerate() {
+            *b = rows(c0 + k as i64);
         }
-        let count = (minor.1 - minor.0 + 1) as usize;
-        for k in 0..count {
-            if lo[k] <= hi[k] {
-                emit(minor.0 + k as i64, lo[k], hi[k]);
+        let rising = bounds[0].0 <= bounds[n - 1].0 && bounds[0].1 <= bounds[n - 1].1;
+        let column = |i: usize| if rising { i } else { n - 1 - i };
+        let (mut a, mut b) = (0usize, 0usize);
+        for y in minor.0..=minor.1 {
+            while a < n && bounds[column(a)].1 < y {
+                a += 1;
+            }
+            if a == n {
+                break;
+            }
+            while b < n && bounds[column(b)].0 <= y {
+                b += 1;
+            }
+            // Columns a..b in the order: the lower bound reaches y before b, the upper from a.
+            if a < b {
+                let (i, j) = (column(a), column(b - 1));
+                emit(y, c0 + i.min(j) as i64, c0 + i.max(j) as i64);
             }
         }
     }
@@ -759,34 +783,38 @@ impl SmoothLineQuad {
     }
 }
 
-/// [`SmoothLineQuad::coverage_row`]'s mark of a pixel outside the quad (coverages are in
-/// [0, 1]).
-const OUTSIDE: f32 = -1.0;
-
 impl SmoothLineQuad {
-    /// The coverages of pixels `x0 + i` of row `y` (`i < out.len()`): `out[i]` is what
-    /// [`Self::fragment`] answers at the pixel's centre, its coverage as `f32`, or [`OUTSIDE`]
-    /// for `None`. Eight pixels at a time with AVX2 (the same operations on each lane, so the
-    /// same bits: twin test `coverage_rows_are_the_per_pixel_coverage`), else pixel by pixel.
-    fn coverage_row(&self, x0: i64, y: i64, out: &mut [f32]) {
+    /// The pixels `x0 + i` of row `y` (`i < out.len() <= 128`) inside the quad, bit `i` set
+    /// where [`Self::fragment`] answers `Some` at the pixel's centre, with the coverage it
+    /// answers as `f32` in `out[i]` (0 for the others). Eight pixels at a time with AVX2 (the
+    /// same operations on each lane, so the same bits: twin test
+    /// `coverage_rows_are_the_per_pixel_coverage`), else pixel by pixel.
+    fn coverage_row(&self, x0: i64, y: i64, out: &mut [f32]) -> u128 {
         #[cfg(target_arch = "x86_64")]
         {
             if crate::common::cpu::available() {
                 // SAFETY: AVX2 is present (checked just above).
-                unsafe { self.coverage_row_avx2(x0, y, out) };
-                return;
+                return unsafe { self.coverage_row_avx2(x0, y, out) };
             }
         }
-        self.coverage_row_scalar(x0, y, out);
+        self.coverage_row_scalar(x0, y, out)
     }
 
     /// [`Self::coverage_row`] pixel by pixel.
-    fn coverage_row_scalar(&self, x0: i64, y: i64, out: &mut [f32]) {
+    fn coverage_row_scalar(&self, x0: i64, y: i64, out: &mut [f32]) -> u128 {
         let yc = y as f64 + 0.5;
+        let mut inside = 0u128;
         for (i, o) in out.iter_mut().enumerate() {
             let xc = (x0 + i as i64) as f64 + 0.5;
-            *o = self.fragment(xc, yc).map_or(OUTSIDE, |(c, _)| c as f32);
+            *o = match self.fragment(xc, yc) {
+                Some((c, _)) => {
+                    inside |= 1 << i;
+                    c as f32
+                }
+                None => 0.0,
+            };
         }
+        inside
     }
 
     /// [`Self::coverage_row`] eight pixels at a time: [`Self::fragment`]'s operations in its
@@ -795,7 +823,7 @@ impl SmoothLineQuad {
     /// triangles' across coordinates computed and the one holding each pixel selected.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    fn coverage_row_avx2(&self, x0: i64, y: i64, out: &mut [f32]) {
+    fn coverage_row_avx2(&self, x0: i64, y: i64, out: &mut [f32]) -> u128 {
         use std::arch::x86_64::*;
         let yc = y as f64 + 0.5;
         let sy = yc - self.p0[1];
@@ -861,26 +889,38 @@ impl SmoothLineQuad {
                 clamp01(_mm256_sub_pd(vh, _mm256_andnot_pd(sign, across))),
                 clamp01(_mm256_sub_pd(vhl, _mm256_andnot_pd(sign, along))),
             );
-            // NaN answers 0.
+            // NaN answers 0; so do the pixels outside.
             let cov = _mm256_and_pd(cov, _mm256_cmp_pd::<_CMP_ORD_Q>(cov, cov));
-            let cov = _mm256_blendv_pd(set(OUTSIDE as f64), cov, inside);
-            _mm256_cvtpd_ps(cov)
+            let cov = _mm256_and_pd(cov, inside);
+            (_mm256_cvtpd_ps(cov), _mm256_movemask_pd(inside) as u128)
         };
         let step = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+        let mut mask = 0u128;
         for (k, chunk) in out.chunks_mut(8).enumerate() {
             // Pixel centres are whole numbers plus 1/2 well inside f64's exact range (the
             // window's), so adding the lane's offset is exact.
             let xc = set((x0 + 8 * k as i64) as f64 + 0.5);
-            let lo = lanes(_mm256_add_pd(xc, step));
-            let hi = lanes(_mm256_add_pd(_mm256_add_pd(xc, set(4.0)), step));
-            let mut v = [0f32; 8];
-            // SAFETY: `v` holds eight f32, 32 bytes; unaligned stores.
-            unsafe {
-                _mm_storeu_ps(v.as_mut_ptr(), lo);
-                _mm_storeu_ps(v.as_mut_ptr().add(4), hi);
+            let (lo, lo_in) = lanes(_mm256_add_pd(xc, step));
+            let (hi, hi_in) = lanes(_mm256_add_pd(_mm256_add_pd(xc, set(4.0)), step));
+            let live = (1u128 << chunk.len()) - 1;
+            mask |= ((lo_in | hi_in << 4) & live) << (8 * k);
+            if let Ok(whole) = <&mut [f32; 8]>::try_from(&mut *chunk) {
+                // SAFETY: `whole` holds eight f32, 32 bytes; unaligned stores.
+                unsafe {
+                    _mm_storeu_ps(whole.as_mut_ptr(), lo);
+                    _mm_storeu_ps(whole.as_mut_ptr().add(4), hi);
+                }
+            } else {
+                let mut v = [0f32; 8];
+                // SAFETY: as above, into `v`.
+                unsafe {
+                    _mm_storeu_ps(v.as_mut_ptr(), lo);
+                    _mm_storeu_ps(v.as_mut_ptr().add(4), hi);
+                }
+                chunk.copy_from_slice(&v[..chunk.len()]);
             }
-            chunk.copy_from_slice(&v[..chunk.len()]);
         }
+        mask
     }
 }
 
@@ -907,6 +947,34 @@ fn floor(v: f64) -> f64 {
 /// 2^13-pixel window can pass a diamond without touching it, far above the rounding error
 /// (2^-39) of the positions along it.
 const PERTURBATION: f64 = 1.0 / (1u64 << 36) as f64;
+
+/// How far from the middle of its pixel the segment may cross a column's centre line for
+/// [`exits_column`] to take the crossing as inside the diamond without computing it: half a
+/// pixel less 2^-20, where the rounding errors of the two computations of the crossing
+/// (`fragments`' and [`exits_diamond`]'s, ten operations on coordinates below 2^23) stay
+/// under 2^-26.
+const CROSSING_MARGIN: f64 = 0.5 - 1.0 / (1u64 << 20) as f64;
+
+/// [`exits_diamond`] for the pixel centred at `c` in a column whose centre lies strictly
+/// between the segment's ends (`inner`), the segment crossing the centre line at `frac`
+/// (its moved minor coordinate there less the pixel's, as `fragments` computes it): where
+/// that crossing is well inside the pixel, it is inside the diamond, so the segment meets it
+/// and only the end point decides; elsewhere the full test. The same verdicts (unit test
+/// `column_exits_are_the_diamond_rule`).
+#[inline(always)]
+fn exits_column(
+    p0: [f64; 2],
+    p1: [f64; 2],
+    end: [f64; 2],
+    c: [f64; 2],
+    inner: bool,
+    frac: f64,
+) -> bool {
+    if inner && (frac - 0.5).abs() < CROSSING_MARGIN {
+        return !((end[0] - c[0]).abs() + (end[1] - c[1]).abs() < 0.5);
+    }
+    exits_diamond(p0, p1, end, c)
+}
 
 /// Section 3.4.1's diamond-exit rule for the pixel centred at `c`: the (perturbed) segment from
 /// `p0` to `p1` produces the fragment when it meets the diamond `|x - cx| + |y - cy| < 1/2` and
@@ -1005,8 +1073,9 @@ mod tests {
             let n = 1 + (case % 80);
             let mut fast = vec![0f32; n];
             let mut slow = vec![0f32; n];
-            q.coverage_row(x0, y, &mut fast);
-            q.coverage_row_scalar(x0, y, &mut slow);
+            let fast_in = q.coverage_row(x0, y, &mut fast);
+            let slow_in = q.coverage_row_scalar(x0, y, &mut slow);
+            assert_eq!(fast_in, slow_in, "case {case}");
             for i in 0..n {
                 assert_eq!(
                     fast[i].to_bits(),
@@ -1017,12 +1086,92 @@ mod tests {
                     slow[i]
                 );
                 let c = slow[i];
-                inside += usize::from(c != super::OUTSIDE);
+                inside += (slow_in >> i & 1) as usize;
                 partial += usize::from(c > 0.0 && c < 1.0);
+            }
+            // The per-pixel function's verdicts.
+            let yc = y as f64 + 0.5;
+            for i in 0..n {
+                let some = q.fragment((x0 + i as i64) as f64 + 0.5, yc).is_some();
+                assert_eq!(slow_in >> i & 1 == 1, some, "case {case} pixel {i}");
             }
         }
         // The rows did cross the quads, edges included.
         assert!(inside > 15_000 && partial > 5_000, "{inside} {partial}");
+    }
+
+    /// The shortcut of `exits_column` gives the diamond rule's verdicts: every column of
+    /// random segments between sub-pixel positions (widths 1-5, every direction, short and
+    /// long, some axis-aligned or through pixel corners), set up and walked as `fragments`
+    /// does it; the shortcut must be taken for most columns.
+    #[test]
+    fn column_exits_are_the_diamond_rule() {
+        use super::{aliased_plan, exits_column, exits_diamond, floor, LineKind};
+        use crate::common::fixed::SUBPIXEL;
+        let mut seed = 0x0123_4567_89AB_CDEFu64;
+        let mut next = || crate::test_support::xorshift(&mut seed);
+        let (mut columns, mut short) = (0usize, 0usize);
+        for case in 0..20_000 {
+            let s = SUBPIXEL;
+            let mut pos = |spread: i64| {
+                let v = (next() % (spread as u64 * 2 * s as u64)) as i64 - spread * s;
+                v as f64 / s as f64
+            };
+            let p0 = [500.0 + pos(400), 500.0 + pos(400)];
+            let reach = [3, 40, 300][case % 3];
+            let mut p1 = [p0[0] + pos(reach), p0[1] + pos(reach)];
+            match case % 7 {
+                0 => p1[1] = p0[1],
+                1 => p1[0] = p0[0],
+                2 => {
+                    p1 = [
+                        p0[0] + (p1[0] - p0[0]).round(),
+                        p0[1] + (p1[0] - p0[0]).round() / 2.0,
+                    ]
+                }
+                _ => {}
+            }
+            let width = 1.0 + (case % 5) as f32;
+            let Some((kind, x_major, [a0, a1, b0, db_da], (first, last))) =
+                aliased_plan(p0, p1, width)
+            else {
+                continue;
+            };
+            let LineKind::Aliased {
+                p0: q0,
+                p1: q1,
+                end,
+                shift,
+                ..
+            } = kind
+            else {
+                unreachable!()
+            };
+            let (lo, hi) = (a0.min(a1), a0.max(a1));
+            for ci in first..=last {
+                let centre = ci as f64 + 0.5;
+                let m = b0 + (centre.clamp(lo, hi) - a0) * db_da;
+                let unshifted = floor(m + shift);
+                let diamond = if x_major {
+                    [centre, unshifted + 0.5]
+                } else {
+                    [unshifted + 0.5, centre]
+                };
+                let inner = centre > lo && centre < hi;
+                let frac = m + shift - unshifted;
+                assert_eq!(
+                    exits_column(q0, q1, end, diamond, inner, frac),
+                    exits_diamond(q0, q1, end, diamond),
+                    "case {case}: {p0:?} -> {p1:?}, column {ci}"
+                );
+                columns += 1;
+                short += usize::from(inner && (frac - 0.5).abs() < super::CROSSING_MARGIN);
+            }
+        }
+        assert!(
+            columns > 500_000 && short * 10 > columns * 8,
+            "{columns} {short}"
+        );
     }
 
     /// A quad from (10.25, 20.5) to (40.75, 31.5), width 4, with 1/w `q0` and `q1`.

@@ -226,6 +226,9 @@ impl Scene {
     /// Records `cmd` in every tile that `rect` touches, in every sample plane (clears and
     /// pixel rectangles cover every sample of their pixels).
     pub fn bin_all_planes(&mut self, cmd: Command, rect: Rect) {
+        if self.bins.len() <= self.plane_tiles {
+            return self.bin(cmd, rect);
+        }
         if rect.is_empty() {
             return;
         }

@@ -390,10 +390,20 @@ impl SamplePasses {
                 }
             }
             let key = ds.tile.fragment.key;
-            if key.alpha_to_coverage {
+            let raster = &ds.tile.raster;
+            // Multisample rasterization of polygons and lines ignores POLYGON_SMOOTH and
+            // LINE_SMOOTH (sections 3.5.7, 3.4.4): the samples are the antialiasing.
+            let smooth = ms.multisample && (raster.polygon_smooth || raster.line_smooth);
+            if key.alpha_to_coverage || smooth {
                 let mut tile = (*ds.tile).clone();
                 tile.fragment.uniforms.coverage_alpha_ref = s as f32 / samples as f32;
-                debug_assert!(force_general || tile.fragment.span_pair.is_none());
+                debug_assert!(
+                    force_general || !key.alpha_to_coverage || tile.fragment.span_pair.is_none()
+                );
+                if ms.multisample {
+                    tile.raster.polygon_smooth = false;
+                    tile.raster.line_smooth = false;
+                }
                 pass.tile = Arc::new(tile);
             }
             passes.push((s, Arc::new(pass)));

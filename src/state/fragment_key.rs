@@ -67,6 +67,7 @@ impl FragmentKey {
             texturing: false,
             fast_texture: None,
             simd_units: false,
+            byte_env: false,
             fog: None,
             count_samples: false,
             alpha_to_coverage: false,

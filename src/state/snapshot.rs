@@ -168,6 +168,8 @@ impl Context {
         };
         key.simd_units = !units.is_empty() && units.iter().all(|u| u.texture.simd_2d());
         key.fog = fog.map(|f| f.mode);
+        key.byte_env =
+            crate::common::cpu::available() && crate::fragment::bytenv::applies(&key, &units);
         key.count_samples = self.queries.active.is_some();
         // Multisample fragment operations apply with a multisample buffer and GL_MULTISAMPLE
         // on (section 4.1.3); each sample pass sets its threshold (`state::draw`).

@@ -109,6 +109,9 @@ pub struct TextureObject {
     pub priority: f32,
     /// `images[face][level]`; face 0 for all but cube maps.
     pub images: [[Option<TexImage>; MAX_LEVELS]; 6],
+    /// ARB_texture_storage: the `levels` of the `glTexStorage*` that made the texture
+    /// immutable (`GL_TEXTURE_IMMUTABLE_FORMAT` is true), or `None`.
+    pub immutable_levels: Option<usize>,
 }
 
 impl TextureObject {
@@ -124,6 +127,27 @@ impl TextureObject {
             params,
             priority: 1.0,
             images: std::array::from_fn(|_| std::array::from_fn(|_| None)),
+            immutable_levels: None,
+        }
+    }
+
+    /// `level_base`: `GL_TEXTURE_BASE_LEVEL`, clamped to `[0, levels - 1]` for an immutable
+    /// texture (ARB_texture_storage, section 3.8.6).
+    pub fn level_base(&self) -> usize {
+        let base = self.params.base_level.max(0) as usize;
+        match self.immutable_levels {
+            Some(n) => base.min(n.saturating_sub(1)),
+            None => base,
+        }
+    }
+
+    /// `level_max`: `GL_TEXTURE_MAX_LEVEL`, clamped to `[level_base, levels - 1]` for an
+    /// immutable texture.
+    pub fn level_max(&self) -> i32 {
+        match self.immutable_levels {
+            Some(n) => (self.params.max_level.max(0) as usize)
+                .clamp(self.level_base(), n.saturating_sub(1)) as i32,
+            None => self.params.max_level,
         }
     }
 
@@ -141,14 +165,14 @@ impl TextureObject {
         let dims = dims_of(target);
         let largest = inner[..dims].iter().copied().max().unwrap_or(1).max(1);
         let p = (31 - (largest as u32).leading_zeros()) as usize;
-        let max_level = self.params.max_level.max(0) as usize;
+        let max_level = self.level_max().max(0) as usize;
         (base + p).min(max_level).min(level_count(target) - 1)
     }
 
     /// The levels `base..=last` used for sampling when the texture is complete for `target`
     /// (section 3.8.10, including cube completeness), else `None`.
     pub fn complete_range(&self, target: TextureTarget) -> Option<(usize, usize)> {
-        let base = self.params.base_level.max(0) as usize;
+        let base = self.level_base();
         if base >= level_count(target) {
             return None;
         }
@@ -180,7 +204,7 @@ impl TextureObject {
         if !self.params.min_filter.is_mipmap() {
             return Some((base, base));
         }
-        if self.params.max_level < self.params.base_level {
+        if self.level_max() < base as i32 {
             return None;
         }
         let last = self.last_level(target, base, inner0);
@@ -233,7 +257,7 @@ impl TextureObject {
 
     /// The base format of the base level image, if any.
     pub fn base_format(&self) -> Option<BaseFormat> {
-        let base = self.params.base_level.max(0) as usize;
+        let base = self.level_base();
         self.image(0, base).map(|i| i.format.base)
     }
 }

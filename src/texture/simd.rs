@@ -32,6 +32,11 @@ pub struct Level8<'a> {
 }
 
 impl<'a> Level8<'a> {
+    /// The base format the texels expand by.
+    pub fn base(&self) -> BaseFormat {
+        self.base
+    }
+
     /// `lvl` (texels of base format `base`: RGBA, RGB, LUMINANCE_ALPHA, LUMINANCE, INTENSITY
     /// or ALPHA, one byte per component) under wrap modes `wrap`, or `None` when the format,
     /// the modes or the size are not ones [`filter8`] handles.
@@ -422,12 +427,19 @@ pub(crate) mod x86 {
 
     /// The eight lanes' level weights `weight` quantised
     /// ([`fixed::level_weight`](crate::texture::fixed::level_weight)).
+    /// Eight lanes at once: `trunc(256 w)` of `w` clamped first to [0, 255] in f32 (the
+    /// minimum with 255 first, which keeps NaN, then the maximum with 0, which answers 0 for
+    /// it), so every lane is what the scalar function's saturating conversion and clamp give
+    /// (unit test `level_weights8_are_the_scalar_weights`). A lane-by-lane map was 176
+    /// instructions a call in `sprites`.
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn level_weights8(weight: &[f32; 8]) -> __m256i {
-        let q = weight.map(|w| crate::texture::fixed::level_weight(w) as i32);
-        // SAFETY: eight i32; unaligned load.
-        unsafe { _mm256_loadu_si256(q.as_ptr() as *const __m256i) }
+    pub(crate) fn level_weights8(weight: &[f32; 8]) -> __m256i {
+        // SAFETY: eight f32; unaligned load.
+        let w = unsafe { _mm256_loadu_ps(weight.as_ptr()) };
+        let x = _mm256_mul_ps(w, _mm256_set1_ps(256.0));
+        let x = _mm256_max_ps(_mm256_min_ps(_mm256_set1_ps(255.0), x), _mm256_setzero_ps());
+        _mm256_cvttps_epi32(x)
     }
 
     /// R, G, B, A from a texel's stored components by its base format. (Filtering the stored
@@ -527,54 +539,46 @@ pub(crate) mod x86 {
         (s, t, ax, ay)
     }
 
-    /// The texels of one level plan at `s`, `t`, two levels mixed with the quantised weight
-    /// `weight` (0..=255) per lane.
+    /// The stored components (texel words, [`words8`]) of one level plan at `s`, `t`, two
+    /// levels mixed with the quantised weight `weight` (0..=255) per lane, and the plan's
+    /// first level (whose format the words have).
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn filter_plan8(
-        levels: &[Option<Level8>],
+    fn plan_words8<'l, 'a>(
+        levels: &'l [Option<Level8<'a>>],
         (first, second, linear): (usize, usize, bool),
         weight: __m256i,
         s: __m256,
         t: __m256,
-    ) -> Option<[__m256; 4]> {
+    ) -> Option<(__m256i, &'l Level8<'a>)> {
         let level = |l: usize| levels.get(l)?.as_ref();
         let l1 = level(first)?;
         let t1 = filter8_words(l1, linear, s, t)?;
         if second == first {
-            return Some(texels_of_words(l1, t1));
+            return Some((t1, l1));
         }
         let t2 = filter8_words(level(second)?, linear, s, t)?;
-        Some(texels_of_words(l1, lerp_words(t1, t2, weight)))
+        Some((lerp_words(t1, t2, weight), l1))
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// [`block_texels8`] as texel words (the stored components, [`words8`]) and the level
+    /// whose format they have (`None` when no lane is live: the words are then zero). The
+    /// texels [`block_texels8`] gives are [`texels_of_words`] of these words.
     #[inline]
     #[target_feature(enable = "avx2")]
-    pub fn block_texels8(
+    pub fn block_words8<'l, 'a>(
         planes: &[[[f64; 3]; 3]; 2],
         x: f64,
         live: u8,
         fixed_plan: Option<(usize, bool)>,
         lod: &LodSelect,
-        levels: &[Option<Level8>],
-        out: &mut Texels8,
-    ) -> Option<()> {
-        let store = |out: &mut Texels8, tex: [__m256; 4]| {
-            for c in 0..4 {
-                // SAFETY: `out[c]` holds eight f32; unaligned store.
-                unsafe { _mm256_storeu_ps(out[c].as_mut_ptr(), tex[c]) };
-            }
-        };
-        let zero = _mm256_setzero_ps();
+        levels: &'l [Option<Level8<'a>>],
+    ) -> Option<(__m256i, Option<&'l Level8<'a>>)> {
         if let Some((level, linear)) = fixed_plan {
             let (s, t, _, _) = block_coords8(planes, x, live, None);
             let none = _mm256_setzero_si256();
-            store(
-                out,
-                filter_plan8(levels, (level, level, linear), none, s, t)?,
-            );
-            return Some(());
+            let (w, l) = plan_words8(levels, (level, level, linear), none, s, t)?;
+            return Some((w, Some(l)));
         }
         let (_, size) = lod.magnified_test()?;
         let (s, t, ax, ay) = block_coords8(planes, x, live, Some(size));
@@ -599,30 +603,81 @@ pub(crate) mod x86 {
         };
         let quad_lanes = [0x33u8, 0xCC];
         let plans = [0, 1].map(|q| (live & quad_lanes[q] != 0).then(|| plan(q)));
-        let tex = match plans {
+        let (words, level) = match plans {
             [Some((p0, w0)), Some((p1, w1))] if p0 == p1 => {
                 // One plan: filtered together, each quad with its own weight.
                 let first = _mm256_castps_si256(lane_mask(0x33));
                 let weight =
                     _mm256_blendv_epi8(_mm256_set1_epi32(w1), _mm256_set1_epi32(w0), first);
-                filter_plan8(levels, p0, weight, s, t)?
+                plan_words8(levels, p0, weight, s, t)?
             }
             [Some((p0, w0)), Some((p1, w1))] => {
-                let a = filter_plan8(levels, p0, _mm256_set1_epi32(w0), s, t)?;
-                let b = filter_plan8(levels, p1, _mm256_set1_epi32(w1), s, t)?;
-                let first = lane_mask(0x33);
-                let mut tex = a;
-                for c in 0..4 {
-                    tex[c] = _mm256_blendv_ps(b[c], a[c], first);
-                }
-                tex
+                let (a, level) = plan_words8(levels, p0, _mm256_set1_epi32(w0), s, t)?;
+                let (b, _) = plan_words8(levels, p1, _mm256_set1_epi32(w1), s, t)?;
+                let first = _mm256_castps_si256(lane_mask(0x33));
+                (_mm256_blendv_epi8(b, a, first), level)
             }
             [Some((p, w)), None] | [None, Some((p, w))] => {
-                filter_plan8(levels, p, _mm256_set1_epi32(w), s, t)?
+                plan_words8(levels, p, _mm256_set1_epi32(w), s, t)?
             }
-            [None, None] => [zero; 4],
+            [None, None] => return Some((_mm256_setzero_si256(), None)),
         };
-        store(out, tex);
+        Some((words, Some(level)))
+    }
+
+    /// R, G, B, A bytes of each lane (R in the low byte) from texel words of a level of base
+    /// format `base` ([`words8`]): what [`texels_of_words`] gives, as bytes (1 is 255).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn rgba_of_words(base: BaseFormat, words: __m256i) -> __m256i {
+        // Per pixel, the stored byte that each of R, G, B, A takes (-1: zero), for the four
+        // pixels of each 128-bit lane.
+        let pick = |rgba: [i8; 4]| {
+            let mut idx = [0i8; 32];
+            for (i, v) in idx.iter_mut().enumerate() {
+                let (pixel, c) = ((i % 16) / 4, i % 4);
+                *v = if rgba[c] < 0 {
+                    -1
+                } else {
+                    rgba[c] + 4 * pixel as i8
+                };
+            }
+            // SAFETY: 32 bytes; unaligned load.
+            unsafe { _mm256_loadu_si256(idx.as_ptr() as *const __m256i) }
+        };
+        let opaque = _mm256_set1_epi32(0xFF00_0000u32 as i32);
+        match base {
+            BaseFormat::Rgba => words,
+            BaseFormat::Rgb => {
+                _mm256_or_si256(_mm256_shuffle_epi8(words, pick([0, 1, 2, -1])), opaque)
+            }
+            BaseFormat::LuminanceAlpha => _mm256_shuffle_epi8(words, pick([0, 0, 0, 1])),
+            BaseFormat::Intensity => _mm256_shuffle_epi8(words, pick([0, 0, 0, 0])),
+            BaseFormat::Alpha => _mm256_shuffle_epi8(words, pick([-1, -1, -1, 0])),
+            _ => _mm256_or_si256(_mm256_shuffle_epi8(words, pick([0, 0, 0, -1])), opaque),
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn block_texels8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        live: u8,
+        fixed_plan: Option<(usize, bool)>,
+        lod: &LodSelect,
+        levels: &[Option<Level8>],
+        out: &mut Texels8,
+    ) -> Option<()> {
+        let tex = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
+            (words, Some(level)) => texels_of_words(level, words),
+            (_, None) => [_mm256_setzero_ps(); 4],
+        };
+        for c in 0..4 {
+            // SAFETY: `out[c]` holds eight f32; unaligned store.
+            unsafe { _mm256_storeu_ps(out[c].as_mut_ptr(), tex[c]) };
+        }
         Some(())
     }
 
@@ -762,5 +817,59 @@ pub(crate) mod x86 {
             unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
         }
         Some(res)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The eight-lane level weights are `fixed::level_weight` lane by lane: special values
+    /// (NaN, infinities, zeros of both signs, values around the steps and past the ends) and
+    /// random bit patterns and fractions.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn level_weights8_are_the_scalar_weights() {
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let mut values = vec![
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            0.0,
+            -0.0,
+            -0.001,
+            -1.0,
+            0.999_999_9,
+            1.0,
+            1.5,
+            254.5 / 256.0,
+            255.0 / 256.0,
+            1e10,
+            -1e10,
+            f32::MAX,
+            f32::MIN_POSITIVE,
+        ];
+        let mut seed = 0x5851_F42D_4C95_7F2Du64;
+        for _ in 0..40_000 {
+            let r = crate::test_support::xorshift(&mut seed);
+            values.push(f32::from_bits(r as u32));
+            values.push((r >> 40) as f32 / (1u64 << 24) as f32);
+            values.push((r % 512) as f32 / 256.0 + [0.0, 1e-7, -1e-7][(r % 3) as usize]);
+        }
+        for chunk in values.chunks(8) {
+            let mut w = [0.5f32; 8];
+            w[..chunk.len()].copy_from_slice(chunk);
+            // SAFETY: AVX2 is present (checked above); the store writes eight i32 into `out`.
+            let out = unsafe {
+                let v = super::x86::level_weights8(&w);
+                let mut out = [0i32; 8];
+                std::arch::x86_64::_mm256_storeu_si256(out.as_mut_ptr().cast(), v);
+                out
+            };
+            for (j, &x) in w.iter().enumerate() {
+                let want = crate::texture::fixed::level_weight(x) as i32;
+                assert_eq!(out[j], want, "{x:e}");
+            }
+        }
     }
 }

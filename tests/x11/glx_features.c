@@ -11,6 +11,9 @@
  *                                 glXMakeCurrent pick up the new size)
  *   glx_features reopen          three times: open the display, show a frame, close it (the
  *                                 presentation state of a closed display is dropped)
+ *   glx_features multisample OUT.ppm
+ *                                 a 4x multisample visual (GLX_SAMPLE_BUFFERS/GLX_SAMPLES): edges,
+ *                                 sample coverage, alpha-to-coverage/-one, GL_MULTISAMPLE off
  *   glx_features present OUT.ppm W H SWAPS
  *                                 a W x H frame, then SWAPS timed swaps (prints the mean)
  */
@@ -449,6 +452,103 @@ static int resize(const char *out)
     return 0;
 }
 
+/* ----- multisample */
+
+static void flat_triangle(float r, float g, float b, float x0, float y0, float x1, float y1,
+                          float x2, float y2)
+{
+    glColor3f(r, g, b);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(x0, y0);
+    glVertex2f(x1, y1);
+    glVertex2f(x2, y2);
+    glEnd();
+}
+
+static void rect(float x0, float y0, float x1, float y1)
+{
+    glBegin(GL_QUADS);
+    glVertex2f(x0, y0);
+    glVertex2f(x1, y0);
+    glVertex2f(x1, y1);
+    glVertex2f(x0, y1);
+    glEnd();
+}
+
+static int multisample(const char *out)
+{
+    int attrs[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,
+                   GLX_BLUE_SIZE, 8, GLX_DEPTH_SIZE, 16, GLX_SAMPLE_BUFFERS, 1,
+                   GLX_SAMPLES, 4, None};
+    XVisualInfo *vi = glXChooseVisual(dpy, DefaultScreen(dpy), attrs);
+    CHECK(vi != NULL, "no 4x multisample visual");
+    if (!vi)
+        return 1;
+    int buffers = -1, samples = -1;
+    glXGetConfig(dpy, vi, GLX_SAMPLE_BUFFERS, &buffers);
+    glXGetConfig(dpy, vi, GLX_SAMPLES, &samples);
+    CHECK(buffers == 1 && samples == 4, "GLX_SAMPLE_BUFFERS %d GLX_SAMPLES %d", buffers, samples);
+    const int w = 128, h = 96;
+    Window win = make_window(vi, w, h, 0);
+    GLXContext ctx = glXCreateContext(dpy, vi, NULL, True);
+    CHECK(ctx && glXMakeCurrent(dpy, win, ctx), "context");
+    GLint gl_buffers = -1, gl_samples = -1;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &gl_buffers);
+    glGetIntegerv(GL_SAMPLES, &gl_samples);
+    CHECK(gl_buffers == 1 && gl_samples == 4, "GL_SAMPLE_BUFFERS %d GL_SAMPLES %d", gl_buffers,
+          gl_samples);
+    ortho(w, h);
+    glClearColor(0.1f, 0.1f, 0.2f, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    /* Edges at many slopes and sub-pixel offsets: the sample positions decide each pixel. */
+    flat_triangle(1, 0.55f, 0, 2.3f, 1.7f, 60.9f, 9.1f, 14.2f, 46.45f);
+    flat_triangle(0, 1, 0.55f, 62.1f, 3.3f, 63.7f, 45.2f, 20.6f, 40.1f);
+    flat_triangle(0.35f, 0.6f, 1, 5.5f, 50.25f, 58.75f, 52.6f, 31.2f, 93.9f);
+    /* Depth: a nearer triangle crossing a farther one. */
+    glEnable(GL_DEPTH_TEST);
+    glColor3f(1, 1, 1);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(66.2f, 2.4f, 0.5f);
+    glVertex3f(125.3f, 20.1f, -0.5f);
+    glVertex3f(70.1f, 44.7f, 0.5f);
+    glColor3f(1, 0, 1);
+    glVertex3f(68.9f, 30.2f, -0.9f);
+    glVertex3f(124.6f, 4.3f, 0.9f);
+    glVertex3f(110.2f, 43.8f, -0.2f);
+    glEnd();
+    glDisable(GL_DEPTH_TEST);
+    /* Sample coverage: 0.5 red, then its inverse green, 0.25 blue. */
+    glEnable(GL_SAMPLE_COVERAGE);
+    glSampleCoverage(0.5f, GL_FALSE);
+    glColor3f(1, 0, 0);
+    rect(66, 50, 94, 70);
+    glSampleCoverage(0.5f, GL_TRUE);
+    glColor3f(0, 1, 0);
+    rect(66, 50, 94, 70);
+    glSampleCoverage(0.25f, GL_FALSE);
+    glColor3f(0, 0, 1);
+    rect(96, 50, 126, 70);
+    glDisable(GL_SAMPLE_COVERAGE);
+    /* Alpha to coverage at four alphas, the last two with alpha to one. */
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    const float alphas[] = {0.1f, 0.4f, 0.6f, 0.9f};
+    for (int i = 0; i < 4; i++) {
+        if (i == 2)
+            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+        glColor4f(1, 1, 0, alphas[i]);
+        rect(66 + 15 * i, 72, 79 + 15 * i, 82);
+    }
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    /* GL_MULTISAMPLE off: pixel-centre coverage, every sample the same. */
+    glDisable(GL_MULTISAMPLE);
+    flat_triangle(0.8f, 0.8f, 0.2f, 66.4f, 84.3f, 126.1f, 86.7f, 90.3f, 95.2f);
+    glEnable(GL_MULTISAMPLE);
+    glXSwapBuffers(dpy, win);
+    write_window(win, out);
+    return 0;
+}
+
 /* ----- present */
 
 static double now(void)
@@ -548,6 +648,8 @@ int main(int argc, char **argv)
         r = xfont(argv[2]);
     else if (!strcmp(mode, "resize") && argc == 3)
         r = resize(argv[2]);
+    else if (!strcmp(mode, "multisample") && argc == 3)
+        r = multisample(argv[2]);
     else if (!strcmp(mode, "reopen"))
         r = reopen();
     else if (!strcmp(mode, "present") && argc == 6)

@@ -128,6 +128,8 @@ pub enum TexParam {
     MaxAnisotropy,
     /// Query only.
     Resident,
+    /// ARB_texture_storage's `GL_TEXTURE_IMMUTABLE_FORMAT`: query only.
+    ImmutableFormat,
     /// `GL_TEXTURE_SWIZZLE_R/G/B/A` (EXT_texture_swizzle): the component index.
     Swizzle(usize),
     /// `GL_TEXTURE_SWIZZLE_RGBA`: all four.

@@ -309,10 +309,18 @@ pub fn pair_sampled8<'a>(
         mut by_unit,
     } = Sampled8::new(ds, it, first_y, true);
     let mut samplers_y = first_y;
+    let byte_env = ds.key.byte_env && crate::common::cpu::available();
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
             Sampled8::place_samplers(&mut samplers, ds, it, y, true);
             samplers_y = y;
+        }
+        #[cfg(target_arch = "x86_64")]
+        if byte_env {
+            // SAFETY: AVX2 is present (`byte_env` checked it).
+            if let Some(done) = unsafe { byte_block(ds, &samplers, &tail, gx, group) } {
+                return Some(done);
+            }
         }
         for (k, unit) in ds.units.iter().enumerate() {
             let Some(out) = by_unit[unit.unit].as_mut() else {
@@ -334,6 +342,31 @@ pub fn pair_sampled8<'a>(
         }
         sampled8_shade(ds, single, &tail, group, &by_unit)
     });
+}
+
+/// A block of a `FragmentKey::byte_env` draw on bytes (`fragment::bytenv`): every unit's
+/// texels as bytes from its block sampler, the cascade in 8-bit integers and the tail from the
+/// colour bytes; the same colour words as the f32 route. `None` (the caller takes the f32
+/// route) when the primary colour is not a converted byte at a passing lane or a unit's block
+/// sampler does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn byte_block(
+    ds: &FragmentDraw,
+    samplers: &[Option<Perspective8>; MAX_TEXTURE_UNITS],
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    let primary = crate::fragment::bytenv::exact_words(&group.primary, group.pass)?;
+    let mut by_unit = [None; MAX_TEXTURE_UNITS];
+    let x = gx as f64 + 0.5;
+    for (k, unit) in ds.units.iter().enumerate() {
+        by_unit[unit.unit] = Some(samplers[k].as_ref()?.block_bytes(x, group.pass)?);
+    }
+    Some(crate::fragment::bytenv::shade(
+        ds, tail, primary, &by_unit, &group.dst, group.pass,
+    ))
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
@@ -443,23 +476,28 @@ impl CoveredRows {
     pub fn row(&self, ds: &FragmentDraw, tile: &mut Tile, y: i32, x0: i32, coverage: &[f32]) {
         let row = tile.index(x0, y);
         let c = &self.group;
+        // Without a depth or stencil test every lane of the row passes them.
+        let tested = ds.key.depth_func.is_some() || ds.key.stencil.is_some();
         let mut dst = [0u32; 8];
+        let mut primary = c.primary;
         for (g, cov) in coverage.chunks(8).enumerate() {
             let n = cov.len();
             let base = row + 8 * g;
-            if stencil_rejects_all(ds, tile, base, 0..n) {
-                continue;
-            }
-            let mut pass = 0u8;
-            for j in 0..n {
-                pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
-                dst[j] = u32::from_le_bytes(tile.color[base + j]);
-            }
-            let mut primary = c.primary;
-            for (a, &k) in primary[3].iter_mut().zip(cov) {
-                if k != 1.0 {
-                    *a = a.clamp(0.0, 1.0) * k;
+            let mut pass = lane_bits(0..n);
+            if tested {
+                if stencil_rejects_all(ds, tile, base, 0..n) {
+                    continue;
                 }
+                pass = 0;
+                for j in 0..n {
+                    pass |= u8::from(depth_passes(ds, c.depth[j], tile.depth[base + j])) << j;
+                }
+            }
+            for (d, p) in dst.iter_mut().zip(&tile.color[base..base + n]) {
+                *d = u32::from_le_bytes(*p);
+            }
+            for ((a, &k), &v) in primary[3].iter_mut().zip(cov).zip(&c.primary[3]) {
+                *a = if k != 1.0 { v.clamp(0.0, 1.0) * k } else { v };
             }
             if ds.key.stencil.is_some() {
                 pass = stencil_row(ds, tile, base, n, pass);

@@ -206,6 +206,32 @@ impl<'a> Perspective8<'a> {
             .is_some()
     }
 
+    /// [`Perspective8::texels_block`] as R, G, B, A bytes per lane (colour words: the texels
+    /// are these bytes converted, `b * (1 / 255)`), for a 2D texture; `None` for a cube map or
+    /// where [`Perspective8::texels_block`] would not take the block kernel. The caller
+    /// checked that the processor has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn block_bytes(&self, x: f64, live: u8) -> Option<std::arch::x86_64::__m256i> {
+        if self.cube.is_some() {
+            return None;
+        }
+        let levels: &[Option<Level8>] = self.levels;
+        let (words, level) = texture_simd::x86::block_words8(
+            &self.planes,
+            x,
+            live,
+            self.fixed_plan,
+            self.lod,
+            levels,
+        )?;
+        Some(match level {
+            Some(l) => texture_simd::x86::rgba_of_words(l.base(), words),
+            None => words,
+        })
+    }
+
     /// [`Perspective8::texels_block`] and the tail in one go ([`simd::block_shaded8`]) for a
     /// block whose live quads take one level: the draw's fixed plan, or magnification of a 2D
     /// texture. `None` otherwise (the caller takes the usual route: the same pixels).

@@ -189,6 +189,7 @@ pub fn tex_param(e: GLenum) -> Option<TexParam> {
         GL_DEPTH_TEXTURE_MODE => DepthTextureMode,
         GL_TEXTURE_MAX_ANISOTROPY_EXT => MaxAnisotropy,
         GL_TEXTURE_RESIDENT => Resident,
+        GL_TEXTURE_IMMUTABLE_FORMAT => ImmutableFormat,
         GL_TEXTURE_SWIZZLE_R => Swizzle(0),
         GL_TEXTURE_SWIZZLE_G => Swizzle(1),
         GL_TEXTURE_SWIZZLE_B => Swizzle(2),

@@ -95,6 +95,7 @@ impl Context {
             let f = s3tc(internalformat).ok_or(GL_INVALID_ENUM)?;
             let level = check_level(target.texture_target(), level)?;
             let ifmt = InternalFormat::s3tc(internalformat as GLint, f);
+            self.check_mutable(target)?;
             let stored = match check_size(target, level, [width, height, 1], border) {
                 Ok(s) => s,
                 Err(Some(e)) => return Err(e),

@@ -48,6 +48,7 @@ impl Context {
                 return Err(GL_INVALID_ENUM);
             }
             let ifmt = check_internal_format(internalformat as GLint, dims)?;
+            self.check_mutable(target)?;
             let stored = check_size(target, level, [size[0], size[1], 1], border)
                 .map_err(|e| e.unwrap_or(GL_INVALID_VALUE))?;
             if ifmt.compressed.is_some() && border != 0 {

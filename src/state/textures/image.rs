@@ -47,6 +47,7 @@ impl Context {
         let src = upload_source(format, type_)?;
         let level = check_level(target.texture_target(), level)?;
         let ifmt = check_internal_format(internalformat, dims)?;
+        self.check_mutable(target)?;
         let stored = match check_size(target, level, size, border) {
             Ok(s) => s,
             Err(Some(e)) => return Err(e),

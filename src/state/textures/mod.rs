@@ -22,6 +22,7 @@ mod compressed;
 mod copy;
 mod image;
 mod params;
+mod storage;
 
 /// A validation failure: the error to record.
 type Check<T> = Result<T, GLenum>;
@@ -460,7 +461,7 @@ impl Context {
     /// be cube complete: `GL_INVALID_OPERATION` otherwise). Nothing without a base image.
     pub(crate) fn generate_mipmaps_of_bound(&mut self, t: TextureTarget) -> Result<(), GLenum> {
         let mut obj = self.textures.bound_mut(self.active_texture, t);
-        let base = obj.params.base_level.max(0) as usize;
+        let base = obj.level_base();
         let faces = if t == TextureTarget::CubeMap { 6 } else { 1 };
         if t == TextureTarget::CubeMap {
             let first = obj.image(0, base).map(|i| (i.width, i.height, i.format));
@@ -512,6 +513,15 @@ impl Context {
         self.image_object(target).image(target.face(), level).map(f)
     }
 
+    /// ARB_texture_storage: `glTexImage*`, `glCopyTexImage*` and `glCompressedTexImage*` of
+    /// an immutable texture are `GL_INVALID_OPERATION`.
+    fn check_mutable(&self, target: TexImageTarget) -> Check<()> {
+        if !target.is_proxy() && self.image_object(target).immutable_levels.is_some() {
+            return Err(GL_INVALID_OPERATION);
+        }
+        Ok(())
+    }
+
     fn image_object(&self, target: TexImageTarget) -> ObjectRef<'_> {
         let t = target.texture_target();
         if target.is_proxy() {
@@ -537,7 +547,7 @@ impl Context {
         let tt = target.texture_target();
         let mut obj = self.image_object_mut(target);
         let mut oom = false;
-        if obj.params.generate_mipmap && level == obj.params.base_level.max(0) as usize {
+        if obj.params.generate_mipmap && level == obj.level_base() {
             if let Some(base) = obj.image(face, level) {
                 let last = obj
                     .last_level(tt, level, base.inner_size())

@@ -8,7 +8,7 @@ impl Context {
             let t = convert::texture_target(target).ok_or(GL_INVALID_ENUM)?;
             let p = convert::tex_param(pname).ok_or(GL_INVALID_ENUM)?;
             let four = matches!(p, TexParam::BorderColor | TexParam::SwizzleRgba);
-            if p == TexParam::Resident || (four && !vector) {
+            if matches!(p, TexParam::Resident | TexParam::ImmutableFormat) || (four && !vector) {
                 return Err(GL_INVALID_ENUM);
             }
             let needed = if four { 4 } else { 1 };
@@ -86,7 +86,7 @@ impl Context {
                     }
                     params.max_anisotropy = a.min(MAX_TEXTURE_MAX_ANISOTROPY);
                 }
-                TexParam::Resident => return Err(GL_INVALID_ENUM),
+                TexParam::Resident | TexParam::ImmutableFormat => return Err(GL_INVALID_ENUM),
                 TexParam::Swizzle(i) => {
                     params.swizzle[i] = convert::swizzle_source(e).ok_or(GL_INVALID_ENUM)?
                 }
@@ -155,6 +155,7 @@ impl Context {
             TexParam::DepthTextureMode => (e(q.depth_mode.to_gl()), false),
             TexParam::MaxAnisotropy => (vec![q.max_anisotropy as f64], false),
             TexParam::Resident => (vec![1.0], false),
+            TexParam::ImmutableFormat => (vec![obj.immutable_levels.is_some() as u8 as f64], false),
             TexParam::Swizzle(i) => (e(q.swizzle[i].to_gl()), false),
             TexParam::SwizzleRgba => (q.swizzle.iter().map(|s| s.to_gl() as f64).collect(), false),
         })
