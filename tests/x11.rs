@@ -513,6 +513,9 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     // piglit's arb_texture_storage group, passing since ARB_texture_storage (Dec 3 2026).
     &["arb_texture_storage-texture-storage", "-auto"],
     &["arb_texture_storage-texture-storage-attach-before", "-auto"],
+    // ARB_texture_float (docs/piglit.md, Dec 3 2026).
+    &["getteximage-simple", "-auto", "-fbo"],
+    &["arb_texture_float-get-tex3d", "-auto", "-fbo"],
 ];
 
 #[test]

@@ -94,12 +94,15 @@ impl S3tcFormat {
     }
 }
 
-/// How texel components are stored: unsigned normalised integers of 8, 16 or 32 bits.
+/// How texel components are stored: unsigned normalised integers of 8, 16 or 32 bits, or
+/// unclamped 32-bit floats (ARB_texture_float; the 16-bit float formats keep f32 storage
+/// holding values rounded to half precision).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Storage {
     U8,
     U16,
     U32,
+    F32,
 }
 
 /// The internal format of one texture image.
@@ -112,6 +115,9 @@ pub struct InternalFormat {
     /// Bits per component requested (the largest component of a sized format; 8 for generic
     /// formats, 24 for generic depth).
     pub bits: u8,
+    /// Floating-point colour components (ARB_texture_float's 16F and 32F formats, and the
+    /// R/RG float formats of ARB_texture_rg): stored unclamped, `bits` 16 or 32.
+    pub float: bool,
     /// The S3TC format the image is stored in, if compressed.
     pub compressed: Option<S3tcFormat>,
     /// A depth-stencil format (EXT_packed_depth_stencil, ARB_depth_buffer_float): the image
@@ -126,8 +132,29 @@ impl InternalFormat {
             requested,
             base,
             bits,
+            float: false,
             compressed: None,
             stencil: false,
+        }
+    }
+
+    /// A floating-point colour format of `bits` (16 or 32) per component.
+    pub fn float(requested: i32, base: BaseFormat, bits: u8) -> InternalFormat {
+        InternalFormat {
+            float: true,
+            ..InternalFormat::new(requested, base, bits)
+        }
+    }
+
+    /// A value as a float component of this format keeps it: unchanged for 32-bit floats,
+    /// rounded to the nearest half-precision value for the 16-bit ones (section 2.1.2 of
+    /// ARB_texture_float; overflow gives infinity).
+    #[inline]
+    pub fn float_value(self, v: f32) -> f32 {
+        if self.bits == 16 {
+            round_to_half(v)
+        } else {
+            v
         }
     }
 
@@ -144,6 +171,7 @@ impl InternalFormat {
             requested,
             base: f.base(),
             bits: 8,
+            float: false,
             compressed: Some(f),
             stencil: false,
         }
@@ -152,6 +180,9 @@ impl InternalFormat {
     /// Storage with at least the requested precision: 8 bits up to 8 requested bits, 16 up to
     /// 16, 32 for 24- and 32-bit depth.
     pub fn storage(self) -> Storage {
+        if self.float {
+            return Storage::F32;
+        }
         match self.bits {
             0..=8 => Storage::U8,
             9..=16 => Storage::U16,
@@ -162,13 +193,13 @@ impl InternalFormat {
     /// Bits actually kept per component (reported by `GL_TEXTURE_*_SIZE`): the storage size,
     /// except depth, which reports the requested 16, 24 or 32.
     pub fn component_bits(self) -> i32 {
-        if self.base == BaseFormat::DepthComponent {
+        if self.base == BaseFormat::DepthComponent || self.float {
             return self.bits as i32;
         }
         match self.storage() {
             Storage::U8 => 8,
             Storage::U16 => 16,
-            Storage::U32 => 32,
+            Storage::U32 | Storage::F32 => 32,
         }
     }
 
@@ -177,7 +208,7 @@ impl InternalFormat {
         let per_component = match self.storage() {
             Storage::U8 => 1,
             Storage::U16 => 2,
-            Storage::U32 => 4,
+            Storage::U32 | Storage::F32 => 4,
         };
         per_component * self.base.components() as u64
     }
@@ -192,5 +223,76 @@ impl InternalFormat {
 
     pub fn is_depth(self) -> bool {
         self.base == BaseFormat::DepthComponent
+    }
+}
+
+/// `v` rounded to the nearest IEEE half-precision value (ties to even), as an f32: values
+/// beyond the largest half (65504) round to infinity, small ones to half denormals or zero;
+/// NaN stays NaN.
+pub fn round_to_half(v: f32) -> f32 {
+    if !v.is_finite() {
+        return v;
+    }
+    let a = v.abs();
+    // The spacing of halves around `a`: 2^(e - 10) for normal halves (e = floor(log2 a),
+    // at least -14), 2^-24 for denormals.
+    let e = if a >= f32::MIN_POSITIVE {
+        ((a.to_bits() >> 23) as i32 - 127).max(-14)
+    } else {
+        -14
+    };
+    let ulp = f32::from_bits(((e - 10 + 127) as u32) << 23);
+    let q = (a / ulp).round_ties_even() * ulp;
+    let q = if q > 65504.0 {
+        // Halves up to 65504 + half an ulp (16) round down to 65504, beyond to infinity.
+        if a < 65520.0 {
+            65504.0
+        } else {
+            f32::INFINITY
+        }
+    } else {
+        q
+    };
+    q.copysign(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Half values from section 2.1.2: (-1)^S 2^(E-15) (1 + M/1024), denormals 2^-14 M/1024.
+    #[test]
+    fn half_rounding_follows_the_half_encoding() {
+        let half = |s: u32, e: i32, m: u32| -> f32 {
+            let sign = if s == 1 { -1.0 } else { 1.0 };
+            if e == 0 {
+                sign * 2f32.powi(-14) * (m as f32 / 1024.0)
+            } else {
+                sign * 2f32.powi(e - 15) * (1.0 + m as f32 / 1024.0)
+            }
+        };
+        // Every half is kept.
+        for e in 0..31 {
+            for m in [0, 1, 2, 511, 512, 1023] {
+                for s in [0, 1] {
+                    let h = half(s, e, m);
+                    assert_eq!(round_to_half(h), h, "{s} {e} {m}");
+                }
+            }
+        }
+        // 1 + 1/2048 is half-way between 1 and 1 + 1/1024: ties to even (1).
+        assert_eq!(round_to_half(1.0 + 1.0 / 2048.0), 1.0);
+        assert_eq!(round_to_half(1.0 + 3.0 / 2048.0), 1.0 + 2.0 / 1024.0);
+        assert_eq!(
+            round_to_half(1.0 + 1.0 / 4096.0 + 1.0 / 2048.0),
+            1.0 + 1.0 / 1024.0
+        );
+        assert_eq!(round_to_half(0.1), half(0, 11, 614));
+        assert_eq!(round_to_half(-2.5), -2.5);
+        assert_eq!(round_to_half(70000.0), f32::INFINITY);
+        assert_eq!(round_to_half(65519.0), 65504.0);
+        assert_eq!(round_to_half(2f32.powi(-26)), 0.0);
+        assert_eq!(round_to_half(3.0 * 2f32.powi(-26)), 2f32.powi(-24));
+        assert!(round_to_half(f32::NAN).is_nan());
     }
 }

@@ -7,13 +7,14 @@ use super::format::{InternalFormat, Storage};
 use super::s3tc;
 use crate::common::values::{TexPixelFormat, TexPixelType};
 
-/// Texel components, unsigned normalised, `components` per texel, rows bottom to top, images
-/// (3D slices) front to back, borders included.
+/// Texel components, unsigned normalised or (float formats) unclamped floats, `components`
+/// per texel, rows bottom to top, images (3D slices) front to back, borders included.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Texels {
     U8(Vec<u8>),
     U16(Vec<u16>),
     U32(Vec<u32>),
+    F32(Vec<f32>),
 }
 
 /// A block of an image being stored (see [`TexImage::store_block`]).
@@ -30,7 +31,7 @@ impl Block {
         &self,
         t: &mut [T],
         mut texel: impl FnMut(usize, usize, usize) -> [f32; 4],
-        to: impl Fn(f64) -> T,
+        to: impl Fn(f32) -> T,
     ) {
         let (o, c) = (self.origin, self.slots.len());
         for z in o[2]..self.end[2] {
@@ -41,7 +42,7 @@ impl Block {
                     let at = (row + x) * c;
                     for (k, &slot) in self.slots.iter().enumerate() {
                         if let Some(d) = t.get_mut(at + k) {
-                            *d = to(clamp01(v[slot]) as f64);
+                            *d = to(v[slot]);
                         }
                     }
                 }
@@ -138,10 +139,11 @@ impl Texels {
             Storage::U8 => Texels::U8(alloc(n)?),
             Storage::U16 => Texels::U16(alloc(n)?),
             Storage::U32 => Texels::U32(alloc(n)?),
+            Storage::F32 => Texels::F32(alloc(n)?),
         })
     }
 
-    /// Component `i` as a value in [0, 1]; 0 past the end.
+    /// Component `i` as a value in [0, 1] (float storage: as stored); 0 past the end.
     #[inline]
     pub fn get(&self, i: usize) -> f32 {
         match self {
@@ -150,10 +152,12 @@ impl Texels {
             Texels::U32(v) => v
                 .get(i)
                 .map_or(0.0, |&c| (c as f64 / u32::MAX as f64) as f32),
+            Texels::F32(v) => v.get(i).copied().unwrap_or(0.0),
         }
     }
 
-    /// Stores `value` (clamped to [0, 1], NaN as 0) rounded to the nearest representable value.
+    /// Stores `value` (clamped to [0, 1], NaN as 0) rounded to the nearest representable value;
+    /// float storage keeps `value` as it is (the caller rounds 16-bit float formats).
     #[inline]
     pub fn set(&mut self, i: usize, value: f32) {
         let v = clamp01(value) as f64;
@@ -173,6 +177,11 @@ impl Texels {
                     *c = (v * u32::MAX as f64).round() as u32;
                 }
             }
+            Texels::F32(t) => {
+                if let Some(c) = t.get_mut(i) {
+                    *c = value;
+                }
+            }
         }
     }
 
@@ -181,6 +190,7 @@ impl Texels {
             Texels::U8(v) => v.len(),
             Texels::U16(v) => v.len(),
             Texels::U32(v) => v.len(),
+            Texels::F32(v) => v.len(),
         }
     }
 
@@ -392,6 +402,7 @@ impl TexImage {
             Texels::U8(v) => gather(base, v, i, |c| c as f32 * (1.0 / 255.0)),
             Texels::U16(v) => gather(base, v, i, |c| c as f32 * (1.0 / 65535.0)),
             Texels::U32(v) => gather(base, v, i, |c| (c as f64 / u32::MAX as f64) as f32),
+            Texels::F32(v) => gather(base, v, i, |c| c),
         }
     }
 
@@ -559,6 +570,12 @@ impl TexImage {
                 by_type!(t, |v: f32| (clamp01(v) as f64 * u32::MAX as f64 + 0.5)
                     as u32)
             }
+            Texels::F32(t) => {
+                // Unclamped (ARB_texture_float): 32-bit floats as they are, 16-bit ones
+                // rounded to half precision.
+                let f = self.format;
+                by_type!(t, move |v: f32| f.float_value(v))
+            }
         }
         true
     }
@@ -581,12 +598,17 @@ impl TexImage {
             end,
             slots,
         };
-        // v is in [0, 1], so truncating v * max + 1/2 rounds as `set` does (half away from
-        // zero), without a call to `round` per component.
+        // Clamped to [0, 1], truncating v * max + 1/2 rounds as `set` does (half away from
+        // zero), without a call to `round` per component. Float storage keeps the value
+        // unclamped (16-bit float formats rounded to half precision).
+        let f = self.format;
         match Arc::make_mut(&mut self.texels) {
-            Texels::U8(t) => block.fill(t, texel, |v| (v * 255.0 + 0.5) as u8),
-            Texels::U16(t) => block.fill(t, texel, |v| (v * 65535.0 + 0.5) as u16),
-            Texels::U32(t) => block.fill(t, texel, |v| (v * u32::MAX as f64 + 0.5) as u32),
+            Texels::U8(t) => block.fill(t, texel, |v| (clamp01(v) as f64 * 255.0 + 0.5) as u8),
+            Texels::U16(t) => block.fill(t, texel, |v| (clamp01(v) as f64 * 65535.0 + 0.5) as u16),
+            Texels::U32(t) => block.fill(t, texel, |v| {
+                (clamp01(v) as f64 * u32::MAX as f64 + 0.5) as u32
+            }),
+            Texels::F32(t) => block.fill(t, texel, |v| f.float_value(v)),
         }
     }
 
@@ -595,10 +617,17 @@ impl TexImage {
             return;
         }
         let i = self.index(x, y, z);
-        let slots = self.format.base.slots();
+        let f = self.format;
         let texels = Arc::make_mut(&mut self.texels);
-        for (k, &slot) in slots.iter().enumerate() {
-            texels.set(i + k, rgba[slot]);
+        for (k, &slot) in f.base.slots().iter().enumerate() {
+            texels.set(
+                i + k,
+                if f.float {
+                    f.float_value(rgba[slot])
+                } else {
+                    rgba[slot]
+                },
+            );
         }
     }
 
@@ -742,7 +771,7 @@ mod tests {
     #[test]
     fn converted_uploads_store_what_the_per_texel_route_stores() {
         use crate::texture::format::BaseFormat;
-        use crate::texture::pixels::{layout, unpack_group, PixelStore};
+        use crate::texture::pixels::{layout, unpack_group, unpack_group_unclamped, PixelStore};
         use TexPixelFormat as F;
         use TexPixelType as T;
         let formats = [
@@ -795,8 +824,18 @@ mod tests {
         for format in formats {
             for ty in types {
                 for base in bases {
-                    for bits in [8u8, 16, 32] {
-                        let ifmt = InternalFormat::new(0, base, bits);
+                    for (bits, float) in [
+                        (8u8, false),
+                        (16, false),
+                        (32, false),
+                        (16, true),
+                        (32, true),
+                    ] {
+                        let ifmt = if float {
+                            InternalFormat::float(0, base, bits)
+                        } else {
+                            InternalFormat::new(0, base, bits)
+                        };
                         for (align, row_length, skip_px, skip_rows) in
                             [(1, 0, 0, 0), (4, 11, 2, 1), (8, 0, 1, 2)]
                         {
@@ -828,10 +867,20 @@ mod tests {
                                         + z * lay.image_stride
                                         + y * lay.row_stride
                                         + x * lay.group;
-                                    unpack_group(&data, at, format, ty, false)
+                                    if float {
+                                        unpack_group_unclamped(&data, at, format, ty, false)
+                                    } else {
+                                        unpack_group(&data, at, format, ty, false)
+                                    }
                                 });
-                                assert_eq!(
-                                    fast.texels, slow.texels,
+                                // Float storage compared bit for bit (NaN included).
+                                let bits_of = |t: &Texels| match t {
+                                    Texels::F32(v) => v.iter().map(|f| f.to_bits()).collect(),
+                                    _ => vec![],
+                                };
+                                assert_eq!(bits_of(&fast.texels), bits_of(&slow.texels));
+                                assert!(
+                                    float || fast.texels == slow.texels,
                                     "{format:?} {ty:?} into {base:?}/{bits}, unpack {align} \
                                      {row_length} {skip_px} {skip_rows}, block {origin:?} {size:?}"
                                 );
@@ -842,7 +891,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(checked, 10 * 7 * 8 * 3 * 3 * 2);
+        assert_eq!(checked, 10 * 7 * 8 * 5 * 3 * 2);
     }
 
     #[test]

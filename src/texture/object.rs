@@ -250,6 +250,7 @@ impl TextureObject {
             format: base_img.format,
             base: base_img.format.base,
             base_size: [inner[0] as f32, inner[1] as f32, inner[2] as f32],
+            clamp_float: levels.iter().flatten().any(|l| l.format.float),
             levels,
         })))
     }

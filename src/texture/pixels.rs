@@ -369,6 +369,20 @@ pub fn unpack_group(
     ty: TexPixelType,
     swap: bool,
 ) -> [f32; 4] {
+    unpack_group_unclamped(data, at, format, ty, swap).map(super::image::clamp01)
+}
+
+/// [`unpack_group`] without the final clamp: what a float texture (ARB_texture_float) stores
+/// of a group ("Otherwise, the components are not modified"). Only `GL_FLOAT` and the signed
+/// types (down to -1 - 1/255 by table 2.9) give values outside [0, 1].
+#[inline]
+pub fn unpack_group_unclamped(
+    data: &[u8],
+    at: usize,
+    format: TexPixelFormat,
+    ty: TexPixelType,
+    swap: bool,
+) -> [f32; 4] {
     let mut rgba = [0.0f32, 0.0, 0.0, 1.0];
     let slots = format.slots();
     match ty {
@@ -405,7 +419,7 @@ pub fn unpack_group(
         rgba[1] = rgba[0];
         rgba[2] = rgba[0];
     }
-    rgba.map(super::image::clamp01)
+    rgba
 }
 
 /// Unpacks `out.len()` consecutive groups from `at` (each `group` bytes apart): what

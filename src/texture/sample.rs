@@ -34,6 +34,10 @@ pub struct BoundInner {
     pub base_size: [f32; 3],
     /// `levels[face][level - base_level]`, from the base level to the last level sampled.
     pub levels: Vec<Vec<TexImage>>,
+    /// Float texels (ARB_texture_float) are filtered unclamped, then clamped to [0, 1] as
+    /// they enter the texture environment (issue 7 of the extension: "the filtered texel is
+    /// now clamped before it is used for texture environment blending").
+    pub clamp_float: bool,
 }
 
 /// A cheap-to-clone, immutable snapshot of a complete texture, as a draw sees it. Later
@@ -817,6 +821,11 @@ impl BoundTexture {
 
     /// Internal RGBA after filtering -> texture source colour.
     fn finish(&self, v: [f32; 4]) -> [f32; 4] {
+        let v = if self.inner.clamp_float {
+            v.map(super::image::clamp01)
+        } else {
+            v
+        };
         match self.inner.base {
             BaseFormat::DepthComponent => {
                 let d = v[0];

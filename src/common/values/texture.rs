@@ -176,6 +176,15 @@ pub enum TexLevelParam {
     StencilSize,
     Compressed,
     CompressedImageSize,
+    /// `GL_TEXTURE_RED_TYPE_ARB` ... `GL_TEXTURE_DEPTH_TYPE_ARB` (ARB_texture_float): how the
+    /// component is stored (`GL_NONE`, `GL_UNSIGNED_NORMALIZED_ARB` or `GL_FLOAT`).
+    RedType,
+    GreenType,
+    BlueType,
+    AlphaType,
+    LuminanceType,
+    IntensityType,
+    DepthType,
 }
 
 /// Client pixel formats of texture image transfers (section 3.6.4, table 3.5).

@@ -217,6 +217,13 @@ pub fn tex_level_param(e: GLenum) -> Option<TexLevelParam> {
         GL_TEXTURE_STENCIL_SIZE_EXT => StencilSize,
         GL_TEXTURE_COMPRESSED => Compressed,
         GL_TEXTURE_COMPRESSED_IMAGE_SIZE => CompressedImageSize,
+        GL_TEXTURE_RED_TYPE_ARB => RedType,
+        GL_TEXTURE_GREEN_TYPE_ARB => GreenType,
+        GL_TEXTURE_BLUE_TYPE_ARB => BlueType,
+        GL_TEXTURE_ALPHA_TYPE_ARB => AlphaType,
+        GL_TEXTURE_LUMINANCE_TYPE_ARB => LuminanceType,
+        GL_TEXTURE_INTENSITY_TYPE_ARB => IntensityType,
+        GL_TEXTURE_DEPTH_TYPE_ARB => DepthType,
         _ => return None,
     })
 }
@@ -391,31 +398,29 @@ pub fn internal_format(value: GLint, dims: usize) -> Option<InternalFormat> {
         GL_DEPTH_COMPONENT24 => (DepthComponent, 24),
         GL_DEPTH_COMPONENT32 => (DepthComponent, 32),
         // Beyond GL 1.5, for captures of programs run on newer drivers: ARB_texture_rg and its
-        // generic compressed forms (stored uncompressed), the float formats of
-        // ARB_texture_float (stored as 16- or 32-bit normalised values: what they receive from
-        // an 8-bit framebuffer or [0, 1] data is kept exactly; values outside [0, 1] are
-        // clamped, so GL_ARB_texture_float is not advertised), and the depth-stencil formats
+        // generic compressed forms (stored uncompressed), and the depth-stencil formats
         // (depth, and a stencil index per texel that sampling does not read).
         GL_RED | GL_COMPRESSED_RED | GL_R8 => (Red, 8),
         GL_R16 => (Red, 16),
         GL_RG | GL_COMPRESSED_RG | GL_RG8 => (Rg, 8),
         GL_RG16 => (Rg, 16),
-        GL_R16F => (Red, 16),
-        GL_R32F => (Red, 32),
-        GL_RG16F => (Rg, 16),
-        GL_RG32F => (Rg, 32),
-        GL_RGB16F_ARB => (Rgb, 16),
-        GL_RGB32F_ARB => (Rgb, 32),
-        GL_RGBA16F_ARB => (Rgba, 16),
-        GL_RGBA32F_ARB => (Rgba, 32),
-        GL_ALPHA16F_ARB => (Alpha, 16),
-        GL_ALPHA32F_ARB => (Alpha, 32),
-        GL_LUMINANCE16F_ARB => (Luminance, 16),
-        GL_LUMINANCE32F_ARB => (Luminance, 32),
-        GL_LUMINANCE_ALPHA16F_ARB => (LuminanceAlpha, 16),
-        GL_LUMINANCE_ALPHA32F_ARB => (LuminanceAlpha, 32),
-        GL_INTENSITY16F_ARB => (Intensity, 16),
-        GL_INTENSITY32F_ARB => (Intensity, 32),
+        // ARB_texture_float (and ARB_texture_rg's float formats): unclamped float components.
+        GL_R16F => return Some(InternalFormat::float(value, Red, 16)),
+        GL_R32F => return Some(InternalFormat::float(value, Red, 32)),
+        GL_RG16F => return Some(InternalFormat::float(value, Rg, 16)),
+        GL_RG32F => return Some(InternalFormat::float(value, Rg, 32)),
+        GL_RGB16F_ARB => return Some(InternalFormat::float(value, Rgb, 16)),
+        GL_RGB32F_ARB => return Some(InternalFormat::float(value, Rgb, 32)),
+        GL_RGBA16F_ARB => return Some(InternalFormat::float(value, Rgba, 16)),
+        GL_RGBA32F_ARB => return Some(InternalFormat::float(value, Rgba, 32)),
+        GL_ALPHA16F_ARB => return Some(InternalFormat::float(value, Alpha, 16)),
+        GL_ALPHA32F_ARB => return Some(InternalFormat::float(value, Alpha, 32)),
+        GL_LUMINANCE16F_ARB => return Some(InternalFormat::float(value, Luminance, 16)),
+        GL_LUMINANCE32F_ARB => return Some(InternalFormat::float(value, Luminance, 32)),
+        GL_LUMINANCE_ALPHA16F_ARB => return Some(InternalFormat::float(value, LuminanceAlpha, 16)),
+        GL_LUMINANCE_ALPHA32F_ARB => return Some(InternalFormat::float(value, LuminanceAlpha, 32)),
+        GL_INTENSITY16F_ARB => return Some(InternalFormat::float(value, Intensity, 16)),
+        GL_INTENSITY32F_ARB => return Some(InternalFormat::float(value, Intensity, 32)),
         GL_DEPTH_COMPONENT32F => (DepthComponent, 32),
         GL_DEPTH_STENCIL_EXT | GL_DEPTH24_STENCIL8_EXT => {
             return Some(InternalFormat::depth_stencil(value, 24))

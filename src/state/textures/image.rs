@@ -108,7 +108,6 @@ impl Context {
             let swap = self.unpack.swap_bytes;
             // Pixel transfer (section 3.6.5) applies on the way in, when it changes anything.
             let xfer = (!self.pixel_transfer.is_identity()).then(|| self.pixel_transfer.clone());
-            let depth = pf.is_depth();
             let copied = bytes_are_texels(xfer.is_some(), pf, pt, ifmt)
                 && img.store_byte_rows(data, &layout, [0; 3], usize3)
                 || converts_directly(xfer.is_some(), swap, pt)
@@ -119,8 +118,7 @@ impl Context {
                         + z * layout.image_stride
                         + y * layout.row_stride
                         + x * layout.group;
-                    let rgba = pixels::unpack_group(data, at, pf, pt, swap);
-                    xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
+                    unpack_texel(data, at, pf, pt, swap, xfer.as_ref(), ifmt)
                 });
             }
             let stencil = StencilUpload {
@@ -208,7 +206,6 @@ impl Context {
             } else {
                 Default::default()
             };
-            let depth = pf.is_depth();
             let face = target.face();
             let mut obj = self.image_object_mut(target);
             if let Some(img) = obj.image_mut(face, level) {
@@ -221,13 +218,13 @@ impl Context {
                             && img.store_converted(data, &layout, at, n, pf, pt));
                 if !copied {
                     let origin = o.map(|v| v.max(0) as usize);
+                    let ifmt = img.format;
                     img.store_block(origin, n, |x, y, z| {
                         let at = layout.start
                             + z * layout.image_stride
                             + y * layout.row_stride
                             + x * layout.group;
-                        let rgba = pixels::unpack_group(data, at, pf, pt, swap);
-                        xfer.as_ref().map_or(rgba, |t| t.texel(depth, rgba))
+                        unpack_texel(data, at, pf, pt, swap, xfer.as_ref(), ifmt)
                     });
                 }
                 let origin = o.map(|v| v.max(0) as usize);
@@ -479,11 +476,18 @@ impl Context {
                 pf,
                 TexPixelFormat::Luminance | TexPixelFormat::LuminanceAlpha
             );
+            // Float texels (ARB_texture_float) read back unclamped as GL_FLOAT; other types
+            // are fixed-point and take values clamped to [0, 1] (section 4.3.2's final
+            // conversion).
+            let clamp = img.format.float && pt != TexPixelType::Float;
             for z in 0..size[2] {
                 for y in 0..size[1] {
                     let row = layout.start + z * layout.image_stride + y * layout.row_stride;
                     for x in 0..size[0] {
                         let mut v = img.fetch(x as i32, y as i32, z as i32);
+                        if clamp {
+                            v = v.map(clamp01);
+                        }
                         if luminance {
                             (v[1], v[2]) = (0.0, 0.0);
                         }

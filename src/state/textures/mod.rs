@@ -315,6 +315,28 @@ pub(super) fn bytes_are_texels(
         && format.slots() == internal.base.slots()
 }
 
+/// One client group as the texel it becomes (section 3.8.1): unpacked, through pixel transfer
+/// when `xfer` is given, then clamped to [0, 1], except for the colour of a float internal
+/// format (ARB_texture_float: "Otherwise, the components are not modified").
+#[allow(clippy::too_many_arguments)]
+pub(super) fn unpack_texel(
+    data: &[u8],
+    at: usize,
+    pf: TexPixelFormat,
+    pt: TexPixelType,
+    swap: bool,
+    xfer: Option<&PixelTransfer>,
+    internal: InternalFormat,
+) -> [f32; 4] {
+    let depth = pf.is_depth();
+    if internal.float && !depth {
+        let rgba = pixels::unpack_group_unclamped(data, at, pf, pt, swap);
+        return xfer.map_or(rgba, |t| t.color(rgba));
+    }
+    let rgba = pixels::unpack_group(data, at, pf, pt, swap);
+    xfer.map_or(rgba, |t| t.texel(depth, rgba))
+}
+
 /// Whether an upload of unpacked `ty` components may take `TexImage::store_converted` (the
 /// conversion without per-texel dispatch): no pixel transfer and no byte swapping of
 /// multi-byte components.

@@ -224,6 +224,14 @@ impl Context {
         let f = img.format;
         let bits = f.component_bits() as i64;
         let has = |yes: bool| if yes { bits } else { 0 };
+        // ARB_texture_float: FLOAT or UNSIGNED_NORMALIZED for a component the image has,
+        // NONE for the others.
+        let kind = if f.float {
+            GL_FLOAT
+        } else {
+            GL_UNSIGNED_NORMALIZED_ARB
+        };
+        let type_of = |yes: bool| if yes { kind as i64 } else { GL_NONE as i64 };
         use BaseFormat::*;
         Ok(match p {
             TexLevelParam::Width => img.width as i64,
@@ -245,6 +253,18 @@ impl Context {
                     0
                 }
             }
+            TexLevelParam::RedType => type_of(matches!(f.base, Red | Rg | Rgb | Rgba)),
+            TexLevelParam::GreenType => type_of(matches!(f.base, Rg | Rgb | Rgba)),
+            TexLevelParam::BlueType => type_of(matches!(f.base, Rgb | Rgba)),
+            TexLevelParam::AlphaType => type_of(matches!(f.base, Alpha | LuminanceAlpha | Rgba)),
+            TexLevelParam::LuminanceType => type_of(matches!(f.base, Luminance | LuminanceAlpha)),
+            TexLevelParam::IntensityType => type_of(f.base == Intensity),
+            // ARB_depth_buffer_float's formats hold float depth (kept here as 32-bit
+            // normalised values, which depth in [0, 1] fits).
+            TexLevelParam::DepthType => match f.requested as GLenum {
+                GL_DEPTH_COMPONENT32F | GL_DEPTH32F_STENCIL8 => GL_FLOAT as i64,
+                _ => type_of(f.base == DepthComponent),
+            },
             TexLevelParam::Compressed => f.compressed.is_some() as i64,
             TexLevelParam::CompressedImageSize => match (f.compressed, &img.blocks) {
                 (Some(c), _) => {
