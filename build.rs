@@ -294,6 +294,21 @@ fn trait_param_type(cmd: &str, p: &Param) -> String {
     }
 }
 
+/// The parameters of a command's pixel-buffer variant: the pointer parameter `pname` becomes
+/// an offset (`usize`), the others keep their trait types.
+fn pbo_params(c: &Command, pname: &str) -> Vec<String> {
+    c.params
+        .iter()
+        .map(|p| {
+            if p.name == pname {
+                format!("{}: usize", ident(&p.name))
+            } else {
+                format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p))
+            }
+        })
+        .collect()
+}
+
 fn trait_ret_type(c: &Command) -> Option<String> {
     match (c.ret_base.as_str(), c.ret_depth) {
         ("void", 0) => None,
@@ -807,17 +822,7 @@ fn main() {
         .unwrap();
         if let Some((pname, pack)) = pbo_command(&c.name) {
             // The pixel-buffer variant: the pointer parameter becomes an offset.
-            let pbo_params: Vec<String> = c
-                .params
-                .iter()
-                .map(|p| {
-                    if p.name == pname {
-                        format!("{}: usize", ident(&p.name))
-                    } else {
-                        format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p))
-                    }
-                })
-                .collect();
+            let pbo_params = pbo_params(c, pname);
             let target = if pack {
                 "GL_PIXEL_PACK_BUFFER"
             } else {
@@ -1140,17 +1145,7 @@ fn main() {
         .unwrap();
         writeln!(fo, "    }}").unwrap();
         if let Some((pname, _)) = pbo_command(&c.name) {
-            let pbo_params: Vec<String> = c
-                .params
-                .iter()
-                .map(|p| {
-                    if p.name == pname {
-                        format!("{}: usize", ident(&p.name))
-                    } else {
-                        format!("{}: {}", ident(&p.name), trait_param_type(&c.name, p))
-                    }
-                })
-                .collect();
+            let pbo_params = pbo_params(c, pname);
             let pbo_args: Vec<String> = c
                 .params
                 .iter()

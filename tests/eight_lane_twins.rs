@@ -821,6 +821,36 @@ fn unit(
     gl.active_texture(GL_TEXTURE0);
 }
 
+/// The light-map units of `byte_environment_matches_the_general_path`: an RGB trilinear base
+/// replaced on unit 0, a LUMINANCE light map modulated at scale 2 on unit 1.
+fn lightmap_units(gl: &mut Context, rng: &mut Rng) {
+    unit(
+        gl,
+        rng,
+        GL_TEXTURE0,
+        GL_RGB,
+        32,
+        GL_LINEAR_MIPMAP_LINEAR,
+        GL_REPLACE,
+        None,
+    );
+    let c = (
+        [GL_MODULATE, GL_MODULATE],
+        [GL_PREVIOUS, GL_TEXTURE],
+        [2.0, 1.0],
+    );
+    unit(
+        gl,
+        rng,
+        GL_TEXTURE1,
+        GL_LUMINANCE,
+        16,
+        GL_LINEAR,
+        GL_COMBINE,
+        Some(c),
+    );
+}
+
 /// Cascades that the byte environment takes (`fragment::bytenv`: units before the last
 /// selecting, the last computed in 8-bit integers, white or black primary colours) against the
 /// general path's f32 environment, with blending and masks after them; and the same cascades
@@ -831,60 +861,12 @@ fn byte_environment_matches_the_general_path() {
         (
             "lightmap: RGB trilinear REPLACE, LUMINANCE COMBINE MODULATE x2",
             |gl, rng| {
-                unit(
-                    gl,
-                    rng,
-                    GL_TEXTURE0,
-                    GL_RGB,
-                    32,
-                    GL_LINEAR_MIPMAP_LINEAR,
-                    GL_REPLACE,
-                    None,
-                );
-                let c = (
-                    [GL_MODULATE, GL_MODULATE],
-                    [GL_PREVIOUS, GL_TEXTURE],
-                    [2.0, 1.0],
-                );
-                unit(
-                    gl,
-                    rng,
-                    GL_TEXTURE1,
-                    GL_LUMINANCE,
-                    16,
-                    GL_LINEAR,
-                    GL_COMBINE,
-                    Some(c),
-                );
+                lightmap_units(gl, rng);
                 multi_strip(gl, rng, Some([1.0; 4]));
             },
         ),
         ("lightmap with random colours (f32 route)", |gl, rng| {
-            unit(
-                gl,
-                rng,
-                GL_TEXTURE0,
-                GL_RGB,
-                32,
-                GL_LINEAR_MIPMAP_LINEAR,
-                GL_REPLACE,
-                None,
-            );
-            let c = (
-                [GL_MODULATE, GL_MODULATE],
-                [GL_PREVIOUS, GL_TEXTURE],
-                [2.0, 1.0],
-            );
-            unit(
-                gl,
-                rng,
-                GL_TEXTURE1,
-                GL_LUMINANCE,
-                16,
-                GL_LINEAR,
-                GL_COMBINE,
-                Some(c),
-            );
+            lightmap_units(gl, rng);
             multi_strip(gl, rng, None);
         }),
         ("RGBA REPLACE, INTENSITY ADD, alpha over", |gl, rng| {
