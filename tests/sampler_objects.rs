@@ -281,9 +281,9 @@ fn parameters_round_trip_and_convert() {
     assert_eq!(f, [0.25, 1.5, -0.5, 1.0]);
     let mut iv = [0; 4];
     gl.get_sampler_parameteriv(s, GL_TEXTURE_BORDER_COLOR, &mut iv);
-    // Colours in integer queries map [-1, 1] to the full range (section 6.1.2).
-    assert_eq!(iv[0], (0.25 * i32::MAX as f64).round() as i32);
-    assert_eq!(iv[3], i32::MAX);
+    // Colours in integer queries map [-1, 1] linearly to the full range (section 6.1.2),
+    // truncated: 0.25 (2^31 - 1) = 536870911.75; values past the ends saturate.
+    assert_eq!(iv, [536870911, i32::MAX, -1073741823, i32::MAX]);
     gl.sampler_parameter_iiv(s, GL_TEXTURE_BORDER_COLOR, &[-5, 7, 1 << 20, 0]);
     gl.get_sampler_parameter_iiv(s, GL_TEXTURE_BORDER_COLOR, &mut iv);
     assert_eq!(iv, [-5, 7, 1 << 20, 0]);

@@ -78,12 +78,13 @@ pub(super) fn sampler_state_values(q: &SamplerParams, p: TexParam) -> Option<(Ve
     })
 }
 
-/// A query's values as `glGet*iv` answers them: colour components mapped to the full
-/// integer range, other values rounded to the nearest integer.
+/// A query's values as `glGet*iv` answers them: colour components mapped linearly from
+/// [-1, 1] to the full integer range (truncated toward zero, as the other colour queries
+/// and Mesa's do), other values rounded to the nearest integer (section 6.1.2).
 pub(super) fn ints_of(v: &[f64], color: bool, out: &mut [GLint]) {
     for (o, &x) in out.iter_mut().zip(v) {
         *o = if color {
-            (x * i32::MAX as f64).round() as i32
+            (x.clamp(-1.0, 1.0) * i32::MAX as f64) as i32
         } else {
             x.round() as i32
         };
