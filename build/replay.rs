@@ -26,6 +26,20 @@ pub(crate) const OBJECT_PARAMS: &[(&str, &str, &str)] = &[
     ("glIsQuery", "id", "Query"),
     ("glGetQueryObjectiv", "id", "Query"),
     ("glGetQueryObjectuiv", "id", "Query"),
+    ("glGenSamplers", "samplers", "Sampler"),
+    ("glDeleteSamplers", "samplers", "Sampler"),
+    ("glIsSampler", "sampler", "Sampler"),
+    ("glBindSampler", "sampler", "Sampler"),
+    ("glSamplerParameteri", "sampler", "Sampler"),
+    ("glSamplerParameterf", "sampler", "Sampler"),
+    ("glSamplerParameteriv", "sampler", "Sampler"),
+    ("glSamplerParameterfv", "sampler", "Sampler"),
+    ("glSamplerParameterIiv", "sampler", "Sampler"),
+    ("glSamplerParameterIuiv", "sampler", "Sampler"),
+    ("glGetSamplerParameteriv", "sampler", "Sampler"),
+    ("glGetSamplerParameterfv", "sampler", "Sampler"),
+    ("glGetSamplerParameterIiv", "sampler", "Sampler"),
+    ("glGetSamplerParameterIuiv", "sampler", "Sampler"),
 ];
 
 /// `replay_dispatch.rs`: `dispatch_generated(gl, name, args)`, one match arm per GL 1.5 entry

@@ -265,3 +265,49 @@ fn pixel_commands_take_buffer_offsets_while_a_buffer_is_bound() {
     assert_eq!(row(0), vec![black, red, green, black]);
     assert_eq!(row(1), vec![red, green, black, black]);
 }
+
+/// Sampler names are remapped like texture names: a capture whose program got sampler 7 binds
+/// and sets the replaying context's own sampler through that number.
+#[test]
+fn sampler_names_are_remapped() {
+    // A 2x2 red level 0 and a 1x1 green level 1, the texture's own filter NEAREST; the
+    // traced sampler 7 (a mipmap filter, LOD clamped to 1) makes the quad green.
+    let text = "window(4, 4);\n\
+                glGenSamplers(1, {7});\n\
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, hex(\"ff0000ffff0000ffff0000ffff0000ff\"));\n\
+                glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, hex(\"00ff00ff\"));\n\
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);\n\
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);\n\
+                glSamplerParameteri(7, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);\n\
+                glSamplerParameterf(7, GL_TEXTURE_MIN_LOD, 1.0f);\n\
+                glBindSampler(0, 7);\n\
+                glEnable(GL_TEXTURE_2D);\n\
+                glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);\n\
+                glBegin(GL_QUADS);\n\
+                glTexCoord2f(0.0f, 0.0f); glVertex2f(-1.0f, -1.0f);\n\
+                glTexCoord2f(8.0f, 0.0f); glVertex2f(1.0f, -1.0f);\n\
+                glTexCoord2f(8.0f, 8.0f); glVertex2f(1.0f, 1.0f);\n\
+                glTexCoord2f(0.0f, 8.0f); glVertex2f(-1.0f, 1.0f);\n\
+                glEnd();\n\
+                swap();\n";
+    let mut player = Player::new(1);
+    player.auto_window = true;
+    let mut frames = Vec::new();
+    let stats = player
+        .play(
+            &mut ScriptReader::new(text, Path::new(".")),
+            &all_frames(),
+            &mut |p| {
+                frames.push(p);
+                Ok(())
+            },
+            &mut |_| {},
+        )
+        .unwrap();
+    assert!(
+        stats.gl_errors.is_empty() && stats.unknown.is_empty(),
+        "{:?}",
+        stats.report_lines()
+    );
+    assert_eq!(frames[0].image.get_pixel(2, 2).0, [0, 255, 0]);
+}

@@ -14,8 +14,8 @@
 //! - **Output pointers** (`glGet*`, `glReadPixels`, `glGenTextures`, ...) get scratch buffers at
 //!   least as large as the traced output, the length parameter, and what GL can write.
 //! - **Object names**: `glGen*` results are remapped per kind (textures, lists, buffers,
-//!   queries) from the traced program's names to the replaying implementation's, as glretrace
-//!   does; names never generated pass through unchanged.
+//!   queries, samplers) from the traced program's names to the replaying implementation's, as
+//!   glretrace does; names never generated pass through unchanged.
 //! - **Retained pointers** (`gl*Pointer`, `glInterleavedArrays`, client `glDrawElements`
 //!   indices, selection/feedback buffers): the replayer keeps the bytes alive (the latest blob
 //!   per array slot) and passes `ClientPtr` = the address of its own copy. Vertex arrays are not
@@ -59,6 +59,8 @@ pub enum ObjKind {
     Buffer = 2,
     /// Query objects.
     Query = 3,
+    /// Sampler objects (ARB_sampler_objects).
+    Sampler = 4,
 }
 
 /// A write into a mapped buffer: (offset, bytes).
@@ -91,7 +93,7 @@ pub enum Outcome {
 /// Replay-side state kept across calls (see the module documentation).
 #[derive(Default)]
 pub struct DispatchState {
-    names: [HashMap<u32, u32>; 4],
+    names: [HashMap<u32, u32>; 5],
     /// Latest client-array blob per array slot (pointer function + texture unit).
     arrays: HashMap<(String, u32), Arc<[u8]>>,
     /// Memory that must outlive the current call only (client indices of a draw).
