@@ -315,8 +315,17 @@ impl<'i> SpanRun<'i> {
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         // The secondary colour, when the run has it (the colour sum).
         let secondary = (self.count == 8).then(|| self.secondary(w));
+        self.advance::<FOG>();
+        (color, depth, fog, secondary)
+    }
+
+    /// The move to the next pixel that [`Self::next`] makes: a step of z, 1/w, the primary
+    /// colour, the secondary colour when the run has it, and with `FOG` the fog coordinate;
+    /// or a restart.
+    #[inline(always)]
+    pub(super) fn advance<const FOG: bool>(&mut self) {
         if self.restarts() {
-            return (color, depth, fog, secondary);
+            return;
         }
         self.z += self.dz;
         self.inv_w += self.dinv_w;
@@ -333,7 +342,31 @@ impl<'i> SpanRun<'i> {
                 self.color[c] += self.dcolor[c];
             }
         }
-        (color, depth, fog, secondary)
+    }
+
+    /// The current pixel's values before the per-pixel arithmetic of [`Self::next`] (z, 1/w,
+    /// the colours as stepped, the fog coordinate), into lane `lane` of `raw`; the primary
+    /// colour only when `primary` (a constant primary colour is not read per lane).
+    #[inline(always)]
+    pub(super) fn record<const FOG: bool>(&self, raw: &mut RawLanes, lane: usize, primary: bool) {
+        raw.z[lane] = self.z;
+        raw.inv_w[lane] = self.inv_w;
+        if primary {
+            for c in 0..4 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if self.count == 8 {
+            for c in 4..7 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if FOG {
+            raw.fog[lane] = match self.fog {
+                Some((c, _)) => c,
+                None => 0.0,
+            };
+        }
     }
 }
 
