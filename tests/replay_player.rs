@@ -214,3 +214,54 @@ fn each_thread_has_its_own_current_context() {
     assert_eq!(pictures[1].image.dimensions(), (8, 2));
     assert_eq!(pictures[1].image.get_pixel(0, 0).0, [0, 255, 0]);
 }
+
+/// ARB_pixel_buffer_object in a call stream: while a buffer is bound to a pixel command's
+/// target, the pointer the capture holds as a number (apitrace writes the offset so) is an
+/// offset into that buffer, for unpacking (`glDrawPixels` from offset 8) and packing
+/// (`glReadPixels` into offset 4 of another buffer, then drawn from there); without a buffer
+/// the same kind of number would be a dead client address.
+#[test]
+fn pixel_commands_take_buffer_offsets_while_a_buffer_is_bound() {
+    let text = "window(4, 2);\n\
+                glGenBuffers(2, {1, 2});\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 1);\n\
+                glBufferData(GL_PIXEL_UNPACK_BUFFER, 16, hex(\"0000000000000000ff0000ff00ff00ff\"), GL_STATIC_DRAW);\n\
+                glWindowPos2i(0, 0);\n\
+                glDrawPixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x8));\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);\n\
+                glBindBuffer(GL_PIXEL_PACK_BUFFER, 2);\n\
+                glBufferData(GL_PIXEL_PACK_BUFFER, 12, NULL, GL_STREAM_READ);\n\
+                glReadPixels(0, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x4));\n\
+                glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 2);\n\
+                glWindowPos2i(1, 1);\n\
+                glDrawPixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x4));\n\
+                swap();\n";
+    let mut player = Player::new(1);
+    player.auto_window = true;
+    let mut frames = Vec::new();
+    let stats = player
+        .play(
+            &mut ScriptReader::new(text, Path::new(".")),
+            &all_frames(),
+            &mut |p| {
+                frames.push(p);
+                Ok(())
+            },
+            &mut |_| {},
+        )
+        .unwrap();
+    assert!(
+        stats.gl_errors.is_empty() && stats.unknown.is_empty(),
+        "{:?}",
+        stats.report_lines()
+    );
+    assert_eq!(frames.len(), 1);
+    let img = &frames[0].image;
+    let row = |y: u32| (0..4).map(|x| img.get_pixel(x, y).0).collect::<Vec<_>>();
+    let (red, green, black) = ([255, 0, 0], [0, 255, 0], [0, 0, 0]);
+    // Top row first: window row 1 holds the read-back drawn one pixel right, row 0 the first
+    // rectangle.
+    assert_eq!(row(0), vec![black, red, green, black]);
+    assert_eq!(row(1), vec![red, green, black, black]);
+}

@@ -6,7 +6,7 @@
 //! pixels are identical (twin tests in `tests/raster.rs`).
 
 use crate::common::cpu::available;
-use crate::common::values::{CompareFunc, FogMode};
+use crate::common::values::{CompareFunc, FogMode, LogicOp};
 use crate::fragment::key::BlendKey;
 use crate::texture::sample::LodSelect;
 use crate::texture::simd::{Level8, Texels8};
@@ -59,6 +59,9 @@ pub enum TailBlend {
     /// Any other blending (equations, factors, the constant colour), as
     /// `fragment::blend::blend` computes it.
     General(BlendKey, [f32; 4]),
+    /// No blending but a logical operation (section 4.1.10: it replaces blending) on the
+    /// fragments' colour bytes and the stored ones, bit by bit, as `LogicOp::apply`.
+    Logic(LogicOp),
 }
 
 /// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
@@ -215,7 +218,7 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{After8, Sampling8, Tail8};
-    use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
+    use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp};
     use crate::fragment::fog::EXP2_TAYLOR;
     use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
@@ -468,7 +471,9 @@ mod x86 {
                 ),
             )
         };
-        let word = if tail.blend == super::TailBlend::AddOneOne {
+        let word = if let super::TailBlend::Logic(op) = tail.blend {
+            logic8(op, pack(src), old)
+        } else if tail.blend == super::TailBlend::AddOneOne {
             // ONE, ONE: `color_to_u8(s / 255 + d / 255)` is exactly min(s + d, 255) for bytes
             // s and d (the f32 errors stay far below the 0.5 of rounding;
             // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
@@ -526,6 +531,33 @@ mod x86 {
         // SAFETY: `res` holds eight u32; unaligned store.
         unsafe { _mm256_storeu_si256(res.as_mut_ptr() as *mut __m256i, word) };
         (res, _mm256_movemask_ps(keep) as u8)
+    }
+
+    /// `op` on the bytes of the colour words `s` (the fragments') and `d` (the stored ones),
+    /// as `LogicOp::apply` on each byte: bitwise operations on the whole words.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn logic8(op: LogicOp, s: __m256i, d: __m256i) -> __m256i {
+        let ones = _mm256_set1_epi32(-1);
+        let not = |v: __m256i| _mm256_xor_si256(v, ones);
+        match op {
+            LogicOp::Clear => _mm256_setzero_si256(),
+            LogicOp::And => _mm256_and_si256(s, d),
+            LogicOp::AndReverse => _mm256_andnot_si256(d, s),
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => _mm256_andnot_si256(s, d),
+            LogicOp::Noop => d,
+            LogicOp::Xor => _mm256_xor_si256(s, d),
+            LogicOp::Or => _mm256_or_si256(s, d),
+            LogicOp::Nor => not(_mm256_or_si256(s, d)),
+            LogicOp::Equiv => not(_mm256_xor_si256(s, d)),
+            LogicOp::Invert => not(d),
+            LogicOp::OrReverse => _mm256_or_si256(s, not(d)),
+            LogicOp::CopyInverted => not(s),
+            LogicOp::OrInverted => _mm256_or_si256(not(s), d),
+            LogicOp::Nand => not(_mm256_and_si256(s, d)),
+            LogicOp::Set => ones,
+        }
     }
 
     #[allow(clippy::too_many_arguments)]

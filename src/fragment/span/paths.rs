@@ -61,7 +61,10 @@ pub(super) fn pair_by_rows<'a>(
     for &(y, rows) in pairs {
         for (r, (x0, x1)) in (0..).zip(rows) {
             if x0 < x1 {
-                (ds.span)(ds, tile, y + r, x0, x1, it);
+                match it.shared.stipple {
+                    None => (ds.span)(ds, tile, y + r, x0, x1, it),
+                    Some(p) => span_stippled(ds, tile, y + r, x0, x1, it, p),
+                }
             }
         }
     }
@@ -110,7 +113,9 @@ pub(super) fn blocks<const FOG: bool>(
     let mut group = GroupInputs::EMPTY;
     let mut raw = RawLanes::default();
     let stride = tile.side() as usize;
+    let stipple = it.shared.stipple;
     for &(y, rows) in pairs {
+        let stipple_rows = stipple.map(|p| [stipple_row(p, y), stipple_row(p, y + 1)]);
         let mut runs = [
             SpanRun::new(it, rows[0].0, y as f64 + 0.5, colors),
             SpanRun::new(it, rows[1].0, y as f64 + 1.5, colors),
@@ -161,6 +166,12 @@ pub(super) fn blocks<const FOG: bool>(
                 continue;
             }
             group.load_raw(&raw, live, &math);
+            if let Some(rows) = stipple_rows {
+                // The stipple discards lanes before any per-fragment operation.
+                let keep = stipple_block(rows, gx);
+                live &= keep;
+                group.pass &= keep;
+            }
             if ds.key.stencil.is_some() {
                 group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
             }
@@ -248,10 +259,8 @@ fn write_rows(
 #[inline(never)]
 fn block_stencil(ds: &FragmentDraw, tile: &mut Tile, gx: i32, y: i32, live: u8, pass: u8) -> u8 {
     // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
-    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
-    stencil_lanes(ds, tile, live, pass, |lane| {
-        row0 + lane / 4 * stride + lane % 4
-    })
+    let row0 = tile.index(gx, y);
+    stencil_block(ds, tile, row0, live, pass)
 }
 
 /// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
