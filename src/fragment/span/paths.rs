@@ -144,9 +144,19 @@ pub(super) fn blocks<const FOG: bool>(
                     continue;
                 }
                 let run = &mut runs[r];
-                for j in lo..hi {
-                    run.record::<FOG>(&mut raw, 4 * r + j, read_primary);
-                    run.advance::<FOG>();
+                // A whole row of four without a restart: unrolled.
+                let whole = lo == 0
+                    && hi == 4
+                    && if r == 0 {
+                        run.record4::<FOG, 0>(&mut raw, read_primary)
+                    } else {
+                        run.record4::<FOG, 1>(&mut raw, read_primary)
+                    };
+                if !whole {
+                    for j in lo..hi {
+                        run.record::<FOG>(&mut raw, 4 * r + j, read_primary);
+                        run.advance::<FOG>();
+                    }
                 }
                 live |= (((1u32 << hi) - (1u32 << lo)) as u8) << (4 * r);
                 read_row(tile, row0 + r * stride, lo, hi, r, &mut raw);
