@@ -315,8 +315,17 @@ impl<'i> SpanRun<'i> {
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         // The secondary colour, when the run has it (the colour sum).
         let secondary = (self.count == 8).then(|| self.secondary(w));
+        self.advance::<FOG>();
+        (color, depth, fog, secondary)
+    }
+
+    /// The move to the next pixel that [`Self::next`] makes: a step of z, 1/w, the primary
+    /// colour, the secondary colour when the run has it, and with `FOG` the fog coordinate;
+    /// or a restart.
+    #[inline(always)]
+    pub(super) fn advance<const FOG: bool>(&mut self) {
         if self.restarts() {
-            return (color, depth, fog, secondary);
+            return;
         }
         self.z += self.dz;
         self.inv_w += self.dinv_w;
@@ -333,7 +342,100 @@ impl<'i> SpanRun<'i> {
                 self.color[c] += self.dcolor[c];
             }
         }
-        (color, depth, fog, secondary)
+    }
+
+    /// Four [`Self::record`] and [`Self::advance`] pairs into lanes `4 * ROW..4 * ROW + 4`
+    /// of `raw`, when none of the four moves restarts (else false and nothing done): the same
+    /// sums in the same order, on copies kept in registers.
+    #[inline(always)]
+    pub(super) fn record4<const FOG: bool, const ROW: usize>(
+        &mut self,
+        raw: &mut RawLanes,
+        primary: bool,
+    ) -> bool {
+        if self.left <= 4 {
+            return false;
+        }
+        self.left -= 4;
+        let lanes = 4 * ROW..4 * ROW + 4;
+        let (mut z, mut inv_w) = (self.z, self.inv_w);
+        for z_lane in &mut raw.z[lanes.clone()] {
+            *z_lane = z;
+            z += self.dz;
+        }
+        self.z = z;
+        for w_lane in &mut raw.inv_w[lanes.clone()] {
+            *w_lane = inv_w;
+            inv_w += self.dinv_w;
+        }
+        self.inv_w = inv_w;
+        let channel = |c: usize, v: &mut f32, out: &mut [f32; 8]| {
+            let mut x = *v;
+            for o in &mut out[lanes.clone()] {
+                *o = x;
+                x += self.dcolor[c];
+            }
+            *v = x;
+        };
+        let mut color = self.color;
+        for c in 0..4 {
+            if primary {
+                channel(c, &mut color[c], &mut raw.color[c]);
+            } else {
+                // Not recorded, stepped as `advance` steps it.
+                for _ in 0..4 {
+                    color[c] += self.dcolor[c];
+                }
+            }
+        }
+        if self.count == 8 {
+            for c in 4..7 {
+                channel(c, &mut color[c], &mut raw.color[c]);
+            }
+            for _ in 0..4 {
+                color[7] += self.dcolor[7];
+            }
+        }
+        self.color = color;
+        if FOG {
+            match &mut self.fog {
+                Some((c, dc)) => {
+                    let mut x = *c;
+                    for o in &mut raw.fog[lanes] {
+                        *o = x;
+                        x += *dc;
+                    }
+                    *c = x;
+                }
+                None => raw.fog[lanes].fill(0.0),
+            }
+        }
+        true
+    }
+
+    /// The current pixel's values before the per-pixel arithmetic of [`Self::next`] (z, 1/w,
+    /// the colours as stepped, the fog coordinate), into lane `lane` of `raw`; the primary
+    /// colour only when `primary` (a constant primary colour is not read per lane).
+    #[inline(always)]
+    pub(super) fn record<const FOG: bool>(&self, raw: &mut RawLanes, lane: usize, primary: bool) {
+        raw.z[lane] = self.z;
+        raw.inv_w[lane] = self.inv_w;
+        if primary {
+            for c in 0..4 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if self.count == 8 {
+            for c in 4..7 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if FOG {
+            raw.fog[lane] = match self.fog {
+                Some((c, _)) => c,
+                None => 0.0,
+            };
+        }
     }
 }
 
