@@ -661,9 +661,9 @@ pub fn span_depth_stencil<'a>(
         for v in &mut z[..n] {
             *v = run.next_z();
         }
-        if n == 8 {
-            // A whole group: one fixed-size copy.
-            stored.copy_from_slice(&tile.depth[start..start + 8]);
+        if let Some(whole) = tile.depth.get(start..start + 8) {
+            // One fixed-size copy (lanes past `n` are not live).
+            stored.copy_from_slice(whole);
         } else {
             stored[..n].copy_from_slice(&tile.depth[start..start + n]);
         }

@@ -886,13 +886,19 @@ pub(super) fn stencil_row(
         return depth_pass;
     };
     let mut old = [0u8; 8];
-    let values = &mut tile.stencil[base..base + n];
-    if let Ok(whole) = <&mut [u8; 8]>::try_from(&mut *values) {
-        // A whole group: one eight-byte load and store.
-        let (new, pass) = stencil8(&st, &ds.uniforms, whole, depth_pass);
+    if let Some(whole) = tile
+        .stencil
+        .get_mut(base..base + 8)
+        .and_then(|v| <&mut [u8; 8]>::try_from(v).ok())
+    {
+        // One eight-byte load and store, also for a shorter group while eight bytes lie in
+        // the tile (the lanes past `n` written back as they were: nothing else changes them
+        // meanwhile).
+        let (new, pass) = stencil8_live(&st, &ds.uniforms, whole, depth_pass, lane_bits(0..n));
         *whole = new;
         return pass;
     }
+    let values = &mut tile.stencil[base..base + n];
     old[..n].copy_from_slice(values);
     let (new, pass) = stencil8(&st, &ds.uniforms, &old, depth_pass);
     values.copy_from_slice(&new[..n]);
@@ -1016,7 +1022,8 @@ pub fn span_stippled<'a>(
 /// The lanes `lanes` as a mask.
 #[inline(always)]
 pub(super) fn lane_bits(lanes: std::ops::Range<usize>) -> u8 {
-    lanes.fold(0u8, |m, j| m | 1 << j)
+    // Bits start..end (end at most 8).
+    ((1u16 << lanes.end) - (1u16 << lanes.start.min(lanes.end))) as u8
 }
 
 /// Whether a fragment of stored depth `d` passes the eight-lane paths' depth test against
