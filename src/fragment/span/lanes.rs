@@ -138,7 +138,10 @@ mod x86 {
         let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
         let store = |a: &mut [f32; 8], v: __m256| unsafe { _mm256_storeu_ps(a.as_mut_ptr(), v) };
         let keep = lane_mask(live);
-        let w = if m.perspective {
+        // w is read by the perspective colours, the secondary colour and the perspective fog
+        // coordinate only (a constant unfogged colour needs no division).
+        let needs_w = m.primary_perspective || m.secondary || m.fog;
+        let w = if m.perspective && needs_w {
             _mm256_div_ps(_mm256_set1_ps(1.0), load(&raw.inv_w))
         } else {
             _mm256_set1_ps(1.0)
