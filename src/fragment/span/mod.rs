@@ -39,12 +39,14 @@ use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 
 mod affine;
 mod coords;
+mod flat;
 mod general;
 mod paths;
 mod perspective8;
 mod tail;
 pub use affine::*;
 use coords::*;
+use flat::*;
 use general::*;
 pub use paths::*;
 use perspective8::*;
