@@ -76,7 +76,7 @@ const EXTRA_EXTENSIONS: [&str; 11] = [
 /// Enums of later core versions that captures use, generated like the others: generic
 /// compressed RED/RG (GL 3.0) and point sprites (ARB_point_sprite, GL 2.0's coordinate
 /// origin).
-const EXTRA_ENUMS: [&str; 18] = [
+const EXTRA_ENUMS: [&str; 19] = [
     "GL_COMPRESSED_RED",
     "GL_COMPRESSED_RG",
     "GL_POINT_SPRITE",
@@ -97,12 +97,14 @@ const EXTRA_ENUMS: [&str; 18] = [
     "GL_BUFFER_ACCESS_FLAGS",
     "GL_BUFFER_MAP_LENGTH",
     "GL_BUFFER_MAP_OFFSET",
+    // GL 2.0's glGetString name, which piglit's GL 1.x tests read unconditionally.
+    "GL_SHADING_LANGUAGE_VERSION",
 ];
 
 /// Extensions whose entry points (and enums) join the GL 1.5 ones: the `Gl` trait, the C
 /// exports, `ForeignGl` and the replay dispatch get them like core commands (those that alias
 /// a core command become its aliases, below). EXT_vertex_array's `gl*PointerEXT` take a `count` the core ones lack.
-const COMMAND_EXTENSIONS: [&str; 9] = [
+const COMMAND_EXTENSIONS: [&str; 10] = [
     "GL_EXT_compiled_vertex_array",
     "GL_EXT_blend_equation_separate",
     "GL_EXT_vertex_array",
@@ -113,6 +115,7 @@ const COMMAND_EXTENSIONS: [&str; 9] = [
     // No entry points: its targets and binding queries.
     "GL_ARB_pixel_buffer_object",
     "GL_ARB_texture_storage",
+    "GL_ARB_sampler_objects",
 ];
 
 /// The pixel commands of ARB_pixel_buffer_object (its issues 16 and 17) among tilegl's entry
@@ -436,6 +439,10 @@ const NOT_COMPILED_INTO_LISTS: &[&str] = &[
     "glTexStorage1D",
     "glTexStorage2D",
     "glTexStorage3D",
+    // ARB_sampler_objects: "Sampler objects: GenSamplers and DeleteSamplers" join the
+    // commands not usable in display lists (glGenSamplers is excluded by its signature);
+    // glBindSampler and glSamplerParameter* are compiled.
+    "glDeleteSamplers",
     // ARB_framebuffer_object's own commands, likewise.
     "glBindFramebuffer",
     "glBindRenderbuffer",

@@ -26,6 +26,20 @@ pub(crate) const OBJECT_PARAMS: &[(&str, &str, &str)] = &[
     ("glIsQuery", "id", "Query"),
     ("glGetQueryObjectiv", "id", "Query"),
     ("glGetQueryObjectuiv", "id", "Query"),
+    ("glGenSamplers", "samplers", "Sampler"),
+    ("glDeleteSamplers", "samplers", "Sampler"),
+    ("glIsSampler", "sampler", "Sampler"),
+    ("glBindSampler", "sampler", "Sampler"),
+    ("glSamplerParameteri", "sampler", "Sampler"),
+    ("glSamplerParameterf", "sampler", "Sampler"),
+    ("glSamplerParameteriv", "sampler", "Sampler"),
+    ("glSamplerParameterfv", "sampler", "Sampler"),
+    ("glSamplerParameterIiv", "sampler", "Sampler"),
+    ("glSamplerParameterIuiv", "sampler", "Sampler"),
+    ("glGetSamplerParameteriv", "sampler", "Sampler"),
+    ("glGetSamplerParameterfv", "sampler", "Sampler"),
+    ("glGetSamplerParameterIiv", "sampler", "Sampler"),
+    ("glGetSamplerParameterIuiv", "sampler", "Sampler"),
 ];
 
 /// `replay_dispatch.rs`: `dispatch_generated(gl, name, args)`, one match arm per GL 1.5 entry
@@ -52,9 +66,16 @@ pub(crate) fn dispatch_generated(gl: &mut dyn Gl, name: &str, a: &mut Args<'_>) 
             names.push(format!("\"{al}\""));
         }
         writeln!(s, "        {} => {{", names.join(" | ")).unwrap();
+        let arm_start = s.len();
         let index_of = |pname: &str| c.params.iter().position(|p| p.name == pname);
         let mut call_args = Vec::new();
         let mut after = String::new();
+        // ARB_pixel_buffer_object: the pixel commands' pointer is an offset into the buffer
+        // bound to their target when the trace holds no client bytes for it (apitrace
+        // records the offset as a number) and a buffer is bound in the replaying context.
+        let pbo = pbo_command(&c.name);
+        let mut pbo_lets = String::new();
+        let mut pbo_args = Vec::new();
         for (i, p) in c.params.iter().enumerate() {
             let n = format!("p_{}", ident(&p.name).trim_end_matches('_'));
             let kind = OBJECT_PARAMS
@@ -108,6 +129,14 @@ pub(crate) fn dispatch_generated(gl: &mut dyn Gl, name: &str, a: &mut Args<'_>) 
             } else {
                 format!("a.slice::<{t}>({i})")
             };
+            match pbo {
+                Some((pname, _)) if p.name == pname => pbo_args.push(n.clone()),
+                Some(_) => {
+                    writeln!(pbo_lets, "                let mut {n} = {expr};").unwrap();
+                    pbo_args.push(n.clone());
+                }
+                None => {}
+            }
             writeln!(s, "            let mut {n} = {expr};").unwrap();
             if p.depth == 0 || ty == "ClientPtr" {
                 call_args.push(n.clone());
@@ -125,6 +154,16 @@ pub(crate) fn dispatch_generated(gl: &mut dyn Gl, name: &str, a: &mut Args<'_>) 
             } else {
                 call_args.push(format!("&{n}"));
             }
+        }
+        if let Some((pname, pack)) = pbo {
+            let i = index_of(pname).unwrap_or(0);
+            let n = format!("p_{}", ident(pname).trim_end_matches('_'));
+            let block = format!(
+                "            if let Some({n}) = a.pbo_offset(&mut *gl, {i}, {pack}) {{\n{pbo_lets}                gl.{}_pbo({});\n                return Some(Returned::None);\n            }}\n",
+                snake(&c.name),
+                pbo_args.join(", ")
+            );
+            s.insert_str(arm_start, &block);
         }
         let ret = trait_ret_type(c);
         let call = format!("gl.{}({})", snake(&c.name), call_args.join(", "));

@@ -117,6 +117,13 @@ unsafe fn texture_2d_rgba_4x2() {
     );
 }
 
+/// One sampler object, named 1 (the first name of a new context).
+unsafe fn one_sampler() {
+    let mut s = 0;
+    glGenSamplers(1, &mut s);
+    assert_eq!(s, 1);
+}
+
 unsafe fn texture_1d_rgb_5() {
     glTexImage1D(
         GL_TEXTURE_1D,
@@ -819,6 +826,70 @@ fn cases() -> Vec<Case> {
         case!("glGetTexParameteriv", "params", F, F, no_setup, |p| {
             glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, p as *mut GLint)
         }),
+        // ARB_sampler_objects: sampler 1 (made by `one_sampler`); the border colour is four
+        // values, the others one.
+        case!("glGenSamplers", "samplers", 3 * F, F, no_setup, |p| {
+            glGenSamplers(3, p as *mut GLuint)
+        }),
+        case!("glDeleteSamplers", "samplers", 3 * F, F, no_setup, |p| {
+            glDeleteSamplers(3, p as *const GLuint)
+        }),
+        case!("glSamplerParameteriv", "param", F, F, one_sampler, |p| {
+            *(p as *mut GLint) = GL_CLAMP as GLint;
+            glSamplerParameteriv(1, GL_TEXTURE_WRAP_S, p as *const GLint)
+        }),
+        case!(
+            "glSamplerParameterfv",
+            "param",
+            4 * F,
+            F,
+            one_sampler,
+            |p| { glSamplerParameterfv(1, GL_TEXTURE_BORDER_COLOR, p as *const GLfloat) }
+        ),
+        case!(
+            "glSamplerParameterIiv",
+            "param",
+            4 * F,
+            F,
+            one_sampler,
+            |p| { glSamplerParameterIiv(1, GL_TEXTURE_BORDER_COLOR, p as *const GLint) }
+        ),
+        case!("glSamplerParameterIuiv", "param", F, F, one_sampler, |p| {
+            *(p as *mut GLuint) = GL_NEAREST;
+            glSamplerParameterIuiv(1, GL_TEXTURE_MAG_FILTER, p as *const GLuint)
+        }),
+        case!(
+            "glGetSamplerParameteriv",
+            "params",
+            4 * F,
+            F,
+            one_sampler,
+            |p| { glGetSamplerParameteriv(1, GL_TEXTURE_BORDER_COLOR, p as *mut GLint) }
+        ),
+        case!(
+            "glGetSamplerParameterfv",
+            "params",
+            F,
+            F,
+            one_sampler,
+            |p| { glGetSamplerParameterfv(1, GL_TEXTURE_MIN_LOD, p as *mut GLfloat) }
+        ),
+        case!(
+            "glGetSamplerParameterIiv",
+            "params",
+            F,
+            F,
+            one_sampler,
+            |p| { glGetSamplerParameterIiv(1, GL_TEXTURE_WRAP_T, p as *mut GLint) }
+        ),
+        case!(
+            "glGetSamplerParameterIuiv",
+            "params",
+            4 * F,
+            F,
+            one_sampler,
+            |p| { glGetSamplerParameterIuiv(1, GL_TEXTURE_BORDER_COLOR, p as *mut GLuint) }
+        ),
         case!(
             "glGetTexLevelParameterfv",
             "params",

@@ -71,6 +71,9 @@ captures! {
     piglit_infinite_spot_light => "piglit-infinite-spot-light",
     piglit_line_flat_clip_color => "piglit-line-flat-clip-color",
     piglit_lineloop => "piglit-lineloop",
+    // ARB_pixel_buffer_object: glTexImage2D from a pixel-unpack buffer filled through
+    // glMapBuffer (the traced pointer is NULL: offset 0 into the buffer).
+    piglit_pbo_teximage => "piglit-pbo-teximage",
     piglit_point_line_no_cull => "piglit-point-line-no-cull",
     piglit_polygon_mode_offset => "piglit-polygon-mode-offset",
     piglit_polygon_offset => "piglit-polygon-offset",

@@ -214,3 +214,100 @@ fn each_thread_has_its_own_current_context() {
     assert_eq!(pictures[1].image.dimensions(), (8, 2));
     assert_eq!(pictures[1].image.get_pixel(0, 0).0, [0, 255, 0]);
 }
+
+/// ARB_pixel_buffer_object in a call stream: while a buffer is bound to a pixel command's
+/// target, the pointer the capture holds as a number (apitrace writes the offset so) is an
+/// offset into that buffer, for unpacking (`glDrawPixels` from offset 8) and packing
+/// (`glReadPixels` into offset 4 of another buffer, then drawn from there); without a buffer
+/// the same kind of number would be a dead client address.
+#[test]
+fn pixel_commands_take_buffer_offsets_while_a_buffer_is_bound() {
+    let text = "window(4, 2);\n\
+                glGenBuffers(2, {1, 2});\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 1);\n\
+                glBufferData(GL_PIXEL_UNPACK_BUFFER, 16, hex(\"0000000000000000ff0000ff00ff00ff\"), GL_STATIC_DRAW);\n\
+                glWindowPos2i(0, 0);\n\
+                glDrawPixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x8));\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);\n\
+                glBindBuffer(GL_PIXEL_PACK_BUFFER, 2);\n\
+                glBufferData(GL_PIXEL_PACK_BUFFER, 12, NULL, GL_STREAM_READ);\n\
+                glReadPixels(0, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x4));\n\
+                glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);\n\
+                glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 2);\n\
+                glWindowPos2i(1, 1);\n\
+                glDrawPixels(2, 1, GL_RGBA, GL_UNSIGNED_BYTE, ptr(0x4));\n\
+                swap();\n";
+    let mut player = Player::new(1);
+    player.auto_window = true;
+    let mut frames = Vec::new();
+    let stats = player
+        .play(
+            &mut ScriptReader::new(text, Path::new(".")),
+            &all_frames(),
+            &mut |p| {
+                frames.push(p);
+                Ok(())
+            },
+            &mut |_| {},
+        )
+        .unwrap();
+    assert!(
+        stats.gl_errors.is_empty() && stats.unknown.is_empty(),
+        "{:?}",
+        stats.report_lines()
+    );
+    assert_eq!(frames.len(), 1);
+    let img = &frames[0].image;
+    let row = |y: u32| (0..4).map(|x| img.get_pixel(x, y).0).collect::<Vec<_>>();
+    let (red, green, black) = ([255, 0, 0], [0, 255, 0], [0, 0, 0]);
+    // Top row first: window row 1 holds the read-back drawn one pixel right, row 0 the first
+    // rectangle.
+    assert_eq!(row(0), vec![black, red, green, black]);
+    assert_eq!(row(1), vec![red, green, black, black]);
+}
+
+/// Sampler names are remapped like texture names: a capture whose program got sampler 7 binds
+/// and sets the replaying context's own sampler through that number.
+#[test]
+fn sampler_names_are_remapped() {
+    // A 2x2 red level 0 and a 1x1 green level 1, the texture's own filter NEAREST; the
+    // traced sampler 7 (a mipmap filter, LOD clamped to 1) makes the quad green.
+    let text = "window(4, 4);\n\
+                glGenSamplers(1, {7});\n\
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, hex(\"ff0000ffff0000ffff0000ffff0000ff\"));\n\
+                glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, hex(\"00ff00ff\"));\n\
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);\n\
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);\n\
+                glSamplerParameteri(7, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);\n\
+                glSamplerParameterf(7, GL_TEXTURE_MIN_LOD, 1.0f);\n\
+                glBindSampler(0, 7);\n\
+                glEnable(GL_TEXTURE_2D);\n\
+                glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);\n\
+                glBegin(GL_QUADS);\n\
+                glTexCoord2f(0.0f, 0.0f); glVertex2f(-1.0f, -1.0f);\n\
+                glTexCoord2f(8.0f, 0.0f); glVertex2f(1.0f, -1.0f);\n\
+                glTexCoord2f(8.0f, 8.0f); glVertex2f(1.0f, 1.0f);\n\
+                glTexCoord2f(0.0f, 8.0f); glVertex2f(-1.0f, 1.0f);\n\
+                glEnd();\n\
+                swap();\n";
+    let mut player = Player::new(1);
+    player.auto_window = true;
+    let mut frames = Vec::new();
+    let stats = player
+        .play(
+            &mut ScriptReader::new(text, Path::new(".")),
+            &all_frames(),
+            &mut |p| {
+                frames.push(p);
+                Ok(())
+            },
+            &mut |_| {},
+        )
+        .unwrap();
+    assert!(
+        stats.gl_errors.is_empty() && stats.unknown.is_empty(),
+        "{:?}",
+        stats.report_lines()
+    );
+    assert_eq!(frames[0].image.get_pixel(2, 2).0, [0, 255, 0]);
+}

@@ -516,6 +516,19 @@ const PIGLIT_SUBSET: &[&[&str]] = &[
     // ARB_texture_float (docs/piglit.md, Dec 3 2026).
     &["getteximage-simple", "-auto", "-fbo"],
     &["arb_texture_float-get-tex3d", "-auto", "-fbo"],
+    // ARB_sampler_objects (docs/piglit.md, Dec 3 2026): the GL 1.4 group's three
+    // tex-miplevel-selection runs and two of the extension's own tests.
+    &[
+        "tex-miplevel-selection",
+        "-nobias",
+        "-nolod",
+        "-auto",
+        "-fbo",
+    ],
+    &["tex-miplevel-selection", "-nobias", "-auto", "-fbo"],
+    &["tex-miplevel-selection", "-auto", "-fbo"],
+    &["arb_sampler_objects-sampler-objects", "-auto", "-fbo"],
+    &["arb_sampler_objects-framebufferblit", "-auto"],
 ];
 
 #[test]

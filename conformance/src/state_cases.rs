@@ -26,6 +26,7 @@ pub mod fbo;
 pub mod fbo_blit;
 pub mod pbo;
 pub mod piglit;
+pub mod samplers;
 pub mod tex_storage;
 
 /// The framebuffer size every state case runs with.
@@ -92,6 +93,7 @@ pub const STATE_CASE_LISTS: &[(&str, &[StateCase])] = &[
         pbo::CASES,
     ),
     ("state cases: ARB_framebuffer_object", arb_fbo::CASES),
+    ("state cases: ARB_sampler_objects", samplers::CASES),
 ];
 
 /// Every state and error case.

@@ -39,3 +39,13 @@ fn tex_storage_state_cases_agree_with_mesa() {
         tilegl_conformance::state_cases::tex_storage::CASES,
     );
 }
+
+/// ARB_sampler_objects (the cases in `tilegl_conformance::state_cases::samplers`; piglit's
+/// tex-miplevel-selection sets its sampling state through sampler objects).
+#[test]
+fn sampler_objects_state_cases_agree_with_mesa() {
+    tilegl_conformance::state_cases::run_list(
+        "state_cases::samplers",
+        tilegl_conformance::state_cases::samplers::CASES,
+    );
+}

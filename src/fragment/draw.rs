@@ -1,5 +1,6 @@
 //! The fragment stage's part of a draw's frozen state: what the span functions read.
 
+use super::cascade::Program;
 use super::fog::FogDraw;
 use super::key::{FragmentKey, Uniforms};
 use super::span::{CoveredFn, PairFn, SpanFn};
@@ -39,4 +40,6 @@ pub struct FragmentDraw {
     /// The function that shades a row of pixels with a coverage each (antialiased lines),
     /// for keys that have one; otherwise each such pixel is a span of its own.
     pub span_covered: Option<CoveredFn>,
+    /// The units' environments compiled for the eight-lane cascade (`None` without units).
+    pub cascade: Option<Program>,
 }

@@ -4,6 +4,7 @@
 pub mod blend;
 pub mod bytenv;
 pub mod cache;
+pub mod cascade;
 pub mod draw;
 pub mod fog;
 pub mod key;

@@ -6,30 +6,26 @@
 //! pixels are identical (twin tests in `tests/raster.rs`).
 
 use crate::common::cpu::available;
-use crate::common::values::{CompareFunc, FogMode};
+use crate::common::values::{CompareFunc, FogMode, LogicOp};
 use crate::fragment::key::BlendKey;
+use crate::texture::sample::LodSelect;
 use crate::texture::simd::{Level8, Texels8};
 
-/// How the quads of a block choose their level for [`block_shaded8`]: `None` when the level
-/// is fixed for the draw; `Some((magnified_below, [width, height]))` when every live quad must
-/// be surely magnified (`LodSelect::surely_magnified` on a 2D texture of that base size).
-pub type BlockLod = Option<(f32, [f32; 2])>;
-
-/// A 4x2 block of a perspective textured span in one go: the texture coordinates as
-/// [`perspective_block8`](crate::texture::simd::perspective_block8) computes them (rounded to f32, non-finite as 0), each quad's
-/// derivatives and level test as `Perspective8::texels_block` does, [`filter8`](crate::texture::simd::filter8) on `level`,
-/// then [`shade8`] with lanes `live`. `None` without AVX2, when a live quad is not surely
-/// magnified (`lod`), or when [`filter8`](crate::texture::simd::filter8) would answer `None`: the caller takes the usual
-/// route, which gives the same pixels.
+/// A 4x2 block of a perspective textured span in one go: the texels as
+/// [`block_texels8`](crate::texture::simd::block_texels8) gives them (coordinates, each live
+/// quad's level plan or the draw's `fixed_plan`, the filter; kept in registers), then
+/// [`shade8`] with lanes `live`. `None` without AVX2 or where
+/// [`block_texels8`](crate::texture::simd::block_texels8) would answer `None`: the caller
+/// takes the usual route, which gives the same pixels.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 pub fn block_shaded8(
     planes: &[[[f64; 3]; 3]; 2],
     x: f64,
-    level: &Level8,
-    linear: bool,
-    lod: BlockLod,
     live: u8,
+    fixed_plan: Option<(usize, bool)>,
+    lod: &LodSelect,
+    levels: &[Option<Level8>],
     tail: &Tail8,
     primary: &[[f32; 8]; 4],
     dst: &[u32; 8],
@@ -41,13 +37,13 @@ pub fn block_shaded8(
             // SAFETY: AVX2 is present (checked just above).
             return unsafe {
                 x86::block_shaded8(
-                    planes, x, level, linear, lod, live, tail, primary, dst, after,
+                    planes, x, live, fixed_plan, lod, levels, tail, primary, dst, after,
                 )
             };
         }
     }
     let _ = (
-        planes, x, level, linear, lod, live, tail, primary, dst, after,
+        planes, x, live, fixed_plan, lod, levels, tail, primary, dst, after,
     );
     None
 }
@@ -63,6 +59,9 @@ pub enum TailBlend {
     /// Any other blending (equations, factors, the constant colour), as
     /// `fragment::blend::blend` computes it.
     General(BlendKey, [f32; 4]),
+    /// No blending but a logical operation (section 4.1.10: it replaces blending) on the
+    /// fragments' colour bytes and the stored ones, bit by bit, as `LogicOp::apply`.
+    Logic(LogicOp),
 }
 
 /// The per-fragment operations after texturing for eight RGBA8-textured fragments (see
@@ -219,10 +218,11 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{After8, Sampling8, Tail8};
-    use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode};
+    use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp};
     use crate::fragment::fog::EXP2_TAYLOR;
+    use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
-        block_coords8, coords8, filter8, filter8_mix, filter8_regs, lane_mask,
+        block_words8, coords8, filter8, filter8_mix, lane_mask, texels_of_words,
     };
     use crate::texture::simd::{Level8, Texels8};
 
@@ -471,7 +471,9 @@ mod x86 {
                 ),
             )
         };
-        let word = if tail.blend == super::TailBlend::AddOneOne {
+        let word = if let super::TailBlend::Logic(op) = tail.blend {
+            logic8(op, pack(src), old)
+        } else if tail.blend == super::TailBlend::AddOneOne {
             // ONE, ONE: `color_to_u8(s / 255 + d / 255)` is exactly min(s + d, 255) for bytes
             // s and d (the f32 errors stay far below the 0.5 of rounding;
             // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
@@ -531,6 +533,33 @@ mod x86 {
         (res, _mm256_movemask_ps(keep) as u8)
     }
 
+    /// `op` on the bytes of the colour words `s` (the fragments') and `d` (the stored ones),
+    /// as `LogicOp::apply` on each byte: bitwise operations on the whole words.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn logic8(op: LogicOp, s: __m256i, d: __m256i) -> __m256i {
+        let ones = _mm256_set1_epi32(-1);
+        let not = |v: __m256i| _mm256_xor_si256(v, ones);
+        match op {
+            LogicOp::Clear => _mm256_setzero_si256(),
+            LogicOp::And => _mm256_and_si256(s, d),
+            LogicOp::AndReverse => _mm256_andnot_si256(d, s),
+            LogicOp::Copy => s,
+            LogicOp::AndInverted => _mm256_andnot_si256(s, d),
+            LogicOp::Noop => d,
+            LogicOp::Xor => _mm256_xor_si256(s, d),
+            LogicOp::Or => _mm256_or_si256(s, d),
+            LogicOp::Nor => not(_mm256_or_si256(s, d)),
+            LogicOp::Equiv => not(_mm256_xor_si256(s, d)),
+            LogicOp::Invert => not(d),
+            LogicOp::OrReverse => _mm256_or_si256(s, not(d)),
+            LogicOp::CopyInverted => not(s),
+            LogicOp::OrInverted => _mm256_or_si256(not(s), d),
+            LogicOp::Nand => not(_mm256_and_si256(s, d)),
+            LogicOp::Set => ones,
+        }
+    }
+
     #[allow(clippy::too_many_arguments)]
     #[target_feature(enable = "avx2")]
     pub fn textured8(
@@ -557,28 +586,20 @@ mod x86 {
     pub fn block_shaded8(
         planes: &[[[f64; 3]; 3]; 2],
         x: f64,
-        level: &Level8,
-        linear: bool,
-        lod: super::BlockLod,
         live: u8,
+        fixed_plan: Option<(usize, bool)>,
+        lod: &LodSelect,
+        levels: &[Option<Level8>],
         tail: &Tail8,
         primary: &[[f32; 8]; 4],
         dst: &[u32; 8],
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
-        let (s, t, ax, ay) = block_coords8(planes, x, live, lod.map(|(_, size)| size));
-        if let Some((magnified_below, _)) = lod {
-            // Both at most the threshold (false for NaN): then so is their maximum, which is
-            // what `surely_magnified` compares.
-            let below = _mm_set1_ps(magnified_below);
-            let ok = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(ax, below), _mm_cmple_ps(ay, below)));
-            let need = (if live & 0x33 != 0 { 0b0001 } else { 0 })
-                | (if live & 0xCC != 0 { 0b0100 } else { 0 });
-            if ok & need != need {
-                return None;
-            }
-        }
-        let tex = filter8_regs(level, linear, s, t)?;
+        // As `texture::simd::x86::block_texels8`, the texels left in registers.
+        let tex = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
+            (words, Some(level)) => texels_of_words(level, words),
+            (_, None) => [_mm256_setzero_ps(); 4],
+        };
         Some(shade8_regs(tail, primary, &tex, dst, live, after))
     }
 

@@ -238,6 +238,7 @@ pub fn string_name(e: GLenum) -> Option<StringName> {
         GL_RENDERER => StringName::Renderer,
         GL_VERSION => StringName::Version,
         GL_EXTENSIONS => StringName::Extensions,
+        GL_SHADING_LANGUAGE_VERSION => StringName::ShadingLanguageVersion,
         _ => return None,
     })
 }

@@ -5,7 +5,7 @@ use super::draw::TileDraw;
 use super::scene::TriangleCommand;
 use super::setup::{Edge, Plane};
 use crate::common::fixed::SUBPIXEL;
-use crate::fragment::span::{Interpolants, PrimitiveShared, UnitLevels};
+use crate::fragment::span::{span_stippled, Interpolants, PrimitiveShared, UnitLevels};
 use crate::framebuffer::Tile;
 
 /// A triangle's attribute planes spread over the draw's attribute layout (zero where an
@@ -84,7 +84,8 @@ pub fn raster_triangle<'a>(
     } else {
         scratch.spread(n, ds.live_attrs, &planes[2..], t.constant_primary())
     };
-    let shared = PrimitiveShared::new(levels);
+    let stipple = ds.raster.polygon_stipple.as_ref();
+    let shared = PrimitiveShared::new(levels).with_stipple(stipple);
     let it = Interpolants {
         z: planes[0],
         inv_w: planes[1],
@@ -96,7 +97,7 @@ pub fn raster_triangle<'a>(
     };
     let (edges, bias) = t.edges();
     if ds.raster.polygon_smooth {
-        smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi]);
+        smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi], stipple);
         return;
     }
     let half = SUBPIXEL / 2;
@@ -127,8 +128,11 @@ pub fn raster_triangle<'a>(
         }
         (lo < hi).then_some((lo as i32, hi as i32))
     };
-    match (&ds.raster.polygon_stipple, ds.fragment.span_pair) {
-        (None, Some(pair)) => {
+    match (stipple, ds.fragment.span_pair) {
+        (_, Some(pair)) => {
+            // A stippled polygon's rows all go to the pair function, which applies the
+            // pattern as a lane mask (`PrimitiveShared::stipple`).
+            let lone = if stipple.is_some() { i32::MAX } else { 4 };
             // Rows in pairs (even y first), gathered for one call of the pair function, which
             // then prepares what does not depend on the rows once per triangle (a tile has at
             // most 32 pairs in a tile of the default side, 64; taller tiles hand them over in
@@ -149,8 +153,8 @@ pub fn raster_triangle<'a>(
                 // a long one is shaded as a row.
                 let rows = match (lower, upper) {
                     (Some(a), Some(b)) => Some([a, b]),
-                    (Some(a), None) if a.1 - a.0 <= 4 => Some([a, EMPTY]),
-                    (None, Some(b)) if b.1 - b.0 <= 4 => Some([EMPTY, b]),
+                    (Some(a), None) if a.1 - a.0 <= lone => Some([a, EMPTY]),
+                    (None, Some(b)) if b.1 - b.0 <= lone => Some([EMPTY, b]),
                     (Some((x0, x1)), None) => {
                         (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
                         None
@@ -182,10 +186,10 @@ pub fn raster_triangle<'a>(
                 }
             }
         }
-        (Some(pattern), _) => {
+        (Some(pattern), None) => {
             for y in y_lo..y_hi {
                 if let Some((x0, x1)) = row_interval(y) {
-                    stippled_row(ds, tile, y, x0, x1, &it, pattern);
+                    span_stippled(&ds.fragment, tile, y, x0, x1, &it, pattern);
                 }
             }
         }
@@ -194,13 +198,15 @@ pub fn raster_triangle<'a>(
 
 /// `GL_POLYGON_SMOOTH` (section 3.5.6 and 3.11): every pixel of the (one pixel wider)
 /// bounding box gets the triangle's coverage, approximated by the box-filtered distances of
-/// its centre to the three edges; runs of full coverage are shaded as spans.
+/// its centre to the three edges; runs of full coverage are shaded as spans. The polygon
+/// stipple applies "regardless of the state of polygon antialiasing" (section 3.5.2).
 fn smooth_rows<'a>(
     edges: &[Edge; 3],
     ds: &'a TileDraw,
     it: &Interpolants<'a>,
     tile: &mut Tile,
     [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
+    stipple: Option<&[u32; 32]>,
 ) {
     let s = SUBPIXEL as f64;
     // Edge functions in pixel units: E(p) / |(a, b)| is the signed distance in pixels.
@@ -228,10 +234,15 @@ fn smooth_rows<'a>(
                 while x < x_hi && coverage(x as f64 + 0.5, yc) >= 1.0 {
                     x += 1;
                 }
-                (ds.fragment.span)(&ds.fragment, tile, y, start, x, it);
+                match stipple {
+                    None => (ds.fragment.span)(&ds.fragment, tile, y, start, x, it),
+                    Some(p) => span_stippled(&ds.fragment, tile, y, start, x, it, p),
+                }
                 continue;
             }
-            if cov > 0.0 {
+            let kept = stipple
+                .is_none_or(|p| p[y.rem_euclid(32) as usize] & (1 << (31 - x.rem_euclid(32))) != 0);
+            if cov > 0.0 && kept {
                 let edge = Interpolants {
                     coverage: cov,
                     ..*it
@@ -239,33 +250,6 @@ fn smooth_rows<'a>(
                 (ds.fragment.span)(&ds.fragment, tile, y, x, x + 1, &edge);
             }
             x += 1;
-        }
-    }
-}
-
-/// Polygon stipple (section 3.5.6): only the runs of pixels whose stipple bit is set.
-fn stippled_row<'a>(
-    ds: &'a TileDraw,
-    tile: &mut Tile,
-    y: i32,
-    lo: i32,
-    hi: i32,
-    it: &Interpolants<'a>,
-    pattern: &[u32; 32],
-) {
-    let row = pattern[y.rem_euclid(32) as usize];
-    let bit = |x: i32| row & (1 << (31 - x.rem_euclid(32))) != 0;
-    let mut x = lo;
-    while x < hi {
-        while x < hi && !bit(x) {
-            x += 1;
-        }
-        let start = x;
-        while x < hi && bit(x) {
-            x += 1;
-        }
-        if start < x {
-            (ds.fragment.span)(&ds.fragment, tile, y, start, x, it);
         }
     }
 }

@@ -14,14 +14,18 @@
 //! - **Output pointers** (`glGet*`, `glReadPixels`, `glGenTextures`, ...) get scratch buffers at
 //!   least as large as the traced output, the length parameter, and what GL can write.
 //! - **Object names**: `glGen*` results are remapped per kind (textures, lists, buffers,
-//!   queries) from the traced program's names to the replaying implementation's, as glretrace
-//!   does; names never generated pass through unchanged.
+//!   queries, samplers) from the traced program's names to the replaying implementation's, as
+//!   glretrace does; names never generated pass through unchanged.
 //! - **Retained pointers** (`gl*Pointer`, `glInterleavedArrays`, client `glDrawElements`
 //!   indices, selection/feedback buffers): the replayer keeps the bytes alive (the latest blob
 //!   per array slot) and passes `ClientPtr` = the address of its own copy. Vertex arrays are not
 //!   implemented in tilegl yet; once they are, this memory is what they read (the C-ABI-style
 //!   bridge from a `ClientPtr` to bytes is the arrays module's business). A non-blob pointer (a
 //!   buffer-object offset, or null) passes through as a number.
+//! - **Pixel buffer objects**: a pixel command whose pointer the trace records as a number
+//!   (or null) while a buffer is bound to its target in the replaying context takes the
+//!   number as an offset into that buffer (the `Gl` trait's `*_pbo` variant), as the C
+//!   exports do for a live program.
 //! - **Mapped buffers**: apitrace records writes through a `glMapBuffer` pointer as fake
 //!   `memcpy(dest, blob, n)` calls before `glUnmapBuffer`. Writing through the replay mapping
 //!   would need `unsafe`, so the writes are kept and applied right after the replayed
@@ -55,6 +59,8 @@ pub enum ObjKind {
     Buffer = 2,
     /// Query objects.
     Query = 3,
+    /// Sampler objects (ARB_sampler_objects).
+    Sampler = 4,
 }
 
 /// A write into a mapped buffer: (offset, bytes).
@@ -87,7 +93,7 @@ pub enum Outcome {
 /// Replay-side state kept across calls (see the module documentation).
 #[derive(Default)]
 pub struct DispatchState {
-    names: [HashMap<u32, u32>; 4],
+    names: [HashMap<u32, u32>; 5],
     /// Latest client-array blob per array slot (pointer function + texture unit).
     arrays: HashMap<(String, u32), Arc<[u8]>>,
     /// Memory that must outlive the current call only (client indices of a draw).
@@ -370,6 +376,27 @@ impl<'a> Args<'a> {
                 Some(Cow::Owned(pack_values(std::slice::from_ref(v), ty)))
             }
         }
+    }
+
+    /// ARB_pixel_buffer_object: the buffer offset that pointer `i` of a pixel command stands
+    /// for, when the trace holds no client bytes for it (apitrace records the pointer as a
+    /// number while a buffer is bound; null is offset 0) and a buffer is bound to the
+    /// command's target in the replaying context (`pack`: `GL_PIXEL_PACK_BUFFER`, else
+    /// `GL_PIXEL_UNPACK_BUFFER`); `None` when the call takes client memory.
+    pub(crate) fn pbo_offset(&mut self, gl: &mut dyn Gl, i: usize, pack: bool) -> Option<usize> {
+        let offset = match self.value(i) {
+            None => 0,
+            Some(Value::Blob(_) | Value::String(_) | Value::Array(_)) => return None,
+            Some(v) => usize::try_from(v.as_i64()?).ok()?,
+        };
+        let binding = if pack {
+            GL_PIXEL_PACK_BUFFER_BINDING
+        } else {
+            GL_PIXEL_UNPACK_BUFFER_BINDING
+        };
+        let mut bound = [0 as GLint; 4];
+        gl.get_integerv(binding, &mut bound);
+        (bound[0] != 0).then_some(offset)
     }
 
     /// A pointer GL keeps after the call: the address of replayer-owned bytes, or the traced

@@ -403,6 +403,9 @@ impl Context {
             SampleCoverageValue => Floats(vec![self.multisample.coverage_value as f64]),
             SampleCoverageInvert => Bools(vec![self.multisample.coverage_invert]),
             TextureBinding(t) => Ints(vec![self.textures.binding(self.active_texture, t) as i64]),
+            SamplerBinding => Ints(vec![
+                self.textures.sampler_binding(self.active_texture) as i64
+            ]),
             MaxTextureSize(t) => Ints(vec![crate::texture::object::max_size(t) as i64]),
             MaxTextureLodBias => Floats(vec![crate::texture::object::MAX_TEXTURE_LOD_BIAS as f64]),
             MaxTextureMaxAnisotropy => Floats(vec![

@@ -76,7 +76,7 @@ impl Default for ContextConfig {
 pub const EXTENSIONS: &str = "GL_ARB_depth_texture GL_ARB_framebuffer_object GL_ARB_map_buffer_range \
 GL_ARB_multisample GL_ARB_multitexture GL_ARB_pixel_buffer_object GL_ARB_point_parameters \
 GL_ARB_point_sprite \
-GL_ARB_provoking_vertex \
+GL_ARB_provoking_vertex GL_ARB_sampler_objects \
 GL_ARB_shadow GL_ARB_texture_border_clamp GL_ARB_texture_compression GL_ARB_texture_cube_map \
 GL_ARB_texture_env_add GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar \
 GL_ARB_texture_env_dot3 GL_ARB_texture_float GL_ARB_texture_mirrored_repeat GL_ARB_texture_non_power_of_two \
@@ -426,6 +426,12 @@ impl Context {
                 StringName::Version => "1.5 tilegl 0.1",
                 // Only what works end to end (and is verified against Mesa) is listed.
                 StringName::Extensions => EXTENSIONS,
+                // No shading language: version 0.0. The name is OpenGL 2.0's, but programs
+                // read it from any context, parsing "major.minor" (piglit's GL 1.x tests
+                // tex-miplevel-selection and others call piglit_get_glsl_version, which
+                // would dereference NULL); GLSL support is still told by GL_VERSION and
+                // GL_ARB_shading_language_100, neither of which claims it.
+                StringName::ShadingLanguageVersion => "0.0",
             }
             .to_string(),
         )

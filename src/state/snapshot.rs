@@ -233,6 +233,16 @@ impl Context {
                 fast_lines: !self.force_general_path,
                 raster,
                 fragment: FragmentDraw {
+                    cascade: (!units.is_empty())
+                        .then(|| {
+                            crate::fragment::cascade::Program::new(
+                                &units
+                                    .iter()
+                                    .map(|u| (u.env, u.base, u.unit))
+                                    .collect::<Vec<_>>(),
+                            )
+                        })
+                        .flatten(),
                     units,
                     fog,
                     depth_max: self.framebuffer.depth_max(),

@@ -9,6 +9,7 @@
 //! - [`fixed`]: the fixed-point filtering tier (8-bit weights, as llvmpipe).
 //! - [`sample`]: the sampler ([`BoundTexture`]): wrap, filters, λ, cube maps, 3D, depth
 //!   comparison, anisotropy.
+//! - [`sampler`]: ARB_sampler_objects' named sampler objects.
 //!
 //! The entry points live in `state/textures.rs`.
 
@@ -20,6 +21,7 @@ pub mod object;
 pub mod pixels;
 pub mod s3tc;
 pub mod sample;
+pub mod sampler;
 pub mod simd;
 
 use std::collections::{HashMap, HashSet};
@@ -37,6 +39,7 @@ pub use format::{BaseFormat, InternalFormat, S3tcFormat};
 pub use image::TexImage;
 pub use object::{SamplerParams, TextureObject};
 pub use sample::BoundTexture;
+pub use sampler::{SamplerNames, SamplerObject};
 
 /// Number of texture targets (1D, 2D, 3D, cube map, rectangle).
 pub const TARGET_COUNT: usize = 5;
@@ -61,6 +64,8 @@ pub struct TextureNames {
     /// Names returned by `glGenTextures` and not yet bound or deleted.
     reserved: HashSet<u32>,
     next_name: u32,
+    /// ARB_sampler_objects' sampler objects, shared as the textures are (their own names).
+    samplers: SamplerNames,
 }
 
 impl Default for TextureNames {
@@ -69,6 +74,7 @@ impl Default for TextureNames {
             objects: HashMap::new(),
             reserved: HashSet::new(),
             next_name: 1,
+            samplers: SamplerNames::default(),
         }
     }
 }
@@ -122,6 +128,9 @@ pub struct TextureState {
     enabled: [[bool; TARGET_COUNT]; MAX_TEXTURE_UNITS],
     /// Per unit and target: the bound name (0 = the default texture of the target).
     bindings: [[u32; TARGET_COUNT]; MAX_TEXTURE_UNITS],
+    /// Per unit: the bound sampler object (ARB_sampler_objects; 0 = none, the texture's own
+    /// sampler state applies). Not part of any attribute group.
+    sampler_bindings: [u32; MAX_TEXTURE_UNITS],
     /// The named objects, shared with the contexts of the share group. Reads take the lock
     /// recursively (a context may hold two objects at once; borrows keep a writer exclusive
     /// within the context), and nothing below `state` reads it: snapshots hold the texels'
@@ -145,6 +154,7 @@ impl Default for TextureState {
         TextureState {
             enabled: [[false; TARGET_COUNT]; MAX_TEXTURE_UNITS],
             bindings: [[0; TARGET_COUNT]; MAX_TEXTURE_UNITS],
+            sampler_bindings: [0; MAX_TEXTURE_UNITS],
             names: Default::default(),
             defaults: targets.map(|t| TextureObject::new(Some(t))),
             proxies: targets.map(|t| TextureObject::new(Some(t))),
@@ -216,11 +226,81 @@ impl TextureState {
     /// The snapshot of what `unit` samples: the object bound to the unit's highest-precedence
     /// enabled target (cube map > 3D > 2D > 1D), or `None` when no target is enabled or that
     /// texture is incomplete (the unit then behaves as disabled).
+    ///
+    /// With a sampler object bound to the unit, the snapshot takes the sampler's state in
+    /// place of the texture's (once per draw-state rebuild, never per fragment); the texture
+    /// is then complete or not by that state, and incomplete when a rectangle texture gets
+    /// state its `glTexParameter` would refuse (ARB_sampler_objects, section 3.9.2). A
+    /// sampler name another context of the share group deleted counts as none.
     pub fn bound_for_unit(&self, unit: usize) -> Option<BoundTexture> {
         let target = TARGET_PRECEDENCE
             .into_iter()
             .find(|&t| self.is_enabled(unit, t))?;
-        self.bound(unit, target).snapshot(target)
+        let obj = self.bound(unit, target);
+        let sampler = self.sampler_binding(unit);
+        if sampler == 0 {
+            return obj.snapshot(target);
+        }
+        let params = match self.read().samplers.get(sampler) {
+            Some(s) => obj.params.with_sampler(&s.params),
+            None => return obj.snapshot(target),
+        };
+        if target == TextureTarget::Rectangle && !params.fit_rectangle() {
+            return None;
+        }
+        obj.snapshot_with(target, params)
+    }
+
+    // ----- ARB_sampler_objects
+
+    /// The sampler object bound to `unit` (0 for none).
+    pub fn sampler_binding(&self, unit: usize) -> u32 {
+        self.sampler_bindings.get(unit).copied().unwrap_or(0)
+    }
+
+    /// `glGenSamplers`: `out.len()` new sampler objects.
+    pub fn gen_samplers(&mut self, out: &mut [u32]) {
+        self.write().samplers.gen(out);
+    }
+
+    /// `glDeleteSamplers` of one name: deletes it and unbinds it from every unit of this
+    /// context (as `glBindSampler(unit, 0)`). Names that are no sampler and 0 are ignored.
+    pub fn delete_sampler(&mut self, name: u32) {
+        if name == 0 || !self.write().samplers.delete(name) {
+            return;
+        }
+        for b in self.sampler_bindings.iter_mut() {
+            if *b == name {
+                *b = 0;
+            }
+        }
+    }
+
+    /// Whether `name` names a sampler object (`glIsSampler`).
+    pub fn is_sampler(&self, name: u32) -> bool {
+        name != 0 && self.read().samplers.contains(name)
+    }
+
+    /// `glBindSampler` after the unit check: false when `name` is neither 0 nor a sampler
+    /// object (`GL_INVALID_OPERATION`).
+    pub fn bind_sampler(&mut self, unit: usize, name: u32) -> bool {
+        if name != 0 && !self.is_sampler(name) {
+            return false;
+        }
+        if let Some(b) = self.sampler_bindings.get_mut(unit) {
+            *b = name;
+        }
+        true
+    }
+
+    /// The sampler object `name`, if it exists.
+    pub fn sampler(&self, name: u32) -> Option<MappedRwLockReadGuard<'_, SamplerObject>> {
+        RwLockReadGuard::try_map(self.read(), |n| n.samplers.get(name)).ok()
+    }
+
+    /// The sampler object `name`, mutably, if it exists.
+    pub fn sampler_mut(&mut self, name: u32) -> Option<MappedRwLockWriteGuard<'_, SamplerObject>> {
+        RwLockWriteGuard::try_map(self.write(), |n| n.samplers.get_mut(name)).ok()
     }
 
     /// `glGenTextures`: `n` unused names.

@@ -78,6 +78,43 @@ pub struct SamplerParams {
     pub swizzle: [SwizzleSource; 4],
 }
 
+impl SamplerParams {
+    /// These parameters with the sampler state of a sampler object bound to the unit
+    /// (ARB_sampler_objects, table 6.23: wrap modes, filters, border colour, LOD clamps and
+    /// bias, comparison, anisotropy) taken from `s`; the image state (base and max level,
+    /// depth texture mode, swizzle, mipmap generation) stays the texture's. The border colour
+    /// is clamped to [0, 1] as `glTexParameter` stores it.
+    pub fn with_sampler(&self, s: &SamplerParams) -> SamplerParams {
+        SamplerParams {
+            min_filter: s.min_filter,
+            mag_filter: s.mag_filter,
+            wrap: s.wrap,
+            border_color: s.border_color.map(|c| c.clamp(0.0, 1.0)),
+            min_lod: s.min_lod,
+            max_lod: s.max_lod,
+            lod_bias: s.lod_bias,
+            max_anisotropy: s.max_anisotropy,
+            compare: s.compare,
+            compare_func: s.compare_func,
+            ..*self
+        }
+    }
+
+    /// Whether a rectangle texture may be sampled with these parameters
+    /// (ARB_texture_rectangle: no mipmap filter, only the clamping wrap modes); a sampler
+    /// object that sets another makes the texture incomplete (ARB_sampler_objects, section
+    /// 3.9.2).
+    pub fn fit_rectangle(&self) -> bool {
+        !self.min_filter.is_mipmap()
+            && self.wrap.iter().all(|w| {
+                matches!(
+                    w,
+                    WrapMode::Clamp | WrapMode::ClampToEdge | WrapMode::ClampToBorder
+                )
+            })
+    }
+}
+
 impl Default for SamplerParams {
     fn default() -> Self {
         SamplerParams {
@@ -172,6 +209,17 @@ impl TextureObject {
     /// The levels `base..=last` used for sampling when the texture is complete for `target`
     /// (section 3.8.10, including cube completeness), else `None`.
     pub fn complete_range(&self, target: TextureTarget) -> Option<(usize, usize)> {
+        self.complete_range_with(target, &self.params)
+    }
+
+    /// [`TextureObject::complete_range`] when sampled with `params` (its own, or with a
+    /// sampler object's state: the minification filter decides whether the mipmap levels
+    /// count).
+    fn complete_range_with(
+        &self,
+        target: TextureTarget,
+        params: &SamplerParams,
+    ) -> Option<(usize, usize)> {
         let base = self.level_base();
         if base >= level_count(target) {
             return None;
@@ -201,7 +249,7 @@ impl TextureObject {
                 }
             }
         }
-        if !self.params.min_filter.is_mipmap() {
+        if !params.min_filter.is_mipmap() {
             return Some((base, base));
         }
         if self.level_max() < base as i32 {
@@ -228,7 +276,17 @@ impl TextureObject {
 
     /// An immutable snapshot for sampling as `target`, or `None` when incomplete.
     pub fn snapshot(&self, target: TextureTarget) -> Option<BoundTexture> {
-        let (base, last) = self.complete_range(target)?;
+        self.snapshot_with(target, self.params)
+    }
+
+    /// [`TextureObject::snapshot`] sampled with `params` instead of the texture's own
+    /// (ARB_sampler_objects: completeness follows the sampler's filter too).
+    pub fn snapshot_with(
+        &self,
+        target: TextureTarget,
+        params: SamplerParams,
+    ) -> Option<BoundTexture> {
+        let (base, last) = self.complete_range_with(target, &params)?;
         let faces = if target == TextureTarget::CubeMap {
             6
         } else {
@@ -246,7 +304,7 @@ impl TextureObject {
         let inner = base_img.inner_size();
         Some(BoundTexture::from_inner(Arc::new(BoundInner {
             target,
-            params: self.params,
+            params,
             format: base_img.format,
             base: base_img.format.base,
             base_size: [inner[0] as f32, inner[1] as f32, inner[2] as f32],

@@ -152,7 +152,7 @@ impl LodSelect {
     }
 
     /// What the eight-lane block kernel needs to test [`LodSelect::surely_magnified`] itself
-    /// (`simd::BlockLod`): the threshold and the base level's width and height, for 2D
+    /// (`texture::simd::x86::block_words8`): the threshold and the base level's width and height, for 2D
     /// textures (`None` for other targets).
     #[inline(always)]
     pub fn magnified_test(&self) -> Option<(f32, [f32; 2])> {

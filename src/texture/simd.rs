@@ -322,7 +322,7 @@ pub(crate) mod x86 {
     /// converts, expanded by the base format.
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn texels_of_words(lvl: &Level8, words: __m256i) -> [__m256; 4] {
+    pub(crate) fn texels_of_words(lvl: &Level8, words: __m256i) -> [__m256; 4] {
         let byte = _mm256_set1_epi32(0xFF);
         let k = _mm256_set1_ps(1.0 / 255.0);
         let ch = |v: __m256i| _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_and_si256(v, byte)), k);

@@ -157,6 +157,71 @@ pub(super) fn logic_xor(gl: &mut dyn Gl) {
     gl.rectf(24.0, 24.0, 56.0, 56.0);
 }
 
+/// The sixteen logic ops (section 4.1.10: applied bit by bit to the stored fixed-point values
+/// of the fragment's colour and the buffer's) in 4-pixel strips over a destination of exact
+/// bytes (`glDrawPixels`, no logic op): the lower half from a `REPLACE`d RGBA texture of exact
+/// bytes sampled `NEAREST` at texel centres, the upper half a flat colour of exact bytes. No
+/// value is rounded on the way, so every implementation must give the same bytes.
+pub(super) fn logic_ops(gl: &mut dyn Gl) {
+    pixel_space(gl, 64.0, 64.0);
+    let dst: Vec<u8> = (0..64 * 64)
+        .flat_map(|i: u32| {
+            let (x, y) = (i % 64, i / 64);
+            [
+                (4 * x) as u8,
+                (4 * y + 2) as u8,
+                (x * y + 3 * x) as u8,
+                255 - x as u8,
+            ]
+        })
+        .collect();
+    gl.raster_pos_2i(0, 0);
+    gl.draw_pixels(64, 64, GL_RGBA, GL_UNSIGNED_BYTE, Some(&dst));
+    let texels: Vec<u8> = (0..16 * 16)
+        .flat_map(|i: u32| {
+            let (s, t) = (i % 16, i / 16);
+            [
+                (s * 37 + t) as u8,
+                (t * 53 + 7) as u8,
+                (s * t * 7) as u8,
+                (200 + s) as u8,
+            ]
+        })
+        .collect();
+    gl.pixel_storei(GL_UNPACK_ALIGNMENT, 1);
+    gl.tex_image_2d(
+        GL_TEXTURE_2D,
+        0,
+        GL_RGBA as i32,
+        16,
+        16,
+        0,
+        GL_RGBA,
+        GL_UNSIGNED_BYTE,
+        Some(&texels),
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE as i32);
+    gl.enable(GL_COLOR_LOGIC_OP);
+    for k in 0..16u32 {
+        gl.logic_op(GL_CLEAR + k);
+        let (x0, x1) = (4.0 * k as f32, 4.0 * k as f32 + 4.0);
+        // One texel per pixel: texel centres at the pixel centres.
+        gl.enable(GL_TEXTURE_2D);
+        gl.begin(GL_QUADS);
+        for (x, y) in [(x0, 0.0), (x1, 0.0), (x1, 32.0), (x0, 32.0)] {
+            gl.tex_coord_2f(x / 16.0, (y + 3.0) / 16.0);
+            gl.vertex_2f(x, y);
+        }
+        gl.end();
+        gl.disable(GL_TEXTURE_2D);
+        gl.color_4ub((17 * k) as u8, (255 - 13 * k) as u8, 0x5A, (9 * k) as u8);
+        gl.rectf(x0, 32.0, x1, 64.0);
+    }
+    gl.disable(GL_COLOR_LOGIC_OP);
+}
+
 // Fog.
 
 pub(super) fn fog_scene(gl: &mut dyn Gl, mode: GLenum, coord: bool) {

@@ -951,6 +951,7 @@ pub const BASE_SCENES: &[Scene] = &[
     scene("blend_over", blend_over),
     scene("alpha_test_and_stencil", alpha_test_and_stencil),
     scene("logic_xor", logic_xor),
+    scene("logic_ops", logic_ops),
     scene("fog_linear", fog_linear),
     scene("fog_exp", fog_exp),
     scene("fog_exp2", fog_exp2),

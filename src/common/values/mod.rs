@@ -171,6 +171,8 @@ pub enum StringName {
     Renderer,
     Version,
     Extensions,
+    /// `GL_SHADING_LANGUAGE_VERSION` (OpenGL 2.0).
+    ShadingLanguageVersion,
 }
 
 /// Pixel formats accepted by `glReadPixels` so far.

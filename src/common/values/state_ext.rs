@@ -51,6 +51,8 @@ pub enum StateExtQuery {
     SelectionBufferSize,
     /// `GL_TEXTURE_BINDING_*` of the active unit.
     TextureBinding(super::TextureTarget),
+    /// ARB_sampler_objects' `GL_SAMPLER_BINDING` of the active unit.
+    SamplerBinding,
     /// `GL_MAX_TEXTURE_SIZE`, `GL_MAX_3D_TEXTURE_SIZE`, `GL_MAX_CUBE_MAP_TEXTURE_SIZE`,
     /// `GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB`: the largest side for the target.
     MaxTextureSize(super::TextureTarget),

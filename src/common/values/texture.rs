@@ -136,6 +136,28 @@ pub enum TexParam {
     SwizzleRgba,
 }
 
+impl TexParam {
+    /// Whether the parameter is sampler state, which a sampler object holds too
+    /// (ARB_sampler_objects, table 6.23); the others are image state.
+    pub fn is_sampler_state(self) -> bool {
+        matches!(
+            self,
+            TexParam::MinFilter
+                | TexParam::MagFilter
+                | TexParam::WrapS
+                | TexParam::WrapT
+                | TexParam::WrapR
+                | TexParam::BorderColor
+                | TexParam::MinLod
+                | TexParam::MaxLod
+                | TexParam::LodBias
+                | TexParam::CompareMode
+                | TexParam::CompareFunc
+                | TexParam::MaxAnisotropy
+        )
+    }
+}
+
 /// Where a swizzled texture component comes from (EXT_texture_swizzle).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SwizzleSource {

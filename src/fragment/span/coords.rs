@@ -147,6 +147,10 @@ pub(super) fn environment8_avx2(
 ) -> Texels8 {
     use std::arch::x86_64::*;
     use texenv::{Avx8, Lanes};
+    // The draw's compiled cascade: the same bits (`fragment::cascade`).
+    if let Some(program) = &ds.cascade {
+        return program.run_avx2(primary, by_unit);
+    }
     // SAFETY: each array holds eight f32; unaligned loads and stores.
     let load = |a: &[f32; 8]| Avx8(unsafe { _mm256_loadu_ps(a.as_ptr()) });
     let rgba = |t: &Texels8| [load(&t[0]), load(&t[1]), load(&t[2]), load(&t[3])];

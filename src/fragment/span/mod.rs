@@ -41,6 +41,7 @@ mod affine;
 mod coords;
 mod flat;
 mod general;
+mod lanes;
 mod paths;
 mod perspective8;
 mod tail;
@@ -48,6 +49,7 @@ pub use affine::*;
 use coords::*;
 use flat::*;
 use general::*;
+use lanes::*;
 pub use paths::*;
 use perspective8::*;
 pub use tail::*;
@@ -87,6 +89,10 @@ pub struct PrimitiveShared<'a> {
     steady: OnceCell<Option<GroupInputs>>,
     /// The draw's texture levels prepared for the eight-pixel filter.
     pub levels: &'a UnitLevels<'a>,
+    /// The polygon stipple pattern of a stippled polygon (`RasterDraw::polygon_stipple`: row
+    /// `y mod 32`, the bit of column `x mod 32` at `1 << (31 - x mod 32)`), which the row-pair
+    /// functions apply as a lane mask ([`stipple_block`]); `None` for everything else.
+    pub stipple: Option<&'a [u32; 32]>,
 }
 
 impl<'a> PrimitiveShared<'a> {
@@ -95,6 +101,15 @@ impl<'a> PrimitiveShared<'a> {
             fast: OnceCell::new(),
             steady: OnceCell::new(),
             levels,
+            stipple: None,
+        }
+    }
+
+    /// The same, for a polygon stippled by `pattern` (when it is `Some`).
+    pub fn with_stipple(self, pattern: Option<&'a [u32; 32]>) -> PrimitiveShared<'a> {
+        PrimitiveShared {
+            stipple: pattern,
+            ..self
         }
     }
 }

@@ -61,7 +61,10 @@ pub(super) fn pair_by_rows<'a>(
     for &(y, rows) in pairs {
         for (r, (x0, x1)) in (0..).zip(rows) {
             if x0 < x1 {
-                (ds.span)(ds, tile, y + r, x0, x1, it);
+                match it.shared.stipple {
+                    None => (ds.span)(ds, tile, y + r, x0, x1, it),
+                    Some(p) => span_stippled(ds, tile, y + r, x0, x1, it, p),
+                }
             }
         }
     }
@@ -99,28 +102,20 @@ pub(super) fn blocks<const FOG: bool>(
     it: &Interpolants,
     shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
 ) {
-    let depth_max = group_depth_max(ds);
     let fog = if FOG { lane_fog(ds) } else { None };
-    // With the colour sum the secondary colour is stepped too (no constant shortcut).
     let colors = lane_colors(ds);
-    // A constant primary colour (`Interpolants::constant_primary`: its steps are zero, so
-    // every pixel has the first one's) leaves only z to step per pixel (unless fogged: then
-    // the fog coordinate and 1/w are stepped too, by `SpanRun::next`); the lanes' depths are
-    // then rounded and tested eight at a time, and the colour written to the lanes whole.
-    let constant = (it.constant_primary && fog.is_none() && colors == 4).then(|| {
-        let (y, rows) = pairs.first().copied().unwrap_or_default();
-        let run = SpanRun::new(it, rows[0].0, y as f64 + 0.5, 4);
-        [0, 1, 2, 3].map(|c| [run.color[c]; 8])
-    });
-    // With a constant colour every lane's inputs are written for each block (the colour
-    // once): lanes outside a block's covered ones keep stale values, which nothing reads.
+    // Each lane's stepped values are recorded as the runs step them; the per-pixel arithmetic
+    // of `SpanRun::next` (w, the products by it, the depth) and the depth test then run on the
+    // eight lanes at once (`GroupInputs::load_raw`: the same values). A constant primary
+    // colour (`Interpolants::constant_primary`) is not recorded.
+    let math = LaneMath::new(ds, it, FOG);
+    let read_primary = math.constant.is_none();
     let mut group = GroupInputs::EMPTY;
-    if let Some(primary) = constant {
-        group.primary = primary;
-    }
-    let mut lane_z = [0f64; 8];
-    let mut stored = [0u32; 8];
+    let mut raw = RawLanes::default();
+    let stride = tile.side() as usize;
+    let stipple = it.shared.stipple;
     for &(y, rows) in pairs {
+        let stipple_rows = stipple.map(|p| [stipple_row(p, y), stipple_row(p, y + 1)]);
         let mut runs = [
             SpanRun::new(it, rows[0].0, y as f64 + 0.5, colors),
             SpanRun::new(it, rows[1].0, y as f64 + 1.5, colors),
@@ -140,46 +135,42 @@ pub(super) fn blocks<const FOG: bool>(
         let mut gx = first & !1;
         while gx < end {
             let mut live = 0u8;
-            if constant.is_some() {
-                for (r, &(x0, x1)) in rows.iter().enumerate() {
-                    let row = tile.index(gx, y + r as i32);
-                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
-                        let (lane, j) = (4 * r + j as usize, j as usize);
-                        lane_z[lane] = runs[r].next_z();
-                        stored[lane] = tile.depth[row + j];
-                        group.dst[lane] = u32::from_le_bytes(tile.color[row + j]);
-                        live |= 1 << lane;
+            // Lanes 4r..4r + 4 are pixels row0 + r * stride + j.
+            let row0 = tile.index(gx, y);
+            for (r, &(x0, x1)) in rows.iter().enumerate() {
+                let lo = (x0 - gx).clamp(0, 4) as usize;
+                let hi = (x1 - gx).clamp(0, 4) as usize;
+                if lo >= hi {
+                    continue;
+                }
+                let run = &mut runs[r];
+                // A whole row of four without a restart: unrolled.
+                let whole = lo == 0
+                    && hi == 4
+                    && if r == 0 {
+                        run.record4::<FOG, 0>(&mut raw, read_primary)
+                    } else {
+                        run.record4::<FOG, 1>(&mut raw, read_primary)
+                    };
+                if !whole {
+                    for j in lo..hi {
+                        run.record::<FOG>(&mut raw, 4 * r + j, read_primary);
+                        run.advance::<FOG>();
                     }
                 }
-                (group.depth, group.pass) = match depth_max {
-                    None => ([0; 8], live),
-                    Some(max) => simd::depth8(&lane_z, &stored, live, max, ds.key.depth_func)
-                        .unwrap_or_else(|| {
-                            let mut depth = [0u32; 8];
-                            let mut pass = 0u8;
-                            for lane in (0..8).filter(|j| live & (1 << j) != 0) {
-                                depth[lane] = depth_to_fixed(lane_z[lane], max);
-                                let ok = depth_passes(ds, depth[lane], stored[lane]);
-                                pass |= u8::from(ok) << lane;
-                            }
-                            (depth, pass)
-                        }),
-                };
-            } else {
-                // (Not `after`: a whole copy of `EMPTY` is a call to memset, and a lane's
-                // secondary colour and fog are read only when it is live.)
-                group.primary = GroupInputs::EMPTY.primary;
-                group.depth = [0; 8];
-                group.pass = 0;
-                group.dst = [0; 8];
-                for (r, &(x0, x1)) in rows.iter().enumerate() {
-                    let row = tile.index(gx, y + r as i32);
-                    for j in (x0 - gx).clamp(0, 4)..(x1 - gx).clamp(0, 4) {
-                        let (lane, j) = (4 * r + j as usize, j as usize);
-                        group.add(ds, tile, lane, row + j, runs[r].next::<FOG>(depth_max));
-                        live |= 1 << lane;
-                    }
-                }
+                live |= (((1u32 << hi) - (1u32 << lo)) as u8) << (4 * r);
+                read_row(tile, row0 + r * stride, lo, hi, r, &mut raw);
+            }
+            if live == 0 {
+                gx += 4;
+                continue;
+            }
+            group.load_raw(&raw, live, &math);
+            if let Some(rows) = stipple_rows {
+                // The stipple discards lanes before any per-fragment operation.
+                let keep = stipple_block(rows, gx);
+                live &= keep;
+                group.pass &= keep;
             }
             if ds.key.stencil.is_some() {
                 group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
@@ -187,17 +178,78 @@ pub(super) fn blocks<const FOG: bool>(
             if group.pass != 0 {
                 group.fog_factors(fog);
                 if let Some((words, passed)) = shade(y, gx, &group) {
-                    // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
-                    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
-                    for lane in 0..8 {
-                        if live & (1 << lane) != 0 {
-                            let index = row0 + lane / 4 * stride + lane % 4;
-                            store_lane(ds, tile, lane, index, &words, passed, &group.depth);
-                        }
-                    }
+                    write_rows(ds, tile, row0, stride, live, &words, passed, &group.depth);
                 }
             }
             gx += 4;
+        }
+    }
+}
+
+/// The stored depths and colour words of columns `lo..hi` (within 0..4) of a block's row
+/// `r` starting at pixel `row` of `tile`, into lanes `4r + j` of `raw`: the four columns at
+/// once where they lie in the tile's buffers (columns outside `lo..hi` are then read too and
+/// not used), else one by one.
+#[inline(always)]
+fn read_row(tile: &Tile, row: usize, lo: usize, hi: usize, r: usize, raw: &mut RawLanes) {
+    let lanes = 4 * r..4 * r + 4;
+    if let (Some(depth), Some(color)) = (tile.depth.get(row..row + 4), tile.color.get(row..row + 4))
+    {
+        raw.stored[lanes.clone()].copy_from_slice(depth);
+        for (d, c) in raw.dst[lanes].iter_mut().zip(color) {
+            *d = u32::from_le_bytes(*c);
+        }
+        return;
+    }
+    for j in lo..hi {
+        raw.stored[4 * r + j] = tile.depth[row + j];
+        raw.dst[4 * r + j] = u32::from_le_bytes(tile.color[row + j]);
+    }
+}
+
+/// Stores a block's colour words for the `live` lanes (lane `4r + j` is pixel
+/// `row0 + r * stride + j`; the words of lanes that did not pass are the stored ones), and
+/// with depth writes the depths of the lanes of `passed`: a whole row of four at once.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn write_rows(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    row0: usize,
+    stride: usize,
+    live: u8,
+    words: &[u32; 8],
+    passed: u8,
+    depth: &[u32; 8],
+) {
+    let depth_write = ds.key.depth_write;
+    for r in 0..2 {
+        let row_live = (live >> (4 * r)) & 0xF;
+        if row_live == 0 {
+            continue;
+        }
+        let row = row0 + r * stride;
+        let row_passed = (passed >> (4 * r)) & 0xF;
+        if row_live == 0xF {
+            if let Some(color) = tile.color.get_mut(row..row + 4) {
+                for (c, w) in color.iter_mut().zip(&words[4 * r..4 * r + 4]) {
+                    *c = w.to_le_bytes();
+                }
+                if depth_write && row_passed != 0 {
+                    let d = &mut tile.depth[row..row + 4];
+                    for (j, (old, &new)) in d.iter_mut().zip(&depth[4 * r..4 * r + 4]).enumerate() {
+                        if row_passed & (1 << j) != 0 {
+                            *old = new;
+                        }
+                    }
+                }
+                continue;
+            }
+        }
+        for j in 0..4 {
+            if row_live & (1 << j) != 0 {
+                store_lane(ds, tile, 4 * r + j, row + j, words, passed, depth);
+            }
         }
     }
 }
@@ -207,10 +259,8 @@ pub(super) fn blocks<const FOG: bool>(
 #[inline(never)]
 fn block_stencil(ds: &FragmentDraw, tile: &mut Tile, gx: i32, y: i32, live: u8, pass: u8) -> u8 {
     // Live lanes lie in the tile: pixel (gx + lane % 4, y + lane / 4).
-    let (row0, stride) = (tile.index(gx, y), tile.side() as usize);
-    stencil_lanes(ds, tile, live, pass, |lane| {
-        row0 + lane / 4 * stride + lane % 4
-    })
+    let row0 = tile.index(gx, y);
+    stencil_block(ds, tile, row0, live, pass)
 }
 
 /// Window centre of lane `lane` of the block at column `gx` of the row pair from `y`.
@@ -615,9 +665,9 @@ pub fn span_depth_stencil<'a>(
         for v in &mut z[..n] {
             *v = run.next_z();
         }
-        if n == 8 {
-            // A whole group: one fixed-size copy.
-            stored.copy_from_slice(&tile.depth[start..start + 8]);
+        if let Some(whole) = tile.depth.get(start..start + 8) {
+            // One fixed-size copy (lanes past `n` are not live).
+            stored.copy_from_slice(whole);
         } else {
             stored[..n].copy_from_slice(&tile.depth[start..start + n]);
         }

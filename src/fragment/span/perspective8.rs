@@ -233,8 +233,8 @@ impl<'a> Perspective8<'a> {
     }
 
     /// [`Perspective8::texels_block`] and the tail in one go ([`simd::block_shaded8`]) for a
-    /// block whose live quads take one level: the draw's fixed plan, or magnification of a 2D
-    /// texture. `None` otherwise (the caller takes the usual route: the same pixels).
+    /// 2D texture. `None` for a cube map or where the block kernel does not take the block
+    /// (the caller takes the usual route: the same pixels).
     #[inline(always)]
     pub(super) fn shaded_block(
         &self,
@@ -245,17 +245,13 @@ impl<'a> Perspective8<'a> {
         if self.cube.is_some() {
             return None;
         }
-        let (level, linear, lod) = match self.fixed_plan {
-            Some((level, linear)) => (level, linear, None),
-            None => (0, self.lod.mag_linear(), Some(self.lod.magnified_test()?)),
-        };
         simd::block_shaded8(
             &self.planes,
             x,
-            self.level(level)?,
-            linear,
-            lod,
             group.pass,
+            self.fixed_plan,
+            self.lod,
+            self.levels,
             tail,
             &group.primary,
             &group.dst,

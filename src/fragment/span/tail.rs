@@ -315,8 +315,17 @@ impl<'i> SpanRun<'i> {
         let depth = depth_max.map_or(0, |max| depth_to_fixed(self.z, max));
         // The secondary colour, when the run has it (the colour sum).
         let secondary = (self.count == 8).then(|| self.secondary(w));
+        self.advance::<FOG>();
+        (color, depth, fog, secondary)
+    }
+
+    /// The move to the next pixel that [`Self::next`] makes: a step of z, 1/w, the primary
+    /// colour, the secondary colour when the run has it, and with `FOG` the fog coordinate;
+    /// or a restart.
+    #[inline(always)]
+    pub(super) fn advance<const FOG: bool>(&mut self) {
         if self.restarts() {
-            return (color, depth, fog, secondary);
+            return;
         }
         self.z += self.dz;
         self.inv_w += self.dinv_w;
@@ -333,7 +342,100 @@ impl<'i> SpanRun<'i> {
                 self.color[c] += self.dcolor[c];
             }
         }
-        (color, depth, fog, secondary)
+    }
+
+    /// Four [`Self::record`] and [`Self::advance`] pairs into lanes `4 * ROW..4 * ROW + 4`
+    /// of `raw`, when none of the four moves restarts (else false and nothing done): the same
+    /// sums in the same order, on copies kept in registers.
+    #[inline(always)]
+    pub(super) fn record4<const FOG: bool, const ROW: usize>(
+        &mut self,
+        raw: &mut RawLanes,
+        primary: bool,
+    ) -> bool {
+        if self.left <= 4 {
+            return false;
+        }
+        self.left -= 4;
+        let lanes = 4 * ROW..4 * ROW + 4;
+        let (mut z, mut inv_w) = (self.z, self.inv_w);
+        for z_lane in &mut raw.z[lanes.clone()] {
+            *z_lane = z;
+            z += self.dz;
+        }
+        self.z = z;
+        for w_lane in &mut raw.inv_w[lanes.clone()] {
+            *w_lane = inv_w;
+            inv_w += self.dinv_w;
+        }
+        self.inv_w = inv_w;
+        let channel = |c: usize, v: &mut f32, out: &mut [f32; 8]| {
+            let mut x = *v;
+            for o in &mut out[lanes.clone()] {
+                *o = x;
+                x += self.dcolor[c];
+            }
+            *v = x;
+        };
+        let mut color = self.color;
+        for c in 0..4 {
+            if primary {
+                channel(c, &mut color[c], &mut raw.color[c]);
+            } else {
+                // Not recorded, stepped as `advance` steps it.
+                for _ in 0..4 {
+                    color[c] += self.dcolor[c];
+                }
+            }
+        }
+        if self.count == 8 {
+            for c in 4..7 {
+                channel(c, &mut color[c], &mut raw.color[c]);
+            }
+            for _ in 0..4 {
+                color[7] += self.dcolor[7];
+            }
+        }
+        self.color = color;
+        if FOG {
+            match &mut self.fog {
+                Some((c, dc)) => {
+                    let mut x = *c;
+                    for o in &mut raw.fog[lanes] {
+                        *o = x;
+                        x += *dc;
+                    }
+                    *c = x;
+                }
+                None => raw.fog[lanes].fill(0.0),
+            }
+        }
+        true
+    }
+
+    /// The current pixel's values before the per-pixel arithmetic of [`Self::next`] (z, 1/w,
+    /// the colours as stepped, the fog coordinate), into lane `lane` of `raw`; the primary
+    /// colour only when `primary` (a constant primary colour is not read per lane).
+    #[inline(always)]
+    pub(super) fn record<const FOG: bool>(&self, raw: &mut RawLanes, lane: usize, primary: bool) {
+        raw.z[lane] = self.z;
+        raw.inv_w[lane] = self.inv_w;
+        if primary {
+            for c in 0..4 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if self.count == 8 {
+            for c in 4..7 {
+                raw.color[c][lane] = self.color[c];
+            }
+        }
+        if FOG {
+            raw.fog[lane] = match self.fog {
+                Some((c, _)) => c,
+                None => 0.0,
+            };
+        }
     }
 }
 
@@ -543,6 +645,40 @@ pub(super) fn stencil_lanes(
     pass
 }
 
+/// [`stencil_lanes`] for the live lanes of a 4x2 block whose lanes 0..4 are pixels
+/// `row0..row0 + 4` of `tile` and lanes 4..8 the four from `row0 + side`: the stored values read
+/// and written as two four-byte words, the lanes outside `live` written back as they were
+/// (lanes past the tile's right edge are the next row's first pixels, which nothing else
+/// changes meanwhile). Lane by lane where the upper word would run past the buffer (a block
+/// hanging over the right edge of the tile's top row).
+#[inline(always)]
+pub(super) fn stencil_block(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    row0: usize,
+    live: u8,
+    depth_pass: u8,
+) -> u8 {
+    let Some(st) = ds.key.stencil else {
+        return depth_pass;
+    };
+    let upper = row0 + tile.side() as usize;
+    let values = &mut tile.stencil;
+    if upper + 4 > values.len() {
+        let stride = tile.side() as usize;
+        return stencil_lanes(ds, tile, live, depth_pass, |lane| {
+            row0 + lane / 4 * stride + lane % 4
+        });
+    }
+    let mut old = [0u8; 8];
+    old[..4].copy_from_slice(&values[row0..row0 + 4]);
+    old[4..].copy_from_slice(&values[upper..upper + 4]);
+    let (new, pass) = stencil8_live(&st, &ds.uniforms, &old, depth_pass, live);
+    values[row0..row0 + 4].copy_from_slice(&new[..4]);
+    values[upper..upper + 4].copy_from_slice(&new[4..]);
+    pass
+}
+
 /// The lanes whose stored stencil values `old` pass the stencil test (every lane tested):
 /// SSE2 (every x86-64 has it) or lane by lane ([`stencil_test8_lanes`], the same integer
 /// comparisons).
@@ -583,18 +719,31 @@ pub(super) fn stencil8(
     old: &[u8; 8],
     depth_pass: u8,
 ) -> ([u8; 8], u8) {
+    stencil8_live(st, u, old, depth_pass, 0xFF)
+}
+
+/// [`stencil8`] for the lanes of `live` (a superset of `depth_pass`): the other lanes keep
+/// their values in `old`.
+#[inline(always)]
+pub(super) fn stencil8_live(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: &[u8; 8],
+    depth_pass: u8,
+    live: u8,
+) -> ([u8; 8], u8) {
     #[cfg(target_arch = "x86_64")]
     {
         // SAFETY: SSE2 is part of the x86-64 baseline.
-        unsafe { stencil8_sse2(st, u, old, depth_pass) }
+        unsafe { stencil8_sse2(st, u, old, depth_pass, live) }
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        stencil8_lanes(st, u, old, depth_pass)
+        stencil8_lanes(st, u, old, depth_pass, live)
     }
 }
 
-/// [`stencil8`] lane by lane, in `finish_fragment`'s order.
+/// [`stencil8_live`] lane by lane, in `finish_fragment`'s order.
 #[cfg_attr(target_arch = "x86_64", allow(dead_code))]
 #[inline(always)]
 pub(super) fn stencil8_lanes(
@@ -602,11 +751,15 @@ pub(super) fn stencil8_lanes(
     u: &Uniforms,
     old: &[u8; 8],
     depth_pass: u8,
+    live: u8,
 ) -> ([u8; 8], u8) {
     let test = stencil_test8_lanes(st, u, old);
-    let mut new = [0u8; 8];
+    let mut new = *old;
     for j in 0..8 {
         let bit = 1u8 << j;
+        if live & bit == 0 {
+            continue;
+        }
         let op = if test & bit == 0 {
             st.fail
         } else if depth_pass & bit != 0 {
@@ -624,7 +777,13 @@ pub(super) fn stencil8_lanes(
 #[cfg(target_arch = "x86_64")]
 #[inline]
 #[target_feature(enable = "sse2")]
-fn stencil8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8], depth_pass: u8) -> ([u8; 8], u8) {
+fn stencil8_sse2(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: &[u8; 8],
+    depth_pass: u8,
+    live: u8,
+) -> ([u8; 8], u8) {
     use std::arch::x86_64::*;
     let splat = |b: u8| _mm_set1_epi8(b as i8);
     let ones = splat(0xFF);
@@ -652,12 +811,22 @@ fn stencil8_sse2(st: &StencilKey, u: &Uniforms, old: &[u8; 8], depth_pass: u8) -
     let select = |mask: __m128i, a: __m128i, b: __m128i| {
         _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b))
     };
-    let passed = select(dp, action(st.depth_pass), action(st.depth_fail));
-    let new = select(test, passed, action(st.fail));
+    let both = _mm_and_si128(test, dp);
+    let new = if st.fail == StencilOp::Keep && st.depth_fail == StencilOp::Keep {
+        // Only the lanes passing both tests change (`depth_pass` is within `live`): one
+        // action, one selection (the z-pass volumes and REPLACE-on-pass marking).
+        select(both, action(st.depth_pass), o)
+    } else {
+        let passed = select(dp, action(st.depth_pass), action(st.depth_fail));
+        let new = select(test, passed, action(st.fail));
+        // Lanes outside `live` keep their stored values.
+        let lm = _mm_cmpeq_epi8(_mm_and_si128(splat(live), bits), bits);
+        select(lm, new, o)
+    };
     let mut out = [0u8; 8];
     // SAFETY: `out` holds eight bytes; an unaligned 64-bit store.
     unsafe { _mm_storel_epi64(out.as_mut_ptr() as *mut __m128i, new) };
-    let pass = _mm_movemask_epi8(_mm_and_si128(test, dp)) as u8;
+    let pass = _mm_movemask_epi8(both) as u8;
     (out, pass)
 }
 
@@ -717,13 +886,19 @@ pub(super) fn stencil_row(
         return depth_pass;
     };
     let mut old = [0u8; 8];
-    let values = &mut tile.stencil[base..base + n];
-    if let Ok(whole) = <&mut [u8; 8]>::try_from(&mut *values) {
-        // A whole group: one eight-byte load and store.
-        let (new, pass) = stencil8(&st, &ds.uniforms, whole, depth_pass);
+    if let Some(whole) = tile
+        .stencil
+        .get_mut(base..base + 8)
+        .and_then(|v| <&mut [u8; 8]>::try_from(v).ok())
+    {
+        // One eight-byte load and store, also for a shorter group while eight bytes lie in
+        // the tile (the lanes past `n` written back as they were: nothing else changes them
+        // meanwhile).
+        let (new, pass) = stencil8_live(&st, &ds.uniforms, whole, depth_pass, lane_bits(0..n));
         *whole = new;
         return pass;
     }
+    let values = &mut tile.stencil[base..base + n];
     old[..n].copy_from_slice(values);
     let (new, pass) = stencil8(&st, &ds.uniforms, &old, depth_pass);
     values.copy_from_slice(&new[..n]);
@@ -758,10 +933,97 @@ pub(super) fn stencil_rejects_all(
     true
 }
 
+/// Row `y` of a polygon stipple pattern (`PrimitiveShared::stipple`) with the bit of column
+/// `x mod 32` at `1 << (x mod 32)` (section 3.5.2: a fragment at window (x, y) is kept when bit
+/// (x mod 32, y mod 32) of the pattern is 1).
+#[inline(always)]
+pub(super) fn stipple_row(pattern: &[u32; 32], y: i32) -> u32 {
+    pattern[y.rem_euclid(32) as usize].reverse_bits()
+}
+
+/// The lanes of the 4x2 block at column `gx` of a row pair (lanes 0..4 row `y`, 4..8 row
+/// `y + 1`) that the stipple keeps, from the two rows' [`stipple_row`]s.
+#[inline(always)]
+pub(super) fn stipple_block(rows: [u32; 2], gx: i32) -> u8 {
+    let s = gx.rem_euclid(32) as u32;
+    ((rows[0].rotate_right(s) & 0xF) | ((rows[1].rotate_right(s) & 0xF) << 4)) as u8
+}
+
+/// Pixels `x0..x1` of row `y` of a polygon stippled by `pattern`, by the draw's span
+/// function (for the spans that take no lane mask): the whole row is shaded as it would be
+/// unstippled, then the pixels the stipple discards get their colour, depth and stencil back,
+/// so the kept pixels have exactly the values of the unstippled row (a span's values depend on
+/// where it starts: shading each run of kept pixels alone would round differently). Keys that
+/// count samples for an occlusion query, whose count must leave the discarded fragments out,
+/// take one call per run of kept pixels.
+pub fn span_stippled<'a>(
+    ds: &'a FragmentDraw,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants<'a>,
+    pattern: &[u32; 32],
+) {
+    const MAX: usize = 128;
+    let row = stipple_row(pattern, y);
+    let bit = |x: i32| row & (1 << x.rem_euclid(32)) != 0;
+    let n = (x1 - x0).max(0) as usize;
+    let kept = (x0..x1).filter(|&x| bit(x)).count();
+    if kept == 0 {
+        return;
+    }
+    if kept == n {
+        return (ds.span)(ds, tile, y, x0, x1, it);
+    }
+    if ds.key.count_samples || n > MAX {
+        let mut x = x0;
+        while x < x1 {
+            while x < x1 && !bit(x) {
+                x += 1;
+            }
+            let start = x;
+            while x < x1 && bit(x) {
+                x += 1;
+            }
+            if start < x {
+                (ds.span)(ds, tile, y, start, x, it);
+            }
+        }
+        return;
+    }
+    let at = tile.index(x0, y);
+    let mut color = [[0u8; 4]; MAX];
+    let mut depth = [0u32; MAX];
+    let mut stencil = [0u8; MAX];
+    let range = at..at + n;
+    color[..n].copy_from_slice(&tile.color[range.clone()]);
+    let (has_depth, has_stencil) = (!tile.depth.is_empty(), !tile.stencil.is_empty());
+    if has_depth {
+        depth[..n].copy_from_slice(&tile.depth[range.clone()]);
+    }
+    if has_stencil {
+        stencil[..n].copy_from_slice(&tile.stencil[range]);
+    }
+    (ds.span)(ds, tile, y, x0, x1, it);
+    for (i, x) in (x0..x1).enumerate() {
+        if !bit(x) {
+            tile.color[at + i] = color[i];
+            if has_depth {
+                tile.depth[at + i] = depth[i];
+            }
+            if has_stencil {
+                tile.stencil[at + i] = stencil[i];
+            }
+        }
+    }
+}
+
 /// The lanes `lanes` as a mask.
 #[inline(always)]
 pub(super) fn lane_bits(lanes: std::ops::Range<usize>) -> u8 {
-    lanes.fold(0u8, |m, j| m | 1 << j)
+    // Bits start..end (end at most 8).
+    ((1u16 << lanes.end) - (1u16 << lanes.start.min(lanes.end))) as u8
 }
 
 /// Whether a fragment of stored depth `d` passes the eight-lane paths' depth test against
@@ -840,17 +1102,20 @@ pub(super) fn group_depth_max(ds: &FragmentDraw) -> Option<u32> {
 /// sum and fog included: the lanes' secondary colours and fog factors are computed as the
 /// general path computes them, then added and blended in the tail; the stencil test ahead of
 /// it by [`stencil_lanes`]): no stencil test together with an alpha test (which comes before
-/// it and would decide which fragments update the stencil), no logic op or occlusion
-/// counting, and AVX2 present.
+/// it and would decide which fragments update the stencil; a logic op in place of blending,
+/// [`tail_blend`]), no occlusion counting, and AVX2 present.
 pub fn tail8_applies(key: &FragmentKey) -> bool {
     (key.stencil.is_none() || key.alpha_func.is_none())
-        && key.logic_op.is_none()
         && !key.count_samples
         && crate::common::cpu::available()
 }
 
 /// The eight-fragment tail's blending for the draw's key.
 pub(super) fn tail_blend(ds: &FragmentDraw) -> simd::TailBlend {
+    if let Some(op) = ds.key.logic_op {
+        // A logic op replaces blending (`finish_fragment`'s order).
+        return simd::TailBlend::Logic(op);
+    }
     match ds.key.blend {
         None => simd::TailBlend::None,
         Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
@@ -970,9 +1235,20 @@ mod tests {
                         let dp = (r >> 40) as u8;
                         assert_eq!(
                             stencil8(&st, &u, &old, dp),
-                            stencil8_lanes(&st, &u, &old, dp),
+                            stencil8_lanes(&st, &u, &old, dp, 0xFF),
                             "{st:?} {u:?} {old:?} {dp:#x}"
                         );
+                        // Some lanes not live: they keep their values.
+                        let live = (r >> 48) as u8 | dp;
+                        let (new, pass) = stencil8_live(&st, &u, &old, dp, live);
+                        assert_eq!(
+                            (new, pass),
+                            stencil8_lanes(&st, &u, &old, dp, live),
+                            "{st:?} {u:?} {old:?} {dp:#x} {live:#x}"
+                        );
+                        for j in (0..8).filter(|j| live & (1 << j) == 0) {
+                            assert_eq!(new[j], old[j]);
+                        }
                         assert_eq!(
                             stencil_test8(&st, &u, &old),
                             stencil_test8_lanes(&st, &u, &old),

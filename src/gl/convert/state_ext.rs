@@ -60,6 +60,7 @@ pub fn state_ext_query(e: GLenum) -> Option<StateExtQuery> {
         GL_TEXTURE_BINDING_3D => TextureBinding(super::TextureTarget::T3D),
         GL_TEXTURE_BINDING_CUBE_MAP => TextureBinding(super::TextureTarget::CubeMap),
         GL_TEXTURE_BINDING_RECTANGLE_ARB => TextureBinding(super::TextureTarget::Rectangle),
+        GL_SAMPLER_BINDING => SamplerBinding,
         GL_MAX_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::T2D),
         GL_MAX_3D_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::T3D),
         GL_MAX_CUBE_MAP_TEXTURE_SIZE => MaxTextureSize(super::TextureTarget::CubeMap),

@@ -22,6 +22,7 @@ mod compressed;
 mod copy;
 mod image;
 mod params;
+mod samplers;
 mod storage;
 
 /// A validation failure: the error to record.

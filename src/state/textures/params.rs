@@ -1,6 +1,95 @@
 //! Texture parameters (`glTexParameter*`, `glGetTexParameter*`, `glGetTexLevelParameter*`).
 
 use super::*;
+use crate::texture::SamplerParams;
+
+/// Sets one of the sampler-state parameters (those a sampler object holds too, see
+/// [`TexParam::is_sampler_state`]) in `params`, with `glTexParameter`'s value checks: an
+/// unknown value is `GL_INVALID_ENUM`, an anisotropy below 1 `GL_INVALID_VALUE`. Texture
+/// objects keep border colours clamped to [0, 1] (`clamp_border`); sampler objects keep them
+/// as given, as Mesa does.
+pub(super) fn set_sampler_state(
+    params: &mut SamplerParams,
+    p: TexParam,
+    v: Values,
+    clamp_border: bool,
+) -> Check<()> {
+    let e = v.enumv(0);
+    match p {
+        TexParam::MinFilter => params.min_filter = convert::min_filter(e).ok_or(GL_INVALID_ENUM)?,
+        TexParam::MagFilter => params.mag_filter = convert::mag_filter(e).ok_or(GL_INVALID_ENUM)?,
+        TexParam::WrapS | TexParam::WrapT | TexParam::WrapR => {
+            let i = match p {
+                TexParam::WrapS => 0,
+                TexParam::WrapT => 1,
+                _ => 2,
+            };
+            params.wrap[i] = convert::wrap_mode(e).ok_or(GL_INVALID_ENUM)?;
+        }
+        TexParam::BorderColor => {
+            params.border_color = [0, 1, 2, 3].map(|i| {
+                let c = v.color(i);
+                if clamp_border {
+                    clamp01(c)
+                } else {
+                    c
+                }
+            });
+        }
+        TexParam::MinLod => params.min_lod = v.float(0),
+        TexParam::MaxLod => params.max_lod = v.float(0),
+        TexParam::LodBias => params.lod_bias = v.float(0),
+        TexParam::CompareMode => {
+            params.compare = convert::texture_compare_mode(e).ok_or(GL_INVALID_ENUM)?
+        }
+        TexParam::CompareFunc => {
+            params.compare_func = convert::compare_func(e).ok_or(GL_INVALID_ENUM)?
+        }
+        TexParam::MaxAnisotropy => {
+            let a = v.float(0);
+            if a.is_nan() || a < 1.0 {
+                return Err(GL_INVALID_VALUE);
+            }
+            params.max_anisotropy = a.min(MAX_TEXTURE_MAX_ANISOTROPY);
+        }
+        _ => return Err(GL_INVALID_ENUM),
+    }
+    Ok(())
+}
+
+/// The value of a sampler-state parameter (`None` for image state): numbers, and whether
+/// they are colour components (which map to the full integer range in the `iv` queries).
+pub(super) fn sampler_state_values(q: &SamplerParams, p: TexParam) -> Option<(Vec<f64>, bool)> {
+    let e = |v: GLenum| vec![v as f64];
+    Some(match p {
+        TexParam::MinFilter => (e(q.min_filter.to_gl()), false),
+        TexParam::MagFilter => (e(q.mag_filter.to_gl()), false),
+        TexParam::WrapS => (e(q.wrap[0].to_gl()), false),
+        TexParam::WrapT => (e(q.wrap[1].to_gl()), false),
+        TexParam::WrapR => (e(q.wrap[2].to_gl()), false),
+        TexParam::BorderColor => (q.border_color.iter().map(|&c| c as f64).collect(), true),
+        TexParam::MinLod => (vec![q.min_lod as f64], false),
+        TexParam::MaxLod => (vec![q.max_lod as f64], false),
+        TexParam::LodBias => (vec![q.lod_bias as f64], false),
+        TexParam::CompareMode => (e(convert::compare_mode_to_gl(q.compare)), false),
+        TexParam::CompareFunc => (e(q.compare_func.to_gl()), false),
+        TexParam::MaxAnisotropy => (vec![q.max_anisotropy as f64], false),
+        _ => return None,
+    })
+}
+
+/// A query's values as `glGet*iv` answers them: colour components mapped linearly from
+/// [-1, 1] to the full integer range (truncated toward zero, as the other colour queries
+/// and Mesa's do), other values rounded to the nearest integer (section 6.1.2).
+pub(super) fn ints_of(v: &[f64], color: bool, out: &mut [GLint]) {
+    for (o, &x) in out.iter_mut().zip(v) {
+        *o = if color {
+            (x.clamp(-1.0, 1.0) * i32::MAX as f64) as i32
+        } else {
+            x.round() as i32
+        };
+    }
+}
 
 impl Context {
     pub(super) fn tex_parameter(&mut self, target: GLenum, pname: GLenum, v: Values, vector: bool) {
@@ -19,44 +108,19 @@ impl Context {
             let mut params = obj.params;
             let mut priority = obj.priority;
             let e = v.enumv(0);
+            if p.is_sampler_state() {
+                set_sampler_state(&mut params, p, v, true)?;
+                // Rectangle textures have no mipmaps and only clamp (ARB_texture_rectangle).
+                let shape = matches!(
+                    p,
+                    TexParam::MinFilter | TexParam::WrapS | TexParam::WrapT | TexParam::WrapR
+                );
+                if t == TextureTarget::Rectangle && shape && !params.fit_rectangle() {
+                    return Err(GL_INVALID_ENUM);
+                }
+            }
             match p {
-                TexParam::MinFilter => {
-                    let f = convert::min_filter(e).ok_or(GL_INVALID_ENUM)?;
-                    // Rectangle textures have no mipmaps (ARB_texture_rectangle).
-                    if t == TextureTarget::Rectangle && f.is_mipmap() {
-                        return Err(GL_INVALID_ENUM);
-                    }
-                    params.min_filter = f
-                }
-                TexParam::MagFilter => {
-                    params.mag_filter = convert::mag_filter(e).ok_or(GL_INVALID_ENUM)?
-                }
-                TexParam::WrapS | TexParam::WrapT | TexParam::WrapR => {
-                    let i = match p {
-                        TexParam::WrapS => 0,
-                        TexParam::WrapT => 1,
-                        _ => 2,
-                    };
-                    let w = convert::wrap_mode(e).ok_or(GL_INVALID_ENUM)?;
-                    // Rectangle textures only clamp (ARB_texture_rectangle).
-                    if t == TextureTarget::Rectangle
-                        && !matches!(
-                            w,
-                            convert::WrapMode::Clamp
-                                | convert::WrapMode::ClampToEdge
-                                | convert::WrapMode::ClampToBorder
-                        )
-                    {
-                        return Err(GL_INVALID_ENUM);
-                    }
-                    params.wrap[i] = w;
-                }
-                TexParam::BorderColor => {
-                    params.border_color = [0, 1, 2, 3].map(|i| clamp01(v.color(i)));
-                }
                 TexParam::Priority => priority = clamp01(v.float(0)),
-                TexParam::MinLod => params.min_lod = v.float(0),
-                TexParam::MaxLod => params.max_lod = v.float(0),
                 TexParam::BaseLevel | TexParam::MaxLevel => {
                     let n = v.int(0);
                     if n < 0 {
@@ -73,25 +137,24 @@ impl Context {
                         params.max_level = last.map_or(n, |l| n.clamp(params.base_level.min(l), l));
                     }
                 }
-                TexParam::LodBias => params.lod_bias = v.float(0),
                 TexParam::GenerateMipmap => params.generate_mipmap = v.float(0) != 0.0,
-                TexParam::CompareMode => {
-                    params.compare = convert::texture_compare_mode(e).ok_or(GL_INVALID_ENUM)?
-                }
-                TexParam::CompareFunc => {
-                    params.compare_func = convert::compare_func(e).ok_or(GL_INVALID_ENUM)?
-                }
                 TexParam::DepthTextureMode => {
                     params.depth_mode = convert::depth_texture_mode(e).ok_or(GL_INVALID_ENUM)?
                 }
-                TexParam::MaxAnisotropy => {
-                    let a = v.float(0);
-                    if a.is_nan() || a < 1.0 {
-                        return Err(GL_INVALID_VALUE);
-                    }
-                    params.max_anisotropy = a.min(MAX_TEXTURE_MAX_ANISOTROPY);
-                }
                 TexParam::Resident | TexParam::ImmutableFormat => return Err(GL_INVALID_ENUM),
+                // Set above.
+                TexParam::MinFilter
+                | TexParam::MagFilter
+                | TexParam::WrapS
+                | TexParam::WrapT
+                | TexParam::WrapR
+                | TexParam::BorderColor
+                | TexParam::MinLod
+                | TexParam::MaxLod
+                | TexParam::LodBias
+                | TexParam::CompareMode
+                | TexParam::CompareFunc
+                | TexParam::MaxAnisotropy => {}
                 TexParam::Swizzle(i) => {
                     params.swizzle[i] = convert::swizzle_source(e).ok_or(GL_INVALID_ENUM)?
                 }
@@ -142,27 +205,27 @@ impl Context {
         let q = &obj.params;
         let e = |v: GLenum| vec![v as f64];
         Ok(match p {
-            TexParam::MinFilter => (e(q.min_filter.to_gl()), false),
-            TexParam::MagFilter => (e(q.mag_filter.to_gl()), false),
-            TexParam::WrapS => (e(q.wrap[0].to_gl()), false),
-            TexParam::WrapT => (e(q.wrap[1].to_gl()), false),
-            TexParam::WrapR => (e(q.wrap[2].to_gl()), false),
-            TexParam::BorderColor => (q.border_color.iter().map(|&c| c as f64).collect(), true),
             TexParam::Priority => (vec![obj.priority as f64], false),
-            TexParam::MinLod => (vec![q.min_lod as f64], false),
-            TexParam::MaxLod => (vec![q.max_lod as f64], false),
             TexParam::BaseLevel => (vec![q.base_level as f64], false),
             TexParam::MaxLevel => (vec![q.max_level as f64], false),
-            TexParam::LodBias => (vec![q.lod_bias as f64], false),
             TexParam::GenerateMipmap => (vec![q.generate_mipmap as u8 as f64], false),
-            TexParam::CompareMode => (e(convert::compare_mode_to_gl(q.compare)), false),
-            TexParam::CompareFunc => (e(q.compare_func.to_gl()), false),
             TexParam::DepthTextureMode => (e(q.depth_mode.to_gl()), false),
-            TexParam::MaxAnisotropy => (vec![q.max_anisotropy as f64], false),
             TexParam::Resident => (vec![1.0], false),
             TexParam::ImmutableFormat => (vec![obj.immutable_levels.is_some() as u8 as f64], false),
             TexParam::Swizzle(i) => (e(q.swizzle[i].to_gl()), false),
             TexParam::SwizzleRgba => (q.swizzle.iter().map(|s| s.to_gl() as f64).collect(), false),
+            TexParam::MinFilter
+            | TexParam::MagFilter
+            | TexParam::WrapS
+            | TexParam::WrapT
+            | TexParam::WrapR
+            | TexParam::BorderColor
+            | TexParam::MinLod
+            | TexParam::MaxLod
+            | TexParam::LodBias
+            | TexParam::CompareMode
+            | TexParam::CompareFunc
+            | TexParam::MaxAnisotropy => sampler_state_values(q, p).unwrap_or_default(),
         })
     }
 
@@ -190,15 +253,7 @@ impl Context {
         params: &mut [GLint],
     ) {
         match self.tex_parameter_values(target, pname) {
-            Ok((v, color)) if params.len() >= v.len() => {
-                for (o, x) in params.iter_mut().zip(v) {
-                    *o = if color {
-                        (x * i32::MAX as f64).round() as i32
-                    } else {
-                        x.round() as i32
-                    };
-                }
-            }
+            Ok((v, color)) if params.len() >= v.len() => ints_of(&v, color, params),
             Ok(_) => self.record_error(GL_INVALID_VALUE),
             Err(e) => self.record_error(e),
         }
