@@ -724,7 +724,7 @@ fn lines_by_rows_and_direct_stores_match_the_general_path() {
 
 #[test]
 fn flat_sprites_match_the_general_path() {
-    let states: [Setup; 4] = [
+    let states: [Setup; 7] = [
         ("sprites: alpha test, over, depth writes off", |gl, rng| {
             gl.enable(GL_ALPHA_TEST);
             gl.alpha_func(GL_GREATER, 0.35);
@@ -754,6 +754,50 @@ fn flat_sprites_match_the_general_path() {
             gl.enable(GL_BLEND);
             gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             sprites(gl, rng, true);
+        }),
+        // The flat rows' depth test (`flat.rs`) chooses its function once per row: the
+        // other functions, with and without writes, and no depth test.
+        // The same sprites drawn again (the generator restarted) meet their own depths:
+        // the functions' equal cases decide.
+        (
+            "sprites: GREATER, then LESS and GREATER on equal depths",
+            |gl, rng| {
+                let again = Rng(rng.0);
+                gl.depth_func(GL_GREATER);
+                gl.enable(GL_ALPHA_TEST);
+                gl.alpha_func(GL_GREATER, 0.3);
+                sprites(gl, rng, false);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_ONE, GL_ONE);
+                for func in [GL_LESS, GL_GREATER] {
+                    gl.depth_func(func);
+                    sprites(gl, &mut Rng(again.0), false);
+                }
+            },
+        ),
+        (
+            "sprites: NOTEQUAL, then GEQUAL, EQUAL, LEQUAL, NOTEQUAL on equal depths",
+            |gl, rng| {
+                let again = Rng(rng.0);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                gl.depth_func(GL_NOTEQUAL);
+                sprites(gl, rng, false);
+                gl.depth_mask(0);
+                for func in [GL_GEQUAL, GL_EQUAL, GL_LEQUAL, GL_NOTEQUAL] {
+                    gl.depth_func(func);
+                    sprites(gl, &mut Rng(again.0), false);
+                }
+            },
+        ),
+        ("sprites: no depth test, ALWAYS", |gl, rng| {
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            gl.disable(GL_DEPTH_TEST);
+            sprites(gl, rng, false);
+            gl.enable(GL_DEPTH_TEST);
+            gl.depth_func(GL_ALWAYS);
+            sprites(gl, rng, false);
         }),
     ];
     twins(&states);

@@ -39,6 +39,7 @@ use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 
 mod affine;
 mod coords;
+mod flat;
 mod general;
 mod lanes;
 mod paths;
@@ -46,6 +47,7 @@ mod perspective8;
 mod tail;
 pub use affine::*;
 use coords::*;
+use flat::*;
 use general::*;
 use lanes::*;
 pub use paths::*;

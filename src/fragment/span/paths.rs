@@ -291,6 +291,10 @@ pub fn pair_textured<'a, const TEX: u8>(
     let affine = it.inv_w.a == 0.0 && it.inv_w.b == 0.0 && q.a == 0.0 && q.b == 0.0;
     // The tail (prepared with the levels) exists where the eight-fragment tail applies.
     let tail = it.shared.levels.textured_tail;
+    // A flat sprite's rows with what they share prepared once (`flat.rs`).
+    if let (true, Some(t)) = (affine && flat_applies(ds, it), &tail) {
+        return flat_pairs::<TEX>(ds, tile, pairs, it, unit, t);
+    }
     let sampler = match tail {
         Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, first_y),
         _ => None,
