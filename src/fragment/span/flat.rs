@@ -209,11 +209,14 @@ fn depth_lanes(func: Option<CompareFunc>, d: u32, depth: &[u32], at: usize, hi: 
 }
 
 /// Whether the draw's row function is `span_textured` (`fragment/cache.rs` `select_span`) and
-/// the primitive is aliased: then its constant route is the one [`flat_row`] takes.
+/// the primitive is aliased and unstippled (the stipple is a lane mask of `paths::blocks`'
+/// 4x2 blocks, which the flat rows do not take): then its constant route is the one
+/// [`flat_row`] takes.
 #[inline(always)]
 pub(super) fn flat_applies(ds: &FragmentDraw, it: &Interpolants) -> bool {
     let key = &ds.key;
     it.coverage == 1.0
+        && it.shared.stipple.is_none()
         && key.stencil.is_none()
         && key.logic_op.is_none()
         && !key.count_samples
