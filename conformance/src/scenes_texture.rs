@@ -334,7 +334,7 @@ fn index_textured_rect(gl: &mut dyn Gl, target: GLenum, rect: [f32; 4]) {
 
 /// Colour-index texture images (`GL_COLOR_INDEX` client data, section 3.8.1): indices through
 /// the index shift and offset and the I_TO_R/G/B/A maps, as `GL_BITMAP` bits (LSB first or
-/// not, skipped rows), unsigned bytes, shorts and floats, in glTexImage1D/2D/3D and
+/// not), unsigned bytes, shorts and floats, in glTexImage1D/2D/3D and
 /// glTexSubImage2D.
 fn tex_color_index_uploads(gl: &mut dyn Gl) {
     pixel_space(gl, 64.0, 64.0);
@@ -374,9 +374,11 @@ fn tex_color_index_uploads(gl: &mut dyn Gl) {
     // rows with a row length wrongly, rows 5-7 of an 8-row image with ROW_LENGTH 16 come back
     // 0 from 20 bytes that hold them, and with SKIP_PIXELS 3 the last row's bits past its
     // first byte change from run to run; tests/texture_state.rs checks tilegl against
-    // section 3.6.4.)
+    // section 3.6.4. Nor with GL_UNPACK_SKIP_ROWS: with SKIP_ROWS 1 Mesa 22 drew the last
+    // row's bits 0 and 4 as index 0 in about one run of five (tilegl's picture the same in
+    // every run, through Rust and C); tests/texture_index_stencil.rs checks SKIP_ROWS on
+    // bitmaps against the spec. The rows from the second byte are what SKIP_ROWS 1 selects.)
     gl.pixel_storei(GL_UNPACK_LSB_FIRST, 1);
-    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 1);
     gl.tex_image_2d(
         GL_TEXTURE_2D,
         0,
@@ -386,11 +388,10 @@ fn tex_color_index_uploads(gl: &mut dyn Gl) {
         0,
         GL_COLOR_INDEX,
         GL_BITMAP,
-        Some(&bits),
+        Some(&bits[1..9]),
     );
     index_textured_rect(gl, GL_TEXTURE_2D, [16.0, 0.0, 32.0, 16.0]);
     gl.pixel_storei(GL_UNPACK_LSB_FIRST, 0);
-    gl.pixel_storei(GL_UNPACK_SKIP_ROWS, 0);
     // Unsigned bytes with an index shift of 1 and offset 3 (indices wrap through the 16-entry
     // maps), into an RGB texture.
     let bytes: Vec<u8> = (0..64u32).map(|i| (i * 7 % 251) as u8).collect();
