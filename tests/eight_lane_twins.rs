@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{random_texture, read_depth, read_rgba, Rng};
+use common::{random_texture, read_buffers, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
@@ -86,22 +86,6 @@ fn strip(gl: &mut Context, rng: &mut Rng, translucent: bool, constant: bool) {
     gl.end();
 }
 
-/// The colour, depth and stencil buffers.
-fn buffers(gl: &mut Context) -> (Vec<[u8; 4]>, Vec<u8>, Vec<u8>) {
-    let depth = read_depth(gl);
-    let mut stencil = vec![0u8; (SIZE * SIZE) as usize];
-    gl.read_pixels(
-        0,
-        0,
-        SIZE,
-        SIZE,
-        GL_STENCIL_INDEX,
-        GL_UNSIGNED_BYTE,
-        &mut stencil,
-    );
-    (read_rgba(gl), depth, stencil)
-}
-
 type Setup = (&'static str, fn(&mut Context, &mut Rng));
 
 /// Draws `setup`'s state over [`scene`] on the general path and on the chosen path: the three
@@ -117,7 +101,7 @@ fn twins(states: &[Setup]) {
                 setup(&mut gl, &mut rng);
             }
             assert_eq!(gl.get_error(), GL_NO_ERROR, "{name}");
-            buffers(&mut gl)
+            read_buffers(&mut gl)
         };
         let general = render(true, true);
         let fast = render(false, true);

@@ -12,29 +12,13 @@
 
 mod common;
 
-use common::{random_texture, read_depth, read_rgba, Rng};
+use common::{random_texture, read_buffers, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
 /// Wider and taller than a tile (64), and not a multiple of 32: blocks hang over the tiles'
 /// edges and the pattern wraps inside tiles.
 const SIZE: i32 = 100;
-
-/// The colour, depth and stencil buffers.
-fn buffers(gl: &mut Context) -> (Vec<[u8; 4]>, Vec<u8>, Vec<u8>) {
-    let depth = read_depth(gl);
-    let mut stencil = vec![0u8; (SIZE * SIZE) as usize];
-    gl.read_pixels(
-        0,
-        0,
-        SIZE,
-        SIZE,
-        GL_STENCIL_INDEX,
-        GL_UNSIGNED_BYTE,
-        &mut stencil,
-    );
-    (read_rgba(gl), depth, stencil)
-}
 
 /// Clears to a known background (colour, depth 1, stencil 0x10) with a perspective view.
 fn clear(gl: &mut Context) {
@@ -194,12 +178,12 @@ fn stippled_pictures_are_unstippled_ones_masked_by_the_pattern() {
                 triangles(&mut gl, &mut rng, 120);
                 cover(&mut gl, [0.9, 0.5, 0.2, 0.4]);
                 assert_eq!(gl.get_error(), GL_NO_ERROR, "{tname}, {ename}");
-                buffers(&mut gl)
+                read_buffers(&mut gl)
             };
             let background = {
                 let mut gl = Context::new(SIZE, SIZE);
                 clear(&mut gl);
-                buffers(&mut gl)
+                read_buffers(&mut gl)
             };
             for general in [false, true] {
                 let plain = render(general, false);
@@ -258,7 +242,7 @@ fn twins(name: &str, setup: impl Fn(&mut Context, &mut Rng)) {
             cover(&mut gl, [0.3, 0.6, 0.9, 0.5]);
         }
         assert_eq!(gl.get_error(), GL_NO_ERROR, "{name}");
-        buffers(&mut gl)
+        read_buffers(&mut gl)
     };
     let general = render(true, true);
     let fast = render(false, true);

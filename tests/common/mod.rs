@@ -31,6 +31,15 @@ pub fn read_depth(gl: &mut Context) -> Vec<u8> {
     buf
 }
 
+/// The colour, depth and stencil buffers (as [`read_rgba`], [`read_depth`] and stencil indices
+/// as bytes), bottom row first.
+pub fn read_buffers(gl: &mut Context) -> (Vec<[u8; 4]>, Vec<u8>, Vec<u8>) {
+    let (w, h) = gl.size();
+    let mut stencil = vec![0u8; (w * h) as usize];
+    gl.read_pixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &mut stencil);
+    (read_rgba(gl), read_depth(gl), stencil)
+}
+
 /// One pixel.
 pub fn pixel(gl: &mut Context, x: i32, y: i32) -> [u8; 4] {
     let mut p = [0u8; 4];
