@@ -1120,6 +1120,7 @@ pub(super) fn tail_blend(ds: &FragmentDraw) -> simd::TailBlend {
         None => simd::TailBlend::None,
         Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
         Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
+        Some(b) if b.byte_factors() => simd::TailBlend::Bytes(b),
         Some(b) => simd::TailBlend::General(b, ds.uniforms.blend_color),
     }
 }
