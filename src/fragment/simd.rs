@@ -845,6 +845,125 @@ mod tests {
         }
     }
 
+    /// The 16-bit integer blending (`TailBlend::Bytes`, `TailBlend::AlphaOver`) gives
+    /// `blend::blend`'s f32 result for every pair of source and destination bytes, for keys
+    /// covering every byte factor and equation.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn integer_blending_is_the_f32_blend_for_every_byte_pair() {
+        use crate::common::values::{BlendEquation as E, BlendFactor as F};
+        use crate::fragment::blend::blend;
+        use std::arch::x86_64::*;
+        if !available() {
+            return;
+        }
+        let key = |equation, equation_alpha, src_rgb, dst_rgb, src_alpha, dst_alpha| BlendKey {
+            equation,
+            equation_alpha,
+            src_rgb,
+            dst_rgb,
+            src_alpha,
+            dst_alpha,
+        };
+        let keys = [
+            key(
+                E::Add,
+                E::Add,
+                F::SrcAlpha,
+                F::OneMinusSrcAlpha,
+                F::SrcAlpha,
+                F::OneMinusSrcAlpha,
+            ),
+            key(E::Add, E::Add, F::DstColor, F::Zero, F::DstColor, F::Zero),
+            key(
+                E::Add,
+                E::Add,
+                F::One,
+                F::OneMinusSrcAlpha,
+                F::One,
+                F::OneMinusSrcAlpha,
+            ),
+            key(
+                E::Subtract,
+                E::Add,
+                F::SrcColor,
+                F::OneMinusDstColor,
+                F::DstAlpha,
+                F::One,
+            ),
+            key(
+                E::ReverseSubtract,
+                E::Min,
+                F::OneMinusSrcColor,
+                F::DstAlpha,
+                F::Zero,
+                F::SrcColor,
+            ),
+            key(
+                E::Max,
+                E::Subtract,
+                F::SrcAlphaSaturate,
+                F::OneMinusDstAlpha,
+                F::SrcAlphaSaturate,
+                F::DstColor,
+            ),
+            key(
+                E::Add,
+                E::ReverseSubtract,
+                F::SrcAlphaSaturate,
+                F::SrcColor,
+                F::OneMinusDstAlpha,
+                F::OneMinusSrcColor,
+            ),
+        ];
+        for (k, b) in keys.iter().enumerate() {
+            let blend_mode = if b.is_alpha_over() {
+                TailBlend::AlphaOver
+            } else {
+                TailBlend::Bytes(*b)
+            };
+            assert!(b.byte_factors());
+            let tail = Tail8 {
+                modulate: false,
+                alpha_test: None,
+                alpha_from_primary: false,
+                rgb_from_primary: false,
+                blend: blend_mode,
+                color_mask: u32::MAX,
+                color_sum: false,
+                fog: None,
+            };
+            for s in 0..=255u8 {
+                for d0 in (0..=255u8).step_by(8) {
+                    let src: [[u8; 4]; 8] = std::array::from_fn(|j| {
+                        let d = d0 + j as u8;
+                        [s, d, s ^ d, 255 - s]
+                    });
+                    let dst: [[u8; 4]; 8] = std::array::from_fn(|j| {
+                        let d = d0 + j as u8;
+                        [d, s, 255 - d, d ^ 0x5A]
+                    });
+                    let words = src.map(u32::from_le_bytes);
+                    // SAFETY: AVX2 is present (checked above); `words` holds eight u32.
+                    let (got, _) = unsafe {
+                        let rgba = _mm256_loadu_si256(words.as_ptr() as *const __m256i);
+                        shade8_bytes(&tail, rgba, &dst.map(u32::from_le_bytes), 0xFF)
+                    };
+                    for j in 0..8 {
+                        let want = blend(b, src[j], dst[j], [0.0; 4]);
+                        assert_eq!(
+                            got[j].to_le_bytes(),
+                            want,
+                            "key {k}: {:?} over {:?}",
+                            src[j],
+                            dst[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+
     /// `fog_exp` is e^x within 1.5e-7 absolute for fog's arguments (x <= 0: a factor in [0, 1],
     /// where an 8-bit step is 4e-3) and within 5e-6 relative (the rounding of x log2(e) to
     /// f32) where the result is a normal number, and answers a factor of 0 after clamping for
