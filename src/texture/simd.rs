@@ -720,6 +720,26 @@ pub(crate) mod x86 {
         x: f64,
         count: usize,
     ) -> Option<[[f32; 8]; 2]> {
+        if w == 1.0 && q == 1.0 {
+            coords8_div::<false>(planes, w, q, x, count)
+        } else {
+            coords8_div::<true>(planes, w, q, x, count)
+        }
+    }
+
+    /// [`coords8`], with `DIV` false only for `w` and `q` both 1: a division by 1 is the
+    /// identity (NaN stays NaN, which is refused either way), and skipping the four divisions
+    /// takes the longest latency out of a group (chosen per loop by the caller, not per
+    /// group: a select would still divide).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn coords8_div<const DIV: bool>(
+        planes: [[f64; 3]; 2],
+        w: f64,
+        q: f64,
+        x: f64,
+        count: usize,
+    ) -> Option<[[f32; 8]; 2]> {
         let lanes =
             |first: f64| _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
         let xs = [lanes(x), lanes(x + 4.0)];
@@ -739,16 +759,14 @@ pub(crate) mod x86 {
             );
             let mut halves = [_mm_setzero_ps(); 2];
             for h in 0..2 {
-                let v = _mm256_div_pd(
-                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c),
-                    wv,
-                );
+                let v = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c);
+                let v = if DIV { _mm256_div_pd(v, wv) } else { v };
                 // v - v is 0 exactly when v is finite.
                 let finite = _mm256_cmp_pd::<_CMP_EQ_OQ>(_mm256_sub_pd(v, v), zero);
                 if _mm256_movemask_pd(_mm256_andnot_pd(finite, live[h])) != 0 {
                     return None;
                 }
-                let f = _mm256_cvtpd_ps(_mm256_div_pd(v, qv));
+                let f = _mm256_cvtpd_ps(if DIV { _mm256_div_pd(v, qv) } else { v });
                 let ok = _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps());
                 let j = 4 * h as i32;
                 let live32 = _mm_cmpgt_epi32(
@@ -794,6 +812,26 @@ pub(crate) mod x86 {
         t: __m256,
     ) -> Option<[__m256; 4]> {
         Some(texels_of_words(lvl, filter8_words(lvl, linear, s, t)?))
+    }
+
+    /// The texel words ([`words8`]) of NEAREST or LINEAR filtering of `levels[0]` at `s`,
+    /// `t`, or with a level weight, of both levels mixed as [`filter8_mix`] mixes them (the
+    /// words [`filter8_regs`] and [`filter8_mix`] convert to f32; `levels[0]`'s format).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn filter8_words_mix(
+        levels: &[Level8; 2],
+        linear: bool,
+        s: __m256,
+        t: __m256,
+        weight: Option<f32>,
+    ) -> Option<__m256i> {
+        let t1 = filter8_words(&levels[0], linear, s, t)?;
+        let Some(w) = weight else {
+            return Some(t1);
+        };
+        let t2 = filter8_words(&levels[1], linear, s, t)?;
+        Some(lerp_words(t1, t2, level_weights8(&[w; 8])))
     }
 
     /// [`filter8_mix`](super::filter8_mix).
