@@ -6,7 +6,8 @@
 //! pixels are identical (twin tests in `tests/raster.rs`).
 
 use crate::common::cpu::available;
-use crate::common::values::{CompareFunc, FogMode, LogicOp};
+use crate::common::values::{CompareFunc, FogMode, LogicOp, TexEnvMode};
+use crate::fragment::draw::TextureUnitDraw;
 use crate::fragment::key::BlendKey;
 use crate::texture::sample::LodSelect;
 use crate::texture::simd::{Level8, Texels8};
@@ -168,6 +169,65 @@ pub fn textured8(
     None
 }
 
+/// The groups of eight pixels `gx, gx + 8, ..` (below `x1`) of a flat primitive's row whose
+/// first pixel has index `row` in the tile's buffers at column `x0`, as `flat_row` shades
+/// them with [`textured8`], but with the environment and tail on bytes: the texel words of
+/// the same filter, the unit's environment on bytes with the primary colour words `primary`
+/// ([`crate::fragment::bytenv::cascade`], whose results equal the f32 route's rounded ones
+/// for converted bytes: `bytenv`'s proof), the tail from the bytes (`shade8_bytes`), the
+/// depth test of the constant depth `d` by `func` and its write (`depth_write`). Answers the
+/// first group it did not shade (`x1` or more when it shaded them all): where [`textured8`]
+/// would answer `None` (the caller shades that group one pixel at a time, then calls again
+/// from the next), where the group's pixels are not all in `color` and `depth`, or at once
+/// without AVX2. For tails with [`bytes_apply`] and `primary` the bytes whose conversions are
+/// the group's primary colours.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn flat_groups_bytes(
+    sampling: &Sampling8,
+    tail: &Tail8,
+    unit: &TextureUnitDraw,
+    primary: &[u32; 8],
+    depth_test: (Option<CompareFunc>, u32, bool),
+    (gx, x0, x1, row): (i32, i32, i32, usize),
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+) -> i32 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::flat_groups_bytes(
+                    sampling,
+                    tail,
+                    unit,
+                    primary,
+                    depth_test,
+                    (gx, x0, x1, row),
+                    color,
+                    depth,
+                )
+            };
+        }
+    }
+    let _ = (
+        sampling, tail, unit, primary, depth_test, x0, x1, row, color, depth,
+    );
+    gx
+}
+
+/// Whether [`flat_groups_bytes`] may take the groups of a draw with `tail` and its one unit
+/// `unit` in place of [`textured8`]: nothing after the environment reads the f32 colour (no
+/// alpha test, colour sum or fog) and the environment is `REPLACE` or `MODULATE` (which the
+/// byte environment computes exactly: `bytenv`'s proof).
+pub fn bytes_apply(tail: &Tail8, unit: &TextureUnitDraw) -> bool {
+    tail.alpha_test.is_none()
+        && !tail.color_sum
+        && tail.fog.is_none()
+        && matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
+}
+
 /// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
 /// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
 /// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
@@ -221,12 +281,16 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{After8, Sampling8, Tail8};
+    use crate::common::limits::MAX_TEXTURE_UNITS;
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp};
+    use crate::fragment::bytenv::cascade;
+    use crate::fragment::draw::TextureUnitDraw;
     use crate::fragment::fog::EXP2_TAYLOR;
     use crate::fragment::key::BlendKey;
     use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
-        block_words8, coords8, filter8, filter8_mix, lane_mask, texels_of_words,
+        block_words8, coords8, coords8_div, filter8, filter8_mix, filter8_words_mix, lane_mask,
+        rgba_of_words, texels_of_words,
     };
     use crate::texture::simd::{Level8, Texels8};
 
@@ -721,6 +785,148 @@ mod x86 {
             Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
         };
         Some(shade8(tail, primary, &ct, dst, pass, after))
+    }
+
+    /// All ones in lanes `0..n` (n <= 8), zeros elsewhere.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn first_lanes(n: usize) -> __m256i {
+        _mm256_cmpgt_epi32(
+            _mm256_set1_epi32(n as i32),
+            _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0),
+        )
+    }
+
+    /// `incoming OP stored` per lane for unsigned depths, as `CompareFunc::test` (`None` and
+    /// `ALWAYS` pass): all ones where the test passes.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn depth_compare8(func: Option<CompareFunc>, d: __m256i, old: __m256i) -> __m256i {
+        // Unsigned order through signed comparisons: both sides with the top bit flipped.
+        let flip = _mm256_set1_epi32(i32::MIN);
+        let (a, b) = (_mm256_xor_si256(d, flip), _mm256_xor_si256(old, flip));
+        let all = _mm256_set1_epi32(-1);
+        match func {
+            None | Some(CompareFunc::Always) => all,
+            Some(CompareFunc::Never) => _mm256_setzero_si256(),
+            Some(CompareFunc::Less) => _mm256_cmpgt_epi32(b, a),
+            Some(CompareFunc::LessEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), all),
+            Some(CompareFunc::Equal) => _mm256_cmpeq_epi32(a, b),
+            Some(CompareFunc::Greater) => _mm256_cmpgt_epi32(a, b),
+            Some(CompareFunc::GreaterEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), all),
+            Some(CompareFunc::NotEqual) => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), all),
+        }
+    }
+
+    /// [`super::flat_groups_bytes`].
+    #[allow(clippy::too_many_arguments)]
+    #[target_feature(enable = "avx2")]
+    pub fn flat_groups_bytes(
+        sm: &Sampling8,
+        tail: &Tail8,
+        unit: &TextureUnitDraw,
+        primary: &[u32; 8],
+        depth_test: (Option<CompareFunc>, u32, bool),
+        span: (i32, i32, i32, usize),
+        color: &mut [[u8; 4]],
+        depth: &mut [u32],
+    ) -> i32 {
+        if sm.w == 1.0 && sm.q == 1.0 {
+            flat_groups::<false>(sm, tail, unit, primary, depth_test, span, color, depth)
+        } else {
+            flat_groups::<true>(sm, tail, unit, primary, depth_test, span, color, depth)
+        }
+    }
+
+    /// [`flat_groups_bytes`] with the coordinates' divisions (`coords8_div`).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn flat_groups<const DIV: bool>(
+        sm: &Sampling8,
+        tail: &Tail8,
+        unit: &TextureUnitDraw,
+        primary: &[u32; 8],
+        (func, d, depth_write): (Option<CompareFunc>, u32, bool),
+        (mut gx, x0, x1, row): (i32, i32, i32, usize),
+        color: &mut [[u8; 4]],
+        depth: &mut [u32],
+    ) -> i32 {
+        // SAFETY: eight u32; unaligned load.
+        let primary = unsafe { _mm256_loadu_si256(primary.as_ptr() as *const __m256i) };
+        let tests = !matches!(func, None | Some(CompareFunc::Always));
+        let dv = _mm256_set1_epi32(d as i32);
+        let base = sm.levels[0].base();
+        while gx < x1 {
+            let hi = ((x1 - gx) as usize).min(8);
+            let at = row + (gx - x0) as usize;
+            if color.len() < at + hi || ((tests || depth_write) && depth.len() < at + hi) {
+                return gx;
+            }
+            let live = first_lanes(hi);
+            let mut pass = live;
+            if tests {
+                // SAFETY: lanes 0..hi of the mask are set, and `depth` holds `at + hi`
+                // values (checked above): the masked load reads only inside it.
+                let old =
+                    unsafe { _mm256_maskload_epi32(depth.as_ptr().add(at) as *const i32, live) };
+                pass = _mm256_and_si256(live, depth_compare8(func, dv, old));
+            }
+            let pass_bits = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8;
+            if pass_bits != 0 {
+                let x = gx as f64 + 0.5;
+                let Some([s, t]) = coords8_div::<DIV>(sm.planes, sm.w, sm.q, x, hi) else {
+                    return gx;
+                };
+                // SAFETY: eight f32 each; unaligned loads.
+                let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+                let Some(words) = filter8_words_mix(sm.levels, sm.linear, s, t, sm.weight) else {
+                    return gx;
+                };
+                let mut by_unit = [None; MAX_TEXTURE_UNITS];
+                by_unit[unit.unit] = Some(rgba_of_words(base, words));
+                let rgba = cascade(
+                    std::iter::once((&unit.env, unit.base, unit.unit)),
+                    primary,
+                    &by_unit,
+                );
+                let ptr = color.as_mut_ptr().wrapping_add(at) as *mut i32;
+                // SAFETY: `color` holds `at + hi` pixels (checked above) of four bytes each;
+                // the masked load reads lanes 0..hi only. `dst` holds eight u32.
+                let dst = unsafe {
+                    let mut dst = [0u32; 8];
+                    let old = _mm256_maskload_epi32(ptr, live);
+                    _mm256_storeu_si256(dst.as_mut_ptr() as *mut __m256i, old);
+                    dst
+                };
+                let (res, passed) = shade8_bytes(tail, rgba, &dst, pass_bits);
+                // SAFETY: as the load above, lanes 0..hi only; `res` holds eight u32.
+                unsafe {
+                    let res = _mm256_loadu_si256(res.as_ptr() as *const __m256i);
+                    _mm256_maskstore_epi32(ptr, live, res);
+                }
+                if depth_write && passed != 0 {
+                    // SAFETY: `depth` holds `at + hi` values (checked above); the passed
+                    // lanes are among 0..hi.
+                    unsafe {
+                        _mm256_maskstore_epi32(
+                            depth.as_mut_ptr().add(at) as *mut i32,
+                            lane_mask_i(passed),
+                            dv,
+                        )
+                    };
+                }
+            }
+            gx += 8;
+        }
+        gx
+    }
+
+    /// All ones in the lanes whose bit is set in `m`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn lane_mask_i(m: u8) -> __m256i {
+        _mm256_castps_si256(lane_mask(m))
     }
 
     #[allow(clippy::too_many_arguments)]
