@@ -730,6 +730,10 @@ pub(crate) mod x86 {
         };
         let live = [live(0), live(4)];
         let (wv, qv, zero) = (_mm256_set1_pd(w), _mm256_set1_pd(q), _mm256_setzero_pd());
+        // A division by exactly 1 is the identity in IEEE arithmetic (a NaN stays a NaN, and
+        // is caught as not finite either way): skipped (affine spans have w = 1, and q = 1
+        // unless the coordinates set it).
+        let (by_w, by_q) = (w != 1.0, q != 1.0);
         let mut out = [[0f32; 8]; 2];
         for (k, p) in planes.iter().enumerate() {
             let (a, by, c) = (
@@ -739,16 +743,14 @@ pub(crate) mod x86 {
             );
             let mut halves = [_mm_setzero_ps(); 2];
             for h in 0..2 {
-                let v = _mm256_div_pd(
-                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c),
-                    wv,
-                );
+                let v = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c);
+                let v = if by_w { _mm256_div_pd(v, wv) } else { v };
                 // v - v is 0 exactly when v is finite.
                 let finite = _mm256_cmp_pd::<_CMP_EQ_OQ>(_mm256_sub_pd(v, v), zero);
                 if _mm256_movemask_pd(_mm256_andnot_pd(finite, live[h])) != 0 {
                     return None;
                 }
-                let f = _mm256_cvtpd_ps(_mm256_div_pd(v, qv));
+                let f = _mm256_cvtpd_ps(if by_q { _mm256_div_pd(v, qv) } else { v });
                 let ok = _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps());
                 let j = 4 * h as i32;
                 let live32 = _mm_cmpgt_epi32(

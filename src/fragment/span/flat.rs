@@ -161,9 +161,13 @@ fn flat_row<const TEX: u8>(
                     }
                 }
                 if depth_write && passed != 0 {
-                    for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
-                        if passed & (1 << j) != 0 {
-                            *o = d;
+                    if passed == 0xFF {
+                        // (Every lane passed, so `hi` is 8.)
+                        tile.depth[at..at + 8].fill(d);
+                    } else {
+                        // Without a branch per lane: a lane that did not pass keeps its depth.
+                        for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
+                            *o = if passed & (1 << j) != 0 { d } else { *o };
                         }
                     }
                 }
