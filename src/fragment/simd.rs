@@ -222,7 +222,8 @@ mod x86 {
     use crate::fragment::fog::EXP2_TAYLOR;
     use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
-        block_words8, coords8, filter8, filter8_mix, lane_mask, texels_of_words,
+        block_words8, coords8, filter8_mix_regs, filter8_regs, lane_mask, level_weights8,
+        texels_of_words,
     };
     use crate::texture::simd::{Level8, Texels8};
 
@@ -573,11 +574,20 @@ mod x86 {
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
+        // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
+        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        // (The texels stay in registers: `shade8` would store and load them again.)
         let ct = match sm.weight {
-            None => filter8(&sm.levels[0], sm.linear, &s, &t)?,
-            Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
+            None => filter8_regs(&sm.levels[0], sm.linear, s, t)?,
+            Some(w) => filter8_mix_regs(
+                [&sm.levels[0], &sm.levels[1]],
+                sm.linear,
+                s,
+                t,
+                level_weights8(&[w; 8]),
+            )?,
         };
-        Some(shade8(tail, primary, &ct, dst, pass, after))
+        Some(shade8_regs(tail, primary, &ct, dst, pass, after))
     }
 
     #[allow(clippy::too_many_arguments)]
