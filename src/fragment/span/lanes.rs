@@ -61,6 +61,17 @@ impl LaneMath {
     }
 }
 
+impl LaneMath {
+    /// The run values these lanes read (`load_raw` and `load_raw_lanes` read no others).
+    pub(super) fn reads(&self) -> Reads {
+        Reads {
+            z: self.depth_max.is_some(),
+            inv_w: self.perspective && (self.primary_perspective || self.secondary || self.fog),
+            primary: self.constant.is_none(),
+        }
+    }
+}
+
 impl GroupInputs {
     /// The group of the lanes `live` from their stepped values `raw`, as [`GroupInputs::add`]
     /// with [`SpanRun::next`] gives it lane by lane: colours, depth, fog coordinate, secondary
