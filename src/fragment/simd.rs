@@ -165,6 +165,35 @@ pub fn textured8(
     None
 }
 
+/// [`textured8`] on the colour words of eight pixels of a tile, `color` (R in the first
+/// byte): read from there and written back there (the stored word where a lane did not
+/// pass), answering the lanes that passed every test; `None` (nothing written) where
+/// [`textured8`] answers `None`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn textured8_in_place(
+    sampling: &Sampling8,
+    x: f64,
+    count: usize,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    color: &mut [[u8; 4]; 8],
+    pass: u8,
+    after: &After8,
+) -> Option<u8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::textured8_in_place(sampling, x, count, tail, primary, color, pass, after)
+            };
+        }
+    }
+    let _ = (sampling, x, count, tail, primary, color, pass, after);
+    None
+}
+
 /// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
 /// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
 /// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
@@ -562,6 +591,7 @@ mod x86 {
     }
 
     #[allow(clippy::too_many_arguments)]
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub fn textured8(
         sm: &Sampling8,
@@ -588,6 +618,33 @@ mod x86 {
             )?,
         };
         Some(shade8_regs(tail, primary, &ct, dst, pass, after))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[target_feature(enable = "avx2")]
+    pub fn textured8_in_place(
+        sm: &Sampling8,
+        x: f64,
+        count: usize,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        color: &mut [[u8; 4]; 8],
+        pass: u8,
+        after: &After8,
+    ) -> Option<u8> {
+        let mut dst = [0u32; 8];
+        // SAFETY: `color` and `dst` are 32 bytes each; unaligned load and store.
+        unsafe {
+            let v = _mm256_loadu_si256(color.as_ptr() as *const __m256i);
+            _mm256_storeu_si256(dst.as_mut_ptr() as *mut __m256i, v);
+        }
+        let (words, passed) = textured8(sm, x, count, tail, primary, &dst, pass, after)?;
+        // SAFETY: as above (the words in the tile's byte order: R in the first byte).
+        unsafe {
+            let v = _mm256_loadu_si256(words.as_ptr() as *const __m256i);
+            _mm256_storeu_si256(color.as_mut_ptr() as *mut __m256i, v);
+        }
+        Some(passed)
     }
 
     #[allow(clippy::too_many_arguments)]
