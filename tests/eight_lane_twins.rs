@@ -872,6 +872,83 @@ fn flat_sprites_on_the_byte_route_match_the_general_path() {
     twins(&states);
 }
 
+/// The `overdraw` workload's layers in small: rotated quads over the whole view (each nearer
+/// than the last) of a `size`-square random texture of `format`, trilinear, `wrap` on both
+/// axes, coordinates spanning up to eight periods (minified) or a fraction of one (magnified),
+/// with constant q `q` (the coordinates scaled by it, so the same texels up to rounding).
+fn layers(gl: &mut Context, rng: &mut Rng, format: GLenum, size: i32, wrap: GLenum, q: f32) {
+    random_texture(gl, rng, format, size, size);
+    gl.tex_parameteri(
+        GL_TEXTURE_2D,
+        GL_TEXTURE_MIN_FILTER,
+        GL_LINEAR_MIPMAP_LINEAR as i32,
+    );
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    gl.ortho(-1.0, 1.0, -1.0, 1.0, -1.0, 1.0);
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    gl.depth_func(GL_LESS);
+    gl.begin(GL_QUADS);
+    for k in 0..8 {
+        let scale = [0.3, 1.0, 2.0, 3.0, 5.0, 8.0, 1.5, 0.7][k];
+        let a = rng.range(0.0, 6.3);
+        let (c, s) = (a.cos() * scale, a.sin() * scale);
+        let (u0, v0) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+        gl.color_4f(
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            rng.range(0.3, 1.0),
+            1.0,
+        );
+        let z = 0.9 - 0.2 * k as f32;
+        for (x, y) in [(-1.0f32, -1.0f32), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            let (u, v) = (u0 + c * x - s * y, v0 + s * x + c * y);
+            gl.tex_coord_4f(u * q, v * q, 0.0, q);
+            gl.vertex_3f(x, y, z);
+        }
+    }
+    gl.end();
+}
+
+/// The flat rows of large affine quads (`flat.rs`, the `overdraw` workload's route): the
+/// depth test and writes of whole groups, the coordinates without the divisions by 1, the
+/// filter's texel pairs, against the general path.
+#[test]
+fn flat_layers_match_the_general_path() {
+    let states: [Setup; 6] = [
+        ("layers: RGBA 32, REPEAT", |gl, rng| {
+            layers(gl, rng, GL_RGBA, 32, GL_REPEAT, 1.0)
+        }),
+        ("layers: RGBA 16, CLAMP_TO_EDGE", |gl, rng| {
+            layers(gl, rng, GL_RGBA, 16, GL_CLAMP_TO_EDGE, 1.0)
+        }),
+        ("layers: RGBA 64, REPEAT, q = 2", |gl, rng| {
+            layers(gl, rng, GL_RGBA, 64, GL_REPEAT, 2.0)
+        }),
+        ("layers: RGB 32, REPEAT", |gl, rng| {
+            layers(gl, rng, GL_RGB, 32, GL_REPEAT, 1.0)
+        }),
+        ("layers: LUMINANCE_ALPHA 8, REPEAT", |gl, rng| {
+            layers(gl, rng, GL_LUMINANCE_ALPHA, 8, GL_REPEAT, 1.0)
+        }),
+        (
+            "layers: RGBA 32, REPEAT, depth writes off, blended",
+            |gl, rng| {
+                gl.depth_mask(0);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                layers(gl, rng, GL_RGBA, 32, GL_REPEAT, 1.0)
+            },
+        ),
+    ];
+    twins(&states);
+}
+
 /// 300 sprites of byte colours with a random `format` texture under `mode` filtered by
 /// `min`, texture coordinates given as (s q, t q, 0, q); at `depth` 1 in a window-sized
 /// orthographic view (w = 1), otherwise facing quads at z = `depth` under a frustum.

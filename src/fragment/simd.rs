@@ -228,6 +228,35 @@ pub fn bytes_apply(tail: &Tail8, unit: &TextureUnitDraw) -> bool {
         && matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
 }
 
+/// [`textured8`] on the colour words of eight pixels of a tile, `color` (R in the first
+/// byte): read from there and written back there (the stored word where a lane did not
+/// pass), answering the lanes that passed every test; `None` (nothing written) where
+/// [`textured8`] answers `None`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn textured8_in_place(
+    sampling: &Sampling8,
+    x: f64,
+    count: usize,
+    tail: &Tail8,
+    primary: &[[f32; 8]; 4],
+    color: &mut [[u8; 4]; 8],
+    pass: u8,
+    after: &After8,
+) -> Option<u8> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::textured8_in_place(sampling, x, count, tail, primary, color, pass, after)
+            };
+        }
+    }
+    let _ = (sampling, x, count, tail, primary, color, pass, after);
+    None
+}
+
 /// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
 /// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
 /// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
@@ -289,8 +318,8 @@ mod x86 {
     use crate::fragment::key::BlendKey;
     use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
-        block_words8, coords8, coords8_div, filter8, filter8_mix, filter8_words_mix, lane_mask,
-        rgba_of_words, texels_of_words,
+        block_words8, coords8, coords8_div, filter8_mix_regs, filter8_regs, filter8_words_mix,
+        lane_mask, level_weights8, rgba_of_words, texels_of_words,
     };
     use crate::texture::simd::{Level8, Texels8};
 
@@ -768,6 +797,7 @@ mod x86 {
     }
 
     #[allow(clippy::too_many_arguments)]
+    #[inline]
     #[target_feature(enable = "avx2")]
     pub fn textured8(
         sm: &Sampling8,
@@ -780,11 +810,47 @@ mod x86 {
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
         let [s, t] = coords8(sm.planes, sm.w, sm.q, x, count)?;
+        // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
+        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+        // (The texels stay in registers: `shade8` would store and load them again.)
         let ct = match sm.weight {
-            None => filter8(&sm.levels[0], sm.linear, &s, &t)?,
-            Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
+            None => filter8_regs(&sm.levels[0], sm.linear, s, t)?,
+            Some(w) => filter8_mix_regs(
+                [&sm.levels[0], &sm.levels[1]],
+                sm.linear,
+                s,
+                t,
+                level_weights8(&[w; 8]),
+            )?,
         };
-        Some(shade8(tail, primary, &ct, dst, pass, after))
+        Some(shade8_regs(tail, primary, &ct, dst, pass, after))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[target_feature(enable = "avx2")]
+    pub fn textured8_in_place(
+        sm: &Sampling8,
+        x: f64,
+        count: usize,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        color: &mut [[u8; 4]; 8],
+        pass: u8,
+        after: &After8,
+    ) -> Option<u8> {
+        let mut dst = [0u32; 8];
+        // SAFETY: `color` and `dst` are 32 bytes each; unaligned load and store.
+        unsafe {
+            let v = _mm256_loadu_si256(color.as_ptr() as *const __m256i);
+            _mm256_storeu_si256(dst.as_mut_ptr() as *mut __m256i, v);
+        }
+        let (words, passed) = textured8(sm, x, count, tail, primary, &dst, pass, after)?;
+        // SAFETY: as above (the words in the tile's byte order: R in the first byte).
+        unsafe {
+            let v = _mm256_loadu_si256(words.as_ptr() as *const __m256i);
+            _mm256_storeu_si256(color.as_mut_ptr() as *mut __m256i, v);
+        }
+        Some(passed)
     }
 
     /// All ones in lanes `0..n` (n <= 8), zeros elsewhere.

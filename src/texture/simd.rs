@@ -342,6 +342,59 @@ pub(crate) mod x86 {
         }
     }
 
+    /// The texel words at (x0, y) and (x1, y) of rows y0 and y1 of a four-byte level, as
+    /// [`words8`] reads them, when every lane's x1 is x0 + 1 (no lane wrapped or clamped
+    /// between its two columns): then each lane's two texels are the eight bytes at x0, read
+    /// as one 64-bit element (half the elements [`words8`] gathers). `None` otherwise.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn pairs8(
+        lvl: &Level8,
+        x0: __m256i,
+        x1: __m256i,
+        y0: __m256i,
+        y1: __m256i,
+    ) -> Option<([__m256i; 2], [__m256i; 2])> {
+        if lvl.components != 4 || lvl.tiny.is_some() {
+            return None;
+        }
+        let next = _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1)));
+        if _mm256_movemask_epi8(next) != -1 {
+            return None;
+        }
+        let width = _mm256_set1_epi32(lvl.size[0]);
+        let ptr = lvl.texels.as_ptr() as *const i64;
+        let row = |y: __m256i| {
+            let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, width), x0);
+            // SAFETY: wrapping keeps 0 <= x0 < width and 0 <= y < height, and x1 = x0 + 1 is
+            // a wrapped column too, so x0 + 1 < width: texels idx and idx + 1 both lie in
+            // row y, inside the width * height * 4 bytes `Level8::new` checked `texels`
+            // holds. Each 8-byte read at byte offset idx * 4 lies inside it. Gathers need no
+            // alignment.
+            let (lo, hi) = unsafe {
+                (
+                    _mm256_i32gather_epi64::<4>(ptr, _mm256_castsi256_si128(idx)),
+                    _mm256_i32gather_epi64::<4>(ptr, _mm256_extracti128_si256::<1>(idx)),
+                )
+            };
+            // Each 128-bit half: [a0, a2, b0, b2] (first texels), [a1, a3, b1, b3] (second),
+            // lanes 0, 1, 4, 5 then 2, 3, 6, 7; the 64-bit quarters reordered to 0..8.
+            let first = _mm256_castps_si256(_mm256_shuffle_ps::<0b10_00_10_00>(
+                _mm256_castsi256_ps(lo),
+                _mm256_castsi256_ps(hi),
+            ));
+            let second = _mm256_castps_si256(_mm256_shuffle_ps::<0b11_01_11_01>(
+                _mm256_castsi256_ps(lo),
+                _mm256_castsi256_ps(hi),
+            ));
+            [
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(first),
+                _mm256_permute4x64_epi64::<0b11_01_10_00>(second),
+            ]
+        };
+        Some((row(y0), row(y1)))
+    }
+
     /// R, G, B, A of texels whose stored components are the bytes of `words` (as
     /// [`words8`] reads them): each byte as `byte as f32 * (1 / 255)`, as `TexImage::fetch`
     /// converts, expanded by the base format.
@@ -413,10 +466,13 @@ pub(crate) mod x86 {
         let one = _mm256_set1_epi32(1);
         let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
         let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
-        let t00 = words8(lvl, x0, y0);
-        let t10 = words8(lvl, x1, y0);
-        let t01 = words8(lvl, x0, y1);
-        let t11 = words8(lvl, x1, y1);
+        let ([t00, t10], [t01, t11]) = match pairs8(lvl, x0, x1, y0, y1) {
+            Some(p) => p,
+            None => (
+                [words8(lvl, x0, y0), words8(lvl, x1, y0)],
+                [words8(lvl, x0, y1), words8(lvl, x1, y1)],
+            ),
+        };
         let z = _mm256_setzero_si256();
         let (wxl, wxh) = weights16(wx);
         let (wyl, wyh) = weights16(wy);
@@ -864,6 +920,10 @@ pub(crate) mod x86 {
         };
         let live = [live(0), live(4)];
         let (wv, qv, zero) = (_mm256_set1_pd(w), _mm256_set1_pd(q), _mm256_setzero_pd());
+        // A division by exactly 1 is the identity in IEEE arithmetic (a NaN stays a NaN, and
+        // is caught as not finite either way): skipped (affine spans have w = 1, and q = 1
+        // unless the coordinates set it).
+        let (by_w, by_q) = (w != 1.0, q != 1.0);
         let mut out = [[0f32; 8]; 2];
         for (k, p) in planes.iter().enumerate() {
             let (a, by, c) = (
@@ -874,13 +934,13 @@ pub(crate) mod x86 {
             let mut halves = [_mm_setzero_ps(); 2];
             for h in 0..2 {
                 let v = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c);
-                let v = if DIV { _mm256_div_pd(v, wv) } else { v };
+                let v = if DIV && by_w { _mm256_div_pd(v, wv) } else { v };
                 // v - v is 0 exactly when v is finite.
                 let finite = _mm256_cmp_pd::<_CMP_EQ_OQ>(_mm256_sub_pd(v, v), zero);
                 if _mm256_movemask_pd(_mm256_andnot_pd(finite, live[h])) != 0 {
                     return None;
                 }
-                let f = _mm256_cvtpd_ps(if DIV { _mm256_div_pd(v, qv) } else { v });
+                let f = _mm256_cvtpd_ps(if DIV && by_q { _mm256_div_pd(v, qv) } else { v });
                 let ok = _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps());
                 let j = 4 * h as i32;
                 let live32 = _mm_cmpgt_epi32(
@@ -948,6 +1008,22 @@ pub(crate) mod x86 {
         Some(lerp_words(t1, t2, level_weights8(&[w; 8])))
     }
 
+    /// [`filter8_mix`](super::filter8_mix) with coordinates and texels in registers, the
+    /// weights quantised ([`level_weights8`]).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn filter8_mix_regs(
+        levels: [&Level8; 2],
+        linear: bool,
+        s: __m256,
+        t: __m256,
+        weights: __m256i,
+    ) -> Option<[__m256; 4]> {
+        let t1 = filter8_words(levels[0], linear, s, t)?;
+        let t2 = filter8_words(levels[1], linear, s, t)?;
+        Some(texels_of_words(levels[0], lerp_words(t1, t2, weights)))
+    }
+
     /// [`filter8_mix`](super::filter8_mix).
     #[inline]
     #[target_feature(enable = "avx2")]
@@ -960,9 +1036,7 @@ pub(crate) mod x86 {
     ) -> Option<Texels8> {
         // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
         let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
-        let t1 = filter8_words(levels[0], linear, s, t)?;
-        let t2 = filter8_words(levels[1], linear, s, t)?;
-        let out = texels_of_words(levels[0], lerp_words(t1, t2, level_weights8(weight)));
+        let out = filter8_mix_regs(levels, linear, s, t, level_weights8(weight))?;
         let mut res = [[0f32; 8]; 4];
         for c in 0..4 {
             // SAFETY: `res[c]` holds eight f32; unaligned store.

@@ -149,6 +149,27 @@ fn flat_row<const TEX: u8>(
         let at = row + (gx - x0) as usize;
         let whole = tile.color.len() >= at + 8;
         let pass = depth_lanes(func, d, &tile.depth, at, hi);
+        let x = gx as f64 + 0.5;
+        if pass != 0 && whole {
+            // The eight colour words read and written in place by the kernel (lanes that
+            // did not pass, those from `hi` included, get their own words back).
+            let words: &mut [[u8; 4]; 8] = (&mut tile.color[at..at + 8]).try_into().unwrap();
+            if let Some(passed) =
+                simd::textured8_in_place(&sm, x, hi, tail, &c.primary, words, pass, &c.after)
+            {
+                if depth_write && passed != 0 {
+                    if passed == 0xFF {
+                        tile.depth[at..at + 8].fill(d);
+                    } else {
+                        for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
+                            *o = if passed & (1 << j) != 0 { d } else { *o };
+                        }
+                    }
+                }
+                gx += 8;
+                continue;
+            }
+        }
         if pass != 0 {
             // Lanes from `hi` are not live: what they hold is not read.
             if whole {
@@ -160,7 +181,6 @@ fn flat_row<const TEX: u8>(
                     *o = u32::from_le_bytes(*c);
                 }
             }
-            let x = gx as f64 + 0.5;
             let shaded = simd::textured8(&sm, x, hi, tail, &c.primary, &dst, pass, &c.after)
                 .or_else(|| {
                     let f = FastUnit {
@@ -188,9 +208,13 @@ fn flat_row<const TEX: u8>(
                     }
                 }
                 if depth_write && passed != 0 {
-                    for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
-                        if passed & (1 << j) != 0 {
-                            *o = d;
+                    if passed == 0xFF {
+                        // (Every lane passed, so `hi` is 8.)
+                        tile.depth[at..at + 8].fill(d);
+                    } else {
+                        // Without a branch per lane: a lane that did not pass keeps its depth.
+                        for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
+                            *o = if passed & (1 << j) != 0 { d } else { *o };
                         }
                     }
                 }

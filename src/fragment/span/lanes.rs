@@ -57,6 +57,17 @@ impl LaneMath {
     }
 }
 
+impl LaneMath {
+    /// The run values these lanes read (`load_raw` and `load_raw_lanes` read no others).
+    pub(super) fn reads(&self) -> Reads {
+        Reads {
+            z: self.depth_max.is_some(),
+            inv_w: self.perspective && (self.primary_perspective || self.secondary || self.fog),
+            primary: self.constant.is_none(),
+        }
+    }
+}
+
 /// Every lane's primary colour of primitive `it` when it is constant
 /// (`Interpolants::constant_primary`): the run's constant colour (`SpanRun::new`), which steps
 /// of 0 keep.

@@ -110,6 +110,7 @@ pub(super) fn blocks<const FOG: bool>(
     // colour (`Interpolants::constant_primary`) is not recorded.
     let math = LaneMath::new(ds, it, FOG);
     let read_primary = math.constant.is_none();
+    let reads = math.reads();
     let mut group = GroupInputs::EMPTY;
     let mut raw = RawLanes::default();
     let stride = tile.side() as usize;
@@ -148,9 +149,9 @@ pub(super) fn blocks<const FOG: bool>(
                 let whole = lo == 0
                     && hi == 4
                     && if r == 0 {
-                        run.record4::<FOG, 0>(&mut raw, read_primary)
+                        run.record4::<FOG, 0>(&mut raw, reads)
                     } else {
-                        run.record4::<FOG, 1>(&mut raw, read_primary)
+                        run.record4::<FOG, 1>(&mut raw, reads)
                     };
                 if !whole {
                     for j in lo..hi {

@@ -346,29 +346,36 @@ impl<'i> SpanRun<'i> {
 
     /// Four [`Self::record`] and [`Self::advance`] pairs into lanes `4 * ROW..4 * ROW + 4`
     /// of `raw`, when none of the four moves restarts (else false and nothing done): the same
-    /// sums in the same order, on copies kept in registers.
+    /// sums in the same order, on copies kept in registers. Values the draw's lanes never
+    /// read ([`Reads`]) are neither recorded nor stepped (they are wrong from then on, and
+    /// must stay unread on this run).
     #[inline(always)]
     pub(super) fn record4<const FOG: bool, const ROW: usize>(
         &mut self,
         raw: &mut RawLanes,
-        primary: bool,
+        reads: Reads,
     ) -> bool {
         if self.left <= 4 {
             return false;
         }
         self.left -= 4;
+        let primary = reads.primary;
         let lanes = 4 * ROW..4 * ROW + 4;
         let (mut z, mut inv_w) = (self.z, self.inv_w);
-        for z_lane in &mut raw.z[lanes.clone()] {
-            *z_lane = z;
-            z += self.dz;
+        if reads.z {
+            for z_lane in &mut raw.z[lanes.clone()] {
+                *z_lane = z;
+                z += self.dz;
+            }
+            self.z = z;
         }
-        self.z = z;
-        for w_lane in &mut raw.inv_w[lanes.clone()] {
-            *w_lane = inv_w;
-            inv_w += self.dinv_w;
+        if reads.inv_w {
+            for w_lane in &mut raw.inv_w[lanes.clone()] {
+                *w_lane = inv_w;
+                inv_w += self.dinv_w;
+            }
+            self.inv_w = inv_w;
         }
-        self.inv_w = inv_w;
         let channel = |c: usize, v: &mut f32, out: &mut [f32; 8]| {
             let mut x = *v;
             for o in &mut out[lanes.clone()] {
@@ -378,14 +385,9 @@ impl<'i> SpanRun<'i> {
             *v = x;
         };
         let mut color = self.color;
-        for c in 0..4 {
-            if primary {
+        if primary {
+            for c in 0..4 {
                 channel(c, &mut color[c], &mut raw.color[c]);
-            } else {
-                // Not recorded, stepped as `advance` steps it.
-                for _ in 0..4 {
-                    color[c] += self.dcolor[c];
-                }
             }
         }
         if self.count == 8 {
@@ -437,6 +439,16 @@ impl<'i> SpanRun<'i> {
             };
         }
     }
+}
+
+/// Which of a run's stepped values a draw's lanes read (`LaneMath`): the depth (a depth
+/// range), 1/w (a product by w) and the primary colour (not constant). The others need not be
+/// recorded or stepped ([`SpanRun::record4`]).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Reads {
+    pub(super) z: bool,
+    pub(super) inv_w: bool,
+    pub(super) primary: bool,
 }
 
 /// Whether two lanes' inputs are the same bits.
