@@ -318,6 +318,31 @@ impl LodSelect {
         }
     }
 
+    /// [`LodSelect::plan`] of [`LodSelect::isotropic_lambda`] for these derivatives (after
+    /// [`LodSelect::surely_magnified`]'s test) with the weight of a second level as the
+    /// eight-lane filters use it, quantised to 1/256 (`fixed::level_weight` gives the same
+    /// byte for both): from `floor(256 λ)` ([`LodSelect::quick_lambda256`]) where that
+    /// decides the plan, else from the sampler's λ.
+    #[inline(always)]
+    pub fn quantised_plan(&self, d_dx: [f32; 3], d_dy: [f32; 3]) -> LevelPlan {
+        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let m = sq(self.scaled(d_dx)).max(sq(self.scaled(d_dy)));
+        if m <= self.magnified_below {
+            return self.magnification();
+        }
+        match self.quick_lambda256(m) {
+            Some(g) => match self.plan_of_lambda256(g) {
+                ((level, second, linear), _) if second == level => LevelPlan::One { level, linear },
+                ((a, b, linear), w) => LevelPlan::Two {
+                    levels: [a, b],
+                    linear,
+                    weight: w as f32 * (1.0 / 256.0),
+                },
+            },
+            None => self.plan(self.lambda_from_rho(m.sqrt())),
+        }
+    }
+
     /// The parameters [`LodSelect::quick_lambda256`] adds to `½ log2 ρ²`: the bias, then the
     /// clamp to [min_lod, max_lod].
     #[inline(always)]
@@ -1418,6 +1443,44 @@ mod tests {
         }
         // About 29 %: the clamps of several parameter sets put λ on a step.
         assert!(answered > checked / 5, "{answered} of {checked}");
+    }
+
+    /// `quantised_plan` is `plan(isotropic_lambda)` with the weight quantised alike, for
+    /// derivatives of every scale (zero, NaN and infinite components included) under every
+    /// parameter set of `test_lod_selects`.
+    #[test]
+    fn quantised_plans_are_the_samplers_plans() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut unit = move || {
+            let r = crate::test_support::xorshift(&mut seed);
+            (r >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let q = |p: LevelPlan| match p {
+            LevelPlan::One { level, linear } => (level, level, linear, 0),
+            LevelPlan::Two {
+                levels: [a, b],
+                linear,
+                weight,
+            } => (a, b, linear, fixed::level_weight(weight)),
+        };
+        for lod in test_lod_selects() {
+            for k in 0..200 {
+                let scale = (unit() * 30.0 - 20.0).exp2();
+                let mut d = [0f32; 6].map(|_| (unit() * 2.0 - 1.0) * scale);
+                match k % 40 {
+                    0 => d[1] = f32::NAN,
+                    1 => d[3] = f32::INFINITY,
+                    2 => d = [0.0; 6],
+                    _ => {}
+                }
+                let (dx, dy) = ([d[0], d[1], d[2]], [d[3], d[4], d[5]]);
+                assert_eq!(
+                    q(lod.quantised_plan(dx, dy)),
+                    q(lod.plan(lod.isotropic_lambda(dx, dy))),
+                    "{lod:?} {dx:?} {dy:?}"
+                );
+            }
+        }
     }
 
     #[test]
