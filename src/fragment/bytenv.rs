@@ -134,6 +134,28 @@ pub fn cascade_applies(units: &[(TexEnv, BaseFormat)]) -> bool {
 #[cfg(target_arch = "x86_64")]
 pub(crate) use x86::*;
 
+/// [`exact_words`] as an array, when the processor has AVX2 (`None` otherwise).
+pub fn exact_word_array(c: &crate::texture::simd::Texels8, live: u8) -> Option<[u32; 8]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if crate::common::cpu::available() {
+            // SAFETY: AVX2 is present (checked just above); `out` holds eight u32, an
+            // unaligned store.
+            return unsafe {
+                let w = exact_words(c, live)?;
+                let mut out = [0u32; 8];
+                std::arch::x86_64::_mm256_storeu_si256(
+                    out.as_mut_ptr() as *mut std::arch::x86_64::__m256i,
+                    w,
+                );
+                Some(out)
+            };
+        }
+    }
+    let _ = (c, live);
+    None
+}
+
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use std::arch::x86_64::*;
@@ -319,11 +341,16 @@ mod x86 {
             TexEnvMode::Decal if base == BaseFormat::Rgb => ct.with_alpha(cf),
             TexEnvMode::Combine => {
                 let k = &env.combine;
-                let cc = if super::reads_constant(env) {
-                    Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)))
-                } else {
-                    Px::splat([0; 4])
-                };
+                // Only arguments 0 and 1 are read (the functions this route computes take at
+                // most two); GL's default third source is the constant colour, which costs a
+                // conversion per block if asked for regardless.
+                let constant = CombineSource::Constant;
+                let cc =
+                    if k.src_rgb[..2].contains(&constant) || k.src_alpha[..2].contains(&constant) {
+                        Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)))
+                    } else {
+                        Px::splat([0; 4])
+                    };
                 let a0 = argument(k, 0, cf, ct, cc, inputs);
                 let a1 = argument(k, 1, cf, ct, cc, inputs);
                 let rgb = func(k.rgb, a0, a1, k.rgb_scale);
