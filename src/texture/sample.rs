@@ -71,6 +71,22 @@ pub enum LevelPlan {
     },
 }
 
+/// The bits of √½ as f32: `m - SQRT_HALF_BITS` has in its top bits the exponent k with
+/// m = x 2^k, x in [√½, √2) ([`LodSelect::quick_lambda256`]).
+pub const SQRT_HALF_BITS: u32 = 0x3F35_04F3;
+
+/// `2 / ((2j + 1) ln 2)` for j = 0..4: log2 x = Σ c_j u^(2j+1) with u = (x - 1)/(x + 1).
+pub const LOG2_SERIES: [f64; 4] = [
+    2.0 / std::f64::consts::LN_2,
+    2.0 / (3.0 * std::f64::consts::LN_2),
+    2.0 / (5.0 * std::f64::consts::LN_2),
+    2.0 / (7.0 * std::f64::consts::LN_2),
+];
+
+/// How near a multiple of 1/256 a quickly computed λ may lie and still decide the level
+/// plan ([`LodSelect::quick_lambda256`]): 2^-15.
+pub const QUICK_LOD_MARGIN: f64 = 1.0 / 32768.0;
+
 /// Wraps an integer texel coordinate (section 3.8.8; -1 and `size` mean "border").
 #[inline]
 pub fn wrap_index(i: i64, size: i64, mode: WrapMode, linear: bool) -> i64 {
@@ -220,6 +236,118 @@ impl LodSelect {
         } else {
             lambda
         }
+    }
+
+    /// `floor(256 λ)` for the squared scale factor `m` = ρ² (λ = log2 ρ plus the bias,
+    /// clamped to [min_lod, max_lod]) without `log2f`, when it surely equals `floor(256 λ)`
+    /// of the λ that [`LodSelect::lambda_from_rho`] gives for `m.sqrt()`; `None` otherwise
+    /// (`m` not a positive normal number, or λ within [`QUICK_LOD_MARGIN`] of a multiple of
+    /// 1/256). Every step of the level plan (the switch-over point 0 or 1/2, the halves of
+    /// `*_MIPMAP_NEAREST`, the levels of `*_MIPMAP_LINEAR`, the last level) and of its 8-bit
+    /// weight ([`fixed::level_weight`]) lies on a multiple of 1/256, so `floor(256 λ)` decides
+    /// the plan ([`LodSelect::plan_of_lambda256`]) whenever λ is not near one.
+    ///
+    /// Bound: log2 m = k + log2 x with m = x 2^k, x in [√½, √2) from the bits; log2 x by the
+    /// series `2/ln 2 (u + u³/3 + u⁵/5 + u⁷/7)` of u = (x - 1)/(x + 1), |u| <= 0.1716, in f64
+    /// (truncation below 5e-8). The sampler's λ differs from the exact ½ log2 m + bias by the
+    /// rounding of sqrt (8.6e-8), of log2f (at most one unit in the last place of |log2 ρ| <
+    /// 64: 3.8e-6; glibc documents 0.75) and of the sum with the bias (half a unit of |λ| <
+    /// 128: 3.8e-6). Both lie within 1.2e-5 of the exact value, so within 2.5e-5 < 2^-15
+    /// (the margin) of each other; clamping to [min_lod, max_lod] does not widen the gap.
+    #[inline(always)]
+    pub fn quick_lambda256(&self, m: f32) -> Option<i32> {
+        let bits = m.to_bits();
+        if !(0x0080_0000..0x7F80_0000).contains(&bits) {
+            return None;
+        }
+        let ix = bits.wrapping_sub(SQRT_HALF_BITS) as i32;
+        let k = (ix >> 23) as f64;
+        let x = f32::from_bits((ix as u32 & 0x007F_FFFF) + SQRT_HALF_BITS) as f64;
+        let u = (x - 1.0) / (x + 1.0);
+        let u2 = u * u;
+        let [c1, c3, c5, c7] = LOG2_SERIES;
+        let log2x = u * (c1 + u2 * (c3 + u2 * (c5 + u2 * c7)));
+        let lambda = (k + log2x) * 0.5 + self.bias as f64;
+        let lambda = lambda.min(self.max_lod as f64).max(self.min_lod as f64);
+        let g = lambda * 256.0;
+        let f = g.floor();
+        let frac = g - f;
+        let margin = QUICK_LOD_MARGIN * 256.0;
+        if frac > margin && frac < 1.0 - margin && f.abs() < (1 << 24) as f64 {
+            Some(f as i32)
+        } else {
+            None
+        }
+    }
+
+    /// The level plan as the block kernels use it, `((first, second, linear), weight)` with
+    /// the 8-bit weight of the second level ([`fixed::level_weight`]), for `g` =
+    /// `floor(256 λ)` of a λ that is not a multiple of 1/256 ([`LodSelect::quick_lambda256`]):
+    /// what [`LodSelect::plan`] gives for that λ.
+    #[inline(always)]
+    pub fn plan_of_lambda256(&self, g: i32) -> ((usize, usize, bool), i32) {
+        // λ <= c (c = 0 or 1/2, on the grid): magnification.
+        if g < (self.switch_over * 256.0) as i32 {
+            return ((0, 0, self.mag_linear), 0);
+        }
+        let linear = matches!(
+            self.min_filter,
+            MinFilter::Linear | MinFilter::LinearMipmapNearest | MinFilter::LinearMipmapLinear
+        );
+        let q = self.last_level;
+        match self.min_filter {
+            MinFilter::Nearest | MinFilter::Linear => ((0, 0, linear), 0),
+            MinFilter::NearestMipmapNearest | MinFilter::LinearMipmapNearest => {
+                // 0 for λ <= 1/2, else ceil(λ + 1/2) - 1 = floor(λ + 1/2) (not a half).
+                let d = if g < 128 {
+                    0
+                } else {
+                    (((g + 128) >> 8) as usize).min(q)
+                };
+                ((d, d, linear), 0)
+            }
+            MinFilter::NearestMipmapLinear | MinFilter::LinearMipmapLinear => {
+                if g >= (q as i32) << 8 {
+                    ((q, q, linear), 0)
+                } else {
+                    // c <= λ < q: the level floor(λ), the fraction's 8 bits.
+                    let d = (g >> 8) as usize;
+                    ((d, d + 1, linear), g & 255)
+                }
+            }
+        }
+    }
+
+    /// [`LodSelect::plan`] of [`LodSelect::isotropic_lambda`] for these derivatives (after
+    /// [`LodSelect::surely_magnified`]'s test) with the weight of a second level as the
+    /// eight-lane filters use it, quantised to 1/256 (`fixed::level_weight` gives the same
+    /// byte for both): from `floor(256 λ)` ([`LodSelect::quick_lambda256`]) where that
+    /// decides the plan, else from the sampler's λ.
+    #[inline(always)]
+    pub fn quantised_plan(&self, d_dx: [f32; 3], d_dy: [f32; 3]) -> LevelPlan {
+        let sq = |v: [f32; 3]| v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let m = sq(self.scaled(d_dx)).max(sq(self.scaled(d_dy)));
+        if m <= self.magnified_below {
+            return self.magnification();
+        }
+        match self.quick_lambda256(m) {
+            Some(g) => match self.plan_of_lambda256(g) {
+                ((level, second, linear), _) if second == level => LevelPlan::One { level, linear },
+                ((a, b, linear), w) => LevelPlan::Two {
+                    levels: [a, b],
+                    linear,
+                    weight: w as f32 * (1.0 / 256.0),
+                },
+            },
+            None => self.plan(self.lambda_from_rho(m.sqrt())),
+        }
+    }
+
+    /// The parameters [`LodSelect::quick_lambda256`] adds to `½ log2 ρ²`: the bias, then the
+    /// clamp to [min_lod, max_lod].
+    #[inline(always)]
+    pub fn lambda_terms(&self) -> (f32, f32, f32) {
+        (self.bias, self.min_lod, self.max_lod)
     }
 
     /// [`BoundTexture::isotropic_lambda`].
@@ -1140,6 +1268,62 @@ fn ewa_weight(i: usize) -> f32 {
     (-2.0 * r2).exp()
 }
 
+/// LodSelects of 2D textures over every minification filter, both magnification filters
+/// (so both switch-over points), biases, LOD clamps on and off the 1/256 grid and chain
+/// lengths, for the tests of the quick level plan.
+#[cfg(test)]
+pub(crate) fn test_lod_selects() -> Vec<LodSelect> {
+    let mut out = Vec::new();
+    let filters = [
+        MinFilter::Nearest,
+        MinFilter::Linear,
+        MinFilter::NearestMipmapNearest,
+        MinFilter::LinearMipmapNearest,
+        MinFilter::NearestMipmapLinear,
+        MinFilter::LinearMipmapLinear,
+    ];
+    for min_filter in filters {
+        for mag_linear in [false, true] {
+            for bias in [0.0, -16.0, -2.7, 0.3, 1.0, 16.0] {
+                for (min_lod, max_lod) in [
+                    (-1000.0, 1000.0),
+                    (-2.0, 0.25),
+                    (0.4, 3.0),
+                    (3.0, 9.0),
+                    (2.5, 1.0),
+                    (-1e30, 1e30),
+                ] {
+                    for last_level in [0, 1, 4, 12] {
+                        let switch_over = if mag_linear
+                            && matches!(
+                                min_filter,
+                                MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear
+                            ) {
+                            0.5
+                        } else {
+                            0.0
+                        };
+                        let lod = LodSelect {
+                            bias,
+                            min_lod,
+                            max_lod,
+                            switch_over,
+                            mag_linear,
+                            min_filter,
+                            last_level,
+                            size: [256.0, 256.0, 1.0],
+                            target: TextureTarget::T2D,
+                            magnified_below: LodSelect::magnified_below(switch_over, bias, min_lod),
+                        };
+                        out.push(lod);
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1203,6 +1387,100 @@ mod tests {
             }
         }
         assert!(claimed > checked / 10, "{claimed} of {checked}");
+    }
+
+    /// The level plan from [`LodSelect::quick_lambda256`] and
+    /// [`LodSelect::plan_of_lambda256`] is the sampler's ([`LodSelect::plan_for_rho2`], with
+    /// its weight quantised by `fixed::level_weight`) for every ρ² it answers: random bit
+    /// patterns over the whole f32 range, values next to each step of the plan (λ a multiple
+    /// of 1/256 give or take a few units in the last place) and random values in the usual
+    /// range, under every minification filter, both switch-over points, biases, LOD clamps
+    /// (on and off the 1/256 grid) and chain lengths. It must answer for most of them.
+    #[test]
+    fn quick_plans_are_the_samplers_plans() {
+        let mut seed = 0x0DDB_1A5E_5BAD_5EEDu64;
+        let mut rnd = move || crate::test_support::xorshift(&mut seed);
+        let quantised = |p: LevelPlan| match p {
+            LevelPlan::One { level, linear } => ((level, level, linear), 0),
+            LevelPlan::Two {
+                levels: [a, b],
+                linear,
+                weight,
+            } => ((a, b, linear), fixed::level_weight(weight) as i32),
+        };
+        let (mut answered, mut checked) = (0u64, 0u64);
+        for lod in test_lod_selects() {
+            let bias = lod.bias;
+            for k in 0..3000 {
+                let r = rnd();
+                // λ = j/256 (before the clamps) for a step j of the plan's grid.
+                let j = (r >> 32) as i64 % (40 * 256) - 20 * 256;
+                let at = |l: f64| (2.0 * (l - bias as f64)).exp2() as f32;
+                let m = match k % 4 {
+                    0 => f32::from_bits(r as u32),
+                    1 => {
+                        // Next to a step: a few units in the last place of ρ² off it.
+                        let d = (r % 9) as i32 - 4;
+                        f32::from_bits((at(j as f64 / 256.0).to_bits() as i32 + d) as u32)
+                    }
+                    2 => {
+                        // Near a step: up to 1/20 of a step off it (ten margins).
+                        let e = ((r >> 8) % 2001) as f64 / 2000.0 * 0.1 - 0.05;
+                        at((j as f64 + e) / 256.0)
+                    }
+                    _ => ((r >> 40) as f32 / (1u64 << 24) as f32 * 40.0 - 20.0).exp2(),
+                };
+                checked += 1;
+                if let Some(g) = lod.quick_lambda256(m) {
+                    answered += 1;
+                    assert_eq!(
+                        lod.plan_of_lambda256(g),
+                        quantised(lod.plan_for_rho2(m, 0.0)),
+                        "{lod:?} m {m:e}"
+                    );
+                }
+            }
+        }
+        // About 29 %: the clamps of several parameter sets put λ on a step.
+        assert!(answered > checked / 5, "{answered} of {checked}");
+    }
+
+    /// `quantised_plan` is `plan(isotropic_lambda)` with the weight quantised alike, for
+    /// derivatives of every scale (zero, NaN and infinite components included) under every
+    /// parameter set of `test_lod_selects`.
+    #[test]
+    fn quantised_plans_are_the_samplers_plans() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut unit = move || {
+            let r = crate::test_support::xorshift(&mut seed);
+            (r >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let q = |p: LevelPlan| match p {
+            LevelPlan::One { level, linear } => (level, level, linear, 0),
+            LevelPlan::Two {
+                levels: [a, b],
+                linear,
+                weight,
+            } => (a, b, linear, fixed::level_weight(weight)),
+        };
+        for lod in test_lod_selects() {
+            for k in 0..200 {
+                let scale = (unit() * 30.0 - 20.0).exp2();
+                let mut d = [0f32; 6].map(|_| (unit() * 2.0 - 1.0) * scale);
+                match k % 40 {
+                    0 => d[1] = f32::NAN,
+                    1 => d[3] = f32::INFINITY,
+                    2 => d = [0.0; 6],
+                    _ => {}
+                }
+                let (dx, dy) = ([d[0], d[1], d[2]], [d[3], d[4], d[5]]);
+                assert_eq!(
+                    q(lod.quantised_plan(dx, dy)),
+                    q(lod.plan(lod.isotropic_lambda(dx, dy))),
+                    "{lod:?} {dx:?} {dy:?}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -620,6 +620,55 @@ pub(crate) mod x86 {
         (s, t, ax, ay)
     }
 
+    /// [`LodSelect::quick_lambda256`] of the ρ² of a block's two quads (lanes 0 and 1 of
+    /// `m`) at once, the same f64 operations in the same order: `floor(256 λ)` per quad and
+    /// a mask of the quads (bit 0, bit 1) where it decides the plan.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn quick_lambda256x2(lod: &LodSelect, m: __m128) -> ([i32; 2], u8) {
+        use crate::texture::sample::{LOG2_SERIES, QUICK_LOD_MARGIN, SQRT_HALF_BITS};
+        let m = _mm_castps_si128(m);
+        // Positive normal numbers: 0x0080_0000 <= bits < 0x7F80_0000 (signed: negative
+        // numbers fail).
+        let normal = _mm_and_si128(
+            _mm_cmpgt_epi32(m, _mm_set1_epi32(0x007F_FFFF)),
+            _mm_cmpgt_epi32(_mm_set1_epi32(0x7F80_0000), m),
+        );
+        let half_bits = _mm_set1_epi32(SQRT_HALF_BITS as i32);
+        let ix = _mm_sub_epi32(m, half_bits);
+        let k = _mm_cvtepi32_pd(_mm_srai_epi32::<23>(ix));
+        let xb = _mm_add_epi32(_mm_and_si128(ix, _mm_set1_epi32(0x007F_FFFF)), half_bits);
+        let x = _mm_cvtps_pd(_mm_castsi128_ps(xb));
+        let c = |v: f64| _mm_set1_pd(v);
+        let u = _mm_div_pd(_mm_sub_pd(x, c(1.0)), _mm_add_pd(x, c(1.0)));
+        let u2 = _mm_mul_pd(u, u);
+        let [c1, c3, c5, c7] = LOG2_SERIES;
+        let inner = _mm_add_pd(c(c5), _mm_mul_pd(u2, c(c7)));
+        let inner = _mm_add_pd(c(c3), _mm_mul_pd(u2, inner));
+        let log2x = _mm_mul_pd(u, _mm_add_pd(c(c1), _mm_mul_pd(u2, inner)));
+        let (bias, min_lod, max_lod) = lod.lambda_terms();
+        let lambda = _mm_add_pd(_mm_mul_pd(_mm_add_pd(k, log2x), c(0.5)), c(bias as f64));
+        let lambda = _mm_max_pd(_mm_min_pd(lambda, c(max_lod as f64)), c(min_lod as f64));
+        let g = _mm_mul_pd(lambda, c(256.0));
+        let f = _mm_floor_pd(g);
+        let frac = _mm_sub_pd(g, f);
+        let margin = QUICK_LOD_MARGIN * 256.0;
+        let abs = _mm_andnot_pd(c(-0.0), f);
+        let ok = _mm_and_pd(
+            _mm_and_pd(
+                _mm_cmpgt_pd(frac, c(margin)),
+                _mm_cmplt_pd(frac, c(1.0 - margin)),
+            ),
+            _mm_cmplt_pd(abs, c((1 << 24) as f64)),
+        );
+        let mask = _mm_movemask_pd(ok) & _mm_movemask_ps(_mm_castsi128_ps(normal)) & 3;
+        let gi = _mm_cvttpd_epi32(f);
+        (
+            [_mm_cvtsi128_si32(gi), _mm_extract_epi32::<1>(gi)],
+            mask as u8,
+        )
+    }
+
     /// The stored components (texel words, [`words8`]) of one level plan at `s`, `t`, two
     /// levels mixed with the quantised weight `weight` (0..=255) per lane, and the plan's
     /// first level (whose format the words have).
@@ -661,47 +710,73 @@ pub(crate) mod x86 {
             let (w, l) = plan_words8(levels, (level, level, linear), none, s, t)?;
             return Some((w, Some(l)));
         }
-        let (_, size) = lod.magnified_test()?;
+        let (threshold, size) = lod.magnified_test()?;
         let (s, t, ax, ay) = block_coords8(planes, x, live, Some(size));
-        let (mut axs, mut ays) = ([0f32; 4], [0f32; 4]);
-        // SAFETY: four f32 each; unaligned stores.
-        unsafe {
-            _mm_storeu_ps(axs.as_mut_ptr(), ax);
-            _mm_storeu_ps(ays.as_mut_ptr(), ay);
-        }
-        // Per quad (lanes 0, 1, 4, 5 and 2, 3, 6, 7), when it has live lanes: its levels and
-        // its weight between them.
-        let plan = |q: usize| match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
-            LevelPlan::One { level, linear } => ((level, level, linear), 0),
-            LevelPlan::Two {
-                levels: [a, b],
-                linear,
-                weight,
-            } => (
-                (a, b, linear),
-                crate::texture::fixed::level_weight(weight) as i32,
-            ),
+        // ρ² of quads 0 and 1 in lanes 0 and 1. (`_mm_max_ps` answers `ay` where either is
+        // NaN, `f32::max` the other: for a NaN `ay` the quad is neither surely magnified nor
+        // a positive normal number, and takes the sampler's route, which takes the max
+        // itself.)
+        let m = _mm_max_ps(ax, ay);
+        let m = _mm_shuffle_ps::<0b10_00_10_00>(m, m);
+        let quads = (live & 0x33 != 0) as u8 | ((live & 0xCC != 0) as u8) << 1;
+        // `LodSelect::plan_for_rho2`'s test: surely magnified.
+        let magnified = _mm_movemask_ps(_mm_cmple_ps(m, _mm_set1_ps(threshold))) as u8 & 3;
+        let mag = ((0, 0, lod.mag_linear()), 0);
+        // λ only when a live quad is not surely magnified.
+        let (g, quick) = if quads & !magnified == 0 {
+            ([0; 2], 0)
+        } else {
+            quick_lambda256x2(lod, m)
         };
-        let quad_lanes = [0x33u8, 0xCC];
-        let plans = [0, 1].map(|q| (live & quad_lanes[q] != 0).then(|| plan(q)));
-        let (words, level) = match plans {
-            [Some((p0, w0)), Some((p1, w1))] if p0 == p1 => {
-                // One plan: filtered together, each quad with its own weight.
-                let first = _mm256_castps_si256(lane_mask(0x33));
-                let weight =
-                    _mm256_blendv_epi8(_mm256_set1_epi32(w1), _mm256_set1_epi32(w0), first);
-                plan_words8(levels, p0, weight, s, t)?
+        // Per quad (lanes 0, 1, 4, 5 and 2, 3, 6, 7), when it has live lanes: its levels and
+        // its weight between them; from floor(256 λ) where that decides them, else from
+        // the sampler's λ.
+        let plan = |q: usize| {
+            if magnified & (1 << q) != 0 {
+                return mag;
             }
-            [Some((p0, w0)), Some((p1, w1))] => {
-                let (a, level) = plan_words8(levels, p0, _mm256_set1_epi32(w0), s, t)?;
-                let (b, _) = plan_words8(levels, p1, _mm256_set1_epi32(w1), s, t)?;
-                let first = _mm256_castps_si256(lane_mask(0x33));
-                (_mm256_blendv_epi8(b, a, first), level)
+            if quick & (1 << q) != 0 {
+                return lod.plan_of_lambda256(g[q]);
             }
-            [Some((p, w)), None] | [None, Some((p, w))] => {
-                plan_words8(levels, p, _mm256_set1_epi32(w), s, t)?
+            let (mut axs, mut ays) = ([0f32; 4], [0f32; 4]);
+            // SAFETY: four f32 each; unaligned stores.
+            unsafe {
+                _mm_storeu_ps(axs.as_mut_ptr(), ax);
+                _mm_storeu_ps(ays.as_mut_ptr(), ay);
             }
-            [None, None] => return Some((_mm256_setzero_si256(), None)),
+            match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
+                LevelPlan::One { level, linear } => ((level, level, linear), 0),
+                LevelPlan::Two {
+                    levels: [a, b],
+                    linear,
+                    weight,
+                } => (
+                    (a, b, linear),
+                    crate::texture::fixed::level_weight(weight) as i32,
+                ),
+            }
+        };
+        if quads == 0 {
+            return Some((_mm256_setzero_si256(), None));
+        }
+        // A quad without live lanes takes the other's plan (its lanes are not stored).
+        let (p0, w0) = plan((quads & 1 == 0) as usize);
+        let (p1, w1) = if quads == 3 { plan(1) } else { (p0, w0) };
+        let first = || _mm256_castps_si256(lane_mask(0x33));
+        let weight = |w0: i32, w1: i32| {
+            if w0 == w1 {
+                _mm256_set1_epi32(w0)
+            } else {
+                _mm256_blendv_epi8(_mm256_set1_epi32(w1), _mm256_set1_epi32(w0), first())
+            }
+        };
+        let (words, level) = if p0 == p1 {
+            // One plan: filtered together, each quad with its own weight.
+            plan_words8(levels, p0, weight(w0, w1), s, t)?
+        } else {
+            let (a, level) = plan_words8(levels, p0, _mm256_set1_epi32(w0), s, t)?;
+            let (b, _) = plan_words8(levels, p1, _mm256_set1_epi32(w1), s, t)?;
+            (_mm256_blendv_epi8(b, a, first()), level)
         };
         Some((words, Some(level)))
     }
@@ -1048,6 +1123,42 @@ pub(crate) mod x86 {
 
 #[cfg(test)]
 mod tests {
+
+    /// `quick_lambda256x2` gives `LodSelect::quick_lambda256` for both quads (lanes 0 and
+    /// 1), bit patterns over the whole range (NaN, infinities, zeros, subnormal and negative
+    /// numbers included) and values in the usual range.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn quick_lambdas_of_two_quads_are_the_scalar_ones() {
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let mut seed = 0xA076_1D64_78BD_642Fu64;
+        let specials = [f32::NAN, f32::INFINITY, 0.0, -0.0, 1e-40, -3.0, 1.0, 4.0];
+        for lod in crate::texture::sample::test_lod_selects() {
+            for _ in 0..1000 {
+                let mut v = [0f32; 4];
+                for x in v.iter_mut() {
+                    let r = crate::test_support::xorshift(&mut seed);
+                    *x = match r % 5 {
+                        0 => f32::from_bits((r >> 32) as u32),
+                        1 => specials[(r >> 40) as usize % specials.len()],
+                        _ => ((r >> 40) as f32 / (1u64 << 24) as f32 * 60.0 - 30.0).exp2(),
+                    };
+                }
+                // SAFETY: AVX2 is present (checked above); the load reads four f32.
+                let (g, mask) = unsafe {
+                    super::x86::quick_lambda256x2(&lod, std::arch::x86_64::_mm_loadu_ps(v.as_ptr()))
+                };
+                assert_eq!(mask & !3, 0);
+                for q in 0..2 {
+                    let got = (mask & (1 << q) != 0).then_some(g[q]);
+                    assert_eq!(got, lod.quick_lambda256(v[q]), "{:e}", v[q]);
+                }
+            }
+        }
+    }
+
     /// The eight-lane level weights are `fixed::level_weight` lane by lane: special values
     /// (NaN, infinities, zeros of both signs, values around the steps and past the ends) and
     /// random bit patterns and fractions.

@@ -285,11 +285,8 @@ impl<'a> Perspective8<'a> {
                 continue;
             }
             let (dx, dy) = derivatives(k);
-            let plan = if self.lod.surely_magnified(dx, dy) {
-                self.lod.magnification()
-            } else {
-                self.lod.plan(self.lod.isotropic_lambda(dx, dy))
-            };
+            // The weight quantised as `filter8_mix` quantises it.
+            let plan = self.lod.quantised_plan(dx, dy);
             *pl = match plan {
                 LevelPlan::One { level, linear } => (level, level, linear),
                 LevelPlan::Two {
@@ -464,7 +461,8 @@ impl Perspective8<'_> {
                 None => {
                     let (dx, dy) =
                         cube_face_derivatives(face, st, coords[j], grads[j].0, grads[j].1);
-                    match self.lod.plan(self.lod.isotropic_lambda(dx, dy)) {
+                    // The weight quantised as `filter8_mix` quantises it.
+                    match self.lod.quantised_plan(dx, dy) {
                         LevelPlan::One { level, linear } => (face, level, level, linear),
                         LevelPlan::Two {
                             levels: [a, b],
