@@ -364,6 +364,7 @@ pub fn pair_sampled8<'a>(
     } = Sampled8::new(ds, it, first_y, true);
     let mut samplers_y = first_y;
     let byte_env = ds.key.byte_env && crate::common::cpu::available();
+    let fused = fused_unit(ds, single);
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
             Sampled8::place_samplers(&mut samplers, ds, it, y, true);
@@ -373,6 +374,13 @@ pub fn pair_sampled8<'a>(
         if byte_env {
             // SAFETY: AVX2 is present (`byte_env` checked it).
             if let Some(done) = unsafe { byte_block(ds, &samplers, &tail, gx, group) } {
+                return Some(done);
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        if let (Some(fused), Some(sampler)) = (fused, &samplers[0]) {
+            // SAFETY: AVX2 is present (`fused_unit` checked it).
+            if let Some(done) = unsafe { fused_block(fused, sampler, &tail, gx, group) } {
                 return Some(done);
             }
         }
@@ -396,6 +404,78 @@ pub fn pair_sampled8<'a>(
         }
         sampled8_shade(ds, single, &tail, group, &by_unit)
     });
+}
+
+/// How [`pair_sampled8`] shades the blocks of a one-unit draw in one go ([`fused_block`]):
+/// the texels left in registers, then the tail (one REPLACE or MODULATE unit, as
+/// `pair_textured`'s blocks) or the compiled cascade and the tail.
+#[derive(Clone, Copy)]
+enum Fused<'a> {
+    Tail,
+    Program(&'a crate::fragment::cascade::Program),
+}
+
+/// The fused form of a draw's blocks: one unit on a 2D texture (a cube map's sampler does
+/// not take it), AVX2 present; `None` for the other draws (the general block route).
+fn fused_unit(ds: &FragmentDraw, single: SingleUnit) -> Option<Fused<'_>> {
+    if ds.units.len() != 1 || !crate::common::cpu::available() {
+        return None;
+    }
+    match (single, &ds.cascade) {
+        (Some(_), _) => Some(Fused::Tail),
+        // Only the unit's own texel is read (a crossbar source of an absent unit reads
+        // the incoming colour: `Program::new` resolved it).
+        (None, Some(p)) if p.texel_units().all(|u| u == ds.units[0].unit) => {
+            Some(Fused::Program(p))
+        }
+        _ => None,
+    }
+}
+
+/// A block of a one-unit draw ([`fused_unit`]) with the texels in registers: the same
+/// colour words as the general block route (`texels_block`, then `sampled8_shade`: the same
+/// filter, the same cascade operations, the same tail). `None` (the caller takes the general
+/// route) for a cube map or where the block filter does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn fused_block(
+    fused: Fused,
+    sampler: &Perspective8,
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    if sampler.cube.is_some() {
+        return None;
+    }
+    let x = gx as f64 + 0.5;
+    match fused {
+        Fused::Tail => simd::block_shaded8(
+            &sampler.planes,
+            x,
+            group.pass,
+            sampler.fixed_plan,
+            sampler.lod,
+            sampler.levels,
+            tail,
+            &group.primary,
+            &group.dst,
+            &group.after,
+        ),
+        Fused::Program(program) => simd::block_combined8(
+            &sampler.planes,
+            x,
+            group.pass,
+            sampler.fixed_plan,
+            sampler.lod,
+            sampler.levels,
+            program,
+            tail,
+            &group.primary,
+            &group.dst,
+            &group.after,
+        ),
+    }
 }
 
 /// A block of a `FragmentKey::byte_env` draw on bytes (`fragment::bytenv`): every unit's
