@@ -129,6 +129,24 @@ struct Arg1 {
     one_minus: bool,
 }
 
+impl Arg1 {
+    /// The registers `Single::run` reads for R, G, B (alpha: the last) from its table of
+    /// the primary colour (0..4), the texel (4..8), the constant colour (8..12) and zero (12).
+    fn index(self) -> [u8; 3] {
+        let first = match self.src {
+            Src1::Primary => 0,
+            Src1::Texel => 4,
+            Src1::Constant => 8,
+            Src1::Zero => return [12; 3],
+        };
+        if self.alpha {
+            [first + 3; 3]
+        } else {
+            [first, first + 1, first + 2]
+        }
+    }
+}
+
 /// The environment of a draw's only unit under `GL_COMBINE`, its sources resolved, for a
 /// block kernel that keeps every value in registers (`Single::run`): the operations of
 /// `texenv::combine` on the same values in the same order, so the same bits (twin
@@ -139,6 +157,9 @@ pub struct Single {
     alpha: CombineFunc,
     rgb_args: [Arg1; 3],
     alpha_args: [Arg1; 3],
+    /// `Arg1::index` of each argument, resolved once (R, G, B; alpha arguments: the last).
+    rgb_index: [[u8; 3]; 3],
+    alpha_index: [u8; 3],
     rgb_scale: f32,
     alpha_scale: f32,
     constant: [f32; 4],
@@ -184,6 +205,8 @@ impl Single {
             alpha: k.alpha,
             rgb_args,
             alpha_args,
+            rgb_index: rgb_args.map(Arg1::index),
+            alpha_index: alpha_args.map(|a| a.index()[2]),
             rgb_scale: k.rgb_scale as f32,
             alpha_scale: k.alpha_scale as f32,
             constant: env.color,
@@ -576,7 +599,7 @@ mod x86 {
     use std::arch::x86_64::*;
     use std::mem::MaybeUninit;
 
-    use super::{Arg1, Kind, Op, Program, Single, Src1};
+    use super::{Kind, Op, Program, Single};
     use crate::common::limits::MAX_TEXTURE_UNITS;
     use crate::common::values::CombineFunc;
     use crate::fragment::texenv::{Avx8, Lanes};
@@ -672,38 +695,42 @@ mod x86 {
             let zero = Avx8(_mm256_setzero_ps());
             let one = Avx8::splat(1.0);
             let half = Avx8::splat(0.5);
-            let pick = |a: Arg1| -> [__m256; 4] {
-                match a.src {
-                    Src1::Primary => p,
-                    Src1::Texel => t,
-                    Src1::Constant => [
-                        _mm256_set1_ps(self.constant[0]),
-                        _mm256_set1_ps(self.constant[1]),
-                        _mm256_set1_ps(self.constant[2]),
-                        _mm256_set1_ps(self.constant[3]),
-                    ],
-                    Src1::Zero => [_mm256_setzero_ps(); 4],
-                }
-            };
-            // `operand_rgb` and `operand_alpha` of the picked source.
+            // The sources by `Arg1::index`: primary, texel, constant, zero (indexed in
+            // memory: one load per argument and channel, no selects).
+            let k = |c: usize| _mm256_set1_ps(self.constant[c]);
+            let z = _mm256_setzero_ps();
+            let tab: [__m256; 16] = [
+                p[0],
+                p[1],
+                p[2],
+                p[3],
+                t[0],
+                t[1],
+                t[2],
+                t[3],
+                k(0),
+                k(1),
+                k(2),
+                k(3),
+                z,
+                z,
+                z,
+                z,
+            ];
+            let at = |i: u8| Avx8(tab[i as usize & 15]);
+            // `operand_rgb` and `operand_alpha` of the source.
             let arg_rgb = |i: usize| -> [Avx8; 3] {
-                let a = self.rgb_args[i];
-                let v = pick(a);
-                let v = if a.alpha {
-                    [Avx8(v[3]); 3]
-                } else {
-                    [Avx8(v[0]), Avx8(v[1]), Avx8(v[2])]
-                };
-                if a.one_minus {
+                let idx = self.rgb_index[i];
+                let v = [at(idx[0]), at(idx[1]), at(idx[2])];
+                if self.rgb_args[i].one_minus {
                     [one.sub(v[0]), one.sub(v[1]), one.sub(v[2])]
                 } else {
                     v
                 }
             };
             let arg_a = |i: usize| -> Avx8 {
-                let a = self.alpha_args[i];
-                let v = Avx8(pick(a)[3]);
-                if a.one_minus {
+                let v = at(self.alpha_index[i]);
+                if self.alpha_args[i].one_minus {
                     one.sub(v)
                 } else {
                     v

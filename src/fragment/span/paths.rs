@@ -356,6 +356,13 @@ pub fn pair_sampled8<'a>(
     if it.coverage != 1.0 {
         return pair_by_rows(ds, tile, pairs, it);
     }
+    #[cfg(target_arch = "x86_64")]
+    if !ds.key.byte_env {
+        let (single, tail) = sampled8_tail(ds);
+        if let Some(fused) = fused_unit(ds, single) {
+            return pair_fused(ds, tile, pairs, it, fused, single, &tail);
+        }
+    }
     let Sampled8 {
         mut samplers,
         single,
@@ -430,6 +437,57 @@ fn fused_unit(ds: &FragmentDraw, single: SingleUnit) -> Option<Fused<'_>> {
         }
         _ => None,
     }
+}
+
+/// [`pair_sampled8`] for a one-unit draw with a fused form ([`fused_unit`]) and without the
+/// byte environment: the unit's block sampler alone (not the eight-unit arrays), each block
+/// by [`fused_block`], else by the general block route (the unit's texels, then
+/// [`sampled8_shade`]). The same pixels.
+#[cfg(target_arch = "x86_64")]
+#[allow(clippy::too_many_arguments)]
+fn pair_fused<'a>(
+    ds: &'a FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants<'a>,
+    fused: Fused,
+    single: SingleUnit,
+    tail: &Tail8,
+) {
+    let (Some(unit), Some(&(first_y, _))) = (ds.units.first(), pairs.first()) else {
+        return;
+    };
+    let mut sampler = Perspective8::block(unit, 0, it, first_y);
+    let mut sampler_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != sampler_y {
+            sampler = Perspective8::block(unit, 0, it, y);
+            sampler_y = y;
+        }
+        if let Some(s) = &sampler {
+            // SAFETY: AVX2 is present (`fused_unit` checked it).
+            if let Some(done) = unsafe { fused_block(fused, s, tail, gx, group) } {
+                return Some(done);
+            }
+        }
+        let mut out = [[0f32; 8]; 4];
+        let x = gx as f64 + 0.5;
+        if !sampler
+            .as_ref()
+            .is_some_and(|p| p.texels_block(x, group.pass, &mut out))
+        {
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = unit_texel(unit, it, x, yc);
+                for c in 0..4 {
+                    out[c][lane] = t[c];
+                }
+            }
+        }
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        by_unit[unit.unit] = Some(out);
+        sampled8_shade(ds, single, tail, group, &by_unit)
+    });
 }
 
 /// A block of a one-unit draw ([`fused_unit`]) with the texels in registers: the same
