@@ -1051,9 +1051,131 @@ fn byte_environment_matches_the_general_path() {
     twins(&states);
 }
 
+/// Cascades of `MODULATE` units only on the sampled row pairs (`pair_sampled8`'s f32 route,
+/// whose environment multiplies on registers without the compiled program): RGBA, LUMINANCE,
+/// ALPHA, INTENSITY and LUMINANCE_ALPHA bases, random colours, with and without fog and
+/// blending, against the general path's `texenv::apply`.
+#[test]
+fn modulate_units_match_the_general_path() {
+    let states: [Setup; 4] = [
+        ("RGBA trilinear x LUMINANCE, random colours", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGBA,
+                32,
+                GL_LINEAR_MIPMAP_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_LUMINANCE,
+                16,
+                GL_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("RGB x ALPHA, EXP2 fog", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGB,
+                16,
+                GL_NEAREST_MIPMAP_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_ALPHA,
+                8,
+                GL_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.2);
+            gl.fogfv(GL_FOG_COLOR, &[0.3, 0.6, 0.9, 0.5]);
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "three units: INTENSITY, LUMINANCE_ALPHA, RGBA, alpha over",
+            |gl, rng| {
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_INTENSITY,
+                    16,
+                    GL_LINEAR_MIPMAP_NEAREST,
+                    GL_MODULATE,
+                    None,
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    GL_LUMINANCE_ALPHA,
+                    16,
+                    GL_LINEAR,
+                    GL_MODULATE,
+                    None,
+                );
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE2,
+                    GL_RGBA,
+                    8,
+                    GL_NEAREST,
+                    GL_MODULATE,
+                    None,
+                );
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                multi_strip(gl, rng, None);
+            },
+        ),
+        ("RGBA x RGBA, one colour out of [0, 1]", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGBA,
+                16,
+                GL_LINEAR_MIPMAP_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                GL_RGBA,
+                16,
+                GL_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            multi_strip(gl, rng, Some([1.5, -0.25, 0.6, 0.8]));
+        }),
+    ];
+    twins(&states);
+}
+
 /// One unit through `GL_COMBINE` with RGB function `rgb`, alpha function `alpha`, the first
-/// two sources and operands of each and the scales, a random `format` texture and the
-/// constant colour `constant`.
+/// two sources and operands of each and the scales, a random `format` texture filtered by
+/// `min`, and the constant colour (0.6, 0.5, 0.4, 0.3).
 #[allow(clippy::too_many_arguments)]
 fn combine_unit(
     gl: &mut Context,

@@ -319,11 +319,16 @@ mod x86 {
             TexEnvMode::Decal if base == BaseFormat::Rgb => ct.with_alpha(cf),
             TexEnvMode::Combine => {
                 let k = &env.combine;
-                let cc = if super::reads_constant(env) {
-                    Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)))
-                } else {
-                    Px::splat([0; 4])
-                };
+                // Only arguments 0 and 1 are read (the functions this route computes take at
+                // most two); GL's default third source is the constant colour, which costs a
+                // conversion per block if asked for regardless.
+                let constant = CombineSource::Constant;
+                let cc =
+                    if k.src_rgb[..2].contains(&constant) || k.src_alpha[..2].contains(&constant) {
+                        Px::splat(env.color.map(|c| super::exact_byte(c).unwrap_or(0)))
+                    } else {
+                        Px::splat([0; 4])
+                    };
                 let a0 = argument(k, 0, cf, ct, cc, inputs);
                 let a1 = argument(k, 1, cf, ct, cc, inputs);
                 let rgb = func(k.rgb, a0, a1, k.rgb_scale);

@@ -147,6 +147,15 @@ pub(super) fn environment8_avx2(
 ) -> Texels8 {
     use std::arch::x86_64::*;
     use texenv::{Avx8, Lanes};
+    // MODULATE on every unit (the usual cascade of several units): `texenv::apply`'s
+    // products on registers, without the compiled program's register file and dispatch.
+    if ds
+        .units
+        .iter()
+        .all(|u| u.env.mode == crate::common::values::TexEnvMode::Modulate)
+    {
+        return modulate8_avx2(ds, primary, by_unit);
+    }
     // The draw's compiled cascade: the same bits (`fragment::cascade`).
     if let Some(program) = &ds.cascade {
         return program.run_avx2(primary, by_unit);
@@ -170,6 +179,53 @@ pub(super) fn environment8_avx2(
     }
     let mut out = [[0f32; 8]; 4];
     for (o, c) in out.iter_mut().zip(color) {
+        unsafe { _mm256_storeu_ps(o.as_mut_ptr(), c.0) };
+    }
+    out
+}
+
+/// [`environment8_avx2`] for a draw whose units are all `MODULATE`: the clamped primary
+/// colour times each unit's texel where its base format has colour (R, G, B) and alpha (A),
+/// as `texenv::apply` (the same f32 products in the same order).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn modulate8_avx2(
+    ds: &FragmentDraw,
+    primary: &Texels8,
+    by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
+) -> Texels8 {
+    use crate::texture::format::BaseFormat;
+    use std::arch::x86_64::*;
+    use texenv::{Avx8, Lanes};
+    // SAFETY: each array holds eight f32; unaligned loads and stores.
+    let load = |a: &[f32; 8]| Avx8(unsafe { _mm256_loadu_ps(a.as_ptr()) });
+    let mut color = [0, 1, 2, 3].map(|c| load(&primary[c]).clamp01());
+    for u in &ds.units {
+        let (has_color, has_alpha) = match u.base {
+            BaseFormat::Alpha => (false, true),
+            BaseFormat::Luminance
+            | BaseFormat::Rgb
+            | BaseFormat::DepthComponent
+            | BaseFormat::Red
+            | BaseFormat::Rg => (true, false),
+            BaseFormat::LuminanceAlpha | BaseFormat::Rgba | BaseFormat::Intensity => (true, true),
+        };
+        let ct = |c: usize| match &by_unit[u.unit] {
+            Some(t) => load(&t[c]),
+            None => Avx8::splat(0.0),
+        };
+        if has_color {
+            for (c, v) in color.iter_mut().enumerate().take(3) {
+                *v = v.mul(ct(c));
+            }
+        }
+        if has_alpha {
+            color[3] = color[3].mul(ct(3));
+        }
+    }
+    let mut out = [[0f32; 8]; 4];
+    for (o, c) in out.iter_mut().zip(color) {
+        // SAFETY: eight f32; unaligned store.
         unsafe { _mm256_storeu_ps(o.as_mut_ptr(), c.0) };
     }
     out

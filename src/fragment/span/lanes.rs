@@ -44,11 +44,7 @@ pub(super) struct LaneMath {
 impl LaneMath {
     /// For the runs of primitive `it` in draw `ds`, fogged or not.
     pub(super) fn new(ds: &FragmentDraw, it: &Interpolants, fog: bool) -> LaneMath {
-        let constant = it.constant_primary.then(|| {
-            // The run's constant colour (`SpanRun::new`), which steps of 0 keep.
-            let run = SpanRun::new(it, 0, 0.5, 4);
-            [run.color[0], run.color[1], run.color[2], run.color[3]]
-        });
+        let constant = constant_primary(it);
         LaneMath {
             perspective: it.perspective,
             primary_perspective: it.perspective && !it.constant_primary,
@@ -59,6 +55,16 @@ impl LaneMath {
             depth_func: ds.key.depth_func,
         }
     }
+}
+
+/// Every lane's primary colour of primitive `it` when it is constant
+/// (`Interpolants::constant_primary`): the run's constant colour (`SpanRun::new`), which steps
+/// of 0 keep.
+pub(super) fn constant_primary(it: &Interpolants) -> Option<[f32; 4]> {
+    it.constant_primary.then(|| {
+        let run = SpanRun::new(it, 0, 0.5, 4);
+        [run.color[0], run.color[1], run.color[2], run.color[3]]
+    })
 }
 
 impl GroupInputs {

@@ -370,7 +370,18 @@ pub fn pair_sampled8<'a>(
         mut by_unit,
     } = Sampled8::new(ds, it, first_y, true);
     let mut samplers_y = first_y;
-    let byte_env = ds.key.byte_env && crate::common::cpu::available();
+    let mut byte_env = ds.key.byte_env && crate::common::cpu::available();
+    // A constant primary colour (every lane's in every block, `LaneMath::constant`) is
+    // converted to bytes once for the primitive; one that is not converted bytes keeps the
+    // primitive on the f32 route (`byte_block` would answer `None` at every block).
+    #[cfg(target_arch = "x86_64")]
+    let mut constant_words = None;
+    #[cfg(target_arch = "x86_64")]
+    if let (true, Some(c)) = (byte_env, constant_primary(it)) {
+        // SAFETY: AVX2 is present (`byte_env` checked it).
+        constant_words = unsafe { crate::fragment::bytenv::exact_words(&c.map(|v| [v; 8]), 0xFF) };
+        byte_env = constant_words.is_some();
+    }
     let fused = fused_unit(ds, single);
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
@@ -380,7 +391,9 @@ pub fn pair_sampled8<'a>(
         #[cfg(target_arch = "x86_64")]
         if byte_env {
             // SAFETY: AVX2 is present (`byte_env` checked it).
-            if let Some(done) = unsafe { byte_block(ds, &samplers, &tail, gx, group) } {
+            if let Some(done) =
+                unsafe { byte_block(ds, &samplers, &tail, gx, group, constant_words) }
+            {
                 return Some(done);
             }
         }
@@ -540,7 +553,8 @@ fn fused_block(
 /// texels as bytes from its block sampler, the cascade in 8-bit integers and the tail from the
 /// colour bytes; the same colour words as the f32 route. `None` (the caller takes the f32
 /// route) when the primary colour is not a converted byte at a passing lane or a unit's block
-/// sampler does not take the block.
+/// sampler does not take the block. `constant`: the primary colour's words when it is the
+/// same converted bytes at every lane of every block (computed once per primitive).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 fn byte_block(
@@ -549,8 +563,12 @@ fn byte_block(
     tail: &Tail8,
     gx: i32,
     group: &GroupInputs,
+    constant: Option<std::arch::x86_64::__m256i>,
 ) -> Option<([u32; 8], u8)> {
-    let primary = crate::fragment::bytenv::exact_words(&group.primary, group.pass)?;
+    let primary = match constant {
+        Some(words) => words,
+        None => crate::fragment::bytenv::exact_words(&group.primary, group.pass)?,
+    };
     let mut by_unit = [None; MAX_TEXTURE_UNITS];
     let x = gx as f64 + 0.5;
     for (k, unit) in ds.units.iter().enumerate() {
