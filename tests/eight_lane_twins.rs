@@ -787,6 +787,150 @@ fn flat_sprites_match_the_general_path() {
     twins(&states);
 }
 
+/// Flat sprites whose primary colours are bytes (`glColor4ub`): their rows take the byte route
+/// (`fragment::simd::flat_groups_bytes`: the environment and tail on bytes) when nothing after
+/// the environment needs the f32 colour. RGB and RGBA (the formats of the flat route) under
+/// REPLACE and MODULATE, nearest, bilinear and trilinear, with and without blending, depth functions with and without
+/// writes, a colour mask, q not 1 (the coordinates' divisions), sprites under a perspective
+/// projection, and coordinates too large for the filter (those groups go one pixel at a
+/// time).
+#[test]
+fn flat_sprites_on_the_byte_route_match_the_general_path() {
+    let states: [Setup; 8] = [
+        ("byte sprites: RGBA REPLACE, LESS with writes", |gl, rng| {
+            gl.depth_func(GL_LESS);
+            byte_sprites(gl, rng, GL_RGBA, GL_REPLACE, GL_LINEAR, 1.0, 1.0);
+        }),
+        (
+            "byte sprites: RGB MODULATE, over, no depth writes",
+            |gl, rng| {
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                gl.depth_mask(0);
+                byte_sprites(
+                    gl,
+                    rng,
+                    GL_RGB,
+                    GL_MODULATE,
+                    GL_LINEAR_MIPMAP_LINEAR,
+                    1.0,
+                    1.0,
+                );
+            },
+        ),
+        ("byte sprites: RGB REPLACE, GREATER, q = 2", |gl, rng| {
+            gl.depth_func(GL_GREATER);
+            byte_sprites(gl, rng, GL_RGB, GL_REPLACE, GL_LINEAR, 2.0, 1.0);
+        }),
+        (
+            "byte sprites: RGBA MODULATE, ONE ONE, colour mask",
+            |gl, rng| {
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_ONE, GL_ONE);
+                gl.color_mask(1, 0, 1, 1);
+                byte_sprites(gl, rng, GL_RGBA, GL_MODULATE, GL_LINEAR, 1.0, 1.0);
+                gl.color_mask(1, 1, 1, 1);
+            },
+        ),
+        (
+            "byte sprites: RGB REPLACE, no depth test, over",
+            |gl, rng| {
+                gl.disable(GL_DEPTH_TEST);
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                byte_sprites(gl, rng, GL_RGB, GL_REPLACE, GL_NEAREST, 1.0, 1.0);
+            },
+        ),
+        (
+            "byte sprites: RGBA MODULATE, LEQUAL, mipmapped",
+            |gl, rng| {
+                gl.depth_func(GL_LEQUAL);
+                byte_sprites(
+                    gl,
+                    rng,
+                    GL_RGBA,
+                    GL_MODULATE,
+                    GL_NEAREST_MIPMAP_LINEAR,
+                    1.0,
+                    1.0,
+                );
+            },
+        ),
+        (
+            "byte sprites: RGBA MODULATE, perspective, q = 0.5",
+            |gl, rng| {
+                byte_sprites(gl, rng, GL_RGBA, GL_MODULATE, GL_LINEAR, 0.5, -2.0);
+            },
+        ),
+        (
+            "byte sprites: RGBA REPLACE, coordinates past the filter's range",
+            |gl, rng| {
+                byte_sprites(gl, rng, GL_RGBA, GL_REPLACE, GL_NEAREST, 1.0e-7, 1.0);
+            },
+        ),
+    ];
+    twins(&states);
+}
+
+/// 300 sprites of byte colours with a random `format` texture under `mode` filtered by
+/// `min`, texture coordinates given as (s q, t q, 0, q); at `depth` 1 in a window-sized
+/// orthographic view (w = 1), otherwise facing quads at z = `depth` under a frustum.
+fn byte_sprites(
+    gl: &mut Context,
+    rng: &mut Rng,
+    format: GLenum,
+    mode: GLenum,
+    min: GLenum,
+    q: f32,
+    depth: f32,
+) {
+    random_texture(gl, rng, format, 32, 32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, mode as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.matrix_mode(GL_PROJECTION);
+    gl.load_identity();
+    let ortho = depth == 1.0;
+    if ortho {
+        gl.ortho(0.0, SIZE as f64, 0.0, SIZE as f64, -1.0, 1.0);
+    } else {
+        gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
+    }
+    gl.matrix_mode(GL_MODELVIEW);
+    gl.load_identity();
+    let byte = |rng: &mut Rng, lo: u8| lo + (rng.next_u64() % (256 - lo as u64)) as u8;
+    gl.begin(GL_QUADS);
+    for k in 0..300 {
+        let (x, y, half, z) = if ortho {
+            (
+                rng.range(-8.0, SIZE as f32),
+                rng.range(-8.0, SIZE as f32),
+                rng.range(0.5, 20.0),
+                rng.range(-0.9, 0.9),
+            )
+        } else {
+            let r = -depth;
+            (
+                rng.range(-r, r),
+                rng.range(-r, r),
+                rng.range(0.01, 0.3) * r,
+                depth + 0.01 * (k % 7) as f32,
+            )
+        };
+        // The texture repeated 1 to 4 times over the sprite (magnified and minified).
+        let reps = rng.range(0.25, 4.0);
+        let c = [byte(rng, 40), byte(rng, 40), byte(rng, 40), byte(rng, 60)];
+        gl.color_4ub(c[0], c[1], c[2], c[3]);
+        for (dx, dy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            let (s, t) = ((dx + 1.0) * reps, (dy + 1.0) * reps);
+            // q below 1e-6: s / q beyond the filter's range (2^30 / 256 / 32).
+            gl.tex_coord_4f(s, t, 0.0, q);
+            gl.vertex_3f(x + dx * half, y + dy * half, z);
+        }
+    }
+    gl.end();
+}
+
 /// A strip of 120 random vertices with texture coordinates on units 0-2, all of colour
 /// `color` (or random colours with `None`).
 fn multi_strip(gl: &mut Context, rng: &mut Rng, color: Option<[f32; 4]>) {

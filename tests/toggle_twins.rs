@@ -325,3 +325,84 @@ fn block_stencil_matches_the_general_path() {
         );
     }
 }
+
+/// Blending in the eight-lane tail in 16-bit integer lanes (every factor that is a byte of the
+/// source or destination, every equation, separate alpha factors and equation), the alpha
+/// test before it and with fog, and the constant colour's factors (which stay in f32), for
+/// every texturing state: the same buffers as the general path's `blend::blend` per fragment.
+#[test]
+fn blending_in_the_eight_lane_tail_matches_the_general_path() {
+    let factors = [
+        GL_ZERO,
+        GL_ONE,
+        GL_SRC_COLOR,
+        GL_ONE_MINUS_SRC_COLOR,
+        GL_DST_COLOR,
+        GL_ONE_MINUS_DST_COLOR,
+        GL_SRC_ALPHA,
+        GL_ONE_MINUS_SRC_ALPHA,
+        GL_DST_ALPHA,
+        GL_ONE_MINUS_DST_ALPHA,
+        GL_SRC_ALPHA_SATURATE,
+    ];
+    for (tname, texturing) in TEXTURING {
+        // Each source factor against two destination factors (all of them met; the
+        // saturate factor is a source factor only), under ADD.
+        for (i, &src) in factors.iter().enumerate() {
+            for k in [3, 7] {
+                let dst = factors[(i + k) % (factors.len() - 1)];
+                twins(&format!("{tname}, {src:#x}, {dst:#x}"), |gl, rng| {
+                    texturing(gl, rng);
+                    gl.enable(GL_BLEND);
+                    gl.blend_func(src, dst);
+                });
+            }
+        }
+        for eq in [
+            GL_FUNC_ADD,
+            GL_FUNC_SUBTRACT,
+            GL_FUNC_REVERSE_SUBTRACT,
+            GL_MIN,
+            GL_MAX,
+        ] {
+            twins(&format!("{tname}, equation {eq:#x}"), |gl, rng| {
+                texturing(gl, rng);
+                gl.enable(GL_BLEND);
+                gl.blend_equation(eq);
+                gl.blend_func(GL_SRC_ALPHA, GL_DST_COLOR);
+            });
+        }
+        twins(&format!("{tname}, separate"), |gl, rng| {
+            texturing(gl, rng);
+            gl.enable(GL_BLEND);
+            gl.blend_equation_separate_ext(GL_FUNC_REVERSE_SUBTRACT, GL_FUNC_ADD);
+            gl.blend_func_separate(
+                GL_SRC_ALPHA_SATURATE,
+                GL_ONE_MINUS_DST_COLOR,
+                GL_DST_ALPHA,
+                GL_ONE_MINUS_SRC_ALPHA,
+            );
+        });
+        twins(&format!("{tname}, constant colour"), |gl, rng| {
+            texturing(gl, rng);
+            gl.enable(GL_BLEND);
+            gl.blend_color(0.3, 0.55, 0.8, 0.45);
+            gl.blend_func(GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA);
+        });
+        twins(&format!("{tname}, alpha test and alpha over"), |gl, rng| {
+            texturing(gl, rng);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_GREATER, 0.45);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        });
+        twins(&format!("{tname}, EXP2 fog and alpha test"), |gl, rng| {
+            texturing(gl, rng);
+            gl.enable(GL_FOG);
+            gl.fogi(GL_FOG_MODE, GL_EXP2 as i32);
+            gl.fogf(GL_FOG_DENSITY, 0.15);
+            gl.enable(GL_ALPHA_TEST);
+            gl.alpha_func(GL_LEQUAL, 0.6);
+        });
+    }
+}

@@ -103,6 +103,21 @@ impl BlendKey {
 }
 
 impl BlendKey {
+    /// Whether every factor is a byte of the source or destination colour (or 0 or 1): none
+    /// is the constant colour's (`GL_CONSTANT_COLOR` and its kin, which are not bytes). The
+    /// eight-lane tail blends such keys in 16-bit integers (`simd::TailBlend::Bytes`).
+    pub fn byte_factors(&self) -> bool {
+        use BlendFactor::*;
+        [self.src_rgb, self.dst_rgb, self.src_alpha, self.dst_alpha]
+            .iter()
+            .all(|f| {
+                !matches!(
+                    f,
+                    ConstantColor | OneMinusConstantColor | ConstantAlpha | OneMinusConstantAlpha
+                )
+            })
+    }
+
     /// `FUNC_ADD` with `ONE`, `ONE` for colour and alpha: additive blending (light passes).
     pub fn is_add_one_one(&self) -> bool {
         self.equation == BlendEquation::Add

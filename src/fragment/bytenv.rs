@@ -134,6 +134,28 @@ pub fn cascade_applies(units: &[(TexEnv, BaseFormat)]) -> bool {
 #[cfg(target_arch = "x86_64")]
 pub(crate) use x86::*;
 
+/// [`exact_words`] as an array, when the processor has AVX2 (`None` otherwise).
+pub fn exact_word_array(c: &crate::texture::simd::Texels8, live: u8) -> Option<[u32; 8]> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if crate::common::cpu::available() {
+            // SAFETY: AVX2 is present (checked just above); `out` holds eight u32, an
+            // unaligned store.
+            return unsafe {
+                let w = exact_words(c, live)?;
+                let mut out = [0u32; 8];
+                std::arch::x86_64::_mm256_storeu_si256(
+                    out.as_mut_ptr() as *mut std::arch::x86_64::__m256i,
+                    w,
+                );
+                Some(out)
+            };
+        }
+    }
+    let _ = (c, live);
+    None
+}
+
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use std::arch::x86_64::*;

@@ -6,7 +6,8 @@
 //! pixels are identical (twin tests in `tests/raster.rs`).
 
 use crate::common::cpu::available;
-use crate::common::values::{CompareFunc, FogMode, LogicOp};
+use crate::common::values::{CompareFunc, FogMode, LogicOp, TexEnvMode};
+use crate::fragment::draw::TextureUnitDraw;
 use crate::fragment::key::BlendKey;
 use crate::texture::sample::LodSelect;
 use crate::texture::simd::{Level8, Texels8};
@@ -56,6 +57,9 @@ pub enum TailBlend {
     AlphaOver,
     /// `ONE`, `ONE`.
     AddOneOne,
+    /// Any other blending whose factors are all bytes (no constant colour or alpha), as
+    /// `fragment::blend::blend` computes it, in 16-bit integer lanes.
+    Bytes(BlendKey),
     /// Any other blending (equations, factors, the constant colour), as
     /// `fragment::blend::blend` computes it.
     General(BlendKey, [f32; 4]),
@@ -165,6 +169,65 @@ pub fn textured8(
     None
 }
 
+/// The groups of eight pixels `gx, gx + 8, ..` (below `x1`) of a flat primitive's row whose
+/// first pixel has index `row` in the tile's buffers at column `x0`, as `flat_row` shades
+/// them with [`textured8`], but with the environment and tail on bytes: the texel words of
+/// the same filter, the unit's environment on bytes with the primary colour words `primary`
+/// ([`crate::fragment::bytenv::cascade`], whose results equal the f32 route's rounded ones
+/// for converted bytes: `bytenv`'s proof), the tail from the bytes (`shade8_bytes`), the
+/// depth test of the constant depth `d` by `func` and its write (`depth_write`). Answers the
+/// first group it did not shade (`x1` or more when it shaded them all): where [`textured8`]
+/// would answer `None` (the caller shades that group one pixel at a time, then calls again
+/// from the next), where the group's pixels are not all in `color` and `depth`, or at once
+/// without AVX2. For tails with [`bytes_apply`] and `primary` the bytes whose conversions are
+/// the group's primary colours.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn flat_groups_bytes(
+    sampling: &Sampling8,
+    tail: &Tail8,
+    unit: &TextureUnitDraw,
+    primary: &[u32; 8],
+    depth_test: (Option<CompareFunc>, u32, bool),
+    (gx, x0, x1, row): (i32, i32, i32, usize),
+    color: &mut [[u8; 4]],
+    depth: &mut [u32],
+) -> i32 {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return unsafe {
+                x86::flat_groups_bytes(
+                    sampling,
+                    tail,
+                    unit,
+                    primary,
+                    depth_test,
+                    (gx, x0, x1, row),
+                    color,
+                    depth,
+                )
+            };
+        }
+    }
+    let _ = (
+        sampling, tail, unit, primary, depth_test, x0, x1, row, color, depth,
+    );
+    gx
+}
+
+/// Whether [`flat_groups_bytes`] may take the groups of a draw with `tail` and its one unit
+/// `unit` in place of [`textured8`]: nothing after the environment reads the f32 colour (no
+/// alpha test, colour sum or fog) and the environment is `REPLACE` or `MODULATE` (which the
+/// byte environment computes exactly: `bytenv`'s proof).
+pub fn bytes_apply(tail: &Tail8, unit: &TextureUnitDraw) -> bool {
+    tail.alpha_test.is_none()
+        && !tail.color_sum
+        && tail.fog.is_none()
+        && matches!(unit.env.mode, TexEnvMode::Replace | TexEnvMode::Modulate)
+}
+
 /// Eight fragments' window depths `z` rounded to stored values as `depth_to_fixed` does
 /// (`z * depth_max + 0.5`, NaN and negatives as 0, at most `depth_max`, truncated) and tested
 /// against `stored` as `incoming OP stored` by `func` (`None` and `ALWAYS` pass): the depths
@@ -218,12 +281,17 @@ mod x86 {
     use std::arch::x86_64::*;
 
     use super::{After8, Sampling8, Tail8};
+    use crate::common::limits::MAX_TEXTURE_UNITS;
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp};
+    use crate::fragment::bytenv::cascade;
     use crate::fragment::cascade::Program;
+    use crate::fragment::draw::TextureUnitDraw;
     use crate::fragment::fog::EXP2_TAYLOR;
+    use crate::fragment::key::BlendKey;
     use crate::texture::sample::LodSelect;
     use crate::texture::simd::x86::{
-        block_words8, coords8, filter8, filter8_mix, lane_mask, texels_of_words,
+        block_words8, coords8, coords8_div, filter8, filter8_mix, filter8_words_mix, lane_mask,
+        rgba_of_words, texels_of_words,
     };
     use crate::texture::simd::{Level8, Texels8};
 
@@ -452,7 +520,6 @@ mod x86 {
     #[inline]
     #[target_feature(enable = "avx2")]
     fn finish8(tail: &Tail8, src: &[__m256i; 4], keep: __m256, dst: &[u32; 8]) -> ([u32; 8], u8) {
-        let one = _mm256_set1_ps(1.0);
         // SAFETY: `dst` holds eight u32; unaligned load.
         let old = unsafe { _mm256_loadu_si256(dst.as_ptr() as *const __m256i) };
         let k = _mm256_set1_ps(255.0);
@@ -481,18 +548,11 @@ mod x86 {
             // saturation.
             _mm256_adds_epu8(pack(src), old)
         } else if tail.blend == super::TailBlend::AlphaOver {
-            let sa = _mm256_div_ps(_mm256_cvtepi32_ps(src[3]), k);
-            let inv = _mm256_sub_ps(one, sa);
-            let mut out = [_mm256_setzero_si256(); 4];
-            for c in 0..4 {
-                let s = _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k);
-                let d = _mm256_div_ps(_mm256_cvtepi32_ps(_mm256_and_si256(d[c], byte)), k);
-                // Each product rounded to 8 bits, then added, as `blend::blend_alpha_over`.
-                let sum =
-                    _mm256_add_epi32(to_u8(_mm256_mul_ps(s, sa)), to_u8(_mm256_mul_ps(d, inv)));
-                out[c] = _mm256_min_epi32(sum, byte);
-            }
-            pack(&out)
+            // Each product rounded to 8 bits, then added, as `blend::blend_alpha_over`: in
+            // 16-bit lanes (`blend16`), the factors fixed here.
+            alpha_over16(pack(src), old)
+        } else if let super::TailBlend::Bytes(key) = &tail.blend {
+            blend16(key, pack(src), old)
         } else if let super::TailBlend::General(key, constant) = &tail.blend {
             let s: [__m256; 4] = [0, 1, 2, 3].map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
             let d: [__m256; 4] = [0, 1, 2, 3]
@@ -532,6 +592,153 @@ mod x86 {
         // SAFETY: `res` holds eight u32; unaligned store.
         unsafe { _mm256_storeu_si256(res.as_mut_ptr() as *mut __m256i, word) };
         (res, _mm256_movemask_ps(keep) as u8)
+    }
+
+    /// `round(x * f / 255)` for 16-bit lanes holding bytes `x` and `f` (the product at most
+    /// 65025): `t = x f + 128`, then `(t + (t >> 8)) >> 8`, which is `t * 257 >> 16` for
+    /// `t < 65536` (the high half of a multiplication by 257). The exact rounding of the
+    /// quotient, which never lies halfway between integers (`2 x f` is even, `255` odd).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn mul255(x: __m256i, f: __m256i) -> __m256i {
+        let t = _mm256_add_epi16(_mm256_mullo_epi16(x, f), _mm256_set1_epi16(128));
+        _mm256_mulhi_epu16(t, _mm256_set1_epi16(257))
+    }
+
+    /// The colour words `w` as 16-bit lanes: pixels 0, 1, 4, 5 and pixels 2, 3, 6, 7 (the
+    /// unpacking works within 128-bit halves; `_mm256_packus_epi16` restores the order), a
+    /// pixel's R, G, B, A in four consecutive lanes.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn widen16(w: __m256i) -> [__m256i; 2] {
+        let zero = _mm256_setzero_si256();
+        [_mm256_unpacklo_epi8(w, zero), _mm256_unpackhi_epi8(w, zero)]
+    }
+
+    /// Each pixel's alpha (its lane 3 in [`widen16`]'s layout) spread over its four lanes.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn spread_alpha(v: __m256i) -> __m256i {
+        let spread = _mm256_setr_epi8(
+            6, 7, 6, 7, 6, 7, 6, 7, 14, 15, 14, 15, 14, 15, 14, 15, 6, 7, 6, 7, 6, 7, 6, 7, 14, 15,
+            14, 15, 14, 15, 14, 15,
+        );
+        _mm256_shuffle_epi8(v, spread)
+    }
+
+    /// `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA` of the colour words `src` over `dst` as
+    /// `blend::blend_alpha_over` computes it (each product rounded to 8 bits, see
+    /// [`blend16`], then added), in 16-bit lanes.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn alpha_over16(src: __m256i, dst: __m256i) -> __m256i {
+        let (s, d) = (widen16(src), widen16(dst));
+        let full = _mm256_set1_epi16(255);
+        let mut out = [_mm256_setzero_si256(); 2];
+        for h in 0..2 {
+            let sa = spread_alpha(s[h]);
+            out[h] = _mm256_add_epi16(mul255(s[h], sa), mul255(d[h], _mm256_sub_epi16(full, sa)));
+        }
+        // Sums above 255 saturate.
+        _mm256_packus_epi16(out[0], out[1])
+    }
+
+    /// Blend factor `f` for both halves of [`widen16`]'s layout, from the sources `s`, the
+    /// destinations `d` and their spread alphas ([`spread_alpha`]); `alpha`: the factor of
+    /// the alpha channel (`SRC_ALPHA_SATURATE` is 1 there). Constant-colour factors are not
+    /// bytes and do not reach here (`TailBlend::Bytes`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn factor16(f: BlendFactor, alpha: bool, v: &[[__m256i; 2]; 4]) -> [__m256i; 2] {
+        let full = _mm256_set1_epi16(255);
+        let [s, d, sa, da] = *v;
+        let (x, invert) = match f {
+            BlendFactor::Zero => ([_mm256_setzero_si256(); 2], false),
+            BlendFactor::SrcColor => (s, false),
+            BlendFactor::OneMinusSrcColor => (s, true),
+            BlendFactor::DstColor => (d, false),
+            BlendFactor::OneMinusDstColor => (d, true),
+            BlendFactor::SrcAlpha => (sa, false),
+            BlendFactor::OneMinusSrcAlpha => (sa, true),
+            BlendFactor::DstAlpha => (da, false),
+            BlendFactor::OneMinusDstAlpha => (da, true),
+            BlendFactor::SrcAlphaSaturate if !alpha => {
+                let mut m = sa;
+                for h in 0..2 {
+                    m[h] = _mm256_min_epu16(sa[h], _mm256_sub_epi16(full, da[h]));
+                }
+                (m, false)
+            }
+            _ => ([full; 2], false),
+        };
+        if !invert {
+            return x;
+        }
+        [_mm256_sub_epi16(full, x[0]), _mm256_sub_epi16(full, x[1])]
+    }
+
+    /// Blending by a key whose factors are all bytes (no constant colour) of the colour words
+    /// `src` (the fragments') over `dst`, as `blend::blend` computes it: each product rounded
+    /// to 8 bits ([`mul255`] gives exactly `color_to_u8` of the f32 product, whose exact value
+    /// is never within 1/510 of a rounding tie while f32's error stays below 1e-4), their sum
+    /// or difference clamped to [0, 255] (exact: the f32 sum of two byte values over 255 times
+    /// 255 is within 1e-4 of an integer); `MIN` and `MAX` take no factors. Sixteen channels
+    /// (four pixels) per register ([`widen16`]).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn blend16(key: &BlendKey, src: __m256i, dst: __m256i) -> __m256i {
+        let (s, d) = (widen16(src), widen16(dst));
+        let v = [
+            s,
+            d,
+            [spread_alpha(s[0]), spread_alpha(s[1])],
+            [spread_alpha(d[0]), spread_alpha(d[1])],
+        ];
+        // The factors, the alpha lanes' from the alpha factors where they differ (lanes 3
+        // and 7 of each 128-bit half are alpha).
+        let mut fs = factor16(key.src_rgb, false, &v);
+        let mut fd = factor16(key.dst_rgb, false, &v);
+        let saturate = BlendFactor::SrcAlphaSaturate;
+        if key.src_alpha != key.src_rgb || key.src_rgb == saturate {
+            let a = factor16(key.src_alpha, true, &v);
+            for h in 0..2 {
+                fs[h] = _mm256_blend_epi16::<0x88>(fs[h], a[h]);
+            }
+        }
+        if key.dst_alpha != key.dst_rgb || key.dst_rgb == saturate {
+            let a = factor16(key.dst_alpha, true, &v);
+            for h in 0..2 {
+                fd[h] = _mm256_blend_epi16::<0x88>(fd[h], a[h]);
+            }
+        }
+        let mut out = [_mm256_setzero_si256(); 2];
+        for h in 0..2 {
+            let a = mul255(s[h], fs[h]);
+            let b = mul255(d[h], fd[h]);
+            let rgb = equation16(key.equation, s[h], d[h], a, b);
+            out[h] = if key.equation_alpha == key.equation {
+                rgb
+            } else {
+                let alpha = equation16(key.equation_alpha, s[h], d[h], a, b);
+                _mm256_blend_epi16::<0x88>(rgb, alpha)
+            };
+        }
+        // Sums above 255 saturate.
+        _mm256_packus_epi16(out[0], out[1])
+    }
+
+    /// Equation `eq` on the products `a` (source) and `b` (destination), or on the source
+    /// `s` and destination `d` themselves for `MIN` and `MAX`; differences below 0 as 0.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn equation16(eq: BlendEquation, s: __m256i, d: __m256i, a: __m256i, b: __m256i) -> __m256i {
+        match eq {
+            BlendEquation::Add => _mm256_add_epi16(a, b),
+            BlendEquation::Subtract => _mm256_subs_epu16(a, b),
+            BlendEquation::ReverseSubtract => _mm256_subs_epu16(b, a),
+            BlendEquation::Min => _mm256_min_epu16(s, d),
+            BlendEquation::Max => _mm256_max_epu16(s, d),
+        }
     }
 
     /// `op` on the bytes of the colour words `s` (the fragments') and `d` (the stored ones),
@@ -579,6 +786,148 @@ mod x86 {
             Some(w) => filter8_mix([&sm.levels[0], &sm.levels[1]], sm.linear, &s, &t, &[w; 8])?,
         };
         Some(shade8(tail, primary, &ct, dst, pass, after))
+    }
+
+    /// All ones in lanes `0..n` (n <= 8), zeros elsewhere.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn first_lanes(n: usize) -> __m256i {
+        _mm256_cmpgt_epi32(
+            _mm256_set1_epi32(n as i32),
+            _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0),
+        )
+    }
+
+    /// `incoming OP stored` per lane for unsigned depths, as `CompareFunc::test` (`None` and
+    /// `ALWAYS` pass): all ones where the test passes.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn depth_compare8(func: Option<CompareFunc>, d: __m256i, old: __m256i) -> __m256i {
+        // Unsigned order through signed comparisons: both sides with the top bit flipped.
+        let flip = _mm256_set1_epi32(i32::MIN);
+        let (a, b) = (_mm256_xor_si256(d, flip), _mm256_xor_si256(old, flip));
+        let all = _mm256_set1_epi32(-1);
+        match func {
+            None | Some(CompareFunc::Always) => all,
+            Some(CompareFunc::Never) => _mm256_setzero_si256(),
+            Some(CompareFunc::Less) => _mm256_cmpgt_epi32(b, a),
+            Some(CompareFunc::LessEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), all),
+            Some(CompareFunc::Equal) => _mm256_cmpeq_epi32(a, b),
+            Some(CompareFunc::Greater) => _mm256_cmpgt_epi32(a, b),
+            Some(CompareFunc::GreaterEqual) => _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), all),
+            Some(CompareFunc::NotEqual) => _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), all),
+        }
+    }
+
+    /// [`super::flat_groups_bytes`].
+    #[allow(clippy::too_many_arguments)]
+    #[target_feature(enable = "avx2")]
+    pub fn flat_groups_bytes(
+        sm: &Sampling8,
+        tail: &Tail8,
+        unit: &TextureUnitDraw,
+        primary: &[u32; 8],
+        depth_test: (Option<CompareFunc>, u32, bool),
+        span: (i32, i32, i32, usize),
+        color: &mut [[u8; 4]],
+        depth: &mut [u32],
+    ) -> i32 {
+        if sm.w == 1.0 && sm.q == 1.0 {
+            flat_groups::<false>(sm, tail, unit, primary, depth_test, span, color, depth)
+        } else {
+            flat_groups::<true>(sm, tail, unit, primary, depth_test, span, color, depth)
+        }
+    }
+
+    /// [`flat_groups_bytes`] with the coordinates' divisions (`coords8_div`).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn flat_groups<const DIV: bool>(
+        sm: &Sampling8,
+        tail: &Tail8,
+        unit: &TextureUnitDraw,
+        primary: &[u32; 8],
+        (func, d, depth_write): (Option<CompareFunc>, u32, bool),
+        (mut gx, x0, x1, row): (i32, i32, i32, usize),
+        color: &mut [[u8; 4]],
+        depth: &mut [u32],
+    ) -> i32 {
+        // SAFETY: eight u32; unaligned load.
+        let primary = unsafe { _mm256_loadu_si256(primary.as_ptr() as *const __m256i) };
+        let tests = !matches!(func, None | Some(CompareFunc::Always));
+        let dv = _mm256_set1_epi32(d as i32);
+        let base = sm.levels[0].base();
+        while gx < x1 {
+            let hi = ((x1 - gx) as usize).min(8);
+            let at = row + (gx - x0) as usize;
+            if color.len() < at + hi || ((tests || depth_write) && depth.len() < at + hi) {
+                return gx;
+            }
+            let live = first_lanes(hi);
+            let mut pass = live;
+            if tests {
+                // SAFETY: lanes 0..hi of the mask are set, and `depth` holds `at + hi`
+                // values (checked above): the masked load reads only inside it.
+                let old =
+                    unsafe { _mm256_maskload_epi32(depth.as_ptr().add(at) as *const i32, live) };
+                pass = _mm256_and_si256(live, depth_compare8(func, dv, old));
+            }
+            let pass_bits = _mm256_movemask_ps(_mm256_castsi256_ps(pass)) as u8;
+            if pass_bits != 0 {
+                let x = gx as f64 + 0.5;
+                let Some([s, t]) = coords8_div::<DIV>(sm.planes, sm.w, sm.q, x, hi) else {
+                    return gx;
+                };
+                // SAFETY: eight f32 each; unaligned loads.
+                let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
+                let Some(words) = filter8_words_mix(sm.levels, sm.linear, s, t, sm.weight) else {
+                    return gx;
+                };
+                let mut by_unit = [None; MAX_TEXTURE_UNITS];
+                by_unit[unit.unit] = Some(rgba_of_words(base, words));
+                let rgba = cascade(
+                    std::iter::once((&unit.env, unit.base, unit.unit)),
+                    primary,
+                    &by_unit,
+                );
+                let ptr = color.as_mut_ptr().wrapping_add(at) as *mut i32;
+                // SAFETY: `color` holds `at + hi` pixels (checked above) of four bytes each;
+                // the masked load reads lanes 0..hi only. `dst` holds eight u32.
+                let dst = unsafe {
+                    let mut dst = [0u32; 8];
+                    let old = _mm256_maskload_epi32(ptr, live);
+                    _mm256_storeu_si256(dst.as_mut_ptr() as *mut __m256i, old);
+                    dst
+                };
+                let (res, passed) = shade8_bytes(tail, rgba, &dst, pass_bits);
+                // SAFETY: as the load above, lanes 0..hi only; `res` holds eight u32.
+                unsafe {
+                    let res = _mm256_loadu_si256(res.as_ptr() as *const __m256i);
+                    _mm256_maskstore_epi32(ptr, live, res);
+                }
+                if depth_write && passed != 0 {
+                    // SAFETY: `depth` holds `at + hi` values (checked above); the passed
+                    // lanes are among 0..hi.
+                    unsafe {
+                        _mm256_maskstore_epi32(
+                            depth.as_mut_ptr().add(at) as *mut i32,
+                            lane_mask_i(passed),
+                            dv,
+                        )
+                    };
+                }
+            }
+            gx += 8;
+        }
+        gx
+    }
+
+    /// All ones in the lanes whose bit is set in `m`.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn lane_mask_i(m: u8) -> __m256i {
+        _mm256_castps_si256(lane_mask(m))
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -745,6 +1094,125 @@ mod tests {
                             f.factor(c[j]).to_bits(),
                             "{mode:?} {density} {start} {end}: c = {}",
                             c[j]
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// The 16-bit integer blending (`TailBlend::Bytes`, `TailBlend::AlphaOver`) gives
+    /// `blend::blend`'s f32 result for every pair of source and destination bytes, for keys
+    /// covering every byte factor and equation.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn integer_blending_is_the_f32_blend_for_every_byte_pair() {
+        use crate::common::values::{BlendEquation as E, BlendFactor as F};
+        use crate::fragment::blend::blend;
+        use std::arch::x86_64::*;
+        if !available() {
+            return;
+        }
+        let key = |equation, equation_alpha, src_rgb, dst_rgb, src_alpha, dst_alpha| BlendKey {
+            equation,
+            equation_alpha,
+            src_rgb,
+            dst_rgb,
+            src_alpha,
+            dst_alpha,
+        };
+        let keys = [
+            key(
+                E::Add,
+                E::Add,
+                F::SrcAlpha,
+                F::OneMinusSrcAlpha,
+                F::SrcAlpha,
+                F::OneMinusSrcAlpha,
+            ),
+            key(E::Add, E::Add, F::DstColor, F::Zero, F::DstColor, F::Zero),
+            key(
+                E::Add,
+                E::Add,
+                F::One,
+                F::OneMinusSrcAlpha,
+                F::One,
+                F::OneMinusSrcAlpha,
+            ),
+            key(
+                E::Subtract,
+                E::Add,
+                F::SrcColor,
+                F::OneMinusDstColor,
+                F::DstAlpha,
+                F::One,
+            ),
+            key(
+                E::ReverseSubtract,
+                E::Min,
+                F::OneMinusSrcColor,
+                F::DstAlpha,
+                F::Zero,
+                F::SrcColor,
+            ),
+            key(
+                E::Max,
+                E::Subtract,
+                F::SrcAlphaSaturate,
+                F::OneMinusDstAlpha,
+                F::SrcAlphaSaturate,
+                F::DstColor,
+            ),
+            key(
+                E::Add,
+                E::ReverseSubtract,
+                F::SrcAlphaSaturate,
+                F::SrcColor,
+                F::OneMinusDstAlpha,
+                F::OneMinusSrcColor,
+            ),
+        ];
+        for (k, b) in keys.iter().enumerate() {
+            let blend_mode = if b.is_alpha_over() {
+                TailBlend::AlphaOver
+            } else {
+                TailBlend::Bytes(*b)
+            };
+            assert!(b.byte_factors());
+            let tail = Tail8 {
+                modulate: false,
+                alpha_test: None,
+                alpha_from_primary: false,
+                rgb_from_primary: false,
+                blend: blend_mode,
+                color_mask: u32::MAX,
+                color_sum: false,
+                fog: None,
+            };
+            for s in 0..=255u8 {
+                for d0 in (0..=255u8).step_by(8) {
+                    let src: [[u8; 4]; 8] = std::array::from_fn(|j| {
+                        let d = d0 + j as u8;
+                        [s, d, s ^ d, 255 - s]
+                    });
+                    let dst: [[u8; 4]; 8] = std::array::from_fn(|j| {
+                        let d = d0 + j as u8;
+                        [d, s, 255 - d, d ^ 0x5A]
+                    });
+                    let words = src.map(u32::from_le_bytes);
+                    // SAFETY: AVX2 is present (checked above); `words` holds eight u32.
+                    let (got, _) = unsafe {
+                        let rgba = _mm256_loadu_si256(words.as_ptr() as *const __m256i);
+                        shade8_bytes(&tail, rgba, &dst.map(u32::from_le_bytes), 0xFF)
+                    };
+                    for j in 0..8 {
+                        let want = blend(b, src[j], dst[j], [0.0; 4]);
+                        assert_eq!(
+                            got[j].to_le_bytes(),
+                            want,
+                            "key {k}: {:?} over {:?}",
+                            src[j],
+                            dst[j]
                         );
                     }
                 }

@@ -157,6 +157,31 @@ pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> Option<[[f64; 
     None
 }
 
+/// Cube-map face selection for a 4x2 block of a perspective span: lanes 0..4 the pixels
+/// centred at `x + j` on row 0 of `planes` (s, t, q as `[a, b * y, c]`) and `r` (the r
+/// plane), lanes 4..8 the same columns on row 1. Per lane the direction (s/q, t/q, r/q in
+/// f64, each plane evaluated as `(a * x + b * y) + c`, rounded to f32, a component that is not
+/// finite as 0, as `Perspective8::direction` and `unit_coords` give it), then the face and
+/// face coordinates of [`cube_face`](super::sample::cube_face) (the same comparisons, ties
+/// and f32 operations, eight lanes at once). Answers the faces and the s and t per lane;
+/// `None` without AVX2.
+#[inline]
+pub fn cube_block_faces8(
+    planes: &[[[f64; 3]; 3]; 2],
+    r: &[[f64; 3]; 2],
+    x: f64,
+) -> Option<([u32; 8], [f32; 8], [f32; 8])> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if available() {
+            // SAFETY: AVX2 is present (checked just above).
+            return Some(unsafe { x86::cube_block_faces8(planes, r, x) });
+        }
+    }
+    let _ = (planes, r, x);
+    None
+}
+
 /// The texels of a 4x2 block of a perspective span in one go, as `Perspective8::texels_block`
 /// computes them (coordinates by [`perspective_block8`] rounded to f32, non-finite as 0;
 /// each live quad's level plan from its derivatives, or the draw's `fixed_plan`; quads of one
@@ -681,6 +706,95 @@ pub(crate) mod x86 {
         Some(())
     }
 
+    /// [`super::cube_block_faces8`].
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn cube_block_faces8(
+        planes: &[[[f64; 3]; 3]; 2],
+        r: &[[f64; 3]; 2],
+        x: f64,
+    ) -> ([u32; 8], [f32; 8], [f32; 8]) {
+        let xv = centres4(x);
+        let eval = |p: &[f64; 3]| {
+            let (a, by, c) = (
+                _mm256_set1_pd(p[0]),
+                _mm256_set1_pd(p[1]),
+                _mm256_set1_pd(p[2]),
+            );
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xv), by), c)
+        };
+        // Per row (lanes 0..4, 4..8): s/q, t/q, r/q rounded, non-finite as 0.
+        let mut dir = [[_mm_setzero_ps(); 2]; 3];
+        for row in 0..2 {
+            let p = &planes[row];
+            let q = eval(&p[2]);
+            let comps = [eval(&p[0]), eval(&p[1]), eval(&r[row])];
+            for (d, v) in dir.iter_mut().zip(comps) {
+                d[row] = finite_f32(_mm256_div_pd(v, q));
+            }
+        }
+        let [dx, dy, dz] = dir.map(|d| _mm256_set_m128(d[1], d[0]));
+        let sign = _mm256_set1_ps(-0.0);
+        let neg = |v: __m256| _mm256_xor_ps(v, sign);
+        let abs = |v: __m256| _mm256_andnot_ps(sign, v);
+        let (ax, ay, az) = (abs(dx), abs(dy), abs(dz));
+        let zero = _mm256_setzero_ps();
+        // As `cube_face`: X when ax >= ay and ax >= az, else Y when ay >= az, else Z; the
+        // positive face when the major component is >= 0 (-0 included).
+        let is_x = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_GE_OQ>(ax, ay),
+            _mm256_cmp_ps::<_CMP_GE_OQ>(ax, az),
+        );
+        let is_y = _mm256_andnot_ps(is_x, _mm256_cmp_ps::<_CMP_GE_OQ>(ay, az));
+        let is_z = _mm256_andnot_ps(
+            _mm256_or_ps(is_x, is_y),
+            _mm256_castsi256_ps(_mm256_set1_epi32(-1)),
+        );
+        let pos_x = _mm256_cmp_ps::<_CMP_GE_OQ>(dx, zero);
+        let pos_y = _mm256_cmp_ps::<_CMP_GE_OQ>(dy, zero);
+        let pos_z = _mm256_cmp_ps::<_CMP_GE_OQ>(dz, zero);
+        let pick = |m: __m256, a: __m256, b: __m256| _mm256_blendv_ps(b, a, m);
+        // X: (-z or z, -y, ax); Y: (x, z or -z, ay); Z: (x or -x, -y, az).
+        let sc_x = pick(pos_x, neg(dz), dz);
+        let sc_y = dx;
+        let sc_z = pick(pos_z, dx, neg(dx));
+        let tc_y = pick(pos_y, dz, neg(dz));
+        let sc = pick(is_x, sc_x, pick(is_y, sc_y, sc_z));
+        let tc = pick(is_y, tc_y, neg(dy));
+        let ma = pick(is_x, ax, pick(is_y, ay, az));
+        // Faces: 0 + (x < 0) for X, 2 + (y < 0) for Y, 4 + (z < 0) for Z.
+        let one = _mm256_set1_epi32(1);
+        let bit = |pos: __m256| _mm256_andnot_si256(_mm256_castps_si256(pos), one);
+        let face = _mm256_or_si256(
+            _mm256_and_si256(_mm256_castps_si256(is_x), bit(pos_x)),
+            _mm256_or_si256(
+                _mm256_and_si256(
+                    _mm256_castps_si256(is_y),
+                    _mm256_add_epi32(_mm256_set1_epi32(2), bit(pos_y)),
+                ),
+                _mm256_and_si256(
+                    _mm256_castps_si256(is_z),
+                    _mm256_add_epi32(_mm256_set1_epi32(4), bit(pos_z)),
+                ),
+            ),
+        );
+        let half = _mm256_set1_ps(0.5);
+        let onef = _mm256_set1_ps(1.0);
+        let coord = |c: __m256| _mm256_mul_ps(_mm256_add_ps(_mm256_div_ps(c, ma), onef), half);
+        // ma > 0, else (0.5, 0.5).
+        let big = _mm256_cmp_ps::<_CMP_GT_OQ>(ma, zero);
+        let s = pick(big, coord(sc), half);
+        let t = pick(big, coord(tc), half);
+        let (mut fo, mut so, mut to) = ([0u32; 8], [0f32; 8], [0f32; 8]);
+        // SAFETY: eight u32 / f32 each; unaligned stores.
+        unsafe {
+            _mm256_storeu_si256(fo.as_mut_ptr() as *mut __m256i, face);
+            _mm256_storeu_ps(so.as_mut_ptr(), s);
+            _mm256_storeu_ps(to.as_mut_ptr(), t);
+        }
+        (fo, so, to)
+    }
+
     #[inline]
     #[target_feature(enable = "avx2")]
     pub fn perspective_block8(planes: &[[[f64; 3]; 3]; 2], x: f64) -> [[f64; 8]; 2] {
@@ -720,6 +834,26 @@ pub(crate) mod x86 {
         x: f64,
         count: usize,
     ) -> Option<[[f32; 8]; 2]> {
+        if w == 1.0 && q == 1.0 {
+            coords8_div::<false>(planes, w, q, x, count)
+        } else {
+            coords8_div::<true>(planes, w, q, x, count)
+        }
+    }
+
+    /// [`coords8`], with `DIV` false only for `w` and `q` both 1: a division by 1 is the
+    /// identity (NaN stays NaN, which is refused either way), and skipping the four divisions
+    /// takes the longest latency out of a group (chosen per loop by the caller, not per
+    /// group: a select would still divide).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn coords8_div<const DIV: bool>(
+        planes: [[f64; 3]; 2],
+        w: f64,
+        q: f64,
+        x: f64,
+        count: usize,
+    ) -> Option<[[f32; 8]; 2]> {
         let lanes =
             |first: f64| _mm256_add_pd(_mm256_set1_pd(first), _mm256_set_pd(3.0, 2.0, 1.0, 0.0));
         let xs = [lanes(x), lanes(x + 4.0)];
@@ -739,16 +873,14 @@ pub(crate) mod x86 {
             );
             let mut halves = [_mm_setzero_ps(); 2];
             for h in 0..2 {
-                let v = _mm256_div_pd(
-                    _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c),
-                    wv,
-                );
+                let v = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, xs[h]), by), c);
+                let v = if DIV { _mm256_div_pd(v, wv) } else { v };
                 // v - v is 0 exactly when v is finite.
                 let finite = _mm256_cmp_pd::<_CMP_EQ_OQ>(_mm256_sub_pd(v, v), zero);
                 if _mm256_movemask_pd(_mm256_andnot_pd(finite, live[h])) != 0 {
                     return None;
                 }
-                let f = _mm256_cvtpd_ps(_mm256_div_pd(v, qv));
+                let f = _mm256_cvtpd_ps(if DIV { _mm256_div_pd(v, qv) } else { v });
                 let ok = _mm_cmpeq_ps(_mm_sub_ps(f, f), _mm_setzero_ps());
                 let j = 4 * h as i32;
                 let live32 = _mm_cmpgt_epi32(
@@ -794,6 +926,26 @@ pub(crate) mod x86 {
         t: __m256,
     ) -> Option<[__m256; 4]> {
         Some(texels_of_words(lvl, filter8_words(lvl, linear, s, t)?))
+    }
+
+    /// The texel words ([`words8`]) of NEAREST or LINEAR filtering of `levels[0]` at `s`,
+    /// `t`, or with a level weight, of both levels mixed as [`filter8_mix`] mixes them (the
+    /// words [`filter8_regs`] and [`filter8_mix`] convert to f32; `levels[0]`'s format).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn filter8_words_mix(
+        levels: &[Level8; 2],
+        linear: bool,
+        s: __m256,
+        t: __m256,
+        weight: Option<f32>,
+    ) -> Option<__m256i> {
+        let t1 = filter8_words(&levels[0], linear, s, t)?;
+        let Some(w) = weight else {
+            return Some(t1);
+        };
+        let t2 = filter8_words(&levels[1], linear, s, t)?;
+        Some(lerp_words(t1, t2, level_weights8(&[w; 8])))
     }
 
     /// [`filter8_mix`](super::filter8_mix).
@@ -869,6 +1021,63 @@ mod tests {
             for (j, &x) in w.iter().enumerate() {
                 let want = crate::texture::fixed::level_weight(x) as i32;
                 assert_eq!(out[j], want, "{x:e}");
+            }
+        }
+    }
+
+    /// The eight-lane cube-map face selection is the per-lane direction and `cube_face`:
+    /// random planes (directions on every face, near the faces' edges and corners where the
+    /// ties decide, zero, tiny and huge components, q of both signs and zero), bit for bit.
+    #[test]
+    fn cube_block_faces8_are_the_per_lane_faces() {
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let fix = |v: f64| {
+            let f = v as f32;
+            if f.is_finite() {
+                f
+            } else {
+                0.0
+            }
+        };
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let next = |seed: &mut u64| {
+            let r = crate::test_support::xorshift(seed);
+            // Mostly small whole numbers (exact ties between components), some fractions,
+            // some extremes.
+            match r % 8 {
+                0..=2 => ((r >> 8) % 9) as f64 - 4.0,
+                3 => 0.0,
+                4 => ((r >> 8) % 1000) as f64 * 1e-30,
+                5 => ((r >> 8) % 1000) as f64 * 1e30,
+                _ => ((r >> 8) % 20001) as f64 / 1000.0 - 10.0,
+            }
+        };
+        for _ in 0..50_000 {
+            let mut planes = [[[0f64; 3]; 3]; 2];
+            let mut r = [[0f64; 3]; 2];
+            for row in 0..2 {
+                for k in 0..3 {
+                    planes[row][k] = [next(&mut seed), next(&mut seed), next(&mut seed)];
+                }
+                r[row] = [next(&mut seed), next(&mut seed), next(&mut seed)];
+            }
+            let x = (next(&mut seed).abs() % 1000.0).floor() + 0.5;
+            let (faces, s, t) = super::cube_block_faces8(&planes, &r, x).unwrap();
+            for j in 0..8 {
+                let (row, xj) = (j / 4, x + (j % 4) as f64);
+                let at = |pl: &[f64; 3]| pl[0] * xj + pl[1] + pl[2];
+                let q = at(&planes[row][2]);
+                let dir = [
+                    fix(at(&planes[row][0]) / q),
+                    fix(at(&planes[row][1]) / q),
+                    fix(at(&r[row]) / q),
+                ];
+                let (face, st) = crate::texture::sample::cube_face(dir);
+                assert_eq!(faces[j] as usize, face, "{dir:?}");
+                assert_eq!(s[j].to_bits(), st[0].to_bits(), "{dir:?}");
+                assert_eq!(t[j].to_bits(), st[1].to_bits(), "{dir:?}");
             }
         }
     }

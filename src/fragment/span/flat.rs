@@ -27,7 +27,7 @@ pub(super) fn flat_pairs<'a, const TEX: u8>(
             }
             let y = y + r;
             if flat.is_none() {
-                flat = Flat::prepare(ds, y, x0, it, unit);
+                flat = Flat::prepare(ds, y, x0, it, unit, tail);
             }
             match &flat {
                 Some(f) => flat_row::<TEX>(ds, tile, y, x0, x1, it, f, tail),
@@ -45,6 +45,10 @@ struct Flat<'a> {
     affine: &'a AffineSpan<'a>,
     levels: &'a [Level8<'a>; 2],
     group: &'a GroupInputs,
+    /// The primary colours as colour words, when the rows take the byte route
+    /// (`simd::flat_groups_bytes`: `simd::bytes_apply` holds and every primary colour is a
+    /// converted byte).
+    bytes: Option<[u32; 8]>,
 }
 
 impl<'a> Flat<'a> {
@@ -59,6 +63,7 @@ impl<'a> Flat<'a> {
         x0: i32,
         it: &Interpolants<'a>,
         unit: &'a TextureUnitDraw,
+        tail: &Tail8,
     ) -> Option<Flat<'a>> {
         let yc = y as f64 + 0.5;
         let base = attr::TEX + 4 * unit.unit;
@@ -74,12 +79,18 @@ impl<'a> Flat<'a> {
                     .constant_group(ds)
             })
             .as_ref()?;
+        let bytes = if simd::bytes_apply(tail, unit) {
+            crate::fragment::bytenv::exact_word_array(&group.primary, 0xFF)
+        } else {
+            None
+        };
         Some(Flat {
             unit,
             base,
             affine,
             levels,
             group,
+            bytes,
         })
     }
 }
@@ -118,6 +129,22 @@ fn flat_row<const TEX: u8>(
     let mut dst = [0u32; 8];
     let mut gx = x0;
     while gx < x1 {
+        if let Some(p) = &flat.bytes {
+            // The byte route's groups, up to the first it leaves to the route below.
+            gx = simd::flat_groups_bytes(
+                &sm,
+                tail,
+                flat.unit,
+                p,
+                (func, d, depth_write),
+                (gx, x0, x1, row),
+                &mut tile.color,
+                &mut tile.depth,
+            );
+            if gx >= x1 {
+                break;
+            }
+        }
         let hi = ((x1 - gx) as usize).min(8);
         let at = row + (gx - x0) as usize;
         let whole = tile.color.len() >= at + 8;

@@ -399,6 +399,13 @@ impl Perspective8<'_> {
     /// `x + j` on the lower row, lanes 4..8 the same columns on the upper row.
     fn cube_block(&self, x: f64, live: u8, out: &mut Texels8) -> Option<()> {
         let cube = self.cube.as_ref()?;
+        if let Some((level, linear)) = self.fixed_plan {
+            // No λ: the eight lanes' directions and faces at once (AVX2), then the lanes of
+            // each face filtered together, as `cube_filter` does with a fixed plan.
+            if let Some((faces, s, t)) = texture_simd::cube_block_faces8(&self.planes, &cube.r, x) {
+                return cube_faces_filter(cube, &faces, &s, &t, level, linear, live, out);
+            }
+        }
         let mut coords = [[0f32; 3]; 8];
         let mut grads = [([0f32; 3], [0f32; 3]); 8];
         let need_lambda = self.fixed_plan.is_none();
@@ -505,4 +512,45 @@ impl Perspective8<'_> {
         }
         Some(())
     }
+}
+
+/// The texels of a cube map at lanes whose faces and face coordinates are `faces`, `s`, `t`
+/// (lanes set in `live`), level `level` of each face filtered (`linear` or not) for the lanes
+/// that share a face: what [`Perspective8::cube_filter`] gives with a fixed plan.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn cube_faces_filter(
+    cube: &Cube8,
+    faces: &[u32; 8],
+    s: &[f32; 8],
+    t: &[f32; 8],
+    level: usize,
+    linear: bool,
+    live: u8,
+    out: &mut Texels8,
+) -> Option<()> {
+    let mut left = live;
+    while left != 0 {
+        let face = faces[left.trailing_zeros() as usize];
+        let mut lanes = 0u8;
+        for (j, &f) in faces.iter().enumerate() {
+            lanes |= u8::from(f == face) << j;
+        }
+        lanes &= left;
+        left &= !lanes;
+        let lvl = cube.faces.get(face as usize)?.get(level)?.as_ref()?;
+        let texels = texture_simd::filter8(lvl, linear, s, t)?;
+        if lanes == live {
+            *out = texels;
+            return Some(());
+        }
+        for j in 0..8 {
+            if lanes & (1 << j) != 0 {
+                for c in 0..4 {
+                    out[c][j] = texels[c][j];
+                }
+            }
+        }
+    }
+    Some(())
 }

@@ -670,12 +670,21 @@ pub(super) fn stencil_block(
             row0 + lane / 4 * stride + lane % 4
         });
     }
-    let mut old = [0u8; 8];
-    old[..4].copy_from_slice(&values[row0..row0 + 4]);
-    old[4..].copy_from_slice(&values[upper..upper + 4]);
-    let (new, pass) = stencil8_live(&st, &ds.uniforms, &old, depth_pass, live);
-    values[row0..row0 + 4].copy_from_slice(&new[..4]);
-    values[upper..upper + 4].copy_from_slice(&new[4..]);
+    // The two words joined in a register, not through an array (two four-byte stores read
+    // back by one eight-byte load stall the store forwarding).
+    let word = |v: &[u8]| u32::from_le_bytes([v[0], v[1], v[2], v[3]]);
+    let old =
+        u64::from(word(&values[row0..row0 + 4])) | u64::from(word(&values[upper..upper + 4])) << 32;
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: SSE2 is part of the x86-64 baseline.
+    let (new, pass) = unsafe { stencil8_word_sse2(&st, &ds.uniforms, old, depth_pass, live) };
+    #[cfg(not(target_arch = "x86_64"))]
+    let (new, pass) = {
+        let (new, pass) = stencil8_live(&st, &ds.uniforms, &old.to_le_bytes(), depth_pass, live);
+        (u64::from_le_bytes(new), pass)
+    };
+    values[row0..row0 + 4].copy_from_slice(&(new as u32).to_le_bytes());
+    values[upper..upper + 4].copy_from_slice(&((new >> 32) as u32).to_le_bytes());
     pass
 }
 
@@ -784,11 +793,25 @@ fn stencil8_sse2(
     depth_pass: u8,
     live: u8,
 ) -> ([u8; 8], u8) {
+    let (new, pass) = stencil8_word_sse2(st, u, u64::from_le_bytes(*old), depth_pass, live);
+    (new.to_le_bytes(), pass)
+}
+
+/// [`stencil8_sse2`] on the eight values as the bytes of a word (lane j in byte j).
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "sse2")]
+fn stencil8_word_sse2(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: u64,
+    depth_pass: u8,
+    live: u8,
+) -> (u64, u8) {
     use std::arch::x86_64::*;
     let splat = |b: u8| _mm_set1_epi8(b as i8);
     let ones = splat(0xFF);
-    // SAFETY: `old` holds eight bytes; an unaligned 64-bit load.
-    let o = unsafe { _mm_loadl_epi64(old.as_ptr() as *const __m128i) };
+    let o = _mm_cvtsi64_si128(old as i64);
     let test = stencil_test_sse2(st, u, o);
     let wm = splat(u.stencil_write_mask);
     let action = |op: StencilOp| {
@@ -823,11 +846,8 @@ fn stencil8_sse2(
         let lm = _mm_cmpeq_epi8(_mm_and_si128(splat(live), bits), bits);
         select(lm, new, o)
     };
-    let mut out = [0u8; 8];
-    // SAFETY: `out` holds eight bytes; an unaligned 64-bit store.
-    unsafe { _mm_storel_epi64(out.as_mut_ptr() as *mut __m128i, new) };
     let pass = _mm_movemask_epi8(both) as u8;
-    (out, pass)
+    (_mm_cvtsi128_si64(new) as u64, pass)
 }
 
 /// The stencil test of the low eight bytes of `o` (stored values) as byte masks (0xFF where
@@ -1120,6 +1140,7 @@ pub(super) fn tail_blend(ds: &FragmentDraw) -> simd::TailBlend {
         None => simd::TailBlend::None,
         Some(b) if b.is_add_one_one() => simd::TailBlend::AddOneOne,
         Some(b) if b.is_alpha_over() => simd::TailBlend::AlphaOver,
+        Some(b) if b.byte_factors() => simd::TailBlend::Bytes(b),
         Some(b) => simd::TailBlend::General(b, ds.uniforms.blend_color),
     }
 }
