@@ -1393,3 +1393,214 @@ fn modulate_units_match_the_general_path() {
     ];
     twins(&states);
 }
+
+/// One unit through `GL_COMBINE` with RGB function `rgb`, alpha function `alpha`, the first
+/// two sources and operands of each and the scales, a random `format` texture filtered by
+/// `min`, and the constant colour (0.6, 0.5, 0.4, 0.3).
+#[allow(clippy::too_many_arguments)]
+fn combine_unit(
+    gl: &mut Context,
+    rng: &mut Rng,
+    format: GLenum,
+    min: GLenum,
+    [rgb, alpha]: [GLenum; 2],
+    sources: [GLenum; 2],
+    operands: [GLenum; 2],
+    scales: [f32; 2],
+) {
+    unit(
+        gl,
+        rng,
+        GL_TEXTURE0,
+        format,
+        16,
+        min,
+        GL_COMBINE,
+        Some(([rgb, alpha], sources, scales)),
+    );
+    gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND0_RGB, operands[0] as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND1_RGB, operands[1] as i32);
+    gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.6, 0.5, 0.4, 0.3]);
+}
+
+/// One-unit draws on `pair_sampled8`'s fused blocks (the texels kept in registers): every
+/// `GL_COMBINE` function through the one-unit straight-line form (`cascade::Single`), with
+/// primary, constant, previous and crossbar sources (the unit itself, an absent unit), every
+/// operand kind, scales and blending; a one-unit `DECAL`, `BLEND` and `ADD` (the compiled
+/// cascade in registers) and `MODULATE` and `REPLACE` of textures without the fast layout
+/// (the tail), each against the general path.
+#[test]
+fn one_unit_fused_blocks_match_the_general_path() {
+    let states: [Setup; 12] = [
+        ("COMBINE REPLACE of the texture", |gl, rng| {
+            let f = [GL_REPLACE, GL_REPLACE];
+            let (s, o) = ([GL_TEXTURE, GL_PRIMARY_COLOR], [GL_SRC_COLOR; 2]);
+            combine_unit(
+                gl,
+                rng,
+                GL_RGBA,
+                GL_LINEAR_MIPMAP_LINEAR,
+                f,
+                s,
+                o,
+                [1.0, 1.0],
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("COMBINE MODULATE texture x primary, x2", |gl, rng| {
+            let f = [GL_MODULATE, GL_MODULATE];
+            let (s, o) = ([GL_TEXTURE, GL_PRIMARY_COLOR], [GL_SRC_COLOR; 2]);
+            combine_unit(
+                gl,
+                rng,
+                GL_RGB,
+                GL_LINEAR_MIPMAP_LINEAR,
+                f,
+                s,
+                o,
+                [2.0, 1.0],
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("COMBINE ADD previous + constant, alpha over", |gl, rng| {
+            let f = [GL_ADD, GL_ADD];
+            let (s, o) = ([GL_PREVIOUS, GL_CONSTANT], [GL_SRC_COLOR, GL_SRC_ALPHA]);
+            combine_unit(gl, rng, GL_RGBA, GL_LINEAR, f, s, o, [1.0, 1.0]);
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "COMBINE ADD_SIGNED of TEXTURE0 and 1 - primary",
+            |gl, rng| {
+                let f = [GL_ADD_SIGNED, GL_SUBTRACT];
+                let (s, o) = (
+                    [GL_TEXTURE0, GL_PRIMARY_COLOR],
+                    [GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR],
+                );
+                combine_unit(
+                    gl,
+                    rng,
+                    GL_LUMINANCE_ALPHA,
+                    GL_NEAREST_MIPMAP_LINEAR,
+                    f,
+                    s,
+                    o,
+                    [2.0, 4.0],
+                );
+                multi_strip(gl, rng, None);
+            },
+        ),
+        ("COMBINE INTERPOLATE by the constant alpha", |gl, rng| {
+            let f = [GL_INTERPOLATE, GL_INTERPOLATE];
+            let (s, o) = ([GL_TEXTURE, GL_PRIMARY_COLOR], [GL_SRC_COLOR; 2]);
+            combine_unit(
+                gl,
+                rng,
+                GL_RGB,
+                GL_LINEAR_MIPMAP_LINEAR,
+                f,
+                s,
+                o,
+                [1.0, 1.0],
+            );
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "COMBINE SUBTRACT of an absent unit (previous), 1 - texture alpha",
+            |gl, rng| {
+                let f = [GL_SUBTRACT, GL_MODULATE];
+                let (s, o) = (
+                    [GL_TEXTURE3, GL_TEXTURE],
+                    [GL_SRC_COLOR, GL_ONE_MINUS_SRC_ALPHA],
+                );
+                combine_unit(gl, rng, GL_RGBA, GL_LINEAR, f, s, o, [1.0, 2.0]);
+                multi_strip(gl, rng, None);
+            },
+        ),
+        ("COMBINE DOT3_RGB texture . primary", |gl, rng| {
+            let f = [GL_DOT3_RGB, GL_ADD];
+            let (s, o) = ([GL_TEXTURE, GL_PRIMARY_COLOR], [GL_SRC_COLOR; 2]);
+            combine_unit(
+                gl,
+                rng,
+                GL_RGB,
+                GL_LINEAR_MIPMAP_NEAREST,
+                f,
+                s,
+                o,
+                [1.0, 1.0],
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("COMBINE DOT3_RGBA x4, colour mask", |gl, rng| {
+            let f = [GL_DOT3_RGBA, GL_REPLACE];
+            let (s, o) = (
+                [GL_TEXTURE, GL_CONSTANT],
+                [GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR],
+            );
+            combine_unit(gl, rng, GL_INTENSITY, GL_LINEAR, f, s, o, [4.0, 2.0]);
+            gl.color_mask(1, 0, 1, 1);
+            multi_strip(gl, rng, None);
+        }),
+        ("DECAL of RGBA (cascade in registers)", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_RGBA,
+                16,
+                GL_LINEAR_MIPMAP_LINEAR,
+                GL_DECAL,
+                None,
+            );
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "BLEND of LUMINANCE_ALPHA (cascade in registers)",
+            |gl, rng| {
+                unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    GL_LUMINANCE_ALPHA,
+                    16,
+                    GL_LINEAR,
+                    GL_BLEND,
+                    None,
+                );
+                gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.1, 0.9, 0.3, 0.6]);
+                multi_strip(gl, rng, None);
+            },
+        ),
+        ("MODULATE of LUMINANCE (the tail)", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_LUMINANCE,
+                16,
+                GL_LINEAR_MIPMAP_LINEAR,
+                GL_MODULATE,
+                None,
+            );
+            multi_strip(gl, rng, None);
+        }),
+        ("REPLACE of ALPHA, ONE ONE (the tail)", |gl, rng| {
+            unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                GL_ALPHA,
+                16,
+                GL_NEAREST,
+                GL_REPLACE,
+                None,
+            );
+            gl.enable(GL_BLEND);
+            gl.blend_func(GL_ONE, GL_ONE);
+            multi_strip(gl, rng, None);
+        }),
+    ];
+    twins(&states);
+}

@@ -104,6 +104,114 @@ pub struct Program {
     ops: Vec<Op>,
     /// The registers holding the result's R, G, B, A.
     out: [Reg; 4],
+    /// The same cascade in the straight-line form of one `GL_COMBINE` unit, when it is one.
+    single: Option<Single>,
+}
+
+/// Where an argument of a one-unit `GL_COMBINE` environment ([`Single`]) comes from: every
+/// source resolved for the first unit (`PREVIOUS` and a crossbar read of an absent unit are the
+/// primary colour, a crossbar read of the unit itself its texel).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Src1 {
+    Primary,
+    Texel,
+    Constant,
+    Zero,
+}
+
+/// One argument of a [`Single`]: its source, whether it takes the source's alpha (RGB
+/// operands `SRC_ALPHA`, `ONE_MINUS_SRC_ALPHA`; every alpha operand), and whether it is
+/// `1 - value`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Arg1 {
+    src: Src1,
+    alpha: bool,
+    one_minus: bool,
+}
+
+impl Arg1 {
+    /// The registers `Single::run` reads for R, G, B (alpha: the last) from its table of
+    /// the primary colour (0..4), the texel (4..8), the constant colour (8..12) and zero (12).
+    fn index(self) -> [u8; 3] {
+        let first = match self.src {
+            Src1::Primary => 0,
+            Src1::Texel => 4,
+            Src1::Constant => 8,
+            Src1::Zero => return [12; 3],
+        };
+        if self.alpha {
+            [first + 3; 3]
+        } else {
+            [first, first + 1, first + 2]
+        }
+    }
+}
+
+/// The environment of a draw's only unit under `GL_COMBINE`, its sources resolved, for a
+/// block kernel that keeps every value in registers (`Single::run`): the operations of
+/// `texenv::combine` on the same values in the same order, so the same bits (twin
+/// `tests::single_equals_the_general_cascade`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Single {
+    rgb: CombineFunc,
+    alpha: CombineFunc,
+    rgb_args: [Arg1; 3],
+    alpha_args: [Arg1; 3],
+    /// `Arg1::index` of each argument, resolved once (R, G, B; alpha arguments: the last).
+    rgb_index: [[u8; 3]; 3],
+    alpha_index: [u8; 3],
+    rgb_scale: f32,
+    alpha_scale: f32,
+    constant: [f32; 4],
+}
+
+impl Single {
+    /// The straight-line form of unit `unit`'s environment `env` as the first and only unit
+    /// of a cascade; `None` unless its mode is `GL_COMBINE`.
+    fn new(env: &TexEnv, unit: usize) -> Option<Single> {
+        if env.mode != TexEnvMode::Combine {
+            return None;
+        }
+        let k = &env.combine;
+        let src = |s: CombineSource| match s {
+            CombineSource::Texture => Src1::Texel,
+            CombineSource::TextureUnit(u) if u as usize == unit => Src1::Texel,
+            CombineSource::TextureUnit(_) | CombineSource::PrimaryColor => Src1::Primary,
+            CombineSource::Previous => Src1::Primary,
+            CombineSource::Constant => Src1::Constant,
+            CombineSource::Zero => Src1::Zero,
+        };
+        let one_minus = |o: CombineOperand| {
+            matches!(
+                o,
+                CombineOperand::OneMinusSrcColor | CombineOperand::OneMinusSrcAlpha
+            )
+        };
+        let rgb_args = [0, 1, 2].map(|i| Arg1 {
+            src: src(k.src_rgb[i]),
+            alpha: matches!(
+                k.op_rgb[i],
+                CombineOperand::SrcAlpha | CombineOperand::OneMinusSrcAlpha
+            ),
+            one_minus: one_minus(k.op_rgb[i]),
+        });
+        let alpha_args = [0, 1, 2].map(|i| Arg1 {
+            src: src(k.src_alpha[i]),
+            alpha: true,
+            one_minus: one_minus(k.op_alpha[i]),
+        });
+        Some(Single {
+            rgb: k.rgb,
+            alpha: k.alpha,
+            rgb_args,
+            alpha_args,
+            rgb_index: rgb_args.map(Arg1::index),
+            alpha_index: alpha_args.map(|a| a.index()[2]),
+            rgb_scale: k.rgb_scale as f32,
+            alpha_scale: k.alpha_scale as f32,
+            constant: env.color,
+        })
+    }
 }
 
 impl PartialEq for Op {
@@ -413,6 +521,7 @@ impl Program {
                 texels: Vec::new(),
                 ops: Vec::new(),
                 out: PRIMARY,
+                single: None,
             },
             next: PRIMARY.len(),
         };
@@ -432,6 +541,9 @@ impl Program {
         }
         b.p.out = color;
         b.p.prune();
+        if let [(env, _, unit)] = units {
+            b.p.single = Single::new(env, *unit);
+        }
         Some(b.p)
     }
 
@@ -470,6 +582,16 @@ impl Program {
     pub fn is_empty(&self) -> bool {
         self.ops.is_empty()
     }
+
+    /// The one-unit `GL_COMBINE` form of the cascade, when it is one.
+    pub fn single(&self) -> Option<&Single> {
+        self.single.as_ref()
+    }
+
+    /// The units whose texels the program reads, in the order `run_regs` takes them.
+    pub fn texel_units(&self) -> impl Iterator<Item = usize> + '_ {
+        self.texels.iter().map(|&(unit, _)| unit)
+    }
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -477,8 +599,9 @@ mod x86 {
     use std::arch::x86_64::*;
     use std::mem::MaybeUninit;
 
-    use super::{Kind, Op, Program};
+    use super::{Kind, Op, Program, Single};
     use crate::common::limits::MAX_TEXTURE_UNITS;
+    use crate::common::values::CombineFunc;
     use crate::fragment::texenv::{Avx8, Lanes};
     use crate::texture::simd::Texels8;
 
@@ -492,11 +615,45 @@ mod x86 {
             primary: &Texels8,
             by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
         ) -> Texels8 {
+            // SAFETY (loads and stores): each array holds eight f32; unaligned access.
+            let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
+            let color = self.run_with(primary, |_, unit| match &by_unit[unit] {
+                Some(t) => [load(&t[0]), load(&t[1]), load(&t[2]), load(&t[3])],
+                None => [_mm256_setzero_ps(); 4],
+            });
+            let mut out = [[0f32; 8]; 4];
+            for (o, c) in out.iter_mut().zip(color) {
+                // SAFETY: eight f32; unaligned store.
+                unsafe { _mm256_storeu_ps(o.as_mut_ptr(), c) };
+            }
+            out
+        }
+
+        /// [`Program::run_avx2`] with the texels in registers and the result left there:
+        /// `texels[i]` is the texel of the unit of [`Program::texel_units`]' `i`-th entry
+        /// (zero where `texels` is shorter). The same bits.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn run_regs(&self, primary: &Texels8, texels: &[[__m256; 4]]) -> [__m256; 4] {
+            self.run_with(primary, |i, _| {
+                texels.get(i).copied().unwrap_or([_mm256_setzero_ps(); 4])
+            })
+        }
+
+        /// The operations on the clamped primary colours and the texels `texel(i, unit)` of
+        /// the `i`-th entry of `self.texels` (unit `unit`): the result's R, G, B, A.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        fn run_with(
+            &self,
+            primary: &Texels8,
+            texel: impl Fn(usize, usize) -> [__m256; 4],
+        ) -> [__m256; 4] {
             // Every register an operation reads was written before it (`Program::new` hands
             // out registers in order and reads only the primary colour, texels, constants
             // and earlier results); u8 indices keep to the 256 entries.
             let mut r: File = [MaybeUninit::uninit(); 258];
-            // SAFETY (loads and stores): each array holds eight f32; unaligned access.
+            // SAFETY (loads): each array holds eight f32; unaligned access.
             let load = |a: &[f32; 8]| unsafe { _mm256_loadu_ps(a.as_ptr()) };
             for c in 0..4 {
                 r[c] = MaybeUninit::new(Avx8(load(&primary[c])).clamp01().0);
@@ -504,10 +661,9 @@ mod x86 {
             for &(reg, v) in &self.consts {
                 r[reg as usize] = MaybeUninit::new(_mm256_set1_ps(v));
             }
-            for &(unit, first) in &self.texels {
-                let t = by_unit[unit].as_ref();
-                for c in 0..4 {
-                    let v = t.map_or(_mm256_setzero_ps(), |t| load(&t[c]));
+            for (i, &(unit, first)) in self.texels.iter().enumerate() {
+                let t = texel(i, unit);
+                for (c, v) in t.into_iter().enumerate() {
                     r[first as usize + c] = MaybeUninit::new(v);
                 }
             }
@@ -520,12 +676,142 @@ mod x86 {
             }
             // SAFETY: written before read (above).
             let get = |i: u8| unsafe { r[i as usize].assume_init() };
-            let mut out = [[0f32; 8]; 4];
-            for (o, &reg) in out.iter_mut().zip(&self.out) {
-                // SAFETY: eight f32; unaligned store.
-                unsafe { _mm256_storeu_ps(o.as_mut_ptr(), get(reg)) };
+            [
+                get(self.out[0]),
+                get(self.out[1]),
+                get(self.out[2]),
+                get(self.out[3]),
+            ]
+        }
+    }
+
+    impl Single {
+        /// The environment on eight fragments' clamped primary colours `p` and texels `t`:
+        /// `texenv::combine` on `Avx8` for the first unit, the same operations in the same
+        /// order.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn run(&self, p: [__m256; 4], t: [__m256; 4]) -> [__m256; 4] {
+            let zero = Avx8(_mm256_setzero_ps());
+            let one = Avx8::splat(1.0);
+            let half = Avx8::splat(0.5);
+            // The sources by `Arg1::index`: primary, texel, constant, zero (indexed in
+            // memory: one load per argument and channel, no selects).
+            let k = |c: usize| _mm256_set1_ps(self.constant[c]);
+            let z = _mm256_setzero_ps();
+            let tab: [__m256; 16] = [
+                p[0],
+                p[1],
+                p[2],
+                p[3],
+                t[0],
+                t[1],
+                t[2],
+                t[3],
+                k(0),
+                k(1),
+                k(2),
+                k(3),
+                z,
+                z,
+                z,
+                z,
+            ];
+            let at = |i: u8| Avx8(tab[i as usize & 15]);
+            // `operand_rgb` and `operand_alpha` of the source.
+            let arg_rgb = |i: usize| -> [Avx8; 3] {
+                let idx = self.rgb_index[i];
+                let v = [at(idx[0]), at(idx[1]), at(idx[2])];
+                if self.rgb_args[i].one_minus {
+                    [one.sub(v[0]), one.sub(v[1]), one.sub(v[2])]
+                } else {
+                    v
+                }
+            };
+            let arg_a = |i: usize| -> Avx8 {
+                let v = at(self.alpha_index[i]);
+                if self.alpha_args[i].one_minus {
+                    one.sub(v)
+                } else {
+                    v
+                }
+            };
+            let rs = Avx8::splat(self.rgb_scale);
+            let as_ = Avx8::splat(self.alpha_scale);
+            let mut out = [zero; 4];
+            match self.rgb {
+                CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => {
+                    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+                    let d = Avx8::splat(4.0).mul(
+                        a0[0]
+                            .sub(half)
+                            .mul(a1[0].sub(half))
+                            .add(a0[1].sub(half).mul(a1[1].sub(half)))
+                            .add(a0[2].sub(half).mul(a1[2].sub(half))),
+                    );
+                    let v = d.mul(rs).clamp01();
+                    out = [v, v, v, zero];
+                    if self.rgb == CombineFunc::Dot3Rgba {
+                        out[3] = d.mul(as_).clamp01();
+                        return out.map(|c| c.0);
+                    }
+                }
+                CombineFunc::Replace => {
+                    let a0 = arg_rgb(0);
+                    for i in 0..3 {
+                        out[i] = a0[i].mul(rs).clamp01();
+                    }
+                }
+                CombineFunc::Modulate => {
+                    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+                    for i in 0..3 {
+                        out[i] = a0[i].mul(a1[i]).mul(rs).clamp01();
+                    }
+                }
+                CombineFunc::Add => {
+                    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+                    for i in 0..3 {
+                        out[i] = a0[i].add(a1[i]).mul(rs).clamp01();
+                    }
+                }
+                CombineFunc::AddSigned => {
+                    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+                    for i in 0..3 {
+                        out[i] = a0[i].add(a1[i]).sub(half).mul(rs).clamp01();
+                    }
+                }
+                CombineFunc::Interpolate => {
+                    let (a0, a1, a2) = (arg_rgb(0), arg_rgb(1), arg_rgb(2));
+                    for i in 0..3 {
+                        out[i] = a0[i]
+                            .mul(a2[i])
+                            .add(a1[i].mul(one.sub(a2[i])))
+                            .mul(rs)
+                            .clamp01();
+                    }
+                }
+                CombineFunc::Subtract => {
+                    let (a0, a1) = (arg_rgb(0), arg_rgb(1));
+                    for i in 0..3 {
+                        out[i] = a0[i].sub(a1[i]).mul(rs).clamp01();
+                    }
+                }
             }
-            out
+            out[3] = match self.alpha {
+                CombineFunc::Modulate => arg_a(0).mul(arg_a(1)),
+                CombineFunc::Add => arg_a(0).add(arg_a(1)),
+                CombineFunc::AddSigned => arg_a(0).add(arg_a(1)).sub(half),
+                CombineFunc::Interpolate => {
+                    let c = arg_a(2);
+                    arg_a(0).mul(c).add(arg_a(1).mul(one.sub(c)))
+                }
+                CombineFunc::Subtract => arg_a(0).sub(arg_a(1)),
+                // REPLACE, and DOT3 as an alpha function (`texenv::combine_fn`).
+                _ => arg_a(0),
+            }
+            .mul(as_)
+            .clamp01();
+            out.map(|c| c.0)
         }
     }
 
@@ -774,5 +1060,104 @@ mod tests {
             }
         }
         assert!(ops > 3000 * 4, "{ops} operations");
+    }
+
+    /// The twin of the one-unit `GL_COMBINE` form: random environments of one unit (every
+    /// RGB and alpha function, DOT3 included, every source including crossbar reads of the
+    /// unit itself and of absent units, every operand, scale and constant colour), random
+    /// primary colours and texels (outside [0, 1] too); `Single::run` gives the bits of
+    /// `texenv::apply` on one fragment at a time, as the general path runs it.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn single_equals_the_general_cascade() {
+        use crate::fragment::texenv::{apply, CombineInputs};
+        use std::arch::x86_64::*;
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let mut g = Gen(0x2545_F491_4F6C_DD1D);
+        let funcs = [
+            F::Replace,
+            F::Modulate,
+            F::Add,
+            F::AddSigned,
+            F::Interpolate,
+            F::Subtract,
+            F::Dot3Rgb,
+            F::Dot3Rgba,
+        ];
+        let operands = [
+            O::SrcColor,
+            O::OneMinusSrcColor,
+            O::SrcAlpha,
+            O::OneMinusSrcAlpha,
+        ];
+        let mut seen = [false; 8];
+        for case in 0..4000 {
+            let unit = (g.next() % MAX_TEXTURE_UNITS as u64) as usize;
+            let sources = [
+                S::Texture,
+                S::TextureUnit(unit as u8),
+                S::TextureUnit(((unit + 1) % MAX_TEXTURE_UNITS) as u8),
+                S::Constant,
+                S::PrimaryColor,
+                S::Previous,
+                S::Zero,
+            ];
+            let mut env = TexEnv {
+                mode: TexEnvMode::Combine,
+                ..TexEnv::default()
+            };
+            env.color = [0; 4].map(|_| g.value().clamp(0.0, 1.0));
+            let k = &mut env.combine;
+            k.rgb = g.pick(&funcs);
+            k.alpha = g.pick(&funcs[..6]);
+            for i in 0..4 {
+                k.src_rgb[i] = g.pick(&sources);
+                k.src_alpha[i] = g.pick(&sources);
+                k.op_rgb[i] = g.pick(&operands);
+                k.op_alpha[i] = g.pick(&operands);
+            }
+            k.rgb_scale = g.pick(&[1, 2, 4]);
+            k.alpha_scale = g.pick(&[1, 2, 4]);
+            let base = g.pick(&[BaseFormat::Rgba, BaseFormat::Luminance, BaseFormat::Alpha]);
+            let program = Program::new(&[(env, base, unit)]).expect("compiles");
+            let single = program.single().expect("one COMBINE unit");
+            seen[funcs
+                .iter()
+                .position(|&f| f == env.combine.rgb)
+                .unwrap_or(0)] = true;
+            let lanes = |g: &mut Gen| [0; 4].map(|_| [0; 8].map(|_| g.value()));
+            let (primary, texel) = (lanes(&mut g), lanes(&mut g));
+            // SAFETY: AVX2 is present (checked above); eight f32 per load and store.
+            let got = unsafe {
+                let load = |a: &[f32; 8]| _mm256_loadu_ps(a.as_ptr());
+                let clamp = |v: __m256| {
+                    _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0))
+                };
+                let p = [0, 1, 2, 3].map(|c| clamp(load(&primary[c])));
+                let t = [0, 1, 2, 3].map(|c| load(&texel[c]));
+                let out = single.run(p, t);
+                let mut got = [[0f32; 8]; 4];
+                for (g, v) in got.iter_mut().zip(out) {
+                    _mm256_storeu_ps(g.as_mut_ptr(), v);
+                }
+                got
+            };
+            for j in 0..8 {
+                let at = |t: &Texels8| t.map(|c| c[j]);
+                let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+                texels[unit] = Some(at(&texel));
+                let p = at(&primary).map(|c| c.max(0.0).min(1.0));
+                let inputs = CombineInputs {
+                    primary: p,
+                    texels: &texels,
+                };
+                let want = apply(&env, base, unit, p, at(&texel), &inputs);
+                let bits = |v: [f32; 4]| v.map(|c| (c + 0.0).to_bits());
+                assert_eq!(bits(want), bits(at(&got)), "case {case}, lane {j}: {env:?}");
+            }
+        }
+        assert_eq!(seen, [true; 8], "every RGB function drawn");
     }
 }

@@ -303,7 +303,7 @@ pub fn fog_factors8(
 }
 
 #[cfg(target_arch = "x86_64")]
-pub(crate) use x86::shade8_bytes;
+pub(crate) use x86::{block_combined8, shade8_bytes};
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
@@ -313,6 +313,7 @@ mod x86 {
     use crate::common::limits::MAX_TEXTURE_UNITS;
     use crate::common::values::{BlendEquation, BlendFactor, CompareFunc, FogMode, LogicOp};
     use crate::fragment::bytenv::cascade;
+    use crate::fragment::cascade::Program;
     use crate::fragment::draw::TextureUnitDraw;
     use crate::fragment::fog::EXP2_TAYLOR;
     use crate::fragment::key::BlendKey;
@@ -1016,6 +1017,55 @@ mod x86 {
             (_, None) => [_mm256_setzero_ps(); 4],
         };
         Some(shade8_regs(tail, primary, &tex, dst, live, after))
+    }
+
+    /// [`block_shaded8`] for one unit whose environment is the compiled cascade `program`
+    /// (reading at most that unit's texel): the texels left in registers, the program on them
+    /// ([`Program::run_regs`], or its one-unit `GL_COMBINE` form `Single::run`: the bits of
+    /// `Program::run_avx2`) and [`shade8`] with its
+    /// result as a replacing texel (`tail` of a draw without `modulate`, `rgb_from_primary`
+    /// or `alpha_from_primary`), as the general block route runs them. `None` where
+    /// `block_texels8` would answer `None` (the caller takes the general route). The caller
+    /// checked that the processor has AVX2.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn block_combined8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        live: u8,
+        fixed_plan: Option<(usize, bool)>,
+        lod: &LodSelect,
+        levels: &[Option<Level8>],
+        program: &Program,
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        after: &After8,
+    ) -> Option<([u32; 8], u8)> {
+        let mut texel = [[_mm256_setzero_ps(); 4]; 1];
+        let reads = program.texel_units().next().is_some();
+        if reads {
+            texel[0] = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
+                (words, Some(level)) => texels_of_words(level, words),
+                (_, None) => [_mm256_setzero_ps(); 4],
+            };
+        }
+        let color = match program.single() {
+            Some(single) => {
+                // The clamped primary colour, as `Program::run_regs` clamps it.
+                let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+                let mut p = [zero; 4];
+                for (v, c) in p.iter_mut().zip(primary) {
+                    // SAFETY: eight f32; unaligned load.
+                    let c = unsafe { _mm256_loadu_ps(c.as_ptr()) };
+                    *v = _mm256_min_ps(_mm256_max_ps(c, zero), one);
+                }
+                single.run(p, texel[0])
+            }
+            None => program.run_regs(primary, &texel[..usize::from(reads)]),
+        };
+        Some(shade8_regs(tail, primary, &color, dst, live, after))
     }
 
     #[target_feature(enable = "avx2")]

@@ -357,6 +357,13 @@ pub fn pair_sampled8<'a>(
     if it.coverage != 1.0 {
         return pair_by_rows(ds, tile, pairs, it);
     }
+    #[cfg(target_arch = "x86_64")]
+    if !ds.key.byte_env {
+        let (single, tail) = sampled8_tail(ds);
+        if let Some(fused) = fused_unit(ds, single) {
+            return pair_fused(ds, tile, pairs, it, fused, single, &tail);
+        }
+    }
     let Sampled8 {
         mut samplers,
         single,
@@ -376,6 +383,7 @@ pub fn pair_sampled8<'a>(
         constant_words = unsafe { crate::fragment::bytenv::exact_words(&c.map(|v| [v; 8]), 0xFF) };
         byte_env = constant_words.is_some();
     }
+    let fused = fused_unit(ds, single);
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
             Sampled8::place_samplers(&mut samplers, ds, it, y, true);
@@ -387,6 +395,13 @@ pub fn pair_sampled8<'a>(
             if let Some(done) =
                 unsafe { byte_block(ds, &samplers, &tail, gx, group, constant_words) }
             {
+                return Some(done);
+            }
+        }
+        #[cfg(target_arch = "x86_64")]
+        if let (Some(fused), Some(sampler)) = (fused, &samplers[0]) {
+            // SAFETY: AVX2 is present (`fused_unit` checked it).
+            if let Some(done) = unsafe { fused_block(fused, sampler, &tail, gx, group) } {
                 return Some(done);
             }
         }
@@ -410,6 +425,129 @@ pub fn pair_sampled8<'a>(
         }
         sampled8_shade(ds, single, &tail, group, &by_unit)
     });
+}
+
+/// How [`pair_sampled8`] shades the blocks of a one-unit draw in one go ([`fused_block`]):
+/// the texels left in registers, then the tail (one REPLACE or MODULATE unit, as
+/// `pair_textured`'s blocks) or the compiled cascade and the tail.
+#[derive(Clone, Copy)]
+enum Fused<'a> {
+    Tail,
+    Program(&'a crate::fragment::cascade::Program),
+}
+
+/// The fused form of a draw's blocks: one unit on a 2D texture (a cube map's sampler does
+/// not take it), AVX2 present; `None` for the other draws (the general block route).
+fn fused_unit(ds: &FragmentDraw, single: SingleUnit) -> Option<Fused<'_>> {
+    if ds.units.len() != 1 || !crate::common::cpu::available() {
+        return None;
+    }
+    match (single, &ds.cascade) {
+        (Some(_), _) => Some(Fused::Tail),
+        // Only the unit's own texel is read (a crossbar source of an absent unit reads
+        // the incoming colour: `Program::new` resolved it).
+        (None, Some(p)) if p.texel_units().all(|u| u == ds.units[0].unit) => {
+            Some(Fused::Program(p))
+        }
+        _ => None,
+    }
+}
+
+/// [`pair_sampled8`] for a one-unit draw with a fused form ([`fused_unit`]) and without the
+/// byte environment: the unit's block sampler alone (not the eight-unit arrays), each block
+/// by [`fused_block`], else by the general block route (the unit's texels, then
+/// [`sampled8_shade`]). The same pixels.
+#[cfg(target_arch = "x86_64")]
+#[allow(clippy::too_many_arguments)]
+fn pair_fused<'a>(
+    ds: &'a FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants<'a>,
+    fused: Fused,
+    single: SingleUnit,
+    tail: &Tail8,
+) {
+    let (Some(unit), Some(&(first_y, _))) = (ds.units.first(), pairs.first()) else {
+        return;
+    };
+    let mut sampler = Perspective8::block(unit, 0, it, first_y);
+    let mut sampler_y = first_y;
+    for_each_block(ds, tile, pairs, it, |y, gx, group| {
+        if y != sampler_y {
+            sampler = Perspective8::block(unit, 0, it, y);
+            sampler_y = y;
+        }
+        if let Some(s) = &sampler {
+            // SAFETY: AVX2 is present (`fused_unit` checked it).
+            if let Some(done) = unsafe { fused_block(fused, s, tail, gx, group) } {
+                return Some(done);
+            }
+        }
+        let mut out = [[0f32; 8]; 4];
+        let x = gx as f64 + 0.5;
+        if !sampler
+            .as_ref()
+            .is_some_and(|p| p.texels_block(x, group.pass, &mut out))
+        {
+            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+                let (x, yc) = block_lane_centre(gx, y, lane);
+                let t = unit_texel(unit, it, x, yc);
+                for c in 0..4 {
+                    out[c][lane] = t[c];
+                }
+            }
+        }
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        by_unit[unit.unit] = Some(out);
+        sampled8_shade(ds, single, tail, group, &by_unit)
+    });
+}
+
+/// A block of a one-unit draw ([`fused_unit`]) with the texels in registers: the same
+/// colour words as the general block route (`texels_block`, then `sampled8_shade`: the same
+/// filter, the same cascade operations, the same tail). `None` (the caller takes the general
+/// route) for a cube map or where the block filter does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn fused_block(
+    fused: Fused,
+    sampler: &Perspective8,
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    if sampler.cube.is_some() {
+        return None;
+    }
+    let x = gx as f64 + 0.5;
+    match fused {
+        Fused::Tail => simd::block_shaded8(
+            &sampler.planes,
+            x,
+            group.pass,
+            sampler.fixed_plan,
+            sampler.lod,
+            sampler.levels,
+            tail,
+            &group.primary,
+            &group.dst,
+            &group.after,
+        ),
+        Fused::Program(program) => simd::block_combined8(
+            &sampler.planes,
+            x,
+            group.pass,
+            sampler.fixed_plan,
+            sampler.lod,
+            sampler.levels,
+            program,
+            tail,
+            &group.primary,
+            &group.dst,
+            &group.after,
+        ),
+    }
 }
 
 /// A block of a `FragmentKey::byte_env` draw on bytes (`fragment::bytenv`): every unit's
