@@ -37,7 +37,7 @@ pub fn exact_byte(v: f32) -> Option<u8> {
 }
 
 /// Which of colour and alpha a texture of base format `base` has (table 3.22).
-fn has_color_alpha(base: BaseFormat) -> (bool, bool) {
+pub(crate) fn has_color_alpha(base: BaseFormat) -> (bool, bool) {
     match base {
         BaseFormat::Alpha => (false, true),
         BaseFormat::Luminance

@@ -742,13 +742,7 @@ mod x86 {
             match self.rgb {
                 CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => {
                     let (a0, a1) = (arg_rgb(0), arg_rgb(1));
-                    let d = Avx8::splat(4.0).mul(
-                        a0[0]
-                            .sub(half)
-                            .mul(a1[0].sub(half))
-                            .add(a0[1].sub(half).mul(a1[1].sub(half)))
-                            .add(a0[2].sub(half).mul(a1[2].sub(half))),
-                    );
+                    let d = crate::fragment::texenv::dot3(a0, a1);
                     let v = d.mul(rs).clamp01();
                     out = [v, v, v, zero];
                     if self.rgb == CombineFunc::Dot3Rgba {

@@ -294,6 +294,20 @@ fn operand_alpha<L: Lanes>(op: CombineOperand, v: Rgba<L>) -> L {
     }
 }
 
+/// DOT3's `4 ((a0.r - 1/2)(a1.r - 1/2) + (a0.g - 1/2)(a1.g - 1/2) + (a0.b - 1/2)(a1.b - 1/2))`
+/// (table 3.24), before the scale and the clamp; the one form of it that every route uses.
+#[inline(always)]
+pub(crate) fn dot3<L: Lanes>(a0: [L; 3], a1: [L; 3]) -> L {
+    let half = L::splat(0.5);
+    L::splat(4.0).mul(
+        a0[0]
+            .sub(half)
+            .mul(a1[0].sub(half))
+            .add(a0[1].sub(half).mul(a1[1].sub(half)))
+            .add(a0[2].sub(half).mul(a1[2].sub(half))),
+    )
+}
+
 #[inline(always)]
 fn combine_fn<L: Lanes>(f: CombineFunc, a: L, b: L, c: L) -> L {
     match f {
@@ -354,18 +368,11 @@ pub fn combine<L: Lanes>(
     };
     let rs = L::splat(k.rgb_scale as f32);
     let as_ = L::splat(k.alpha_scale as f32);
-    let half = L::splat(0.5);
     let zero = L::splat(0.0);
     let mut out = [zero; 4];
     match k.rgb {
         CombineFunc::Dot3Rgb | CombineFunc::Dot3Rgba => {
-            let d = L::splat(4.0).mul(
-                a0[0]
-                    .sub(half)
-                    .mul(a1[0].sub(half))
-                    .add(a0[1].sub(half).mul(a1[1].sub(half)))
-                    .add(a0[2].sub(half).mul(a1[2].sub(half))),
-            );
+            let d = dot3(a0, a1);
             let v = d.mul(rs).clamp01();
             out = [v, v, v, zero];
             if k.rgb == CombineFunc::Dot3Rgba {

@@ -194,22 +194,13 @@ fn modulate8_avx2(
     primary: &Texels8,
     by_unit: &[Option<Texels8>; MAX_TEXTURE_UNITS],
 ) -> Texels8 {
-    use crate::texture::format::BaseFormat;
     use std::arch::x86_64::*;
     use texenv::{Avx8, Lanes};
     // SAFETY: each array holds eight f32; unaligned loads and stores.
     let load = |a: &[f32; 8]| Avx8(unsafe { _mm256_loadu_ps(a.as_ptr()) });
     let mut color = [0, 1, 2, 3].map(|c| load(&primary[c]).clamp01());
     for u in &ds.units {
-        let (has_color, has_alpha) = match u.base {
-            BaseFormat::Alpha => (false, true),
-            BaseFormat::Luminance
-            | BaseFormat::Rgb
-            | BaseFormat::DepthComponent
-            | BaseFormat::Red
-            | BaseFormat::Rg => (true, false),
-            BaseFormat::LuminanceAlpha | BaseFormat::Rgba | BaseFormat::Intensity => (true, true),
-        };
+        let (has_color, has_alpha) = crate::fragment::bytenv::has_color_alpha(u.base);
         let ct = |c: usize| match &by_unit[u.unit] {
             Some(t) => load(&t[c]),
             None => Avx8::splat(0.0),

@@ -157,14 +157,8 @@ fn flat_row<const TEX: u8>(
             if let Some(passed) =
                 simd::textured8_in_place(&sm, x, hi, tail, &c.primary, words, pass, &c.after)
             {
-                if depth_write && passed != 0 {
-                    if passed == 0xFF {
-                        tile.depth[at..at + 8].fill(d);
-                    } else {
-                        for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
-                            *o = if passed & (1 << j) != 0 { d } else { *o };
-                        }
-                    }
+                if depth_write {
+                    write_depths(&mut tile.depth, at, hi, passed, d);
                 }
                 gx += 8;
                 continue;
@@ -207,20 +201,27 @@ fn flat_row<const TEX: u8>(
                         *o = w.to_le_bytes();
                     }
                 }
-                if depth_write && passed != 0 {
-                    if passed == 0xFF {
-                        // (Every lane passed, so `hi` is 8.)
-                        tile.depth[at..at + 8].fill(d);
-                    } else {
-                        // Without a branch per lane: a lane that did not pass keeps its depth.
-                        for (j, o) in tile.depth[at..at + hi].iter_mut().enumerate() {
-                            *o = if passed & (1 << j) != 0 { d } else { *o };
-                        }
-                    }
+                if depth_write {
+                    write_depths(&mut tile.depth, at, hi, passed, d);
                 }
             }
         }
         gx += 8;
+    }
+}
+
+/// Depth `d` written to the lanes of `passed` among `0..hi` (pixels `at + j` of the tile's
+/// depths).
+#[inline(always)]
+fn write_depths(depth: &mut [u32], at: usize, hi: usize, passed: u8, d: u32) {
+    if passed == 0xFF {
+        // (Every lane passed, so `hi` is 8.)
+        depth[at..at + 8].fill(d);
+    } else if passed != 0 {
+        // Without a branch per lane: a lane that did not pass keeps its depth.
+        for (j, o) in depth[at..at + hi].iter_mut().enumerate() {
+            *o = if passed & (1 << j) != 0 { d } else { *o };
+        }
     }
 }
 

@@ -496,20 +496,30 @@ impl Perspective8<'_> {
             } else {
                 texture_simd::filter8_mix([level(d1)?, level(d2)?], linear, &s, &t, &weight)?
             };
-            if lanes == live {
-                *out = texels;
+            if put_lanes(out, texels, lanes, live) {
                 return Some(());
-            }
-            for j in 0..8 {
-                if lanes & (1 << j) != 0 {
-                    for c in 0..4 {
-                        out[c][j] = texels[c][j];
-                    }
-                }
             }
         }
         Some(())
     }
+}
+
+/// The lanes `lanes` of `texels` into `out`; whether they are all of `live` (then `out` is
+/// `texels` and the block is done).
+#[inline(always)]
+fn put_lanes(out: &mut Texels8, texels: Texels8, lanes: u8, live: u8) -> bool {
+    if lanes == live {
+        *out = texels;
+        return true;
+    }
+    for j in 0..8 {
+        if lanes & (1 << j) != 0 {
+            for c in 0..4 {
+                out[c][j] = texels[c][j];
+            }
+        }
+    }
+    false
 }
 
 /// The texels of a cube map at lanes whose faces and face coordinates are `faces`, `s`, `t`
@@ -538,16 +548,8 @@ fn cube_faces_filter(
         left &= !lanes;
         let lvl = cube.faces.get(face as usize)?.get(level)?.as_ref()?;
         let texels = texture_simd::filter8(lvl, linear, s, t)?;
-        if lanes == live {
-            *out = texels;
+        if put_lanes(out, texels, lanes, live) {
             return Some(());
-        }
-        for j in 0..8 {
-            if lanes & (1 << j) != 0 {
-                for c in 0..4 {
-                    out[c][j] = texels[c][j];
-                }
-            }
         }
     }
     Some(())
