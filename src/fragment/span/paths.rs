@@ -83,7 +83,19 @@ pub(super) fn for_each_block(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    mut shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+) {
+    shade_blocks(ds, tile, pairs, it, shade)
+}
+
+/// [`for_each_block`] with the blocks shaded by any [`BlockShade`].
+#[inline(always)]
+pub(super) fn shade_blocks(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    mut shade: impl BlockShade,
 ) {
     #[cfg(target_arch = "x86_64")]
     if crate::common::cpu::available() {
@@ -104,7 +116,7 @@ fn blocks_avx2(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: &mut impl BlockShade,
 ) {
     blocks_any(ds, tile, pairs, it, shade)
 }
@@ -116,7 +128,7 @@ fn blocks_any(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: &mut impl BlockShade,
 ) {
     // Unfogged draws step no fog coordinate.
     if lane_fog(ds).is_some() {
@@ -133,7 +145,7 @@ pub(super) fn blocks<const FOG: bool>(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: &mut impl BlockShade,
 ) {
     let fog = if FOG { lane_fog(ds) } else { None };
     let colors = lane_colors(ds);
@@ -188,7 +200,7 @@ pub(super) fn blocks<const FOG: bool>(
             }
             if group.pass != 0 {
                 group.fog_factors(fog);
-                if let Some((words, passed)) = shade(y, gx, &group) {
+                if let Some((words, passed)) = shade.shade(y, gx, &group) {
                     write_rows(ds, tile, row0, stride, live, &words, passed, &group.depth);
                 }
             }
@@ -377,23 +389,60 @@ pub fn pair_textured<'a, const TEX: u8>(
         Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, first_y),
         _ => None,
     };
-    let (Some(mut sampler), Some(tail)) = (sampler, tail) else {
+    let (Some(sampler), Some(tail)) = (sampler, tail) else {
         return pair_by_rows(ds, tile, pairs, it);
     };
-    let mut sampler_y = first_y;
-    for_each_block(ds, tile, pairs, it, |y, gx, group| {
-        if y != sampler_y {
+    let shader = TexturedBlocks::<TEX> {
+        unit,
+        it,
+        sampler,
+        sampler_y: first_y,
+        tail,
+    };
+    shade_blocks(ds, tile, pairs, it, shader);
+}
+
+/// What [`for_each_block`] asks of a block: its colour words and passing lanes from its
+/// inputs ([`for_each_block`]'s `shade`), given the block's row pair `y` and column `gx`.
+pub(super) trait BlockShade {
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)>;
+}
+
+impl<F: FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>> BlockShade for F {
+    #[inline(always)]
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        self(y, gx, group)
+    }
+}
+
+/// [`pair_textured`]'s blocks: the unit's block sampler on the current row pair and the tail.
+/// (A type, not a closure, so that its method can be inlined into the block loop.)
+struct TexturedBlocks<'a, 'i, const TEX: u8> {
+    unit: &'a TextureUnitDraw,
+    it: &'i Interpolants<'a>,
+    sampler: Perspective8<'a>,
+    sampler_y: i32,
+    tail: Tail8,
+}
+
+impl<const TEX: u8> BlockShade for TexturedBlocks<'_, '_, TEX> {
+    #[inline(always)]
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        if y != self.sampler_y {
             // The same unit and levels as the first pair's: only the rows' planes move.
-            if let Some(s) = Perspective8::block(unit, 0, it, y) {
-                sampler = s;
+            if let Some(s) = Perspective8::block(self.unit, 0, self.it, y) {
+                self.sampler = s;
             }
-            sampler_y = y;
+            self.sampler_y = y;
         }
-        if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
+        if let Some(shaded) = self
+            .sampler
+            .shaded_block(gx as f64 + 0.5, group, &self.tail)
+        {
             return Some(shaded);
         }
-        textured_block_slow::<TEX>(unit, it, &sampler, &tail, y, gx, group)
-    });
+        textured_block_slow::<TEX>(self.unit, self.it, &self.sampler, &self.tail, y, gx, group)
+    }
 }
 
 /// [`pair_textured`]'s block where the fused kernel does not take it (kept out of the block
