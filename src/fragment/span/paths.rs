@@ -83,13 +83,58 @@ pub(super) fn for_each_block(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    mut shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+) {
+    shade_blocks(ds, tile, pairs, it, shade)
+}
+
+/// [`for_each_block`] with the blocks shaded by any [`BlockShade`].
+#[inline(always)]
+pub(super) fn shade_blocks(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    mut shade: impl BlockShade,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if crate::common::cpu::available() {
+        // SAFETY: AVX2 is present (checked just above).
+        return unsafe { blocks_avx2(ds, tile, pairs, it, &mut shade) };
+    }
+    blocks_any(ds, tile, pairs, it, &mut shade)
+}
+
+/// [`blocks_any`] compiled for AVX2: the same operations (IEEE, no contraction into fused
+/// multiply-adds: the same bits), with the eight-lane kernels it calls (`load_raw`, the
+/// fused block kernels) inlined into the loop instead of called with every live register
+/// spilled around them.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn blocks_avx2(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    shade: &mut impl BlockShade,
+) {
+    blocks_any(ds, tile, pairs, it, shade)
+}
+
+/// [`for_each_block`] on any processor: fogged or not.
+#[inline(always)]
+fn blocks_any(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    shade: &mut impl BlockShade,
 ) {
     // Unfogged draws step no fog coordinate.
     if lane_fog(ds).is_some() {
-        blocks::<true>(ds, tile, pairs, it, &mut shade)
+        blocks::<true>(ds, tile, pairs, it, shade)
     } else {
-        blocks::<false>(ds, tile, pairs, it, &mut shade)
+        blocks::<false>(ds, tile, pairs, it, shade)
     }
 }
 
@@ -100,7 +145,7 @@ pub(super) fn blocks<const FOG: bool>(
     tile: &mut Tile,
     pairs: &[RowPair],
     it: &Interpolants,
-    shade: &mut impl FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>,
+    shade: &mut impl BlockShade,
 ) {
     let fog = if FOG { lane_fog(ds) } else { None };
     let colors = lane_colors(ds);
@@ -109,7 +154,6 @@ pub(super) fn blocks<const FOG: bool>(
     // eight lanes at once (`GroupInputs::load_raw`: the same values). A constant primary
     // colour (`Interpolants::constant_primary`) is not recorded.
     let math = LaneMath::new(ds, it, FOG);
-    let read_primary = math.constant.is_none();
     let reads = math.reads();
     let mut group = GroupInputs::EMPTY;
     let mut raw = RawLanes::default();
@@ -135,33 +179,11 @@ pub(super) fn blocks<const FOG: bool>(
         };
         let mut gx = first & !1;
         while gx < end {
-            let mut live = 0u8;
             // Lanes 4r..4r + 4 are pixels row0 + r * stride + j.
             let row0 = tile.index(gx, y);
-            for (r, &(x0, x1)) in rows.iter().enumerate() {
-                let lo = (x0 - gx).clamp(0, 4) as usize;
-                let hi = (x1 - gx).clamp(0, 4) as usize;
-                if lo >= hi {
-                    continue;
-                }
-                let run = &mut runs[r];
-                // A whole row of four without a restart: unrolled.
-                let whole = lo == 0
-                    && hi == 4
-                    && if r == 0 {
-                        run.record4::<FOG, 0>(&mut raw, reads)
-                    } else {
-                        run.record4::<FOG, 1>(&mut raw, reads)
-                    };
-                if !whole {
-                    for j in lo..hi {
-                        run.record::<FOG>(&mut raw, 4 * r + j, read_primary);
-                        run.advance::<FOG>();
-                    }
-                }
-                live |= (((1u32 << hi) - (1u32 << lo)) as u8) << (4 * r);
-                read_row(tile, row0 + r * stride, lo, hi, r, &mut raw);
-            }
+            let [run0, run1] = &mut runs;
+            let mut live = block_row::<FOG, 0>(run0, rows[0], gx, tile, row0, &mut raw, reads);
+            live |= block_row::<FOG, 1>(run1, rows[1], gx, tile, row0 + stride, &mut raw, reads);
             if live == 0 {
                 gx += 4;
                 continue;
@@ -178,7 +200,7 @@ pub(super) fn blocks<const FOG: bool>(
             }
             if group.pass != 0 {
                 group.fog_factors(fog);
-                if let Some((words, passed)) = shade(y, gx, &group) {
+                if let Some((words, passed)) = shade.shade(y, gx, &group) {
                     write_rows(ds, tile, row0, stride, live, &words, passed, &group.depth);
                 }
             }
@@ -187,24 +209,62 @@ pub(super) fn blocks<const FOG: bool>(
     }
 }
 
+/// Row `R` (0 or 1) of the 4x2 block at column `gx`: the run `run` of the row, whose
+/// covered pixels are `x0..x1`, recorded into lanes `4R + j` of `raw` for the columns of the
+/// block it covers (a whole row of four unrolled: [`SpanRun::record4`], or lane by lane
+/// around a restart column) with the stored depths and colours of pixels `row + j`
+/// ([`read_row`]). Answers the row's covered lanes.
+#[inline(always)]
+fn block_row<const FOG: bool, const R: usize>(
+    run: &mut SpanRun,
+    (x0, x1): (i32, i32),
+    gx: i32,
+    tile: &Tile,
+    row: usize,
+    raw: &mut RawLanes,
+    reads: Reads,
+) -> u8 {
+    let lo = (x0 - gx).clamp(0, 4) as usize;
+    let hi = (x1 - gx).clamp(0, 4) as usize;
+    if lo >= hi {
+        return 0;
+    }
+    if lo == 0 && hi == 4 {
+        if !run.record4::<FOG, R>(raw, reads) {
+            // A restart column among the four: the same moves one by one (unrolled).
+            for j in 0..4 {
+                run.record::<FOG>(raw, 4 * R + j, reads.primary);
+                run.advance::<FOG>();
+            }
+        }
+        read_row::<R>(tile, row, 0, 4, raw);
+        return 0xF << (4 * R);
+    }
+    for j in lo..hi {
+        run.record::<FOG>(raw, 4 * R + j, reads.primary);
+        run.advance::<FOG>();
+    }
+    read_row::<R>(tile, row, lo, hi, raw);
+    (((1u32 << hi) - (1u32 << lo)) as u8) << (4 * R)
+}
+
 /// The stored depths and colour words of columns `lo..hi` (within 0..4) of a block's row
-/// `r` starting at pixel `row` of `tile`, into lanes `4r + j` of `raw`: the four columns at
+/// `R` starting at pixel `row` of `tile`, into lanes `4R + j` of `raw`: the four columns at
 /// once where they lie in the tile's buffers (columns outside `lo..hi` are then read too and
 /// not used), else one by one.
 #[inline(always)]
-fn read_row(tile: &Tile, row: usize, lo: usize, hi: usize, r: usize, raw: &mut RawLanes) {
-    let lanes = 4 * r..4 * r + 4;
+fn read_row<const R: usize>(tile: &Tile, row: usize, lo: usize, hi: usize, raw: &mut RawLanes) {
+    let lanes = 4 * R..4 * R + 4;
     if let (Some(depth), Some(color)) = (tile.depth.get(row..row + 4), tile.color.get(row..row + 4))
     {
         raw.stored[lanes.clone()].copy_from_slice(depth);
-        for (d, c) in raw.dst[lanes].iter_mut().zip(color) {
-            *d = u32::from_le_bytes(*c);
-        }
+        // Colour words are the stored bytes in memory order (R in the low byte): one copy.
+        bytemuck::cast_slice_mut::<u32, [u8; 4]>(&mut raw.dst[lanes]).copy_from_slice(color);
         return;
     }
     for j in lo..hi {
-        raw.stored[4 * r + j] = tile.depth[row + j];
-        raw.dst[4 * r + j] = u32::from_le_bytes(tile.color[row + j]);
+        raw.stored[4 * R + j] = tile.depth[row + j];
+        raw.dst[4 * R + j] = u32::from_le_bytes(tile.color[row + j]);
     }
 }
 
@@ -224,33 +284,62 @@ fn write_rows(
     depth: &[u32; 8],
 ) {
     let depth_write = ds.key.depth_write;
-    for r in 0..2 {
-        let row_live = (live >> (4 * r)) & 0xF;
-        if row_live == 0 {
-            continue;
-        }
-        let row = row0 + r * stride;
-        let row_passed = (passed >> (4 * r)) & 0xF;
-        if row_live == 0xF {
-            if let Some(color) = tile.color.get_mut(row..row + 4) {
-                for (c, w) in color.iter_mut().zip(&words[4 * r..4 * r + 4]) {
-                    *c = w.to_le_bytes();
-                }
-                if depth_write && row_passed != 0 {
-                    let d = &mut tile.depth[row..row + 4];
-                    for (j, (old, &new)) in d.iter_mut().zip(&depth[4 * r..4 * r + 4]).enumerate() {
+    write_row::<0>(ds, tile, row0, live, words, passed, depth, depth_write);
+    write_row::<1>(
+        ds,
+        tile,
+        row0 + stride,
+        live,
+        words,
+        passed,
+        depth,
+        depth_write,
+    );
+}
+
+/// [`write_rows`] for row `R` of the block, starting at pixel `row`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn write_row<const R: usize>(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    row: usize,
+    live: u8,
+    words: &[u32; 8],
+    passed: u8,
+    depth: &[u32; 8],
+    depth_write: bool,
+) {
+    let row_live = (live >> (4 * R)) & 0xF;
+    if row_live == 0 {
+        return;
+    }
+    let row_passed = (passed >> (4 * R)) & 0xF;
+    let lanes = 4 * R..4 * R + 4;
+    if row_live == 0xF {
+        if let (Some(color), Some(d)) = (
+            tile.color.get_mut(row..row + 4),
+            tile.depth.get_mut(row..row + 4),
+        ) {
+            // Colour words are the stored bytes in memory order: one copy.
+            color.copy_from_slice(bytemuck::cast_slice::<u32, [u8; 4]>(&words[lanes.clone()]));
+            if depth_write {
+                if row_passed == 0xF {
+                    d.copy_from_slice(&depth[lanes]);
+                } else {
+                    for (j, (old, &new)) in d.iter_mut().zip(&depth[lanes]).enumerate() {
                         if row_passed & (1 << j) != 0 {
                             *old = new;
                         }
                     }
                 }
-                continue;
             }
+            return;
         }
-        for j in 0..4 {
-            if row_live & (1 << j) != 0 {
-                store_lane(ds, tile, 4 * r + j, row + j, words, passed, depth);
-            }
+    }
+    for j in 0..4 {
+        if row_live & (1 << j) != 0 {
+            store_lane(ds, tile, 4 * R + j, row + j, words, passed, depth);
         }
     }
 }
@@ -300,46 +389,100 @@ pub fn pair_textured<'a, const TEX: u8>(
         Some(_) if !affine && it.coverage == 1.0 => Perspective8::block(unit, 0, it, first_y),
         _ => None,
     };
-    let (Some(mut sampler), Some(tail)) = (sampler, tail) else {
+    let (Some(sampler), Some(tail)) = (sampler, tail) else {
         return pair_by_rows(ds, tile, pairs, it);
     };
-    let mut sampler_y = first_y;
-    for_each_block(ds, tile, pairs, it, |y, gx, group| {
-        if y != sampler_y {
+    let shader = TexturedBlocks::<TEX> {
+        unit,
+        it,
+        sampler,
+        sampler_y: first_y,
+        tail,
+    };
+    shade_blocks(ds, tile, pairs, it, shader);
+}
+
+/// What [`for_each_block`] asks of a block: its colour words and passing lanes from its
+/// inputs ([`for_each_block`]'s `shade`), given the block's row pair `y` and column `gx`.
+pub(super) trait BlockShade {
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)>;
+}
+
+impl<F: FnMut(i32, i32, &GroupInputs) -> Option<([u32; 8], u8)>> BlockShade for F {
+    #[inline(always)]
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        self(y, gx, group)
+    }
+}
+
+/// [`pair_textured`]'s blocks: the unit's block sampler on the current row pair and the tail.
+/// (A type, not a closure, so that its method can be inlined into the block loop.)
+struct TexturedBlocks<'a, 'i, const TEX: u8> {
+    unit: &'a TextureUnitDraw,
+    it: &'i Interpolants<'a>,
+    sampler: Perspective8<'a>,
+    sampler_y: i32,
+    tail: Tail8,
+}
+
+impl<const TEX: u8> BlockShade for TexturedBlocks<'_, '_, TEX> {
+    #[inline(always)]
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        if y != self.sampler_y {
             // The same unit and levels as the first pair's: only the rows' planes move.
-            if let Some(s) = Perspective8::block(unit, 0, it, y) {
-                sampler = s;
+            if let Some(s) = Perspective8::block(self.unit, 0, self.it, y) {
+                self.sampler = s;
             }
-            sampler_y = y;
+            self.sampler_y = y;
         }
-        if let Some(shaded) = sampler.shaded_block(gx as f64 + 0.5, group, &tail) {
+        if let Some(shaded) = self
+            .sampler
+            .shaded_block(gx as f64 + 0.5, group, &self.tail)
+        {
             return Some(shaded);
         }
-        let mut tex = [[0f32; 8]; 4];
-        if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
-            // Not affine: the fast unit samples one by one as the rows' fallback does.
-            let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
-            for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
-                let (x, yc) = block_lane_centre(gx, y, lane);
-                let t = if TEX == tex_mode::FAST_RGB {
-                    f.texel::<3>(it, x, yc)
-                } else {
-                    f.texel::<4>(it, x, yc)
-                };
-                for c in 0..4 {
-                    tex[c][lane] = t[c];
-                }
+        textured_block_slow::<TEX>(self.unit, self.it, &self.sampler, &self.tail, y, gx, group)
+    }
+}
+
+/// [`pair_textured`]'s block where the fused kernel does not take it (kept out of the block
+/// loop, so that the loop's closure stays small): the texels by
+/// [`Perspective8::texels_block`], else one by one as the rows' fallback samples them, then
+/// the eight-fragment tail.
+#[inline(never)]
+fn textured_block_slow<'a, const TEX: u8>(
+    unit: &'a TextureUnitDraw,
+    it: &Interpolants<'a>,
+    sampler: &Perspective8,
+    tail: &Tail8,
+    y: i32,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    let mut tex = [[0f32; 8]; 4];
+    if !sampler.texels_block(gx as f64 + 0.5, group.pass, &mut tex) {
+        // Not affine: the fast unit samples one by one as the rows' fallback does.
+        let f = FastUnit::new(unit, it, 0.5, y as f64 + 0.5);
+        for lane in (0..8).filter(|j| group.pass & (1 << j) != 0) {
+            let (x, yc) = block_lane_centre(gx, y, lane);
+            let t = if TEX == tex_mode::FAST_RGB {
+                f.texel::<3>(it, x, yc)
+            } else {
+                f.texel::<4>(it, x, yc)
+            };
+            for c in 0..4 {
+                tex[c][lane] = t[c];
             }
         }
-        simd::shade8(
-            &tail,
-            &group.primary,
-            &tex,
-            &group.dst,
-            group.pass,
-            &group.after,
-        )
-    });
+    }
+    simd::shade8(
+        tail,
+        &group.primary,
+        &tex,
+        &group.dst,
+        group.pass,
+        &group.after,
+    )
 }
 
 /// [`span_sampled8`] on two rows at once, in 4x2 blocks (`for_each_block`): every unit
