@@ -1878,3 +1878,85 @@ fn combine_chains_match_the_general_path() {
     ];
     twins(&states);
 }
+
+/// Cascades on the byte route's compiled form (`bytenv::Bytes`, white primary colours):
+/// complemented operands of the texture and of the previous colour's alpha, a selecting
+/// `GL_COMBINE` unit taking the texture's alpha as colour, constant colours of converted
+/// bytes, scales; and the same cascades with random colours (the f32 route), each against
+/// the general path.
+#[test]
+fn compiled_byte_cascades_match_the_general_path() {
+    const SRC: GLenum = GL_SRC_COLOR;
+    fn bytes(b: [u8; 4]) -> [f32; 4] {
+        b.map(|v| v as f32 * (1.0 / 255.0))
+    }
+    fn subtract(gl: &mut Context, rng: &mut Rng) {
+        unit(
+            gl,
+            rng,
+            GL_TEXTURE0,
+            GL_RGBA,
+            16,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPLACE,
+            None,
+        );
+        let f = [GL_SUBTRACT, GL_SUBTRACT];
+        let a = [(GL_CONSTANT, SRC), (GL_TEXTURE, GL_ONE_MINUS_SRC_COLOR)];
+        let c = bytes([51, 153, 255, 102]);
+        let l = (GL_LUMINANCE, 16, GL_LINEAR);
+        chain_unit(gl, rng, GL_TEXTURE1, l, f, &a, [2.0, 1.0], c);
+    }
+    fn alpha_as_colour(gl: &mut Context, rng: &mut Rng) {
+        let c = bytes([0, 128, 255, 64]);
+        let f = [GL_REPLACE, GL_REPLACE];
+        let la = (GL_LUMINANCE_ALPHA, 16, GL_LINEAR_MIPMAP_LINEAR);
+        chain_unit(
+            gl,
+            rng,
+            GL_TEXTURE0,
+            la,
+            f,
+            &[(GL_TEXTURE, GL_SRC_ALPHA)],
+            [1.0, 1.0],
+            c,
+        );
+        let f = [GL_ADD, GL_MODULATE];
+        let a = [
+            (GL_PREVIOUS, GL_ONE_MINUS_SRC_ALPHA),
+            (GL_PRIMARY_COLOR, SRC),
+        ];
+        chain_unit(
+            gl,
+            rng,
+            GL_TEXTURE1,
+            (GL_RGB, 16, GL_LINEAR),
+            f,
+            &a,
+            [1.0, 2.0],
+            c,
+        );
+    }
+    let states: [Setup; 4] = [
+        ("RGBA REPLACE, constant - (1 - texture) x2", |gl, rng| {
+            subtract(gl, rng);
+            multi_strip(gl, rng, Some([1.0; 4]));
+        }),
+        ("the same with random colours (f32 route)", |gl, rng| {
+            subtract(gl, rng);
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "texture alpha as colour, (1 - previous alpha) + primary",
+            |gl, rng| {
+                alpha_as_colour(gl, rng);
+                multi_strip(gl, rng, Some([1.0; 4]));
+            },
+        ),
+        ("the same with random colours (f32 route)", |gl, rng| {
+            alpha_as_colour(gl, rng);
+            multi_strip(gl, rng, None);
+        }),
+    ];
+    twins(&states);
+}
