@@ -826,12 +826,12 @@ mod x86 {
         /// `texenv::combine` on `Avx8`, the same operations in the same order.
         ///
         /// # Safety
-        /// AVX2 is present. (Every index `Single::new` and `Single::step` give is below
-        /// `TABLE`.)
-        #[inline]
-        #[target_feature(enable = "avx2")]
+        /// AVX2 is present, and the caller is an AVX2 function (always inlined into it, as
+        /// `texenv::Avx8`'s operations are, so that nothing is a call). (Every index
+        /// `Single::new` and `Single::step` give is below `TABLE`.)
+        #[inline(always)]
         pub(crate) unsafe fn eval(&self, tab: &Table) -> [__m256; 4] {
-            let zero = Avx8(_mm256_setzero_ps());
+            let zero = Avx8::splat(0.0);
             let one = Avx8::splat(1.0);
             let half = Avx8::splat(0.5);
             // The sources by `Arg1::index` (indexed in memory: one load per argument and
