@@ -1604,3 +1604,359 @@ fn one_unit_fused_blocks_match_the_general_path() {
     ];
     twins(&states);
 }
+
+/// A strip of 120 random vertices with random colours and texture coordinates on units 0-3.
+fn strip4(gl: &mut Context, rng: &mut Rng) {
+    gl.begin(GL_TRIANGLE_STRIP);
+    for _ in 0..120 {
+        gl.color_4f(
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+            rng.range(0.0, 1.0),
+        );
+        for unit in [GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE2, GL_TEXTURE3] {
+            gl.multi_tex_coord_2f(unit, rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+        }
+        gl.vertex_3f(
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        );
+    }
+    gl.end();
+}
+
+/// Unit `unit` (a random `format` texture of `size`, filtered by `min`) under `GL_COMBINE`
+/// with RGB function `rgb` of sources and operands `args`, alpha function `alpha` of the
+/// first two sources' alphas, the scales, and constant colour `constant`.
+#[allow(clippy::too_many_arguments)]
+fn chain_unit(
+    gl: &mut Context,
+    rng: &mut Rng,
+    unit: GLenum,
+    (format, size, min): (GLenum, i32, GLenum),
+    [rgb, alpha]: [GLenum; 2],
+    args: &[(GLenum, GLenum)],
+    scales: [f32; 2],
+    constant: [f32; 4],
+) {
+    gl.active_texture(unit);
+    random_texture(gl, rng, format, size, size);
+    if min != GL_LINEAR && min != GL_NEAREST {
+        gl.generate_mipmap_ext(GL_TEXTURE_2D);
+    }
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min as i32);
+    gl.tex_parameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR as i32);
+    gl.enable(GL_TEXTURE_2D);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, rgb as i32);
+    gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, alpha as i32);
+    for (i, &(source, operand)) in args.iter().enumerate() {
+        let i = i as GLenum;
+        gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB + i, source as i32);
+        gl.tex_envi(GL_TEXTURE_ENV, GL_OPERAND0_RGB + i, operand as i32);
+        if i < 2 {
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA + i, source as i32);
+        }
+    }
+    gl.tex_envf(GL_TEXTURE_ENV, GL_RGB_SCALE, scales[0]);
+    gl.tex_envf(GL_TEXTURE_ENV, GL_ALPHA_SCALE, scales[1]);
+    gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &constant);
+    gl.active_texture(GL_TEXTURE0);
+}
+
+/// Cascades of two to four `GL_COMBINE` units on `pair_sampled8`'s chained blocks (every
+/// unit's texels in registers, `cascade::Chain`): `combine4`'s cascade, the primary colour
+/// read by later units, crossbar reads of an absent unit and of the unit itself, DOT3,
+/// SUBTRACT, every operand kind, scales, blending and a colour mask; and a cascade reading
+/// another present unit (no chain: the compiled cascade), each against the general path.
+#[test]
+fn combine_chains_match_the_general_path() {
+    const SRC: GLenum = GL_SRC_COLOR;
+    let states: [Setup; 5] = [
+        ("combine4's cascade", |gl, rng| {
+            let t = |f, s, m| (f, s, m);
+            let c = [0.0, 0.0, 0.0, 0.8];
+            let (m, a) = (
+                [GL_MODULATE, GL_MODULATE],
+                [(GL_TEXTURE, SRC), (GL_PRIMARY_COLOR, SRC)],
+            );
+            chain_unit(
+                gl,
+                rng,
+                GL_TEXTURE0,
+                t(GL_RGBA, 32, GL_LINEAR_MIPMAP_LINEAR),
+                m,
+                &a,
+                [1.0, 1.0],
+                c,
+            );
+            let a = [(GL_PREVIOUS, SRC), (GL_TEXTURE, SRC)];
+            chain_unit(
+                gl,
+                rng,
+                GL_TEXTURE1,
+                t(GL_LUMINANCE, 16, GL_LINEAR),
+                m,
+                &a,
+                [2.0, 1.0],
+                c,
+            );
+            let f = [GL_ADD_SIGNED, GL_MODULATE];
+            chain_unit(
+                gl,
+                rng,
+                GL_TEXTURE2,
+                t(GL_LUMINANCE, 16, GL_LINEAR_MIPMAP_LINEAR),
+                f,
+                &a,
+                [1.0, 1.0],
+                c,
+            );
+            let f = [GL_INTERPOLATE, GL_MODULATE];
+            let a = [
+                (GL_PREVIOUS, SRC),
+                (GL_TEXTURE, SRC),
+                (GL_CONSTANT, GL_SRC_ALPHA),
+            ];
+            chain_unit(
+                gl,
+                rng,
+                GL_TEXTURE3,
+                t(GL_RGB, 32, GL_LINEAR),
+                f,
+                &a,
+                [1.0, 1.0],
+                c,
+            );
+            strip4(gl, rng);
+        }),
+        (
+            "two units: primary read by the second, alpha over",
+            |gl, rng| {
+                let c = [0.3, 0.6, 0.9, 0.25];
+                let f = [GL_ADD, GL_SUBTRACT];
+                let a = [(GL_TEXTURE, SRC), (GL_CONSTANT, GL_ONE_MINUS_SRC_COLOR)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    (GL_RGBA, 16, GL_NEAREST_MIPMAP_LINEAR),
+                    f,
+                    &a,
+                    [1.0, 2.0],
+                    c,
+                );
+                let f = [GL_INTERPOLATE, GL_INTERPOLATE];
+                let a = [
+                    (GL_PREVIOUS, SRC),
+                    (GL_PRIMARY_COLOR, SRC),
+                    (GL_TEXTURE, GL_ONE_MINUS_SRC_ALPHA),
+                ];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    (GL_LUMINANCE_ALPHA, 16, GL_LINEAR),
+                    f,
+                    &a,
+                    [1.0, 1.0],
+                    c,
+                );
+                gl.enable(GL_BLEND);
+                gl.blend_func(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                strip4(gl, rng);
+            },
+        ),
+        (
+            "three units: DOT3, an absent unit, the unit itself, colour mask",
+            |gl, rng| {
+                let c = [0.5, 0.25, 0.75, 1.0];
+                let f = [GL_DOT3_RGB, GL_REPLACE];
+                let a = [(GL_TEXTURE0, SRC), (GL_PRIMARY_COLOR, SRC)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    (GL_RGB, 16, GL_LINEAR_MIPMAP_NEAREST),
+                    f,
+                    &a,
+                    [1.0, 1.0],
+                    c,
+                );
+                let f = [GL_SUBTRACT, GL_ADD];
+                let a = [(GL_TEXTURE5, SRC), (GL_TEXTURE, GL_SRC_ALPHA)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    (GL_ALPHA, 16, GL_LINEAR),
+                    f,
+                    &a,
+                    [4.0, 1.0],
+                    c,
+                );
+                let f = [GL_MODULATE, GL_ADD_SIGNED];
+                let a = [(GL_PREVIOUS, GL_ONE_MINUS_SRC_COLOR), (GL_TEXTURE2, SRC)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE2,
+                    (GL_INTENSITY, 16, GL_LINEAR_MIPMAP_LINEAR),
+                    f,
+                    &a,
+                    [2.0, 2.0],
+                    c,
+                );
+                gl.color_mask(1, 1, 0, 1);
+                strip4(gl, rng);
+            },
+        ),
+        (
+            "two units: DOT3_RGBA then REPLACE of previous, x4",
+            |gl, rng| {
+                let c = [0.1, 0.2, 0.3, 0.4];
+                let f = [GL_DOT3_RGBA, GL_MODULATE];
+                let a = [(GL_TEXTURE, SRC), (GL_PREVIOUS, SRC)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    (GL_RGBA, 32, GL_LINEAR),
+                    f,
+                    &a,
+                    [1.0, 1.0],
+                    c,
+                );
+                let f = [GL_REPLACE, GL_MODULATE];
+                let a = [(GL_PREVIOUS, SRC), (GL_TEXTURE, GL_SRC_ALPHA)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    (GL_RGBA, 16, GL_NEAREST),
+                    f,
+                    &a,
+                    [4.0, 1.0],
+                    c,
+                );
+                strip4(gl, rng);
+            },
+        ),
+        (
+            "two units: the second reads the first's texel (no chain)",
+            |gl, rng| {
+                let c = [0.5, 0.5, 0.5, 0.5];
+                let m = [GL_MODULATE, GL_MODULATE];
+                let a = [(GL_TEXTURE, SRC), (GL_PRIMARY_COLOR, SRC)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE0,
+                    (GL_RGBA, 16, GL_LINEAR),
+                    m,
+                    &a,
+                    [1.0, 1.0],
+                    c,
+                );
+                let f = [GL_ADD, GL_MODULATE];
+                let a = [(GL_PREVIOUS, SRC), (GL_TEXTURE0, GL_ONE_MINUS_SRC_COLOR)];
+                chain_unit(
+                    gl,
+                    rng,
+                    GL_TEXTURE1,
+                    (GL_RGB, 16, GL_LINEAR),
+                    f,
+                    &a,
+                    [1.0, 1.0],
+                    c,
+                );
+                strip4(gl, rng);
+            },
+        ),
+    ];
+    twins(&states);
+}
+
+/// Cascades on the byte route's compiled form (`bytenv::Bytes`, white primary colours):
+/// complemented operands of the texture and of the previous colour's alpha, a selecting
+/// `GL_COMBINE` unit taking the texture's alpha as colour, constant colours of converted
+/// bytes, scales; and the same cascades with random colours (the f32 route), each against
+/// the general path.
+#[test]
+fn compiled_byte_cascades_match_the_general_path() {
+    const SRC: GLenum = GL_SRC_COLOR;
+    fn bytes(b: [u8; 4]) -> [f32; 4] {
+        b.map(|v| v as f32 * (1.0 / 255.0))
+    }
+    fn subtract(gl: &mut Context, rng: &mut Rng) {
+        unit(
+            gl,
+            rng,
+            GL_TEXTURE0,
+            GL_RGBA,
+            16,
+            GL_LINEAR_MIPMAP_LINEAR,
+            GL_REPLACE,
+            None,
+        );
+        let f = [GL_SUBTRACT, GL_SUBTRACT];
+        let a = [(GL_CONSTANT, SRC), (GL_TEXTURE, GL_ONE_MINUS_SRC_COLOR)];
+        let c = bytes([51, 153, 255, 102]);
+        let l = (GL_LUMINANCE, 16, GL_LINEAR);
+        chain_unit(gl, rng, GL_TEXTURE1, l, f, &a, [2.0, 1.0], c);
+    }
+    fn alpha_as_colour(gl: &mut Context, rng: &mut Rng) {
+        let c = bytes([0, 128, 255, 64]);
+        let f = [GL_REPLACE, GL_REPLACE];
+        let la = (GL_LUMINANCE_ALPHA, 16, GL_LINEAR_MIPMAP_LINEAR);
+        chain_unit(
+            gl,
+            rng,
+            GL_TEXTURE0,
+            la,
+            f,
+            &[(GL_TEXTURE, GL_SRC_ALPHA)],
+            [1.0, 1.0],
+            c,
+        );
+        let f = [GL_ADD, GL_MODULATE];
+        let a = [
+            (GL_PREVIOUS, GL_ONE_MINUS_SRC_ALPHA),
+            (GL_PRIMARY_COLOR, SRC),
+        ];
+        chain_unit(
+            gl,
+            rng,
+            GL_TEXTURE1,
+            (GL_RGB, 16, GL_LINEAR),
+            f,
+            &a,
+            [1.0, 2.0],
+            c,
+        );
+    }
+    let states: [Setup; 4] = [
+        ("RGBA REPLACE, constant - (1 - texture) x2", |gl, rng| {
+            subtract(gl, rng);
+            multi_strip(gl, rng, Some([1.0; 4]));
+        }),
+        ("the same with random colours (f32 route)", |gl, rng| {
+            subtract(gl, rng);
+            multi_strip(gl, rng, None);
+        }),
+        (
+            "texture alpha as colour, (1 - previous alpha) + primary",
+            |gl, rng| {
+                alpha_as_colour(gl, rng);
+                multi_strip(gl, rng, Some([1.0; 4]));
+            },
+        ),
+        ("the same with random colours (f32 route)", |gl, rng| {
+            alpha_as_colour(gl, rng);
+            multi_strip(gl, rng, None);
+        }),
+    ];
+    twins(&states);
+}

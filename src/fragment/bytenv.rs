@@ -23,6 +23,7 @@
 use super::draw::TextureUnitDraw;
 use super::key::FragmentKey;
 use super::texenv::TexEnv;
+use crate::common::limits::MAX_TEXTURE_UNITS;
 use crate::common::values::{CombineFunc, CombineOperand, CombineSource, TexEnvMode};
 use crate::texture::format::BaseFormat;
 
@@ -129,6 +130,220 @@ pub fn cascade_applies(units: &[(TexEnv, BaseFormat)]) -> bool {
         })
         && first.iter().all(|(env, base)| selects(env, *base))
         && computes(last_env, *last_base)
+}
+
+/// Where a byte of a compiled argument ([`Bytes`]) comes from: channel `ch` of input `input`
+/// (0: the primary colour; `k + 1`: the texel of the draw's `k`-th unit), complemented
+/// (`255 - v`) or not; or a constant byte.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Byte {
+    Input { input: u8, ch: u8, complement: bool },
+    Const(u8),
+}
+
+impl Byte {
+    fn complement(self) -> Byte {
+        match self {
+            Byte::Input {
+                input,
+                ch,
+                complement,
+            } => Byte::Input {
+                input,
+                ch,
+                complement: !complement,
+            },
+            Byte::Const(b) => Byte::Const(255 - b),
+        }
+    }
+}
+
+/// One argument of [`Bytes`] as colour words: the OR of `pshufb(input, control)` over the
+/// inputs it reads and of its constant bytes, XORed with `complement` (0xFF in the bytes
+/// that are `255 - v`: the same byte).
+#[derive(Clone, Debug, PartialEq)]
+struct ByteArg {
+    shuffles: Vec<(usize, [i8; 32])>,
+    constant: u32,
+    complement: u32,
+}
+
+impl ByteArg {
+    fn new(bytes: [Byte; 4]) -> ByteArg {
+        let mut arg = ByteArg {
+            shuffles: Vec::new(),
+            constant: 0,
+            complement: 0,
+        };
+        for (c, b) in bytes.into_iter().enumerate() {
+            match b {
+                Byte::Const(v) => arg.constant |= (v as u32) << (8 * c),
+                Byte::Input {
+                    input,
+                    ch,
+                    complement,
+                } => {
+                    if complement {
+                        arg.complement |= 0xFF << (8 * c);
+                    }
+                    let at = match arg.shuffles.iter().position(|s| s.0 == input as usize) {
+                        Some(i) => i,
+                        None => {
+                            arg.shuffles.push((input as usize, [-1; 32]));
+                            arg.shuffles.len() - 1
+                        }
+                    };
+                    // Within each 128-bit lane (four pixels), pixel p's channel c takes its
+                    // own channel `ch`.
+                    for (i, v) in arg.shuffles[at].1.iter_mut().enumerate() {
+                        if i % 4 == c {
+                            *v = (i % 16 - c + ch as usize) as i8;
+                        }
+                    }
+                }
+            }
+        }
+        arg
+    }
+}
+
+/// The cascade of a [`cascade_applies`] draw compiled for the byte route once per draw
+/// (`Bytes::run`): the selecting units folded into which input channel each byte of the last
+/// unit's incoming colour is, the last unit's two arguments built from the inputs by byte
+/// shuffles, then its RGB and alpha functions as [`cascade`] computes them. The same bytes as
+/// [`cascade`] (twin `tests::byte_route_equals_the_f32_route`), without matching the modes,
+/// sources and operands per block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bytes {
+    args: [ByteArg; 2],
+    rgb: CombineFunc,
+    alpha: CombineFunc,
+    rgb_scale: u8,
+    alpha_scale: u8,
+    /// Whether the second argument is read (a function other than REPLACE).
+    reads_second: bool,
+}
+
+impl Bytes {
+    /// The compiled cascade of `units` (environment, base format, unit number, in unit
+    /// order), when [`cascade_applies`] takes it.
+    pub fn new(units: &[(TexEnv, BaseFormat, usize)]) -> Option<Bytes> {
+        let pairs: Vec<_> = units.iter().map(|&(e, b, _)| (e, b)).collect();
+        if !cascade_applies(&pairs) || units.len() > MAX_TEXTURE_UNITS {
+            return None;
+        }
+        let input = |i: usize| {
+            [0, 1, 2, 3].map(|ch| Byte::Input {
+                input: i as u8,
+                ch,
+                complement: false,
+            })
+        };
+        let primary = input(0);
+        // `source` of the unit at index `k` with incoming colour `cf`.
+        let source = |s: CombineSource, k: usize, env: &TexEnv, cf: [Byte; 4]| match s {
+            CombineSource::Texture => input(k + 1),
+            CombineSource::TextureUnit(u) => match units.iter().position(|e| e.2 == u as usize) {
+                Some(i) => input(i + 1),
+                None => cf,
+            },
+            CombineSource::Constant => env.color.map(|c| Byte::Const(exact_byte(c).unwrap_or(0))),
+            CombineSource::PrimaryColor => primary,
+            CombineSource::Previous => cf,
+            CombineSource::Zero => [Byte::Const(0); 4],
+        };
+        // `argument` `i` of a COMBINE unit.
+        let argument = |env: &TexEnv, k: usize, i: usize, cf: [Byte; 4]| {
+            let c = &env.combine;
+            let v = source(c.src_rgb[i], k, env, cf);
+            let rgb = match c.op_rgb[i] {
+                CombineOperand::SrcColor => [v[0], v[1], v[2]],
+                CombineOperand::OneMinusSrcColor => [v[0], v[1], v[2]].map(Byte::complement),
+                CombineOperand::SrcAlpha => [v[3]; 3],
+                CombineOperand::OneMinusSrcAlpha => [v[3].complement(); 3],
+            };
+            let a = source(c.src_alpha[i], k, env, cf)[3];
+            let a = match c.op_alpha[i] {
+                CombineOperand::SrcAlpha | CombineOperand::SrcColor => a,
+                _ => a.complement(),
+            };
+            [rgb[0], rgb[1], rgb[2], a]
+        };
+        let with_alpha = |c: [Byte; 4], a: [Byte; 4]| [c[0], c[1], c[2], a[3]];
+        let mut cf = primary;
+        let (last, first) = units.split_last()?;
+        // The selecting units (`selects`): each byte one of the inputs'.
+        for (k, (env, base, _)) in first.iter().enumerate() {
+            let (has_color, has_alpha) = has_color_alpha(*base);
+            let ct = input(k + 1);
+            cf = match env.mode {
+                TexEnvMode::Replace => with_alpha(
+                    if has_color { ct } else { cf },
+                    if has_alpha { ct } else { cf },
+                ),
+                TexEnvMode::Decal if *base == BaseFormat::Rgb => with_alpha(ct, cf),
+                TexEnvMode::Decal => cf,
+                // REPLACE of argument 0 at scale 1 (`selects`).
+                TexEnvMode::Combine => argument(env, k, 0, cf),
+                _ => return None,
+            };
+        }
+        let k = first.len();
+        let (env, base, _) = last;
+        let (has_color, has_alpha) = has_color_alpha(*base);
+        let ct = input(k + 1);
+        let pick = |yes: bool, f: CombineFunc| if yes { f } else { CombineFunc::Replace };
+        use CombineFunc as F;
+        let (a0, a1, rgb, alpha, rgb_scale, alpha_scale) = match env.mode {
+            TexEnvMode::Replace => {
+                let a0 = with_alpha(
+                    if has_color { ct } else { cf },
+                    if has_alpha { ct } else { cf },
+                );
+                (a0, a0, F::Replace, F::Replace, 1, 1)
+            }
+            TexEnvMode::Modulate => (
+                cf,
+                ct,
+                pick(has_color, F::Modulate),
+                pick(has_alpha, F::Modulate),
+                1,
+                1,
+            ),
+            TexEnvMode::Add => {
+                let alpha = match base {
+                    BaseFormat::Intensity => F::Add,
+                    _ => pick(has_alpha, F::Modulate),
+                };
+                (cf, ct, pick(has_color, F::Add), alpha, 1, 1)
+            }
+            TexEnvMode::Decal if *base == BaseFormat::Rgb => {
+                let a0 = with_alpha(ct, cf);
+                (a0, a0, F::Replace, F::Replace, 1, 1)
+            }
+            TexEnvMode::Decal => (cf, cf, F::Replace, F::Replace, 1, 1),
+            TexEnvMode::Combine => {
+                let c = &env.combine;
+                (
+                    argument(env, k, 0, cf),
+                    argument(env, k, 1, cf),
+                    c.rgb,
+                    c.alpha,
+                    c.rgb_scale,
+                    c.alpha_scale,
+                )
+            }
+            _ => return None,
+        };
+        Some(Bytes {
+            args: [ByteArg::new(a0), ByteArg::new(a1)],
+            rgb,
+            alpha,
+            rgb_scale,
+            alpha_scale,
+            reads_second: rgb != F::Replace || alpha != F::Replace,
+        })
+    }
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -416,6 +631,44 @@ mod x86 {
             color = apply(env, base, color, ct, &inputs);
         }
         color.words()
+    }
+
+    impl super::Bytes {
+        /// The compiled cascade on eight pixels: `inputs[0]` the primary colour's words,
+        /// `inputs[k + 1]` the texel words (`rgba_of_words`) of the draw's `k`-th unit;
+        /// answers the colour words, those of [`cascade`].
+        ///
+        /// # Safety
+        /// The processor has AVX2.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        pub fn run(&self, inputs: &[__m256i]) -> __m256i {
+            let arg = |a: &super::ByteArg| {
+                let mut w = _mm256_set1_epi32(a.constant as i32);
+                for (input, control) in &a.shuffles {
+                    // SAFETY: 32 bytes; unaligned load.
+                    let control = unsafe { _mm256_loadu_si256(control.as_ptr() as *const __m256i) };
+                    let v = inputs
+                        .get(*input)
+                        .copied()
+                        .unwrap_or(_mm256_setzero_si256());
+                    w = _mm256_or_si256(w, _mm256_shuffle_epi8(v, control));
+                }
+                Px::of_words(_mm256_xor_si256(w, _mm256_set1_epi32(a.complement as i32)))
+            };
+            let a0 = arg(&self.args[0]);
+            let a1 = if self.reads_second {
+                arg(&self.args[1])
+            } else {
+                a0
+            };
+            if self.rgb == self.alpha && self.rgb_scale == self.alpha_scale {
+                return func(self.rgb, a0, a1, self.rgb_scale).words();
+            }
+            let rgb = func(self.rgb, a0, a1, self.rgb_scale);
+            let alpha = func(self.alpha, a0, a1, self.alpha_scale);
+            rgb.with_alpha(alpha).words()
+        }
     }
 
     /// [`cascade`] over the draw's units.
@@ -730,6 +983,17 @@ mod tests {
             let want = f32_route(&units, primary_f, &texels_f);
             let got = byte_route(&units, primary_w, &by_unit);
             assert_eq!(got, want, "case {cases}: {units:?}");
+            // The cascade compiled per draw: the same bytes.
+            let compiled = Bytes::new(&units).expect("compiles");
+            let mut inputs = vec![primary_w];
+            inputs.extend(
+                units
+                    .iter()
+                    .map(|&(_, _, unit)| by_unit[unit].expect("texel")),
+            );
+            // SAFETY: AVX2 is present (checked above).
+            let got = unpack(unsafe { compiled.run(&inputs) });
+            assert_eq!(got, want, "case {cases}, compiled: {units:?}");
         }
         assert!(multi > 1000, "{multi} cascades of several units");
     }

@@ -106,17 +106,24 @@ pub struct Program {
     out: [Reg; 4],
     /// The same cascade in the straight-line form of one `GL_COMBINE` unit, when it is one.
     single: Option<Single>,
+    /// The same cascade as a chain of such forms, one per unit, when it has two units or
+    /// more, all under `GL_COMBINE`, none reading another present unit's texel ([`Chain`]).
+    chain: Option<Chain>,
+    /// The cascade compiled for the byte route, when `bytenv::cascade_applies` takes it.
+    bytes: Option<super::bytenv::Bytes>,
 }
 
-/// Where an argument of a one-unit `GL_COMBINE` environment ([`Single`]) comes from: every
-/// source resolved for the first unit (`PREVIOUS` and a crossbar read of an absent unit are the
-/// primary colour, a crossbar read of the unit itself its texel).
+/// Where an argument of a `GL_COMBINE` unit in straight-line form ([`Single`]) comes from:
+/// every source resolved for the unit (`PREVIOUS` and a crossbar read of an absent unit are the
+/// incoming colour, a crossbar read of the unit itself its texel, the primary colour of the
+/// first unit the incoming colour).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Src1 {
-    Primary,
+    Incoming,
     Texel,
     Constant,
     Zero,
+    Primary,
 }
 
 /// One argument of a [`Single`]: its source, whether it takes the source's alpha (RGB
@@ -130,14 +137,16 @@ struct Arg1 {
 }
 
 impl Arg1 {
-    /// The registers `Single::run` reads for R, G, B (alpha: the last) from its table of
-    /// the primary colour (0..4), the texel (4..8), the constant colour (8..12) and zero (12).
+    /// The registers `Single::eval` reads for R, G, B (alpha: the last) from its table
+    /// ([`TABLE`] entries) of the incoming colour (0..4), the texel (4..8), the constant
+    /// colour (8..12), zero (12) and the primary colour (13..17).
     fn index(self) -> [u8; 3] {
         let first = match self.src {
-            Src1::Primary => 0,
+            Src1::Incoming => 0,
             Src1::Texel => 4,
             Src1::Constant => 8,
             Src1::Zero => return [12; 3],
+            Src1::Primary => 13,
         };
         if self.alpha {
             [first + 3; 3]
@@ -147,10 +156,13 @@ impl Arg1 {
     }
 }
 
-/// The environment of a draw's only unit under `GL_COMBINE`, its sources resolved, for a
-/// block kernel that keeps every value in registers (`Single::run`): the operations of
-/// `texenv::combine` on the same values in the same order, so the same bits (twin
-/// `tests::single_equals_the_general_cascade`).
+/// How many entries the table of `Single::eval` has (`Arg1::index`).
+const TABLE: usize = 17;
+
+/// The environment of a unit under `GL_COMBINE`, its sources resolved, for a block kernel
+/// that keeps every value in registers (`Single::run`, `Single::eval`): the operations of
+/// `texenv::combine` on the same values in the same order, so the same bits (twins
+/// `tests::single_equals_the_general_cascade`, `tests::chain_equals_the_general_cascade`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Single {
     rgb: CombineFunc,
@@ -169,15 +181,41 @@ impl Single {
     /// The straight-line form of unit `unit`'s environment `env` as the first and only unit
     /// of a cascade; `None` unless its mode is `GL_COMBINE`.
     fn new(env: &TexEnv, unit: usize) -> Option<Single> {
+        let mut present = [false; MAX_TEXTURE_UNITS];
+        present[unit] = true;
+        Single::step(env, unit, true, &present)
+    }
+
+    /// The straight-line form of unit `unit`'s environment `env` in a cascade whose units with
+    /// a texel are `present` (by unit number), `first` when it is the cascade's first unit
+    /// (its incoming colour is then the primary colour); `None` unless its mode is
+    /// `GL_COMBINE` and it reads no other present unit's texel.
+    fn step(
+        env: &TexEnv,
+        unit: usize,
+        first: bool,
+        present: &[bool; MAX_TEXTURE_UNITS],
+    ) -> Option<Single> {
         if env.mode != TexEnvMode::Combine {
             return None;
         }
         let k = &env.combine;
-        let src = |s: CombineSource| match s {
+        // Sources the form cannot read (another present unit's texel) make it `None`.
+        let mut readable = true;
+        let mut src = |s: CombineSource| match s {
             CombineSource::Texture => Src1::Texel,
             CombineSource::TextureUnit(u) if u as usize == unit => Src1::Texel,
-            CombineSource::TextureUnit(_) | CombineSource::PrimaryColor => Src1::Primary,
-            CombineSource::Previous => Src1::Primary,
+            // A unit without a texel reads as the incoming colour (`texenv::source`).
+            CombineSource::TextureUnit(u) if !present.get(u as usize).copied().unwrap_or(false) => {
+                Src1::Incoming
+            }
+            CombineSource::TextureUnit(_) => {
+                readable = false;
+                Src1::Zero
+            }
+            CombineSource::PrimaryColor if first => Src1::Incoming,
+            CombineSource::PrimaryColor => Src1::Primary,
+            CombineSource::Previous => Src1::Incoming,
             CombineSource::Constant => Src1::Constant,
             CombineSource::Zero => Src1::Zero,
         };
@@ -200,6 +238,9 @@ impl Single {
             alpha: true,
             one_minus: one_minus(k.op_alpha[i]),
         });
+        if !readable {
+            return None;
+        }
         Some(Single {
             rgb: k.rgb,
             alpha: k.alpha,
@@ -211,6 +252,44 @@ impl Single {
             alpha_scale: k.alpha_scale as f32,
             constant: env.color,
         })
+    }
+}
+
+/// A cascade of two or more `GL_COMBINE` units, each in straight-line form ([`Single`]),
+/// unit after unit on registers (`Chain::run`): step `k` is the draw's `k`-th unit and reads
+/// its texel, the previous step's result, the primary colour and its constant colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chain {
+    steps: Vec<Single>,
+}
+
+impl Chain {
+    /// The chain of `units` (environment, base format, unit number, in unit order), when
+    /// there are two or more and each has a straight-line form.
+    fn new(units: &[(TexEnv, BaseFormat, usize)]) -> Option<Chain> {
+        if units.len() < 2 {
+            return None;
+        }
+        let mut present = [false; MAX_TEXTURE_UNITS];
+        for &(_, _, unit) in units {
+            *present.get_mut(unit)? = true;
+        }
+        let steps = units
+            .iter()
+            .enumerate()
+            .map(|(k, (env, _, unit))| Single::step(env, *unit, k == 0, &present))
+            .collect::<Option<Vec<_>>>()?;
+        Some(Chain { steps })
+    }
+
+    /// How many units (texels) the chain reads.
+    pub fn len(&self) -> usize {
+        self.steps.len()
+    }
+
+    /// Whether the chain has no unit (never: a chain has two or more).
+    pub fn is_empty(&self) -> bool {
+        self.steps.is_empty()
     }
 }
 
@@ -522,6 +601,8 @@ impl Program {
                 ops: Vec::new(),
                 out: PRIMARY,
                 single: None,
+                chain: None,
+                bytes: None,
             },
             next: PRIMARY.len(),
         };
@@ -544,6 +625,8 @@ impl Program {
         if let [(env, _, unit)] = units {
             b.p.single = Single::new(env, *unit);
         }
+        b.p.chain = Chain::new(units);
+        b.p.bytes = super::bytenv::Bytes::new(units);
         Some(b.p)
     }
 
@@ -588,6 +671,16 @@ impl Program {
         self.single.as_ref()
     }
 
+    /// The cascade compiled for the byte route (`bytenv::Bytes`), when it takes it.
+    pub fn bytes(&self) -> Option<&super::bytenv::Bytes> {
+        self.bytes.as_ref()
+    }
+
+    /// The cascade as a chain of `GL_COMBINE` units in straight-line form, when it is one.
+    pub fn chain(&self) -> Option<&Chain> {
+        self.chain.as_ref()
+    }
+
     /// The units whose texels the program reads, in the order `run_regs` takes them.
     pub fn texel_units(&self) -> impl Iterator<Item = usize> + '_ {
         self.texels.iter().map(|&(unit, _)| unit)
@@ -599,7 +692,7 @@ mod x86 {
     use std::arch::x86_64::*;
     use std::mem::MaybeUninit;
 
-    use super::{Kind, Op, Program, Single};
+    use super::{Chain, Kind, Op, Program, Single};
     use crate::common::limits::MAX_TEXTURE_UNITS;
     use crate::common::values::CombineFunc;
     use crate::fragment::texenv::{Avx8, Lanes};
@@ -692,14 +785,11 @@ mod x86 {
         #[inline]
         #[target_feature(enable = "avx2")]
         pub(crate) fn run(&self, p: [__m256; 4], t: [__m256; 4]) -> [__m256; 4] {
-            let zero = Avx8(_mm256_setzero_ps());
-            let one = Avx8::splat(1.0);
-            let half = Avx8::splat(0.5);
-            // The sources by `Arg1::index`: primary, texel, constant, zero (indexed in
-            // memory: one load per argument and channel, no selects).
-            let k = |c: usize| _mm256_set1_ps(self.constant[c]);
             let z = _mm256_setzero_ps();
-            let tab: [__m256; 16] = [
+            let k = |c: usize| _mm256_set1_ps(self.constant[c]);
+            // The first unit's primary colour is its incoming colour (`Src1::Primary` is
+            // not used): entries 13..17 are not read.
+            let tab: Table = [
                 p[0],
                 p[1],
                 p[2],
@@ -716,8 +806,38 @@ mod x86 {
                 z,
                 z,
                 z,
+                z,
             ];
-            let at = |i: u8| Avx8(tab[i as usize & 15]);
+            // SAFETY: every index of `Arg1::index` is below `TABLE`.
+            unsafe { self.eval(&tab) }
+        }
+
+        /// Puts the constant colour into entries 8..12 of `tab`.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn constants(&self, tab: &mut Table) {
+            for c in 0..4 {
+                tab[8 + c] = _mm256_set1_ps(self.constant[c]);
+            }
+        }
+
+        /// The environment on the table `tab` (`Arg1::index`: the incoming colours, the
+        /// texels, the constant colour, zero, the clamped primary colours):
+        /// `texenv::combine` on `Avx8`, the same operations in the same order.
+        ///
+        /// # Safety
+        /// AVX2 is present, and the caller is an AVX2 function (always inlined into it, as
+        /// `texenv::Avx8`'s operations are, so that nothing is a call). (Every index
+        /// `Single::new` and `Single::step` give is below `TABLE`.)
+        #[inline(always)]
+        pub(crate) unsafe fn eval(&self, tab: &Table) -> [__m256; 4] {
+            let zero = Avx8::splat(0.0);
+            let one = Avx8::splat(1.0);
+            let half = Avx8::splat(0.5);
+            // The sources by `Arg1::index` (indexed in memory: one load per argument and
+            // channel, no selects).
+            // SAFETY: the indices of `Arg1::index` are below `TABLE` (17).
+            let at = |i: u8| Avx8(unsafe { *tab.get_unchecked(i as usize) });
             // `operand_rgb` and `operand_alpha` of the source.
             let arg_rgb = |i: usize| -> [Avx8; 3] {
                 let idx = self.rgb_index[i];
@@ -806,6 +926,53 @@ mod x86 {
             .mul(as_)
             .clamp01();
             out.map(|c| c.0)
+        }
+    }
+
+    /// The table of `Single::eval`.
+    pub(crate) type Table = [__m256; super::TABLE];
+
+    impl Chain {
+        /// The cascade on eight fragments: primary colours `primary` (clamped here, as
+        /// `Program::run_avx2` clamps them) and texels `texels[k]` of the draw's `k`-th unit
+        /// (zero where `texels` is shorter); the bits of `Program::run_avx2`.
+        #[cfg(test)]
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn run(&self, primary: &Texels8, texels: &[[__m256; 4]]) -> [__m256; 4] {
+            let zero = _mm256_setzero_ps();
+            let got = self.run_with(primary, |k| {
+                Some(texels.get(k).copied().unwrap_or([zero; 4]))
+            });
+            got.unwrap_or([zero; 4])
+        }
+
+        /// [`Chain::run`] with the texels of the `k`-th unit given by `texel(k)`, asked unit
+        /// after unit as the chain reaches them; `None` as soon as one is `None`.
+        #[inline]
+        #[target_feature(enable = "avx2")]
+        pub(crate) fn run_with(
+            &self,
+            primary: &Texels8,
+            mut texel: impl FnMut(usize) -> Option<[__m256; 4]>,
+        ) -> Option<[__m256; 4]> {
+            let zero = _mm256_setzero_ps();
+            let mut tab: Table = [zero; super::TABLE];
+            for (c, v) in primary.iter().enumerate() {
+                // SAFETY: eight f32; unaligned load.
+                let p = Avx8(unsafe { _mm256_loadu_ps(v.as_ptr()) }).clamp01().0;
+                tab[c] = p;
+                tab[13 + c] = p;
+            }
+            let mut color = [zero; 4];
+            for (k, step) in self.steps.iter().enumerate() {
+                let t = texel(k)?;
+                tab[4..8].copy_from_slice(&t);
+                step.constants(&mut tab);
+                // SAFETY: AVX2 is present (this function's feature).
+                color = unsafe { step.eval(&tab) };
+                tab[..4].copy_from_slice(&color);
+            }
+            Some(color)
         }
     }
 
@@ -1153,5 +1320,154 @@ mod tests {
             }
         }
         assert_eq!(seen, [true; 8], "every RGB function drawn");
+    }
+
+    /// The twin of the chain form: random cascades of two to eight `GL_COMBINE` units (every
+    /// RGB and alpha function, DOT3 included, every source: the texture, the previous and
+    /// primary colours, the constant, zero, crossbar reads of the unit itself and of absent
+    /// units; every operand, scale and constant colour), random primary colours and texels
+    /// (outside [0, 1] too); `Chain::run` gives the bits of `texenv::apply` on one fragment at a
+    /// time, unit after unit, as `span::environment` runs it. Cascades reading another
+    /// present unit's texel have no chain.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn chain_equals_the_general_cascade() {
+        use crate::fragment::texenv::{apply, CombineInputs};
+        use std::arch::x86_64::*;
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let mut g = Gen(0x6A09_E667_F3BC_C908);
+        let funcs = [
+            F::Replace,
+            F::Modulate,
+            F::Add,
+            F::AddSigned,
+            F::Interpolate,
+            F::Subtract,
+            F::Dot3Rgb,
+            F::Dot3Rgba,
+        ];
+        let operands = [
+            O::SrcColor,
+            O::OneMinusSrcColor,
+            O::SrcAlpha,
+            O::OneMinusSrcAlpha,
+        ];
+        let (mut chains, mut without, mut primary_later) = (0, 0, 0);
+        for case in 0..4000 {
+            let n = 2 + (g.next() % 7) as usize;
+            let mut numbers: Vec<usize> = (0..MAX_TEXTURE_UNITS)
+                .filter(|_| !g.next().is_multiple_of(5))
+                .collect();
+            numbers.truncate(n);
+            if numbers.len() < 2 {
+                continue;
+            }
+            let absent = (0..MAX_TEXTURE_UNITS)
+                .find(|u| !numbers.contains(u))
+                .unwrap_or(0);
+            // A crossbar read of another present unit now and then (no chain then).
+            let crossbar = g.next().is_multiple_of(8);
+            let mut units = Vec::new();
+            for &unit in &numbers {
+                let mut sources = vec![
+                    S::Texture,
+                    S::TextureUnit(unit as u8),
+                    S::TextureUnit(absent as u8),
+                    S::Constant,
+                    S::PrimaryColor,
+                    S::Previous,
+                    S::Previous,
+                    S::Zero,
+                ];
+                if crossbar {
+                    sources.push(S::TextureUnit(g.pick(&numbers) as u8));
+                }
+                let mut env = TexEnv {
+                    mode: TexEnvMode::Combine,
+                    ..TexEnv::default()
+                };
+                env.color = [0; 4].map(|_| g.value().clamp(0.0, 1.0));
+                let k = &mut env.combine;
+                k.rgb = g.pick(&funcs);
+                k.alpha = g.pick(&funcs[..6]);
+                for i in 0..4 {
+                    k.src_rgb[i] = g.pick(&sources);
+                    k.src_alpha[i] = g.pick(&sources);
+                    k.op_rgb[i] = g.pick(&operands);
+                    k.op_alpha[i] = g.pick(&operands);
+                }
+                k.rgb_scale = g.pick(&[1, 2, 4]);
+                k.alpha_scale = g.pick(&[1, 2, 4]);
+                let base = g.pick(&[BaseFormat::Rgba, BaseFormat::Luminance, BaseFormat::Alpha]);
+                units.push((env, base, unit));
+            }
+            let reads_other = units.iter().any(|(env, _, unit)| {
+                let k = &env.combine;
+                k.src_rgb.iter().chain(&k.src_alpha).any(|s| {
+                    matches!(s, S::TextureUnit(u) if *u as usize != *unit
+                        && numbers.contains(&(*u as usize)))
+                })
+            });
+            let program = Program::new(&units).expect("compiles");
+            let Some(chain) = program.chain() else {
+                assert!(reads_other, "case {case}: no chain for {units:?}");
+                without += 1;
+                continue;
+            };
+            chains += 1;
+            if units[1..].iter().any(|(env, _, _)| {
+                let k = &env.combine;
+                k.src_rgb[..2].contains(&S::PrimaryColor)
+            }) {
+                primary_later += 1;
+            }
+            let lanes = |g: &mut Gen| [0; 4].map(|_| [0; 8].map(|_| g.value()));
+            let primary = lanes(&mut g);
+            let texel_lanes: Vec<Texels8> = units.iter().map(|_| lanes(&mut g)).collect();
+            // SAFETY: AVX2 is present (checked above); eight f32 per load and store.
+            let got = unsafe {
+                let load = |a: &[f32; 8]| _mm256_loadu_ps(a.as_ptr());
+                let t: Vec<[__m256; 4]> = texel_lanes
+                    .iter()
+                    .map(|t| [0, 1, 2, 3].map(|c| load(&t[c])))
+                    .collect();
+                let out = chain.run(&primary, &t);
+                let mut got = [[0f32; 8]; 4];
+                for (g, v) in got.iter_mut().zip(out) {
+                    _mm256_storeu_ps(g.as_mut_ptr(), v);
+                }
+                got
+            };
+            for j in 0..8 {
+                let at = |t: &Texels8| t.map(|c| c[j]);
+                let mut texels: [Option<[f32; 4]>; MAX_TEXTURE_UNITS] = [None; MAX_TEXTURE_UNITS];
+                for ((_, _, unit), t) in units.iter().zip(&texel_lanes) {
+                    texels[*unit] = Some(at(t));
+                }
+                let p = at(&primary).map(|c| c.max(0.0).min(1.0));
+                let inputs = CombineInputs {
+                    primary: p,
+                    texels: &texels,
+                };
+                let mut color = p;
+                for (env, base, unit) in &units {
+                    let ct = texels[*unit].unwrap_or([0.0; 4]);
+                    color = apply(env, *base, *unit, color, ct, &inputs);
+                }
+                let bits = |v: [f32; 4]| v.map(|c| (c + 0.0).to_bits());
+                assert_eq!(
+                    bits(color),
+                    bits(at(&got)),
+                    "case {case}, lane {j}: {units:?}"
+                );
+            }
+        }
+        assert!(
+            chains > 3000 && without > 100,
+            "{chains} chains, {without} without"
+        );
+        assert!(primary_later > 1000, "{primary_later}");
     }
 }

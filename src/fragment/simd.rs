@@ -303,7 +303,7 @@ pub fn fog_factors8(
 }
 
 #[cfg(target_arch = "x86_64")]
-pub(crate) use x86::{block_combined8, shade8_bytes};
+pub(crate) use x86::{block_combined8, shade8_bytes, shade8_regs};
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
@@ -450,7 +450,7 @@ mod x86 {
     /// [`shade8`] with the texels in registers.
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn shade8_regs(
+    pub(crate) fn shade8_regs(
         tail: &Tail8,
         primary: &[[f32; 8]; 4],
         tex: &[__m256; 4],

@@ -527,10 +527,29 @@ pub fn pair_sampled8<'a>(
         byte_env = constant_words.is_some();
     }
     let fused = fused_unit(ds, single);
+    // A cascade of `GL_COMBINE` units in straight-line form (`cascade::Chain`), every unit
+    // on a 2D texture's block sampler: blocks in one go (`chain_block`).
+    let chain = chain_of(ds);
+    let n = ds.units.len();
+    let chained = |samplers: &[Option<Perspective8>; MAX_TEXTURE_UNITS]| {
+        chain.is_some()
+            && samplers[..n]
+                .iter()
+                .all(|s| s.as_ref().is_some_and(|s| s.cube.is_none()))
+    };
+    let mut chain_ready = chained(&samplers);
     for_each_block(ds, tile, pairs, it, |y, gx, group| {
         if y != samplers_y {
             Sampled8::place_samplers(&mut samplers, ds, it, y, true);
             samplers_y = y;
+            chain_ready = chained(&samplers);
+        }
+        #[cfg(target_arch = "x86_64")]
+        if let (true, Some(chain)) = (chain_ready, chain) {
+            // SAFETY: AVX2 is present (`chain_of` checked it).
+            if let Some(done) = unsafe { chain_block(chain, &samplers[..n], &tail, gx, group) } {
+                return Some(done);
+            }
         }
         #[cfg(target_arch = "x86_64")]
         if byte_env {
@@ -693,6 +712,54 @@ fn fused_block(
     }
 }
 
+/// The chain form of a draw's cascade (`cascade::Chain`: two or more `GL_COMBINE` units,
+/// none reading another unit's texel) when the processor has AVX2 and the draw does not take
+/// the byte environment.
+fn chain_of(ds: &FragmentDraw) -> Option<&crate::fragment::cascade::Chain> {
+    let chain = ds.cascade.as_ref()?.chain()?;
+    (!ds.key.byte_env && chain.len() == ds.units.len() && crate::common::cpu::available())
+        .then_some(chain)
+}
+
+/// A block of a draw with a chain ([`chain_of`]) in one go: each unit's texels as
+/// `texels_block` filters them (`block_words8`, kept in registers), the chain on them
+/// (`Chain::run`: the bits of the compiled cascade) and the tail with the result as a
+/// replacing texel, as `sampled8_shade` runs them. `None` (the caller takes the general
+/// block route: the same pixels) where a unit's block filter does not take the block.
+/// `samplers`: the draw's units' samplers, every one present and 2D.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn chain_block(
+    chain: &crate::fragment::cascade::Chain,
+    samplers: &[Option<Perspective8>],
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    use std::arch::x86_64::*;
+    use texture_simd::x86::{block_words8, texels_of_words};
+    let x = gx as f64 + 0.5;
+    let color = chain.run_with(&group.primary, |k| {
+        let s = samplers.get(k)?.as_ref()?;
+        Some(
+            match block_words8(&s.planes, x, group.pass, s.fixed_plan, s.lod, s.levels)? {
+                (words, Some(level)) => texels_of_words(level, words),
+                (_, None) => [_mm256_setzero_ps(); 4],
+            },
+        )
+    })?;
+    // The tail of a cascade (no `modulate`, `rgb_from_primary` or `alpha_from_primary`)
+    // reads no primary colour.
+    Some(simd::shade8_regs(
+        tail,
+        &group.primary,
+        &color,
+        &group.dst,
+        group.pass,
+        &group.after,
+    ))
+}
+
 /// A block of a `FragmentKey::byte_env` draw on bytes (`fragment::bytenv`): every unit's
 /// texels as bytes from its block sampler, the cascade in 8-bit integers and the tail from the
 /// colour bytes; the same colour words as the f32 route. `None` (the caller takes the f32
@@ -713,8 +780,18 @@ fn byte_block(
         Some(words) => words,
         None => crate::fragment::bytenv::exact_words(&group.primary, group.pass)?,
     };
-    let mut by_unit = [None; MAX_TEXTURE_UNITS];
     let x = gx as f64 + 0.5;
+    if let Some(bytes) = ds.cascade.as_ref().and_then(|p| p.bytes()) {
+        // The cascade compiled for the draw: the primary colour and each unit's texel words.
+        let mut inputs = [primary; MAX_TEXTURE_UNITS + 1];
+        let n = ds.units.len();
+        for (input, sampler) in inputs[1..].iter_mut().zip(&samplers[..n]) {
+            *input = sampler.as_ref()?.block_bytes(x, group.pass)?;
+        }
+        let rgba = bytes.run(&inputs[..=n]);
+        return Some(simd::shade8_bytes(tail, rgba, &group.dst, group.pass));
+    }
+    let mut by_unit = [None; MAX_TEXTURE_UNITS];
     for (k, unit) in ds.units.iter().enumerate() {
         by_unit[unit.unit] = Some(samplers[k].as_ref()?.block_bytes(x, group.pass)?);
     }
