@@ -590,6 +590,10 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
+    // Eight pixels at a time where it applies (`rows8.rs`: the same values).
+    if simple_rows8::<DEPTH, FULL_MASK>(ds, tile, y, x0, x1, it) {
+        return;
+    }
     shade::<DEPTH, FULL_MASK, true, false, false>(ds, tile, y, x0, x1, it)
 }
 

@@ -299,6 +299,56 @@ impl<'i> SpanRun<'i> {
         z
     }
 
+    /// The depths of the next `m` pixels (at most 8) into `z[..m]`, moving past them: what
+    /// `m` calls of [`Self::next_z`] give, eight at a time without a restart test per pixel
+    /// when none of the eight moves restarts.
+    #[inline(always)]
+    pub(super) fn z_lanes(&mut self, z: &mut [f64; 8], m: usize) {
+        if m == 8 && self.left > 8 {
+            self.left -= 8;
+            let mut v = self.z;
+            for o in z.iter_mut() {
+                *o = v;
+                v += self.dz;
+            }
+            self.z = v;
+        } else {
+            for o in &mut z[..m] {
+                *o = self.next_z();
+            }
+        }
+    }
+
+    /// The depth, 1/w and primary colour (as stepped) of the next `m` pixels (at most 8) into
+    /// lanes `0..m` of `raw`, moving past them: [`Self::record`] and [`Self::advance`] `m`
+    /// times (unfogged, the primary colour only: a run of count 4), unrolled when none of the
+    /// eight moves restarts.
+    #[inline(always)]
+    pub(super) fn primary_lanes(&mut self, raw: &mut RawLanes, m: usize) {
+        if m == 8 && self.left > 8 && self.count == 4 {
+            self.left -= 8;
+            let (mut z, mut inv_w, mut c) = (self.z, self.inv_w, self.color);
+            for j in 0..8 {
+                raw.z[j] = z;
+                raw.inv_w[j] = inv_w;
+                for k in 0..4 {
+                    raw.color[k][j] = c[k];
+                }
+                z += self.dz;
+                inv_w += self.dinv_w;
+                for k in 0..4 {
+                    c[k] += self.dcolor[k];
+                }
+            }
+            (self.z, self.inv_w, self.color) = (z, inv_w, c);
+        } else {
+            for j in 0..m {
+                self.record::<false>(raw, j, true);
+                self.advance::<false>();
+            }
+        }
+    }
+
     /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
     /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (`None` unless the run
     /// has it: a count of 8), then a move to the next pixel: a step of z, 1/w, the primary
