@@ -230,7 +230,16 @@ fn depth_and_stencil_passes_match_the_general_path() {
         } else {
             gl.depth_func(depth);
         }
-        let stencil = random_stencil(gl, rng);
+        let mut stencil = random_stencil(gl, rng);
+        if rng.next_u64() % 2 == 0 {
+            // The z-pass volumes' form: ALWAYS, KEEP on both failures, every bit written
+            // (counting meets the saturation limits on `base`'s 0 and 255 values).
+            let op = pick(rng, &[GL_INCR, GL_DECR, GL_INCR_WRAP, GL_DECR_WRAP]);
+            gl.stencil_func(GL_ALWAYS, 0, 0xFF);
+            gl.stencil_mask(0xFF);
+            gl.stencil_op(GL_KEEP, GL_KEEP, op);
+            stencil = format!("z-pass {op:#x}");
+        }
         gl.enable(GL_CULL_FACE);
         let face = pick(rng, &[GL_BACK, GL_FRONT]);
         gl.cull_face(face);

@@ -36,6 +36,33 @@ pub(super) fn simple_rows8<const DEPTH: u8, const FULL_MASK: bool>(
     false
 }
 
+/// [`span_depth_stencil`]'s row eight pixels at a time in registers, when it applies (AVX2
+/// present, a depth range `simd::depth8` converts): the depths stepped eight at a time
+/// (`SpanRun::z_lanes`), converted and tested together, the stencil test and actions on the
+/// eight stored values as one word (`stencil8_word`), the occlusion count and the depth writes
+/// as masked stores; groups at the end of the tile's buffers lane by lane. Answers false
+/// (nothing done) otherwise.
+#[inline(always)]
+pub(super) fn depth_stencil_rows8(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    y: i32,
+    x0: i32,
+    x1: i32,
+    it: &Interpolants,
+) -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if ds.depth_max < 1 << 31 && crate::common::cpu::available() {
+            // SAFETY: AVX2 is present (checked just above).
+            unsafe { x86::depth_stencil8(ds, tile, y, x0, x1, it) };
+            return true;
+        }
+    }
+    let _ = (ds, tile, y, x0, x1, it);
+    false
+}
+
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use std::arch::x86_64::*;
@@ -139,8 +166,9 @@ mod x86 {
                 } else {
                     stored[..m].copy_from_slice(&tile.depth[at..at + m]);
                 }
-                // `depth_max` < 2^31 (checked by the caller).
-                simd::depth8(&z, &stored, live, ds.depth_max, func).unwrap_or_default()
+                // (AVX2 is this function's feature; `depth_max` < 2^31, checked by the caller,
+                // as `simd::depth8` requires it.)
+                simd::depth8_avx2(&z, &stored, live, ds.depth_max, func)
             } else {
                 ([0u32; 8], live)
             };
@@ -180,6 +208,185 @@ mod x86 {
                     };
                     tile.color[at + j] = v.to_le_bytes();
                     if tested {
+                        tile.depth[at + j] = depth[j];
+                    }
+                }
+            }
+        }
+    }
+
+    /// The depths along a row as [`SpanRun`] steps them (its `z` alone: evaluated from the
+    /// plane at the first pixel and at every [`RESTART`] column, stepped in between), for
+    /// the colourless spans, which read nothing else.
+    struct ZRun<'a> {
+        plane: &'a Plane,
+        z: f64,
+        left: u32,
+        restart_x: f64,
+        yc: f64,
+    }
+
+    impl ZRun<'_> {
+        #[inline(always)]
+        fn new(plane: &Plane, x0: i32, yc: f64) -> ZRun<'_> {
+            let into = x0.rem_euclid(RESTART);
+            ZRun {
+                plane,
+                z: plane.at(x0 as f64 + 0.5, yc),
+                left: (RESTART - into) as u32,
+                restart_x: (x0 - into + RESTART) as f64 + 0.5,
+                yc,
+            }
+        }
+
+        /// The next eight pixels' depths (`SpanRun::next_z` eight times).
+        #[inline(always)]
+        fn lanes(&mut self, out: &mut [f64; 8]) {
+            let dz = self.plane.a;
+            for o in out.iter_mut() {
+                *o = self.z;
+                self.left -= 1;
+                if self.left == 0 {
+                    self.z = self.plane.at(self.restart_x, self.yc);
+                    self.restart_x += RESTART as f64;
+                    self.left = RESTART as u32;
+                } else {
+                    self.z += dz;
+                }
+            }
+        }
+    }
+
+    /// [`depth_stencil_rows8`] with AVX2: the stencil kernel chosen once per span. The
+    /// z-pass volumes' keys (test ALWAYS, KEEP on both failures, every bit written) change
+    /// the passing lanes by one action on the bytes; others take `stencil8_word`.
+    #[target_feature(enable = "avx2")]
+    pub(super) fn depth_stencil8(
+        ds: &FragmentDraw,
+        tile: &mut Tile,
+        y: i32,
+        x0: i32,
+        x1: i32,
+        it: &Interpolants,
+    ) {
+        let one = _mm_set1_epi8(1);
+        let z_pass = ds.key.stencil.filter(|st| {
+            st.func == CompareFunc::Always
+                && st.fail == StencilOp::Keep
+                && st.depth_fail == StencilOp::Keep
+                && ds.uniforms.stencil_write_mask == 0xFF
+        });
+        // `o`: the stored values; `dp`: 0xFF in the lanes that pass the depth test (all
+        // of them pass the stencil test).
+        match z_pass.map(|st| st.depth_pass) {
+            Some(StencilOp::Incr) => rows(ds, tile, y, x0, x1, it, |o, dp| {
+                _mm_adds_epu8(o, _mm_and_si128(dp, one))
+            }),
+            Some(StencilOp::Decr) => rows(ds, tile, y, x0, x1, it, |o, dp| {
+                _mm_subs_epu8(o, _mm_and_si128(dp, one))
+            }),
+            Some(StencilOp::IncrWrap) => rows(ds, tile, y, x0, x1, it, |o, dp| {
+                _mm_add_epi8(o, _mm_and_si128(dp, one))
+            }),
+            Some(StencilOp::DecrWrap) => rows(ds, tile, y, x0, x1, it, |o, dp| {
+                _mm_sub_epi8(o, _mm_and_si128(dp, one))
+            }),
+            _ => rows(ds, tile, y, x0, x1, it, |_, _| _mm_setzero_si128()),
+        }
+    }
+
+    /// The groups of [`depth_stencil8`] with the z-pass action `z_pass` (the new values from
+    /// the stored ones and the depth-pass byte mask), used when the key is a z-pass key
+    /// (see there); other keys with a stencil test take `stencil8_word`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn rows(
+        ds: &FragmentDraw,
+        tile: &mut Tile,
+        y: i32,
+        x0: i32,
+        x1: i32,
+        it: &Interpolants,
+        z_pass: impl Fn(__m128i, __m128i) -> __m128i,
+    ) {
+        let key = &ds.key;
+        let simple = key.stencil.is_some_and(|st| {
+            st.func == CompareFunc::Always
+                && st.fail == StencilOp::Keep
+                && st.depth_fail == StencilOp::Keep
+                && ds.uniforms.stencil_write_mask == 0xFF
+                && matches!(
+                    st.depth_pass,
+                    StencilOp::Incr | StencilOp::Decr | StencilOp::IncrWrap | StencilOp::DecrWrap
+                )
+        });
+        let n = (x1 - x0).max(0) as usize;
+        let row = tile.index(x0, y);
+        let mut run = ZRun::new(&it.z, x0, y as f64 + 0.5);
+        let mut z = [0f64; 8];
+        // SAFETY: SSE2 is part of the x86-64 baseline; a register constant.
+        let bits = unsafe { _mm_set_epi64x(0, 0x8040_2010_0804_0201u64 as i64) };
+        let mut i = 0;
+        while i < n {
+            let m = (n - i).min(8);
+            let at = row + i;
+            let live = lane_bits(0..m);
+            i += m;
+            // (Lanes past `m` are stepped too and not used; the run ends with the span.)
+            run.lanes(&mut z);
+            let whole = tile.depth.len() >= at + 8
+                && (key.stencil.is_none() || tile.stencil.len() >= at + 8);
+            let mut stored = [0u32; 8];
+            if whole {
+                stored.copy_from_slice(&tile.depth[at..at + 8]);
+            } else {
+                stored[..m].copy_from_slice(&tile.depth[at..at + m]);
+            }
+            // (AVX2 is this function's feature; `depth_max` < 2^31, checked by the caller.)
+            // SAFETY: AVX2 is enabled in every caller (`depth_stencil8`).
+            let (depth, depth_pass) =
+                unsafe { simd::depth8_avx2(&z, &stored, live, ds.depth_max, key.depth_func) };
+            let pass = match key.stencil {
+                Some(_) if whole && simple => {
+                    let values: &mut [u8; 8] = (&mut tile.stencil[at..at + 8]).try_into().unwrap();
+                    // SAFETY: SSE2 is part of the x86-64 baseline; registers only.
+                    unsafe {
+                        let o = _mm_cvtsi64_si128(u64::from_le_bytes(*values) as i64);
+                        let dp_bits = _mm_set1_epi8(depth_pass as i8);
+                        let dp = _mm_cmpeq_epi8(_mm_and_si128(dp_bits, bits), bits);
+                        let new = z_pass(o, dp);
+                        *values = (_mm_cvtsi128_si64(new) as u64).to_le_bytes();
+                    }
+                    depth_pass
+                }
+                Some(st) if whole => {
+                    let values: &mut [u8; 8] = (&mut tile.stencil[at..at + 8]).try_into().unwrap();
+                    let (new, pass) = stencil8_word(
+                        &st,
+                        &ds.uniforms,
+                        u64::from_le_bytes(*values),
+                        depth_pass,
+                        live,
+                    );
+                    *values = new.to_le_bytes();
+                    pass
+                }
+                _ => stencil_row(ds, tile, at, m, depth_pass),
+            };
+            if key.count_samples {
+                tile.samples_passed += u64::from(pass.count_ones());
+            }
+            if key.depth_write && pass != 0 {
+                if whole {
+                    // SAFETY: pixels `at..at + 8` lie in the depth buffer; a masked unaligned
+                    // store of eight 32-bit lanes (AVX2: every caller's feature).
+                    unsafe {
+                        let d = _mm256_loadu_si256(depth.as_ptr() as *const __m256i);
+                        let dp = tile.depth.as_mut_ptr().add(at) as *mut i32;
+                        _mm256_maskstore_epi32(dp, lane_masks(pass), d);
+                    }
+                } else {
+                    for j in (0..m).filter(|j| pass & (1 << j) != 0) {
                         tile.depth[at + j] = depth[j];
                     }
                 }
