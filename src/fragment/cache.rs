@@ -4,7 +4,7 @@
 use super::key::{FastTexture, FragmentKey};
 use super::span::{
     blend_mode, depth_mode, depth_stencil_applies, pair_sampled8, pair_textured, sampled8_applies,
-    span_depth_stencil, span_fogged, span_general, span_nothing, span_sampled, span_sampled8,
+    span_depth_stencil, span_fogged8, span_general, span_nothing, span_sampled, span_sampled8,
     span_specialised, span_textured, span_untextured8, span_untextured8_covered, tail8_applies,
     tex_mode, untextured8_applies, CoveredFn, PairFn, SpanFn,
 };
@@ -99,15 +99,16 @@ pub fn select_covered(key: &FragmentKey, force_general: bool) -> Option<CoveredF
     Some(span_untextured8_covered)
 }
 
-/// The fogged span for a key that is simple but for fog.
+/// The fogged span for a key that is simple but for fog (`span_fogged8`: eight fragments at
+/// a time with AVX2, else `span_fogged`).
 fn select_fogged(key: &FragmentKey) -> SpanFn {
     let full = key.color_mask == [true; 4];
     match (key.depth_func, key.depth_write, full) {
-        (None, _, true) => span_fogged::<{ depth_mode::NONE }, true>,
-        (None, _, false) => span_fogged::<{ depth_mode::NONE }, false>,
-        (Some(CompareFunc::Less), true, true) => span_fogged::<{ depth_mode::LESS_WRITE }, true>,
+        (None, _, true) => span_fogged8::<{ depth_mode::NONE }, true>,
+        (None, _, false) => span_fogged8::<{ depth_mode::NONE }, false>,
+        (Some(CompareFunc::Less), true, true) => span_fogged8::<{ depth_mode::LESS_WRITE }, true>,
         (Some(CompareFunc::LessEqual), true, true) => {
-            span_fogged::<{ depth_mode::LEQUAL_WRITE }, true>
+            span_fogged8::<{ depth_mode::LEQUAL_WRITE }, true>
         }
         _ => span_general,
     }

@@ -29,13 +29,28 @@ pub struct CoarseDepth {
     max: [u32; BLOCKS * BLOCKS],
     /// Bit `b` set: `max[b]` is the largest depth of block `b` (row-major from the bottom).
     known: u64,
+    /// Tests in a row that hid nothing (see [`CoarseDepth::hides`]).
+    misses: u32,
+    /// Tests still to be skipped (answered "not hidden") after a run of misses.
+    skip: u32,
 }
+
+/// Misses in a row after which the test is skipped for the next [`SKIP`] triangles: in a
+/// scene drawn back to front (`fog`'s terrain) it hides nothing and costs its block maxima
+/// (recomputed after every depth write) at every triangle. A skipped test only rasterizes a
+/// triangle that the depth test then rejects everywhere: the pixels are the same.
+const MISSES: u32 = 16;
+/// Triangles whose test is skipped after [`MISSES`] misses in a row; one test in `SKIP + 1`
+/// is still made while nothing is hidden, and the first hit makes every test again.
+const SKIP: u32 = 8;
 
 impl Default for CoarseDepth {
     fn default() -> Self {
         CoarseDepth {
             max: [0; BLOCKS * BLOCKS],
             known: 0,
+            misses: 0,
+            skip: 0,
         }
     }
 }
@@ -76,13 +91,12 @@ impl CoarseDepth {
             let side = tile.side() as usize;
             let block = side / BLOCKS;
             self.max[b] = if block == BLOCK {
-                let rows: [&[u32; BLOCK]; BLOCK] = std::array::from_fn(|row| {
-                    let start = (by * BLOCK + row) * side + bx * BLOCK;
-                    tile.depth[start..start + BLOCK]
-                        .try_into()
-                        .expect("a block row is BLOCK depths")
-                });
-                block_max(&rows)
+                // The block's rows `side` apart, one slice from its first to its last depth.
+                let start = by * BLOCK * side + bx * BLOCK;
+                match tile.depth.get(start..start + (BLOCK - 1) * side + BLOCK) {
+                    Some(rows) => block_max(rows, side),
+                    None => u32::MAX,
+                }
             } else {
                 (0..block)
                     .flat_map(|row| {
@@ -105,6 +119,25 @@ impl CoarseDepth {
         if !ds.coarse_depth || !z.a.is_finite() || !z.b.is_finite() || !z.c.is_finite() {
             return false;
         }
+        if self.skip > 0 {
+            self.skip -= 1;
+            return false;
+        }
+        let hidden = self.test(tile, ds, z, rect);
+        if hidden {
+            self.misses = 0;
+        } else {
+            self.misses += 1;
+            if self.misses >= MISSES {
+                self.skip = SKIP;
+            }
+        }
+        hidden
+    }
+
+    /// The test of [`CoarseDepth::hides`] made every time (`z` finite).
+    #[inline(always)]
+    fn test(&mut self, tile: &Tile, ds: &TileDraw, z: &Plane, rect: Rect) -> bool {
         // The plane is smallest at a corner of the rectangle of pixel centres. The spans
         // evaluate it at each row's first pixel and at every 16th column and step z by `a`
         // in between (fewer than 16 steps, bounded here by a tile's side), so their depths
@@ -160,28 +193,38 @@ pub fn applies(key: &FragmentKey) -> bool {
         )
 }
 
-/// The largest of a block's depths (AVX2 where the processor has it: without SSE4.1 the
-/// unsigned maximum is not vectorized, and blocks are recomputed after every depth write).
+/// The largest of a block's depths: its `BLOCK` rows of `BLOCK` depths start `stride` apart
+/// in `rows` (which ends with the last row; `stride >= BLOCK`). AVX2 where the processor has
+/// it: without SSE4.1 the unsigned maximum is not vectorized, and blocks are recomputed after
+/// every depth write.
 #[inline]
-fn block_max(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
+fn block_max(rows: &[u32], stride: usize) -> u32 {
+    if stride < BLOCK || rows.len() < (BLOCK - 1) * stride + BLOCK {
+        return u32::MAX;
+    }
     #[cfg(target_arch = "x86_64")]
     {
         if crate::common::cpu::available() {
-            // SAFETY: AVX2 is present (checked just above).
-            return unsafe { block_max_avx2(rows) };
+            // SAFETY: AVX2 is present (checked just above); the length was checked above.
+            return unsafe { block_max_avx2(rows, stride) };
         }
     }
-    rows.iter().flat_map(|r| r.iter()).fold(0, |m, &d| m.max(d))
+    (0..BLOCK)
+        .flat_map(|r| &rows[r * stride..r * stride + BLOCK])
+        .fold(0, |m, &d| m.max(d))
 }
 
+/// # Safety
+/// AVX2 is present, and `rows.len() >= (BLOCK - 1) * stride + BLOCK`.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn block_max_avx2(rows: &[&[u32; BLOCK]; BLOCK]) -> u32 {
+unsafe fn block_max_avx2(rows: &[u32], stride: usize) -> u32 {
     use std::arch::x86_64::*;
     let mut m = _mm256_setzero_si256();
-    for row in rows {
-        // SAFETY: each row holds BLOCK = 8 u32, 32 bytes; unaligned load.
-        let v = unsafe { _mm256_loadu_si256(row.as_ptr() as *const __m256i) };
+    for r in 0..BLOCK {
+        // SAFETY: row `r` is the BLOCK = 8 u32 (32 bytes) from `r * stride`, inside `rows`
+        // by the caller's length guarantee; unaligned load.
+        let v = unsafe { _mm256_loadu_si256(rows.as_ptr().add(r * stride) as *const __m256i) };
         m = _mm256_max_epu32(m, v);
     }
     let m = _mm_max_epu32(_mm256_castsi256_si128(m), _mm256_extracti128_si256::<1>(m));
@@ -226,12 +269,17 @@ mod tests {
     fn block_max_finds_the_largest_depth_anywhere_in_the_block() {
         // Every position in turn holds the largest value, including values above 2^31
         // (unsigned order).
-        for big in [1u32, 77, 0x00FF_FFFF, 0x8000_0001, u32::MAX] {
-            for at in 0..BLOCK * BLOCK {
-                let mut data = [[3u32; BLOCK]; BLOCK];
-                data[at / BLOCK][at % BLOCK] = big;
-                let rows = std::array::from_fn(|r| &data[r]);
-                assert_eq!(block_max(&rows), big.max(3), "{big} at {at}");
+        // Rows `stride` apart; the depths between them (larger still) are not the block's.
+        for stride in [8usize, 11, 64] {
+            for big in [1u32, 77, 0x00FF_FFFF, 0x8000_0001, u32::MAX] {
+                for at in 0..BLOCK * BLOCK {
+                    let mut data = vec![u32::MAX; (BLOCK - 1) * stride + BLOCK];
+                    for r in 0..BLOCK {
+                        data[r * stride..r * stride + BLOCK].fill(3);
+                    }
+                    data[(at / BLOCK) * stride + at % BLOCK] = big;
+                    assert_eq!(block_max(&data, stride), big.max(3), "{big} at {at}");
+                }
             }
         }
     }

@@ -5,20 +5,37 @@ use super::draw::TileDraw;
 use super::scene::TriangleCommand;
 use super::setup::{Edge, Plane};
 use crate::common::fixed::SUBPIXEL;
-use crate::fragment::span::{span_stippled, Interpolants, PrimitiveShared, UnitLevels};
+use crate::fragment::span::{span_stippled, Interpolants, PrimitiveShared, RowPair, UnitLevels};
 use crate::framebuffer::Tile;
 
 /// A triangle's attribute planes spread over the draw's attribute layout (zero where an
 /// attribute is not live), reused from triangle to triangle of a tile: while the live set
 /// stays the same, only the live slots are written.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct AttrScratch {
+    planes: SpreadPlanes,
+    /// The row pairs gathered for the draw's pair function (kept here: a fresh array per
+    /// triangle was a 640-byte `memset` each time).
+    pairs: [RowPair; crate::framebuffer::TILE / 2],
+}
+
+impl Default for AttrScratch {
+    fn default() -> Self {
+        AttrScratch {
+            planes: SpreadPlanes::default(),
+            pairs: [(0, [(0, 0); 2]); crate::framebuffer::TILE / 2],
+        }
+    }
+}
+
+#[derive(Debug, Default)]
+struct SpreadPlanes {
     planes: Vec<Plane>,
     /// The live set the zero slots are for.
     live: u64,
 }
 
-impl AttrScratch {
+impl SpreadPlanes {
     /// `live_planes` (in attribute order) spread over `n` slots by `live`; with
     /// `packed_primary` the first two hold the constant primary colour three values to a
     /// plane ([`TriangleCommand::constant_primary`]), spread as constant planes.
@@ -79,10 +96,14 @@ pub fn raster_triangle<'a>(
         return;
     }
     let n = ds.attr_count;
+    let AttrScratch {
+        planes: spread,
+        pairs,
+    } = scratch;
     let attrs: &[Plane] = if ds.live_attrs == (1u64 << n) - 1 && !t.constant_primary() {
         &planes[2..]
     } else {
-        scratch.spread(n, ds.live_attrs, &planes[2..], t.constant_primary())
+        spread.spread(n, ds.live_attrs, &planes[2..], t.constant_primary())
     };
     let stipple = ds.raster.polygon_stipple.as_ref();
     let shared = PrimitiveShared::new(levels).with_stipple(stipple);
@@ -100,34 +121,8 @@ pub fn raster_triangle<'a>(
         smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi], stipple);
         return;
     }
-    let half = SUBPIXEL / 2;
-    // The covered pixels `lo..hi` of row `y`, when there are any: the interval where all three
-    // edge functions pass, solved per edge.
-    let row_interval = |y: i32| -> Option<(i32, i32)> {
-        let py = y as i64 * SUBPIXEL + half;
-        let mut lo = x_lo as i64;
-        let mut hi = x_hi as i64; // exclusive
-        for (e, &bias) in edges.iter().zip(&bias) {
-            // E(x) = step * x + base, with px = x * SUBPIXEL + half.
-            let base = e.b * py + e.c + e.a * half;
-            let step = e.a * SUBPIXEL;
-            // Inside when step * x >= need.
-            let need = i64::from(bias) - base;
-            // Quotients by truncating division, rounded up or down by the remainder's sign
-            // (one division, fewer fix-ups than the Euclidean forms).
-            if step > 0 {
-                // ceil(need / step)
-                lo = lo.max(need / step + i64::from(need % step > 0));
-            } else if step < 0 {
-                // -|step| * x >= need  <=>  x <= floor(-need / |step|)
-                let (n, s) = (-need, -step);
-                hi = hi.min(n / s - i64::from(n % s < 0) + 1);
-            } else if need > 0 {
-                return None;
-            }
-        }
-        (lo < hi).then_some((lo as i32, hi as i32))
-    };
+    // The covered pixels of the rows from `y_lo` up, one row at a time.
+    let mut walk = RowWalk::new(&edges, &bias, [x_lo, x_hi], y_lo);
     match (stipple, ds.fragment.span_pair) {
         (_, Some(pair)) => {
             // A stippled polygon's rows all go to the pair function, which applies the
@@ -139,16 +134,11 @@ pub fn raster_triangle<'a>(
             // batches). A triangle covers no pixel twice, so shading its long lone rows on the
             // way, before the pairs, or in several batches, gives the same pixels.
             const EMPTY: (i32, i32) = (0, 0);
-            let mut pairs = [(0, [EMPTY; 2]); crate::framebuffer::TILE / 2];
             let mut n = 0;
             let mut y = y_lo & !1;
             while y < y_hi {
-                let lower = if y >= y_lo { row_interval(y) } else { None };
-                let upper = if y + 1 < y_hi {
-                    row_interval(y + 1)
-                } else {
-                    None
-                };
+                let lower = if y >= y_lo { walk.next() } else { None };
+                let upper = if y + 1 < y_hi { walk.next() } else { None };
                 // A short lone row goes to the pair function too (a block is two quads wide);
                 // a long one is shaded as a row.
                 let rows = match (lower, upper) {
@@ -167,7 +157,7 @@ pub fn raster_triangle<'a>(
                 };
                 if let Some(rows) = rows {
                     if n == pairs.len() {
-                        pair(&ds.fragment, tile, &pairs, &it);
+                        pair(&ds.fragment, tile, &pairs[..], &it);
                         n = 0;
                     }
                     pairs[n] = (y, rows);
@@ -181,19 +171,191 @@ pub fn raster_triangle<'a>(
         }
         (None, None) => {
             for y in y_lo..y_hi {
-                if let Some((x0, x1)) = row_interval(y) {
+                if let Some((x0, x1)) = walk.next() {
                     (ds.fragment.span)(&ds.fragment, tile, y, x0, x1, &it);
                 }
             }
         }
         (Some(pattern), None) => {
             for y in y_lo..y_hi {
-                if let Some((x0, x1)) = row_interval(y) {
+                if let Some((x0, x1)) = walk.next() {
                     span_stippled(&ds.fragment, tile, y, x0, x1, &it, pattern);
                 }
             }
         }
     }
+}
+
+/// One edge's bound on the covered columns of the current row, walked from row to row.
+///
+/// With `u(x)` the edge function at column `x`'s centre minus the bias for a left edge (the
+/// function grows with `x`: the edge bounds the row from the left), or the bias minus one minus
+/// it for a right edge (it falls with `x`), a pixel is inside the edge exactly when
+/// `u(x) >= 0`, and `u` grows by `dx > 0` per column. `pos` is the first column in
+/// `x_lo..=x_hi` where `u >= 0` (`x_hi` when none is), `u` its value there. A left edge's
+/// `pos` is where the row may begin, a right edge's where it ends. From one row to the next
+/// `u` changes by `dy` and `pos` moves a few columns (the edge's slope), with additions only.
+#[derive(Clone, Copy, Debug)]
+struct EdgeWalk {
+    u: i64,
+    dx: i64,
+    dy: i64,
+    pos: i32,
+    left: bool,
+}
+
+impl EdgeWalk {
+    /// Moves `pos` to the first column in `x_lo..=x_hi` where `u >= 0` (or `x_hi`): by one
+    /// column without dividing (an edge steeper than the diagonal moves at most one column a
+    /// row), else by the quotient. (Not as loops of single steps: those the compiler
+    /// vectorizes, with several hundred instructions of set-up per triangle.)
+    #[inline(always)]
+    fn settle(&mut self, x_lo: i32, x_hi: i32) {
+        if self.u < 0 {
+            if self.pos < x_hi {
+                // The first column past `pos` with u >= 0 is ceil(-u / dx) columns on.
+                let k = if self.u + self.dx >= 0 {
+                    1
+                } else {
+                    ((self.dx - 1 - self.u) / self.dx).min((x_hi - self.pos) as i64)
+                };
+                self.pos += k as i32;
+                self.u += k * self.dx;
+            }
+        } else if self.u >= self.dx && self.pos > x_lo {
+            // u(pos - k) = u - k * dx >= 0 for k <= floor(u / dx): the first is that far back.
+            let k = if self.u < 2 * self.dx {
+                1
+            } else {
+                (self.u / self.dx).min((self.pos - x_lo) as i64)
+            };
+            self.pos -= k as i32;
+            self.u -= k * self.dx;
+        }
+    }
+}
+
+/// The covered columns `lo..hi` of rows `y, y + 1, ...` of a triangle inside `x_lo..x_hi`:
+/// the interval where all three edge functions pass (triangles are convex), the same as
+/// solving each edge's inequality on each row ([`row_interval_divided`]), from additions.
+#[derive(Clone, Copy, Debug)]
+struct RowWalk {
+    edges: [EdgeWalk; 3],
+    /// A horizontal edge's `u` (its function minus the bias, constant along a row): the
+    /// row is empty while it is negative. Zero when there is no horizontal edge.
+    flat: i64,
+    flat_dy: i64,
+    x_lo: i32,
+    x_hi: i32,
+    /// The next row is the first (its bounds are settled but not yet stepped).
+    first: bool,
+}
+
+impl RowWalk {
+    #[inline(always)]
+    fn new(edges: &[Edge; 3], bias: &[u8; 3], [x_lo, x_hi]: [i32; 2], y: i32) -> RowWalk {
+        let half = SUBPIXEL / 2;
+        let px = x_lo as i64 * SUBPIXEL + half;
+        let py = y as i64 * SUBPIXEL + half;
+        let (mut flat, mut flat_dy) = (0i64, 0i64);
+        let mut walk = |e: &Edge, bias: u8| -> EdgeWalk {
+            let inside = e.a * px + e.b * py + e.c - i64::from(bias);
+            let (left, u, dx, dy) = if e.a >= 0 {
+                (true, inside, e.a * SUBPIXEL, e.b * SUBPIXEL)
+            } else {
+                (false, -inside - 1, -e.a * SUBPIXEL, -e.b * SUBPIXEL)
+            };
+            if dx == 0 {
+                // Along the row the edge passes everywhere or nowhere. (Of a triangle with
+                // area, at most one edge is horizontal.)
+                flat = u;
+                flat_dy = dy;
+                // A bound that never binds (`u` stays 0 and `dx` 1 walk nowhere).
+                return EdgeWalk {
+                    u: 0,
+                    dx: 1,
+                    dy: 0,
+                    pos: x_lo,
+                    left: true,
+                };
+            }
+            EdgeWalk {
+                u,
+                dx,
+                dy,
+                pos: x_lo,
+                left,
+            }
+        };
+        let edges = [
+            walk(&edges[0], bias[0]),
+            walk(&edges[1], bias[1]),
+            walk(&edges[2], bias[2]),
+        ];
+        RowWalk {
+            edges,
+            flat,
+            flat_dy,
+            x_lo,
+            x_hi,
+            first: true,
+        }
+    }
+
+    /// The covered columns of the next row, when there are any.
+    #[inline(always)]
+    fn next(&mut self) -> Option<(i32, i32)> {
+        let (x_lo, x_hi) = (self.x_lo, self.x_hi);
+        if self.first {
+            self.first = false;
+        } else {
+            self.flat += self.flat_dy;
+            for e in &mut self.edges {
+                e.u += e.dy;
+            }
+        }
+        let (mut lo, mut hi) = (x_lo, x_hi);
+        for e in &mut self.edges {
+            e.settle(x_lo, x_hi);
+            if e.left {
+                lo = lo.max(e.pos);
+            } else {
+                hi = hi.min(e.pos);
+            }
+        }
+        (lo < hi && self.flat >= 0).then_some((lo, hi))
+    }
+}
+
+/// The covered pixels `lo..hi` of row `y` inside `x_lo..x_hi`, when there are any, solved
+/// per edge by division: the reference [`RowWalk`] is checked against.
+#[cfg(test)]
+fn row_interval_divided(
+    edges: &[Edge; 3],
+    bias: &[u8; 3],
+    [x_lo, x_hi]: [i32; 2],
+    y: i32,
+) -> Option<(i32, i32)> {
+    let half = SUBPIXEL / 2;
+    let py = y as i64 * SUBPIXEL + half;
+    let mut lo = x_lo as i64;
+    let mut hi = x_hi as i64; // exclusive
+    for (e, &bias) in edges.iter().zip(bias) {
+        // E(x) = step * x + base, with px = x * SUBPIXEL + half.
+        let base = e.b * py + e.c + e.a * half;
+        let step = e.a * SUBPIXEL;
+        // Inside when step * x >= need.
+        let need = i64::from(bias) - base;
+        if step > 0 {
+            lo = lo.max(need.div_euclid(step) + i64::from(need.rem_euclid(step) != 0));
+        } else if step < 0 {
+            // -|step| * x >= need  <=>  x <= floor(-need / |step|)
+            hi = hi.min((-need).div_euclid(-step) + 1);
+        } else if need > 0 {
+            return None;
+        }
+    }
+    (lo < hi).then_some((lo as i32, hi as i32))
 }
 
 /// `GL_POLYGON_SMOOTH` (section 3.5.6 and 3.11): every pixel of the (one pixel wider)
@@ -399,5 +561,175 @@ pub fn bin_triangle(
     let xy = [v[0].xy, v[1].xy, v[2].xy];
     if let Some(t) = TriangleCommand::new(state, offset, bbox, xy, constant_primary) {
         scene.bin(Command::Triangle(t), bbox);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::test_support::xorshift;
+
+    /// The edges and biases of the triangle `p` (fixed point) in counter-clockwise order, as
+    /// `bin_triangle` and `TriangleCommand::edges` make them; `None` without area.
+    fn edges_of(mut p: [[i64; 2]; 3]) -> Option<([Edge; 3], [u8; 3])> {
+        let area2 = triangle_area2(p);
+        if area2 == 0 {
+            return None;
+        }
+        if area2 < 0 {
+            p.swap(1, 2);
+        }
+        let [(e0, b0), (e1, b1), (e2, b2)] = [
+            Edge::new(p[0], p[1]),
+            Edge::new(p[1], p[2]),
+            Edge::new(p[2], p[0]),
+        ];
+        Some(([e0, e1, e2], [b0, b1, b2]))
+    }
+
+    /// Each row's covered columns, if any.
+    type Rows = Vec<Option<(i32, i32)>>;
+
+    /// The rows `y_lo..y_hi` of `p` inside columns `x_lo..x_hi`, walked and divided.
+    fn both_ways(p: [[i64; 2]; 3], [x_lo, x_hi, y_lo, y_hi]: [i32; 4]) -> Option<(Rows, Rows)> {
+        let (edges, bias) = edges_of(p)?;
+        let mut walk = RowWalk::new(&edges, &bias, [x_lo, x_hi], y_lo);
+        let walked = (y_lo..y_hi).map(|_| walk.next()).collect();
+        let divided = (y_lo..y_hi)
+            .map(|y| row_interval_divided(&edges, &bias, [x_lo, x_hi], y))
+            .collect();
+        Some((walked, divided))
+    }
+
+    /// The window `raster_triangle` walks: the triangle's pixel-centre box clipped to the
+    /// tile of side `side` at (`tx`, `ty`).
+    fn window(p: [[i64; 2]; 3], tx: i32, ty: i32, side: i32) -> Option<[i32; 4]> {
+        let xs = p.map(|v| v[0]);
+        let ys = p.map(|v| v[1]);
+        let (x0, x1) = centre_range(*xs.iter().min()?, *xs.iter().max()?);
+        let (y0, y1) = centre_range(*ys.iter().min()?, *ys.iter().max()?);
+        let w = [x0.max(tx), x1.min(tx + side), y0.max(ty), y1.min(ty + side)];
+        (w[0] < w[1] && w[2] < w[3]).then_some(w)
+    }
+
+    /// The walked rows are the divided rows, bit for bit, over random triangles from
+    /// sub-pixel slivers to the guard band's size, in tiles of every side and in windows
+    /// of every width (edges moving by single columns and by quotients).
+    #[test]
+    fn walked_rows_are_the_divided_rows() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let mut rows = 0usize;
+        for i in 0..60_000 {
+            let r = xorshift(&mut seed);
+            // Sizes from a fraction of a pixel to the guard band (2^23 sub-pixels).
+            let extent = 1i64 << (2 + r % 22);
+            let centre = [
+                (xorshift(&mut seed) % (1 << 18)) as i64,
+                (xorshift(&mut seed) % (1 << 18)) as i64,
+            ];
+            let mut p = [[0i64; 2]; 3];
+            for v in &mut p {
+                for (d, c) in v.iter_mut().enumerate() {
+                    let off = (xorshift(&mut seed) % (2 * extent as u64 + 1)) as i64 - extent;
+                    *c = (centre[d] + off).clamp(-(1 << 23) + 1, (1 << 23) - 1);
+                }
+            }
+            if i % 7 == 0 {
+                // Horizontal and vertical edges, and vertices on pixel centres.
+                p[1][1] = p[0][1];
+                p[2][0] = p[0][0] & !0xFF | 0x80;
+            }
+            let side = [16, 32, 64, 128][(r >> 40) as usize % 4];
+            // A tile the triangle touches (near one of its vertices) and a random window.
+            let v = p[(r >> 50) as usize % 3];
+            let (tx, ty) = (
+                ((v[0] >> 8) as i32).div_euclid(side) * side,
+                ((v[1] >> 8) as i32).div_euclid(side) * side,
+            );
+            let mut windows = vec![];
+            if let Some(w) = window(p, tx, ty, side) {
+                windows.push(w);
+            }
+            let (wx, wy) = ((v[0] >> 8) as i32, (v[1] >> 8) as i32);
+            let (ww, wh) = (1 + (r >> 20) as i32 % 40, 1 + (r >> 30) as i32 % 20);
+            windows.push([wx - ww / 2, wx - ww / 2 + ww, wy - wh / 2, wy - wh / 2 + wh]);
+            for w in windows {
+                if let Some((walked, divided)) = both_ways(p, w) {
+                    assert_eq!(walked, divided, "{p:?} in {w:?}");
+                    rows += walked.iter().filter(|r| r.is_some()).count();
+                }
+            }
+        }
+        // The triangles cover something (the test is not about empty rows only).
+        assert!(rows > 100_000, "{rows}");
+    }
+
+    /// A mesh of jittered grid points, two triangles a cell (both diagonals, both windings):
+    /// every pixel centre inside the mesh is covered by exactly one triangle (the fill rule
+    /// of `Edge::new`), walked row by row in tiles of 16, and the walked rows are the
+    /// divided ones.
+    #[test]
+    fn shared_edges_cover_each_pixel_once() {
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        for cell in [3i64, 5, 17, 40] {
+            let n = 12usize;
+            // Points in fixed point; the outer ones on a rectangle, the inner ones jittered
+            // (some onto pixel centres and pixel rows, where the fill rule decides).
+            let pts: Vec<Vec<[i64; 2]>> = (0..=n)
+                .map(|j| {
+                    (0..=n)
+                        .map(|i| {
+                            let mut q = [i as i64 * cell * 256, j as i64 * cell * 256];
+                            if i > 0 && i < n && j > 0 && j < n {
+                                for c in &mut q {
+                                    let r = xorshift(&mut seed);
+                                    *c += (r % (cell as u64 * 128)) as i64 - cell * 64;
+                                    if r & 0x300 == 0 {
+                                        *c = *c & !0xFF | 0x80;
+                                    }
+                                }
+                            }
+                            q
+                        })
+                        .collect()
+                })
+                .collect();
+            let size = (n as i64 * cell) as i32;
+            let mut count = vec![0u8; (size * size) as usize];
+            for j in 0..n {
+                for i in 0..n {
+                    let (a, b, c, d) = (pts[j][i], pts[j][i + 1], pts[j + 1][i + 1], pts[j + 1][i]);
+                    let tris = if (i + j) % 2 == 0 {
+                        [[a, b, c], [a, c, d]]
+                    } else {
+                        [[b, d, a], [b, c, d]]
+                    };
+                    for t in tris {
+                        for ty in (0..size).step_by(16) {
+                            for tx in (0..size).step_by(16) {
+                                let Some(w) = window(t, tx, ty, 16) else {
+                                    continue;
+                                };
+                                let (walked, divided) = both_ways(t, w).expect("area");
+                                assert_eq!(walked, divided, "{t:?} in {w:?}");
+                                for (k, r) in walked.into_iter().enumerate() {
+                                    if let Some((x0, x1)) = r {
+                                        let y = w[2] + k as i32;
+                                        for x in x0..x1 {
+                                            count[(y * size + x) as usize] += 1;
+                                        }
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            // The mesh's outline is the rectangle 0..size: every pixel centre is inside.
+            assert!(count.iter().all(|&c| c == 1), "cell {cell}: {:?}", {
+                let bad: Vec<usize> = (0..count.len()).filter(|&k| count[k] != 1).collect();
+                bad.into_iter().take(8).collect::<Vec<_>>()
+            });
+        }
     }
 }

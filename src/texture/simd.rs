@@ -29,6 +29,11 @@ pub struct Level8<'a> {
     size: [i32; 2],
     /// Per axis: `Some(mask)` for power-of-two `REPEAT`, `None` for `CLAMP_TO_EDGE`.
     repeat_mask: [Option<i32>; 2],
+    /// `size * 256` per axis as f32 (exact), the scale of LINEAR's fixed-point coordinates.
+    scale256: [f32; 2],
+    /// Whether `x86::pairs8` may read texel pairs: not a `tiny` level, and every byte
+    /// offset fits an `i32`.
+    pairs: bool,
 }
 
 impl<'a> Level8<'a> {
@@ -71,6 +76,7 @@ impl<'a> Level8<'a> {
                 _ => return None,
             };
         }
+        let pairs = tiny.is_none() && bytes < i32::MAX as usize - 16;
         Some(Level8 {
             texels,
             tiny,
@@ -78,6 +84,8 @@ impl<'a> Level8<'a> {
             base,
             size,
             repeat_mask,
+            scale256: size.map(|n| n as f32 * 256.0),
+            pairs,
         })
     }
 }
@@ -284,28 +292,6 @@ pub(crate) mod x86 {
         }
     }
 
-    /// The texel indices and weights of LINEAR filtering along an axis of `size` texels for
-    /// eight lanes, as [`fixed::linear_axis`](crate::texture::fixed::linear_axis) before
-    /// wrapping: `k = round_even(s * (size * 256)) - 128` in f32, the first index `k >> 8`,
-    /// the weight `k & 255`. `None` when |s * size * 256| reaches 2^30 (the caller filters
-    /// those pixels one by one).
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn fixed8(s: __m256, size: i32) -> Option<(__m256i, __m256i)> {
-        let x = _mm256_mul_ps(s, _mm256_set1_ps((size as f32) * 256.0));
-        let limit = _mm256_set1_ps((1u32 << 30) as f32);
-        let abs = _mm256_andnot_ps(_mm256_set1_ps(-0.0), x);
-        if _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_GE_OQ>(abs, limit)) != 0 {
-            return None;
-        }
-        let r = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(x);
-        let k = _mm256_sub_epi32(_mm256_cvttps_epi32(r), _mm256_set1_epi32(128));
-        Some((
-            _mm256_srai_epi32::<8>(k),
-            _mm256_and_si256(k, _mm256_set1_epi32(255)),
-        ))
-    }
-
     /// The stored components of the texels at (x, y), as in memory: byte k of each lane is
     /// component k (the bytes past the texel's components are whatever follows it).
     #[inline]
@@ -342,10 +328,35 @@ pub(crate) mod x86 {
         }
     }
 
-    /// The texel words at (x0, y) and (x1, y) of rows y0 and y1 of a four-byte level, as
-    /// [`words8`] reads them, when every lane's x1 is x0 + 1 (no lane wrapped or clamped
-    /// between its two columns): then each lane's two texels are the eight bytes at x0, read
-    /// as one 64-bit element (half the elements [`words8`] gathers). `None` otherwise.
+    /// Per 64-bit element of a pair read of texels of c = 1, 2, 3 bytes ([`pairs8`]): the
+    /// first texel's c bytes (at 8 - 2c) into bytes 0..c, the second's (at 8 - c) into bytes
+    /// 4..4 + c, the rest zero (-1 as index); indices within each 128-bit half.
+    const fn pair_pick(c: i32) -> [i8; 32] {
+        let mut idx = [-1i8; 32];
+        let mut i = 0;
+        while i < 32 {
+            let (e, k) = (i / 8, i % 8);
+            let (texel, b) = ((k / 4) as i32, (k % 4) as i32);
+            if b < c {
+                idx[i] = (8 - 2 * c + texel * c + b + 8 * (e % 2) as i32) as i8;
+            }
+            i += 1;
+        }
+        idx
+    }
+
+    /// [`pair_pick`] for c = 1, 2, 3 (index c - 1), and an unused entry.
+    const PAIR_PICK: [[i8; 32]; 4] = [pair_pick(1), pair_pick(2), pair_pick(3), [-1; 32]];
+
+    /// The texel words at (x0, y) and (x1, y) of rows y0 and y1 of a level of one to four
+    /// bytes per texel, as [`words8`] reads them (the bytes past a texel's components zero
+    /// instead of whatever follows it: no reader looks at them), when every lane's x1 is
+    /// x0 + 1 (no lane wrapped or clamped between its two columns): then each lane's two
+    /// texels are consecutive bytes, read as one 64-bit element (half the elements
+    /// [`words8`] gathers, and one address per row instead of one per texel). Four-byte
+    /// texels are the eight bytes at x0; texels of c < 4 bytes the eight bytes ending with
+    /// the second texel, whose 2c bytes a constant byte shuffle moves into the two words,
+    /// when that read starts inside the level for every lane. `None` otherwise.
     #[inline]
     #[target_feature(enable = "avx2")]
     fn pairs8(
@@ -355,28 +366,66 @@ pub(crate) mod x86 {
         y0: __m256i,
         y1: __m256i,
     ) -> Option<([__m256i; 2], [__m256i; 2])> {
-        if lvl.components != 4 || lvl.tiny.is_some() {
+        if !lvl.pairs {
             return None;
         }
+        let c = lvl.components;
         let next = _mm256_cmpeq_epi32(x1, _mm256_add_epi32(x0, _mm256_set1_epi32(1)));
-        if _mm256_movemask_epi8(next) != -1 {
+        // Byte offsets of each lane's eight bytes: (y w + x0) c + (2c - 8) for c < 4 (the read
+        // ends with the second texel), (y w + x0) 4 for c = 4.
+        let pitch = _mm256_set1_epi32(lvl.size[0] * c);
+        let first = match c {
+            4 => _mm256_slli_epi32::<2>(x0),
+            3 => _mm256_add_epi32(
+                _mm256_add_epi32(x0, x0),
+                _mm256_add_epi32(x0, _mm256_set1_epi32(-2)),
+            ),
+            2 => _mm256_add_epi32(_mm256_add_epi32(x0, x0), _mm256_set1_epi32(-4)),
+            _ => _mm256_add_epi32(x0, _mm256_set1_epi32(-6)),
+        };
+        let start0 = _mm256_add_epi32(_mm256_mullo_epi32(y0, pitch), first);
+        let start1 = _mm256_add_epi32(_mm256_mullo_epi32(y1, pitch), first);
+        let ok = if c == 4 {
+            next
+        } else {
+            // Reads that would start before the level (its first texels) take `words8`.
+            let m1 = _mm256_set1_epi32(-1);
+            _mm256_and_si256(
+                next,
+                _mm256_and_si256(
+                    _mm256_cmpgt_epi32(start0, m1),
+                    _mm256_cmpgt_epi32(start1, m1),
+                ),
+            )
+        };
+        if _mm256_movemask_epi8(ok) != -1 {
             return None;
         }
-        let width = _mm256_set1_epi32(lvl.size[0]);
+        let pick = match c {
+            4 => None,
+            // SAFETY: 32 bytes; unaligned load.
+            _ => Some(unsafe {
+                _mm256_loadu_si256(PAIR_PICK[(c - 1) as usize & 3].as_ptr() as *const __m256i)
+            }),
+        };
         let ptr = lvl.texels.as_ptr() as *const i64;
-        let row = |y: __m256i| {
-            let idx = _mm256_add_epi32(_mm256_mullo_epi32(y, width), x0);
+        let row = |start: __m256i| {
             // SAFETY: wrapping keeps 0 <= x0 < width and 0 <= y < height, and x1 = x0 + 1 is
-            // a wrapped column too, so x0 + 1 < width: texels idx and idx + 1 both lie in
-            // row y, inside the width * height * 4 bytes `Level8::new` checked `texels`
-            // holds. Each 8-byte read at byte offset idx * 4 lies inside it. Gathers need no
-            // alignment.
-            let (lo, hi) = unsafe {
+            // a wrapped column too, so x0 + 1 < width: texels y w + x0 and y w + x0 + 1 both
+            // lie in row y, inside the width * height * c bytes `Level8::new` checked
+            // `texels` holds. The eight bytes read end with the second texel (c < 4) or are
+            // the two texels (c = 4), and start at byte `start` >= 0 (checked above for
+            // c < 4), so each read lies inside `texels`. Gathers need no alignment.
+            let (mut lo, mut hi) = unsafe {
                 (
-                    _mm256_i32gather_epi64::<4>(ptr, _mm256_castsi256_si128(idx)),
-                    _mm256_i32gather_epi64::<4>(ptr, _mm256_extracti128_si256::<1>(idx)),
+                    _mm256_i32gather_epi64::<1>(ptr, _mm256_castsi256_si128(start)),
+                    _mm256_i32gather_epi64::<1>(ptr, _mm256_extracti128_si256::<1>(start)),
                 )
             };
+            if let Some(p) = pick {
+                lo = _mm256_shuffle_epi8(lo, p);
+                hi = _mm256_shuffle_epi8(hi, p);
+            }
             // Each 128-bit half: [a0, a2, b0, b2] (first texels), [a1, a3, b1, b3] (second),
             // lanes 0, 1, 4, 5 then 2, 3, 6, 7; the 64-bit quarters reordered to 0..8.
             let first = _mm256_castps_si256(_mm256_shuffle_ps::<0b10_00_10_00>(
@@ -392,7 +441,7 @@ pub(crate) mod x86 {
                 _mm256_permute4x64_epi64::<0b11_01_10_00>(second),
             ]
         };
-        Some((row(y0), row(y1)))
+        Some((row(start0), row(start1)))
     }
 
     /// R, G, B, A of texels whose stored components are the bytes of `words` (as
@@ -449,61 +498,149 @@ pub(crate) mod x86 {
         _mm256_packus_epi16(lo, hi)
     }
 
+    /// The texel indices and weights of LINEAR filtering for eight lanes, of `s` along an axis
+    /// of `w` texels and of `t` along one of `h`, as
+    /// [`fixed::linear_axis`](crate::texture::fixed::linear_axis) before wrapping:
+    /// `k = round_even(s * (size * 256)) - 128` in f32 (`size * 256` given per axis as
+    /// `Level8::scale256`), the first index `k >> 8`, the weight `k & 255`. `None` when
+    /// |s w 256| or |t h 256| reaches 2^30 (one test for both; the
+    /// caller filters those pixels one by one).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn fixed8x2(
+        s: __m256,
+        t: __m256,
+        [sw, sh]: [f32; 2],
+    ) -> Option<((__m256i, __m256i), (__m256i, __m256i))> {
+        let xs = _mm256_mul_ps(s, _mm256_set1_ps(sw));
+        let xt = _mm256_mul_ps(t, _mm256_set1_ps(sh));
+        let limit = _mm256_set1_ps((1u32 << 30) as f32);
+        let sign = _mm256_set1_ps(-0.0);
+        let big = _mm256_or_ps(
+            _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_andnot_ps(sign, xs), limit),
+            _mm256_cmp_ps::<_CMP_GE_OQ>(_mm256_andnot_ps(sign, xt), limit),
+        );
+        if _mm256_movemask_ps(big) != 0 {
+            return None;
+        }
+        let split = |x: __m256| {
+            let r = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(x);
+            let k = _mm256_sub_epi32(_mm256_cvttps_epi32(r), _mm256_set1_epi32(128));
+            (
+                _mm256_srai_epi32::<8>(k),
+                _mm256_and_si256(k, _mm256_set1_epi32(255)),
+            )
+        };
+        Some((split(xs), split(xt)))
+    }
+
+    /// NEAREST filtering of `lvl` at `s`, `t` as texel words ([`words8`]).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn nearest8_words(lvl: &Level8, s: __m256, t: __m256) -> Option<__m256i> {
+        let [w, h] = lvl.size;
+        let [mx, my] = lvl.repeat_mask;
+        let (x, _) = floor_frac8(s, w, 0.0)?;
+        let (y, _) = floor_frac8(t, h, 0.0)?;
+        Some(words8(lvl, wrap8(x, w, mx), wrap8(y, h, my)))
+    }
+
+    /// LINEAR filtering of `lvl` at `s`, `t` in the fixed point of `texture::fixed`, the
+    /// stored components as 16-bit lanes before they are packed to texel words: pixels 0, 1
+    /// and 4, 5 (the unpacked low halves of the 128-bit lanes), then 2, 3 and 6, 7. Each
+    /// value is a byte (a lerp stays between its ends), so `_mm256_packus_epi16` of the two
+    /// gives the texel words losslessly.
+    /// (A macro, so that [`filter8_words2`] holds both levels' filters in one body: as a
+    /// function called from two places it was compiled out of line, its results passed
+    /// through memory. A `None` returns from the function it is used in.)
+    macro_rules! bilinear8_halves {
+        ($lvl:expr, $s:expr, $t:expr) => {{
+            let (lvl, s, t): (&Level8, __m256, __m256) = ($lvl, $s, $t);
+            let [w, h] = lvl.size;
+            let [mx, my] = lvl.repeat_mask;
+            let ((x, wx), (y, wy)) = fixed8x2(s, t, lvl.scale256)?;
+            let one = _mm256_set1_epi32(1);
+            let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
+            let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
+            let ([t00, t10], [t01, t11]) = match pairs8(lvl, x0, x1, y0, y1) {
+                Some(p) => p,
+                None => (
+                    [words8(lvl, x0, y0), words8(lvl, x1, y0)],
+                    [words8(lvl, x0, y1), words8(lvl, x1, y1)],
+                ),
+            };
+            let z = _mm256_setzero_si256();
+            let (wxl, wxh) = weights16(wx);
+            let (wyl, wyh) = weights16(wy);
+            // Pixels 0, 1 and 4, 5 (the low halves of the 128-bit lanes), then 2, 3 and 6, 7.
+            let lo = {
+                let row0 = lerp16(
+                    _mm256_unpacklo_epi8(t00, z),
+                    _mm256_unpacklo_epi8(t10, z),
+                    wxl,
+                );
+                let row1 = lerp16(
+                    _mm256_unpacklo_epi8(t01, z),
+                    _mm256_unpacklo_epi8(t11, z),
+                    wxl,
+                );
+                lerp16(row0, row1, wyl)
+            };
+            let hi = {
+                let row0 = lerp16(
+                    _mm256_unpackhi_epi8(t00, z),
+                    _mm256_unpackhi_epi8(t10, z),
+                    wxh,
+                );
+                let row1 = lerp16(
+                    _mm256_unpackhi_epi8(t01, z),
+                    _mm256_unpackhi_epi8(t11, z),
+                    wxh,
+                );
+                lerp16(row0, row1, wyh)
+            };
+            (lo, hi)
+        }};
+    }
+
     /// The stored components of NEAREST or LINEAR filtering of `lvl` at `s`, `t`, as texel
     /// words ([`words8`]); LINEAR in the fixed point of `texture::fixed`.
     #[inline]
     #[target_feature(enable = "avx2")]
     fn filter8_words(lvl: &Level8, linear: bool, s: __m256, t: __m256) -> Option<__m256i> {
-        let [w, h] = lvl.size;
-        let [mx, my] = lvl.repeat_mask;
         if !linear {
-            let (x, _) = floor_frac8(s, w, 0.0)?;
-            let (y, _) = floor_frac8(t, h, 0.0)?;
-            return Some(words8(lvl, wrap8(x, w, mx), wrap8(y, h, my)));
+            return nearest8_words(lvl, s, t);
         }
-        let (x, wx) = fixed8(s, w)?;
-        let (y, wy) = fixed8(t, h)?;
-        let one = _mm256_set1_epi32(1);
-        let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
-        let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
-        let ([t00, t10], [t01, t11]) = match pairs8(lvl, x0, x1, y0, y1) {
-            Some(p) => p,
-            None => (
-                [words8(lvl, x0, y0), words8(lvl, x1, y0)],
-                [words8(lvl, x0, y1), words8(lvl, x1, y1)],
-            ),
-        };
-        let z = _mm256_setzero_si256();
-        let (wxl, wxh) = weights16(wx);
-        let (wyl, wyh) = weights16(wy);
-        // Pixels 0, 1 and 4, 5 (the low halves of the 128-bit lanes), then 2, 3 and 6, 7.
-        let lo = {
-            let row0 = lerp16(
-                _mm256_unpacklo_epi8(t00, z),
-                _mm256_unpacklo_epi8(t10, z),
-                wxl,
-            );
-            let row1 = lerp16(
-                _mm256_unpacklo_epi8(t01, z),
-                _mm256_unpacklo_epi8(t11, z),
-                wxl,
-            );
-            lerp16(row0, row1, wyl)
-        };
-        let hi = {
-            let row0 = lerp16(
-                _mm256_unpackhi_epi8(t00, z),
-                _mm256_unpackhi_epi8(t10, z),
-                wxh,
-            );
-            let row1 = lerp16(
-                _mm256_unpackhi_epi8(t01, z),
-                _mm256_unpackhi_epi8(t11, z),
-                wxh,
-            );
-            lerp16(row0, row1, wyh)
-        };
+        let (lo, hi) = bilinear8_halves!(lvl, s, t);
         Some(_mm256_packus_epi16(lo, hi))
+    }
+
+    /// [`filter8_words`] of `l1` and of `l2` mixed per lane with the second's weight `weight`
+    /// (0..=255 per 32-bit lane), as [`lerp_words`] of the two: for LINEAR the two levels'
+    /// 16-bit results are mixed before they are packed (the same bytes: packing and
+    /// unpacking bytes is lossless), in one call.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    fn filter8_words2(
+        l1: &Level8,
+        l2: &Level8,
+        linear: bool,
+        s: __m256,
+        t: __m256,
+        weight: __m256i,
+    ) -> Option<__m256i> {
+        if !linear {
+            let a = nearest8_words(l1, s, t)?;
+            let b = nearest8_words(l2, s, t)?;
+            return Some(lerp_words(a, b, weight));
+        }
+        let (alo, ahi) = bilinear8_halves!(l1, s, t);
+        let (blo, bhi) = bilinear8_halves!(l2, s, t);
+        let (wl, wh) = weights16(weight);
+        Some(_mm256_packus_epi16(
+            lerp16(alo, blo, wl),
+            lerp16(ahi, bhi, wh),
+        ))
     }
 
     /// The eight lanes' level weights `weight` quantised
@@ -683,12 +820,42 @@ pub(crate) mod x86 {
     ) -> Option<(__m256i, &'l Level8<'a>)> {
         let level = |l: usize| levels.get(l)?.as_ref();
         let l1 = level(first)?;
-        let t1 = filter8_words(l1, linear, s, t)?;
         if second == first {
-            return Some((t1, l1));
+            return Some((filter8_words(l1, linear, s, t)?, l1));
         }
-        let t2 = filter8_words(level(second)?, linear, s, t)?;
-        Some((lerp_words(t1, t2, weight), l1))
+        let words = filter8_words2(l1, level(second)?, linear, s, t, weight)?;
+        Some((words, l1))
+    }
+
+    /// The level plan of quad `q` (lanes 2q of `ax`, `ay`) from the sampler's λ
+    /// ([`LodSelect::plan_for_rho2`]), for the quads whose `floor(256 λ)` does not decide it:
+    /// out of line, so that the usual plan is computed in [`block_words8`] itself.
+    #[cold]
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    fn sampler_plan(
+        lod: &LodSelect,
+        ax: __m128,
+        ay: __m128,
+        q: usize,
+    ) -> ((usize, usize, bool), i32) {
+        let (mut axs, mut ays) = ([0f32; 4], [0f32; 4]);
+        // SAFETY: four f32 each; unaligned stores.
+        unsafe {
+            _mm_storeu_ps(axs.as_mut_ptr(), ax);
+            _mm_storeu_ps(ays.as_mut_ptr(), ay);
+        }
+        match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
+            LevelPlan::One { level, linear } => ((level, level, linear), 0),
+            LevelPlan::Two {
+                levels: [a, b],
+                linear,
+                weight,
+            } => (
+                (a, b, linear),
+                crate::texture::fixed::level_weight(weight) as i32,
+            ),
+        }
     }
 
     /// [`block_texels8`] as texel words (the stored components, [`words8`]) and the level
@@ -738,30 +905,22 @@ pub(crate) mod x86 {
             if quick & (1 << q) != 0 {
                 return lod.plan_of_lambda256(g[q]);
             }
-            let (mut axs, mut ays) = ([0f32; 4], [0f32; 4]);
-            // SAFETY: four f32 each; unaligned stores.
-            unsafe {
-                _mm_storeu_ps(axs.as_mut_ptr(), ax);
-                _mm_storeu_ps(ays.as_mut_ptr(), ay);
-            }
-            match lod.plan_for_rho2(axs[2 * q], ays[2 * q]) {
-                LevelPlan::One { level, linear } => ((level, level, linear), 0),
-                LevelPlan::Two {
-                    levels: [a, b],
-                    linear,
-                    weight,
-                } => (
-                    (a, b, linear),
-                    crate::texture::fixed::level_weight(weight) as i32,
-                ),
-            }
+            sampler_plan(lod, ax, ay, q)
         };
         if quads == 0 {
             return Some((_mm256_setzero_si256(), None));
         }
-        // A quad without live lanes takes the other's plan (its lanes are not stored).
-        let (p0, w0) = plan((quads & 1 == 0) as usize);
-        let (p1, w1) = if quads == 3 { plan(1) } else { (p0, w0) };
+        // A quad without live lanes takes the other's plan (its lanes are not stored). (One
+        // call of `plan`, in a loop, so that it is compiled inline.)
+        let mut plans = [mag; 2];
+        for (q, p) in plans.iter_mut().enumerate() {
+            *p = plan(if quads == 3 {
+                q
+            } else {
+                (quads & 1 == 0) as usize
+            });
+        }
+        let [(p0, w0), (p1, w1)] = plans;
         let first = || _mm256_castps_si256(lane_mask(0x33));
         let weight = |w0: i32, w1: i32| {
             if w0 == w1 {
@@ -1075,12 +1234,17 @@ pub(crate) mod x86 {
         t: __m256,
         weight: Option<f32>,
     ) -> Option<__m256i> {
-        let t1 = filter8_words(&levels[0], linear, s, t)?;
         let Some(w) = weight else {
-            return Some(t1);
+            return filter8_words(&levels[0], linear, s, t);
         };
-        let t2 = filter8_words(&levels[1], linear, s, t)?;
-        Some(lerp_words(t1, t2, level_weights8(&[w; 8])))
+        filter8_words2(
+            &levels[0],
+            &levels[1],
+            linear,
+            s,
+            t,
+            level_weights8(&[w; 8]),
+        )
     }
 
     /// [`filter8_mix`](super::filter8_mix) with coordinates and texels in registers, the
@@ -1094,9 +1258,8 @@ pub(crate) mod x86 {
         t: __m256,
         weights: __m256i,
     ) -> Option<[__m256; 4]> {
-        let t1 = filter8_words(levels[0], linear, s, t)?;
-        let t2 = filter8_words(levels[1], linear, s, t)?;
-        Some(texels_of_words(levels[0], lerp_words(t1, t2, weights)))
+        let words = filter8_words2(levels[0], levels[1], linear, s, t, weights)?;
+        Some(texels_of_words(levels[0], words))
     }
 
     /// [`filter8_mix`](super::filter8_mix).

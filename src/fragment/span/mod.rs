@@ -5,7 +5,8 @@
 //! A map for reading (`fragment/cache.rs` picks one row function and, for some keys, one
 //! two-row function per draw):
 //! - per fragment, in the specification's order: [`span_general`] (every key), its
-//!   monomorphised forms [`span_specialised`] and [`span_fogged`], and [`span_sampled`]
+//!   monomorphised forms [`span_specialised`] and [`span_fogged`] (whose fogged fragments
+//!   [`span_fogged8`] finishes eight at a time with AVX2), and [`span_sampled`]
 //!   (texels eight at a time, the rest per fragment); all of them run `shade` /
 //!   `finish_fragment`;
 //! - eight fragments at a time through one tail (`tail8`, `simd::shade8`: environment, alpha
@@ -40,6 +41,7 @@ use crate::common::fixed::{color4_to_u8, depth_to_fixed};
 mod affine;
 mod coords;
 mod flat;
+mod fogged;
 mod general;
 mod lanes;
 mod paths;
@@ -49,6 +51,7 @@ mod tail;
 pub use affine::*;
 use coords::*;
 use flat::*;
+pub use fogged::*;
 use general::*;
 use lanes::*;
 pub use paths::*;
