@@ -303,7 +303,7 @@ pub fn fog_factors8(
 }
 
 #[cfg(target_arch = "x86_64")]
-pub(crate) use x86::{block_combined8, shade8_bytes, shade8_regs};
+pub(crate) use x86::{block_combined8, depth8 as depth8_avx2, shade8_bytes, shade8_regs};
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {

@@ -46,6 +46,7 @@ mod general;
 mod lanes;
 mod paths;
 mod perspective8;
+mod rows8;
 mod tail;
 pub use affine::*;
 use coords::*;
@@ -55,6 +56,7 @@ use general::*;
 use lanes::*;
 pub use paths::*;
 use perspective8::*;
+use rows8::*;
 pub use tail::*;
 
 /// The interpolants of one primitive for the fragment stage.

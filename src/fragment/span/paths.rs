@@ -810,6 +810,10 @@ pub fn span_specialised<'a, const DEPTH: u8, const FULL_MASK: bool>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
+    // Eight pixels at a time where it applies (`rows8.rs`: the same values).
+    if simple_rows8::<DEPTH, FULL_MASK>(ds, tile, y, x0, x1, it) {
+        return;
+    }
     shade::<DEPTH, FULL_MASK, true, false, false>(ds, tile, y, x0, x1, it)
 }
 
@@ -1026,6 +1030,10 @@ pub fn span_depth_stencil<'a>(
     x1: i32,
     it: &Interpolants<'a>,
 ) {
+    // Whole groups in registers where it applies (`rows8.rs`: the same values).
+    if depth_stencil_rows8(ds, tile, y, x0, x1, it) {
+        return;
+    }
     let key = &ds.key;
     let row = tile.index(x0, y);
     let mut run = SpanRun::new(it, x0, y as f64 + 0.5, 0);

@@ -299,6 +299,56 @@ impl<'i> SpanRun<'i> {
         z
     }
 
+    /// The depths of the next `m` pixels (at most 8) into `z[..m]`, moving past them: what
+    /// `m` calls of [`Self::next_z`] give, eight at a time without a restart test per pixel
+    /// when none of the eight moves restarts.
+    #[inline(always)]
+    pub(super) fn z_lanes(&mut self, z: &mut [f64; 8], m: usize) {
+        if m == 8 && self.left > 8 {
+            self.left -= 8;
+            let mut v = self.z;
+            for o in z.iter_mut() {
+                *o = v;
+                v += self.dz;
+            }
+            self.z = v;
+        } else {
+            for o in &mut z[..m] {
+                *o = self.next_z();
+            }
+        }
+    }
+
+    /// The depth, 1/w and primary colour (as stepped) of the next `m` pixels (at most 8) into
+    /// lanes `0..m` of `raw`, moving past them: [`Self::record`] and [`Self::advance`] `m`
+    /// times (unfogged, the primary colour only: a run of count 4), unrolled when none of the
+    /// eight moves restarts.
+    #[inline(always)]
+    pub(super) fn primary_lanes(&mut self, raw: &mut RawLanes, m: usize) {
+        if m == 8 && self.left > 8 && self.count == 4 {
+            self.left -= 8;
+            let (mut z, mut inv_w, mut c) = (self.z, self.inv_w, self.color);
+            for j in 0..8 {
+                raw.z[j] = z;
+                raw.inv_w[j] = inv_w;
+                for k in 0..4 {
+                    raw.color[k][j] = c[k];
+                }
+                z += self.dz;
+                inv_w += self.dinv_w;
+                for k in 0..4 {
+                    c[k] += self.dcolor[k];
+                }
+            }
+            (self.z, self.inv_w, self.color) = (z, inv_w, c);
+        } else {
+            for j in 0..m {
+                self.record::<false>(raw, j, true);
+                self.advance::<false>();
+            }
+        }
+    }
+
     /// For the eight-lane paths: the current pixel's primary colour, stored depth (0 without
     /// `depth_max`), fog coordinate (0 unless fogged) and secondary colour (`None` unless the run
     /// has it: a count of 8), then a move to the next pixel: a step of z, 1/w, the primary
@@ -689,7 +739,7 @@ pub(super) fn stencil_block(
         u64::from(word(&values[row0..row0 + 4])) | u64::from(word(&values[upper..upper + 4])) << 32;
     #[cfg(target_arch = "x86_64")]
     // SAFETY: SSE2 is part of the x86-64 baseline.
-    let (new, pass) = unsafe { stencil8_word_sse2(&st, &ds.uniforms, old, depth_pass, live) };
+    let (new, pass) = stencil8_word_sse2(&st, &ds.uniforms, old, depth_pass, live);
     #[cfg(not(target_arch = "x86_64"))]
     let (new, pass) = {
         let (new, pass) = stencil8_live(&st, &ds.uniforms, &old.to_le_bytes(), depth_pass, live);
@@ -809,10 +859,31 @@ fn stencil8_sse2(
     (new.to_le_bytes(), pass)
 }
 
-/// [`stencil8_sse2`] on the eight values as the bytes of a word (lane j in byte j).
+/// [`stencil8_live`] on the eight values as the bytes of a word (lane j in byte j), inlined
+/// into the caller's loop (SSE2 on x86-64, its baseline; else lane by lane).
+#[inline(always)]
+pub(super) fn stencil8_word(
+    st: &StencilKey,
+    u: &Uniforms,
+    old: u64,
+    depth_pass: u8,
+    live: u8,
+) -> (u64, u8) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        stencil8_word_sse2(st, u, old, depth_pass, live)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        let (new, pass) = stencil8_live(st, u, &old.to_le_bytes(), depth_pass, live);
+        (u64::from_le_bytes(new), pass)
+    }
+}
+
+/// [`stencil8_sse2`] on the eight values as the bytes of a word (lane j in byte j). (Without
+/// `#[target_feature]`: SSE2 is in the x86-64 baseline, so the function inlines.)
 #[cfg(target_arch = "x86_64")]
-#[inline]
-#[target_feature(enable = "sse2")]
+#[inline(always)]
 fn stencil8_word_sse2(
     st: &StencilKey,
     u: &Uniforms,
@@ -820,76 +891,81 @@ fn stencil8_word_sse2(
     depth_pass: u8,
     live: u8,
 ) -> (u64, u8) {
-    use std::arch::x86_64::*;
-    let splat = |b: u8| _mm_set1_epi8(b as i8);
-    let ones = splat(0xFF);
-    let o = _mm_cvtsi64_si128(old as i64);
-    let test = stencil_test_sse2(st, u, o);
-    let wm = splat(u.stencil_write_mask);
-    let action = |op: StencilOp| {
-        let one = splat(1);
-        let v = match op {
-            StencilOp::Keep => return o,
-            StencilOp::Zero => _mm_setzero_si128(),
-            StencilOp::Replace => splat(u.stencil_ref),
-            StencilOp::Incr => _mm_adds_epu8(o, one),
-            StencilOp::Decr => _mm_subs_epu8(o, one),
-            StencilOp::Invert => _mm_xor_si128(o, ones),
-            StencilOp::IncrWrap => _mm_add_epi8(o, one),
-            StencilOp::DecrWrap => _mm_sub_epi8(o, one),
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only, no memory access.
+    unsafe {
+        use std::arch::x86_64::*;
+        let splat = |b: u8| _mm_set1_epi8(b as i8);
+        let ones = splat(0xFF);
+        let o = _mm_cvtsi64_si128(old as i64);
+        let test = stencil_test_sse2(st, u, o);
+        let wm = splat(u.stencil_write_mask);
+        let action = |op: StencilOp| {
+            let one = splat(1);
+            let v = match op {
+                StencilOp::Keep => return o,
+                StencilOp::Zero => _mm_setzero_si128(),
+                StencilOp::Replace => splat(u.stencil_ref),
+                StencilOp::Incr => _mm_adds_epu8(o, one),
+                StencilOp::Decr => _mm_subs_epu8(o, one),
+                StencilOp::Invert => _mm_xor_si128(o, ones),
+                StencilOp::IncrWrap => _mm_add_epi8(o, one),
+                StencilOp::DecrWrap => _mm_sub_epi8(o, one),
+            };
+            _mm_or_si128(_mm_andnot_si128(wm, o), _mm_and_si128(v, wm))
         };
-        _mm_or_si128(_mm_andnot_si128(wm, o), _mm_and_si128(v, wm))
-    };
-    // The depth test's bits as byte masks.
-    let bits = _mm_set_epi64x(0, 0x8040_2010_0804_0201u64 as i64);
-    let dp = _mm_cmpeq_epi8(_mm_and_si128(splat(depth_pass), bits), bits);
-    let select = |mask: __m128i, a: __m128i, b: __m128i| {
-        _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b))
-    };
-    let both = _mm_and_si128(test, dp);
-    let new = if st.fail == StencilOp::Keep && st.depth_fail == StencilOp::Keep {
-        // Only the lanes passing both tests change (`depth_pass` is within `live`): one
-        // action, one selection (the z-pass volumes and REPLACE-on-pass marking).
-        select(both, action(st.depth_pass), o)
-    } else {
-        let passed = select(dp, action(st.depth_pass), action(st.depth_fail));
-        let new = select(test, passed, action(st.fail));
-        // Lanes outside `live` keep their stored values.
-        let lm = _mm_cmpeq_epi8(_mm_and_si128(splat(live), bits), bits);
-        select(lm, new, o)
-    };
-    let pass = _mm_movemask_epi8(both) as u8;
-    (_mm_cvtsi128_si64(new) as u64, pass)
+        // The depth test's bits as byte masks.
+        let bits = _mm_set_epi64x(0, 0x8040_2010_0804_0201u64 as i64);
+        let dp = _mm_cmpeq_epi8(_mm_and_si128(splat(depth_pass), bits), bits);
+        let select = |mask: __m128i, a: __m128i, b: __m128i| {
+            _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b))
+        };
+        let both = _mm_and_si128(test, dp);
+        let new = if st.fail == StencilOp::Keep && st.depth_fail == StencilOp::Keep {
+            // Only the lanes passing both tests change (`depth_pass` is within `live`): one
+            // action, one selection (the z-pass volumes and REPLACE-on-pass marking).
+            select(both, action(st.depth_pass), o)
+        } else {
+            let passed = select(dp, action(st.depth_pass), action(st.depth_fail));
+            let new = select(test, passed, action(st.fail));
+            // Lanes outside `live` keep their stored values.
+            let lm = _mm_cmpeq_epi8(_mm_and_si128(splat(live), bits), bits);
+            select(lm, new, o)
+        };
+        let pass = _mm_movemask_epi8(both) as u8;
+        (_mm_cvtsi128_si64(new) as u64, pass)
+    }
 }
 
 /// The stencil test of the low eight bytes of `o` (stored values) as byte masks (0xFF where
 /// `reference OP value` holds, both masked): unsigned comparisons through `max_epu8`.
 #[cfg(target_arch = "x86_64")]
-#[inline]
-#[target_feature(enable = "sse2")]
+#[inline(always)]
 fn stencil_test_sse2(
     st: &StencilKey,
     u: &Uniforms,
     o: std::arch::x86_64::__m128i,
 ) -> std::arch::x86_64::__m128i {
-    use std::arch::x86_64::*;
-    let splat = |b: u8| _mm_set1_epi8(b as i8);
-    let ones = splat(0xFF);
-    let m = _mm_and_si128(o, splat(u.stencil_value_mask));
-    let r = splat(u.stencil_ref & u.stencil_value_mask);
-    let max = _mm_max_epu8(r, m);
-    // Per lane: reference OP masked value.
-    let (r_ge, m_ge) = (_mm_cmpeq_epi8(max, r), _mm_cmpeq_epi8(max, m));
-    let eq = _mm_cmpeq_epi8(r, m);
-    match st.func {
-        CompareFunc::Never => _mm_setzero_si128(),
-        CompareFunc::Less => _mm_xor_si128(r_ge, ones),
-        CompareFunc::Equal => eq,
-        CompareFunc::LessEqual => m_ge,
-        CompareFunc::Greater => _mm_xor_si128(m_ge, ones),
-        CompareFunc::NotEqual => _mm_xor_si128(eq, ones),
-        CompareFunc::GreaterEqual => r_ge,
-        CompareFunc::Always => ones,
+    // SAFETY: SSE2 is part of the x86-64 baseline; registers only, no memory access.
+    unsafe {
+        use std::arch::x86_64::*;
+        let splat = |b: u8| _mm_set1_epi8(b as i8);
+        let ones = splat(0xFF);
+        let m = _mm_and_si128(o, splat(u.stencil_value_mask));
+        let r = splat(u.stencil_ref & u.stencil_value_mask);
+        let max = _mm_max_epu8(r, m);
+        // Per lane: reference OP masked value.
+        let (r_ge, m_ge) = (_mm_cmpeq_epi8(max, r), _mm_cmpeq_epi8(max, m));
+        let eq = _mm_cmpeq_epi8(r, m);
+        match st.func {
+            CompareFunc::Never => _mm_setzero_si128(),
+            CompareFunc::Less => _mm_xor_si128(r_ge, ones),
+            CompareFunc::Equal => eq,
+            CompareFunc::LessEqual => m_ge,
+            CompareFunc::Greater => _mm_xor_si128(m_ge, ones),
+            CompareFunc::NotEqual => _mm_xor_si128(eq, ones),
+            CompareFunc::GreaterEqual => r_ge,
+            CompareFunc::Always => ones,
+        }
     }
 }
 
