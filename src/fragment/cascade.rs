@@ -1037,6 +1037,25 @@ mod tests {
     use crate::common::values::{CombineFunc as F, CombineOperand as O, CombineSource as S};
     use crate::texture::simd::Texels8;
 
+    /// Every combiner function (the last two, DOT3_RGBA and DOT3_RGB, are RGB only).
+    const FUNCS: [F; 8] = [
+        F::Replace,
+        F::Modulate,
+        F::Add,
+        F::AddSigned,
+        F::Interpolate,
+        F::Subtract,
+        F::Dot3Rgb,
+        F::Dot3Rgba,
+    ];
+    /// Every operand.
+    const OPERANDS: [O; 4] = [
+        O::SrcColor,
+        O::OneMinusSrcColor,
+        O::SrcAlpha,
+        O::OneMinusSrcAlpha,
+    ];
+
     /// `combine4`'s cascade: four units, one operation per unit's RGB and one per alpha.
     #[test]
     fn combine4_compiles_to_eight_operations() {
@@ -1125,16 +1144,7 @@ mod tests {
             BaseFormat::Rgb,
             BaseFormat::Rgba,
         ];
-        let funcs = [
-            F::Replace,
-            F::Modulate,
-            F::Add,
-            F::AddSigned,
-            F::Interpolate,
-            F::Subtract,
-            F::Dot3Rgb,
-            F::Dot3Rgba,
-        ];
+        let funcs = FUNCS;
         let sources = [
             S::Texture,
             S::TextureUnit(0),
@@ -1146,12 +1156,7 @@ mod tests {
             S::Previous,
             S::Zero,
         ];
-        let operands = [
-            O::SrcColor,
-            O::OneMinusSrcColor,
-            O::SrcAlpha,
-            O::OneMinusSrcAlpha,
-        ];
+        let operands = OPERANDS;
         let mut ops = 0;
         for case in 0..3000 {
             let n = 1 + (g.next() % 8) as usize;
@@ -1237,22 +1242,8 @@ mod tests {
             return;
         }
         let mut g = Gen(0x2545_F491_4F6C_DD1D);
-        let funcs = [
-            F::Replace,
-            F::Modulate,
-            F::Add,
-            F::AddSigned,
-            F::Interpolate,
-            F::Subtract,
-            F::Dot3Rgb,
-            F::Dot3Rgba,
-        ];
-        let operands = [
-            O::SrcColor,
-            O::OneMinusSrcColor,
-            O::SrcAlpha,
-            O::OneMinusSrcAlpha,
-        ];
+        let funcs = FUNCS;
+        let operands = OPERANDS;
         let mut seen = [false; 8];
         for case in 0..4000 {
             let unit = (g.next() % MAX_TEXTURE_UNITS as u64) as usize;
@@ -1338,22 +1329,8 @@ mod tests {
             return;
         }
         let mut g = Gen(0x6A09_E667_F3BC_C908);
-        let funcs = [
-            F::Replace,
-            F::Modulate,
-            F::Add,
-            F::AddSigned,
-            F::Interpolate,
-            F::Subtract,
-            F::Dot3Rgb,
-            F::Dot3Rgba,
-        ];
-        let operands = [
-            O::SrcColor,
-            O::OneMinusSrcColor,
-            O::SrcAlpha,
-            O::OneMinusSrcAlpha,
-        ];
+        let funcs = FUNCS;
+        let operands = OPERANDS;
         let (mut chains, mut without, mut primary_later) = (0, 0, 0);
         for case in 0..4000 {
             let n = 2 + (g.next() % 7) as usize;

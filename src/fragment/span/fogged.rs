@@ -11,18 +11,11 @@
 
 use super::*;
 
-/// The shortest span [`span_fogged8`] takes eight lanes at a time. Shorter ones stay on
-/// `span_fogged`: the lanes' values are stepped one by one into memory and read back as
-/// vectors, and on short spans (the `fog` workload's average about three fragments) that
-/// store forwarding stall costs more wall time than the scalar loop, though fewer
-/// instructions (perf, 1 thread: `fog` 37 ms per frame scalar, 45 ms with every span here).
-const FOGGED8_MIN_SPAN: i32 = 16;
-
 /// [`span_fogged`] eight fragments at a time (keys simple but for fog: no alpha test,
 /// stencil, blending, logic op, colour sum or texturing; depth handling by `DEPTH`, the
 /// colour mask by `FULL_MASK`, as `span_fogged`). Takes `span_fogged` itself without AVX2,
 /// for partly covered fragments, for draws without fog parameters and for depth ranges of
-/// 32 bits, and for spans shorter than [`FOGGED8_MIN_SPAN`].
+/// 32 bits, and for spans shorter than [`LANES8_MIN_SPAN`].
 pub fn span_fogged8<'a, const DEPTH: u8, const FULL_MASK: bool>(
     ds: &'a FragmentDraw,
     tile: &mut Tile,
@@ -34,7 +27,7 @@ pub fn span_fogged8<'a, const DEPTH: u8, const FULL_MASK: bool>(
     let fog = lane_fog(ds);
     let (Some(fog), true, true, true, true) = (
         fog,
-        x1 - x0 >= FOGGED8_MIN_SPAN,
+        x1 - x0 >= LANES8_MIN_SPAN,
         it.coverage == 1.0,
         crate::common::cpu::available(),
         ds.depth_max < 1 << 31,

@@ -8,15 +8,17 @@
 
 use super::*;
 
-/// The shortest span [`simple_rows8`] takes. Shorter spans (small triangles: the `triangles`
-/// workload's average a few pixels) stay on the per-fragment path: the lanes' colours are
-/// stepped one by one into memory and read back as vectors, and on short spans that store
-/// forwarding stall plus the masked stores cost more wall time than the scalar loop (perf on
-/// `triangles`, 1 thread: 62-69 ms per frame on the scalar path, 77-93 ms with every span here).
-const ROWS8_MIN_SPAN: i32 = 16;
+/// The shortest span the untextured eight-lane rows take ([`simple_rows8`] here,
+/// `span_fogged8` in `fogged.rs`). Shorter spans (small triangles: `triangles` and `fog`
+/// average a few pixels) stay on the per-fragment paths: the lanes' values are stepped one by
+/// one into memory and read back as vectors, and on short spans that store-forwarding stall
+/// plus the masked stores cost more wall time than the scalar loop, though fewer instructions
+/// (perf, 1 thread: `triangles` 62 -> 75-93 ms and `fog` 37 -> 45 ms per frame with every
+/// span on these routes).
+pub(super) const LANES8_MIN_SPAN: i32 = 16;
 
 /// [`span_specialised`]'s row eight pixels at a time, when it applies: a span of at least
-/// [`ROWS8_MIN_SPAN`] pixels, aliased (coverage 1),
+/// [`LANES8_MIN_SPAN`] pixels, aliased (coverage 1),
 /// AVX2 present, a depth range that `simd::depth8` converts, and a fixed depth mode. Answers
 /// false (nothing done) otherwise.
 #[inline(always)]
@@ -31,7 +33,7 @@ pub(super) fn simple_rows8<const DEPTH: u8, const FULL_MASK: bool>(
     #[cfg(target_arch = "x86_64")]
     {
         if DEPTH != depth_mode::DYNAMIC
-            && x1 - x0 >= ROWS8_MIN_SPAN
+            && x1 - x0 >= LANES8_MIN_SPAN
             && it.coverage == 1.0
             && ds.depth_max < 1 << 31
             && crate::common::cpu::available()
