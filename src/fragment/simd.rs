@@ -303,7 +303,9 @@ pub fn fog_factors8(
 }
 
 #[cfg(target_arch = "x86_64")]
-pub(crate) use x86::{block_combined8, depth8 as depth8_avx2, shade8_bytes, shade8_regs};
+pub(crate) use x86::{
+    block_combined8, depth8 as depth8_avx2, pack_words, shade8_bytes, shade8_regs, to_u8,
+};
 
 #[cfg(target_arch = "x86_64")]
 mod x86 {
@@ -383,12 +385,23 @@ mod x86 {
     }
 
     /// `color_to_u8` per lane: `c * 255 + 0.5` clamped to [0, 255] (NaN as 0), truncated.
+    #[inline]
     #[target_feature(enable = "avx2")]
-    fn to_u8(c: __m256) -> __m256i {
+    pub fn to_u8(c: __m256) -> __m256i {
         let v = _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
         // max_ps answers its second operand (0) when v is NaN.
         let v = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(255.0));
         _mm256_cvttps_epi32(v)
+    }
+
+    /// Eight colour words (R in the low byte) from the four channels' bytes, one per lane.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn pack_words(b: &[__m256i; 4]) -> __m256i {
+        _mm256_or_si256(
+            _mm256_or_si256(b[0], _mm256_slli_epi32::<8>(b[1])),
+            _mm256_or_si256(_mm256_slli_epi32::<16>(b[2]), _mm256_slli_epi32::<24>(b[3])),
+        )
     }
 
     /// A blend factor for channel `ch` of eight fragments, as `fragment::blend` computes it
@@ -559,29 +572,20 @@ mod x86 {
             _mm256_srli_epi32::<16>(old),
             _mm256_srli_epi32::<24>(old),
         ];
-        let pack = |out: &[__m256i; 4]| {
-            _mm256_or_si256(
-                _mm256_or_si256(out[0], _mm256_slli_epi32::<8>(out[1])),
-                _mm256_or_si256(
-                    _mm256_slli_epi32::<16>(out[2]),
-                    _mm256_slli_epi32::<24>(out[3]),
-                ),
-            )
-        };
         let word = if let super::TailBlend::Logic(op) = tail.blend {
-            logic8(op, pack(src), old)
+            logic8(op, pack_words(src), old)
         } else if tail.blend == super::TailBlend::AddOneOne {
             // ONE, ONE: `color_to_u8(s / 255 + d / 255)` is exactly min(s + d, 255) for bytes
             // s and d (the f32 errors stay far below the 0.5 of rounding;
             // `add_one_one_is_a_saturating_byte_add` checks every pair): bytes added with
             // saturation.
-            _mm256_adds_epu8(pack(src), old)
+            _mm256_adds_epu8(pack_words(src), old)
         } else if tail.blend == super::TailBlend::AlphaOver {
             // Each product rounded to 8 bits, then added, as `blend::blend_alpha_over`: in
             // 16-bit lanes (`blend16`), the factors fixed here.
-            alpha_over16(pack(src), old)
+            alpha_over16(pack_words(src), old)
         } else if let super::TailBlend::Bytes(key) = &tail.blend {
-            blend16(key, pack(src), old)
+            blend16(key, pack_words(src), old)
         } else if let super::TailBlend::General(key, constant) = &tail.blend {
             let s: [__m256; 4] = [0, 1, 2, 3].map(|c| _mm256_div_ps(_mm256_cvtepi32_ps(src[c]), k));
             let d: [__m256; 4] = [0, 1, 2, 3]
@@ -610,9 +614,9 @@ mod x86 {
                 };
                 out[ch] = to_u8(v);
             }
-            pack(&out)
+            pack_words(&out)
         } else {
-            pack(src)
+            pack_words(src)
         };
         let cm = _mm256_set1_epi32(tail.color_mask as i32);
         let word = _mm256_or_si256(_mm256_and_si256(word, cm), _mm256_andnot_si256(cm, old));

@@ -179,18 +179,9 @@ fn fogged8(raw: &RawLanes, p: &FogParams) -> [u32; 8] {
                 _mm256_mul_ps(rest, _mm256_set1_ps(f.color[ch])),
             );
         }
-        // `color_to_u8`: c * 255 + 0.5, max_ps answering 0 for NaN, at most 255, truncated.
-        let v = _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
-        let v = _mm256_min_ps(_mm256_max_ps(v, zero), _mm256_set1_ps(255.0));
-        *b = _mm256_cvttps_epi32(v);
+        *b = simd::to_u8(v);
     }
-    let word = _mm256_or_si256(
-        _mm256_or_si256(bytes[0], _mm256_slli_epi32::<8>(bytes[1])),
-        _mm256_or_si256(
-            _mm256_slli_epi32::<16>(bytes[2]),
-            _mm256_slli_epi32::<24>(bytes[3]),
-        ),
-    );
+    let word = simd::pack_words(&bytes);
     let mut out = [0u32; 8];
     // SAFETY: `out` holds eight u32; unaligned store.
     unsafe { _mm256_storeu_si256(out.as_mut_ptr() as *mut __m256i, word) };

@@ -104,17 +104,9 @@ mod x86 {
         };
         let byte = |c: usize| {
             let v = load(&raw.color[c]);
-            let v = if perspective { _mm256_mul_ps(v, w) } else { v };
-            let v = _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.5));
-            // max_ps answers its second operand (0) when v is NaN.
-            let v = _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(255.0));
-            _mm256_cvttps_epi32(v)
+            simd::to_u8(if perspective { _mm256_mul_ps(v, w) } else { v })
         };
-        let (r, g, b, a) = (byte(0), byte(1), byte(2), byte(3));
-        _mm256_or_si256(
-            _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
-            _mm256_or_si256(_mm256_slli_epi32::<16>(b), _mm256_slli_epi32::<24>(a)),
-        )
+        simd::pack_words(&[byte(0), byte(1), byte(2), byte(3)])
     }
 
     /// [`simple_rows8`] with AVX2.
