@@ -121,15 +121,12 @@ pub fn raster_triangle<'a>(
         smooth_rows(&edges, ds, &it, tile, [x_lo, x_hi, y_lo, y_hi], stipple);
         return;
     }
-    // The covered pixels of the rows from `y_lo` up, one row at a time.
-    let mut next_row = {
-        let mut y = y_lo;
-        move || {
-            let row = row_interval(&edges, &bias, [x_lo, x_hi], y);
-            y += 1;
-            row
-        }
+    // The covered pixels of the rows from `y_lo` up, one row at a time; nothing when an edge
+    // leaves every pixel centre of the window outside.
+    let Some(mut rows) = RowEdges::new(&edges, &bias, [x_lo, x_hi, y_lo, y_hi]) else {
+        return;
     };
+    let mut next_row = move || rows.next_row();
     match (stipple, ds.fragment.span_pair) {
         (_, Some(pair)) => {
             // A stippled polygon's rows all go to the pair function, which applies the
@@ -193,10 +190,94 @@ pub fn raster_triangle<'a>(
     }
 }
 
+/// A triangle's edges over one window of rows (its part of a tile), solved row after row as
+/// [`row_interval`] solves them, with two savings that leave every row the same:
+///
+/// - an edge with every pixel centre of the window inside (at or past its bias: its least
+///   value over the window, at a corner, is enough) cannot narrow a row, and is replaced by a
+///   neutral edge (no division); a tile inside a large triangle then has none to solve. An
+///   edge with every centre outside empties every row: [`RowEdges::new`] gives `None`.
+/// - each edge's value at the row's first column steps by an addition from row to row
+///   instead of being recomputed by two products (exact integers; no new branches: the
+///   bounds are still solved per row by division).
+struct RowEdges {
+    /// `bias - E` at pixel column 0 of the next row, per edge (`need` of [`row_interval`]).
+    need: [i64; 3],
+    /// What `need` changes by from one row to the next (`-b * SUBPIXEL`).
+    rise: [i64; 3],
+    /// `a * SUBPIXEL`: `E` grows by it from one column to the next.
+    step: [i64; 3],
+    x: [i32; 2],
+}
+
+impl RowEdges {
+    #[inline(always)]
+    fn new(
+        edges: &[Edge; 3],
+        bias: &[u8; 3],
+        [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
+    ) -> Option<RowEdges> {
+        let half = SUBPIXEL / 2;
+        let py = y_lo as i64 * SUBPIXEL + half;
+        let (w, h) = (
+            (x_hi - 1 - x_lo) as i64 * SUBPIXEL,
+            (y_hi - 1 - y_lo) as i64 * SUBPIXEL,
+        );
+        let px = x_lo as i64 * SUBPIXEL + half;
+        let mut out = RowEdges {
+            need: [0; 3],
+            rise: [0; 3],
+            step: [0; 3],
+            x: [x_lo, x_hi],
+        };
+        for k in 0..3 {
+            let (e, bias) = (&edges[k], i64::from(bias[k]));
+            // E at the window's lowest-left centre, and how far it moves to the other corners.
+            let corner = e.a * px + e.b * py + e.c;
+            let (across, up) = (e.a * w, e.b * h);
+            let least = corner + across.min(0) + up.min(0);
+            let most = corner + across.max(0) + up.max(0);
+            if most < bias {
+                return None;
+            }
+            // Kept unless every centre is inside (then need stays <= 0 with no step: skipped).
+            let keep = least < bias;
+            let base = e.b * py + e.c + e.a * half;
+            out.need[k] = if keep { bias - base } else { 0 };
+            out.rise[k] = if keep { -e.b * SUBPIXEL } else { 0 };
+            out.step[k] = if keep { e.a * SUBPIXEL } else { 0 };
+        }
+        Some(out)
+    }
+
+    /// The covered pixels `lo..hi` of the next row (from `y_lo` up), when there are any.
+    #[inline(always)]
+    fn next_row(&mut self) -> Option<(i32, i32)> {
+        let mut lo = self.x[0] as i64;
+        let mut hi = self.x[1] as i64; // exclusive
+        let mut empty = false;
+        for k in 0..3 {
+            let (need, step) = (self.need[k], self.step[k]);
+            self.need[k] = need + self.rise[k];
+            // As in `row_interval`.
+            if step > 0 {
+                lo = lo.max(need / step + i64::from(need % step > 0));
+            } else if step < 0 {
+                let (n, s) = (-need, -step);
+                hi = hi.min(n / s - i64::from(n % s < 0) + 1);
+            } else if need > 0 {
+                empty = true;
+            }
+        }
+        (!empty && lo < hi).then_some((lo as i32, hi as i32))
+    }
+}
+
 /// The covered pixels `lo..hi` of row `y` inside `x_lo..x_hi`, when there are any, solved
-/// per edge by division. (Walking the bounds from row to row by additions was tried, branch
+/// per edge by division (the reference for [`RowEdges`]). (Walking the bounds from row to row by additions was tried, branch
 /// `smalltri`: about as many instructions, but its data-dependent branches mispredicted on
 /// small triangles and made `triangles` ~25 % slower in wall time.)
+#[cfg(test)]
 fn row_interval(
     edges: &[Edge; 3],
     bias: &[u8; 3],
@@ -461,7 +542,8 @@ mod tests {
     /// Each row's covered columns, if any.
     type Rows = Vec<Option<(i32, i32)>>;
 
-    /// The rows `y_lo..y_hi` of `p` inside columns `x_lo..x_hi`, as `raster_triangle` finds them.
+    /// The rows `y_lo..y_hi` of `p` inside columns `x_lo..x_hi`, solved row by row by
+    /// `row_interval` (the reference).
     fn rows_of(p: [[i64; 2]; 3], [x_lo, x_hi, y_lo, y_hi]: [i32; 4]) -> Option<Rows> {
         let (edges, bias) = edges_of(p)?;
         Some(
@@ -469,6 +551,106 @@ mod tests {
                 .map(|y| row_interval(&edges, &bias, [x_lo, x_hi], y))
                 .collect(),
         )
+    }
+
+    /// The same rows as `raster_triangle` finds them (`RowEdges`: every row `None` when it
+    /// rejects the window).
+    fn walked_rows_of(p: [[i64; 2]; 3], w: [i32; 4]) -> Option<Rows> {
+        let (edges, bias) = edges_of(p)?;
+        let n = (w[3] - w[2]) as usize;
+        Some(match RowEdges::new(&edges, &bias, w) {
+            Some(mut rows) => (0..n).map(|_| rows.next_row()).collect(),
+            None => vec![None; n],
+        })
+    }
+
+    /// Twin test of `RowEdges` (edges inside or outside the whole window dropped, values
+    /// stepped by additions) against `row_interval` (every edge divided at every row): the
+    /// same rows for random triangles from sub-pixel slivers to the guard band, with
+    /// horizontal and vertical edges and vertices on pixel centres, in tiles of side 16-128
+    /// and random windows; and the drops do happen (tiles inside large triangles, tiles
+    /// their box touches but they miss).
+    #[test]
+    fn window_edges_give_the_divided_rows() {
+        let mut seed = 0x2545_F491_4F6C_DD1Du64;
+        let (mut inside, mut rejected, mut windows) = (0usize, 0usize, 0usize);
+        for k in 0..40_000 {
+            let r = |seed: &mut u64, m: i64| (xorshift(seed) % (m as u64)) as i64;
+            // Sizes: slivers, small, tile-sized, screen-sized, guard band.
+            let scale = [300i64, 3_000, 20_000, 300_000, 4_000_000][k % 5];
+            let centre = [r(&mut seed, 260_000), r(&mut seed, 200_000)];
+            let mut p = [[0i64; 2]; 3];
+            for v in &mut p {
+                for (c, o) in v.iter_mut().zip(centre) {
+                    *c = o + r(&mut seed, 2 * scale) - scale;
+                }
+            }
+            match xorshift(&mut seed) % 6 {
+                // An axis-aligned right angle (a split quad).
+                0 => {
+                    p[1][1] = p[0][1];
+                    p[2][0] = p[0][0];
+                }
+                // Vertices on pixel centres.
+                1 => {
+                    for v in &mut p {
+                        for c in v.iter_mut() {
+                            *c = *c & !0xFF | 0x80;
+                        }
+                    }
+                }
+                _ => {}
+            }
+            if triangle_area2(p) == 0 {
+                continue;
+            }
+            for side in [16i32, 64, 128] {
+                // The tiles the triangle's box touches (at most a few hundred), and one
+                // random window inside the box.
+                let xs = p.map(|v| v[0]);
+                let ys = p.map(|v| v[1]);
+                let (x0, x1) = centre_range(*xs.iter().min().unwrap(), *xs.iter().max().unwrap());
+                let (y0, y1) = centre_range(*ys.iter().min().unwrap(), *ys.iter().max().unwrap());
+                if x0 >= x1 || y0 >= y1 {
+                    continue;
+                }
+                let (tx0, ty0) = (x0.div_euclid(side), y0.div_euclid(side));
+                let (tx1, ty1) = ((x1 - 1).div_euclid(side), (y1 - 1).div_euclid(side));
+                let mut tiles = Vec::new();
+                if (tx1 - tx0 + 1) * (ty1 - ty0 + 1) <= 256 {
+                    for ty in ty0..=ty1 {
+                        for tx in tx0..=tx1 {
+                            tiles.push(window(p, tx * side, ty * side, side));
+                        }
+                    }
+                }
+                let (wx, wy) = (
+                    x0 + (xorshift(&mut seed) % (x1 - x0) as u64) as i32,
+                    y0 + (xorshift(&mut seed) % (y1 - y0) as u64) as i32,
+                );
+                let (ww, wh) = (
+                    1 + (xorshift(&mut seed) % 70) as i32,
+                    1 + (xorshift(&mut seed) % 70) as i32,
+                );
+                tiles.push(Some([wx, (wx + ww).min(x1), wy, (wy + wh).min(y1)]));
+                for w in tiles.into_iter().flatten() {
+                    windows += 1;
+                    let divided = rows_of(p, w);
+                    let walked = walked_rows_of(p, w);
+                    assert_eq!(walked, divided, "triangle {p:?} window {w:?}");
+                    let (edges, bias) = edges_of(p).expect("area");
+                    match RowEdges::new(&edges, &bias, w) {
+                        None => rejected += 1,
+                        Some(e) if e.step == [0; 3] && e.need == [0; 3] => inside += 1,
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        assert!(
+            inside > windows / 50 && rejected > windows / 50,
+            "{inside} inside, {rejected} rejected of {windows}"
+        );
     }
 
     /// The window `raster_triangle` walks: the triangle's pixel-centre box clipped to the
@@ -528,6 +710,7 @@ mod tests {
                                     continue;
                                 };
                                 let rows = rows_of(t, w).expect("area");
+                                assert_eq!(walked_rows_of(t, w), Some(rows.clone()));
                                 for (k, r) in rows.into_iter().enumerate() {
                                     if let Some((x0, x1)) = r {
                                         let y = w[2] + k as i32;
