@@ -123,7 +123,10 @@ pub fn raster_triangle<'a>(
     }
     // The covered pixels of the rows from `y_lo` up, one row at a time; nothing when an edge
     // leaves every pixel centre of the window outside.
-    let Some(mut rows) = RowEdges::new(&edges, &bias, [x_lo, x_hi, y_lo, y_hi]) else {
+    // A triangle whose whole box lies in the tile (most small ones) keeps its three edges
+    // without the corner test: it would cost more than it saves there.
+    let whole = x_lo == bbox.x0 && x_hi == bbox.x1 && y_lo == bbox.y0 && y_hi == bbox.y1;
+    let Some(mut rows) = RowEdges::new(&edges, &bias, [x_lo, x_hi, y_lo, y_hi], !whole) else {
         return;
     };
     let mut next_row = move || rows.next_row();
@@ -211,11 +214,13 @@ struct RowEdges {
 }
 
 impl RowEdges {
+    /// Without `test`, every edge is kept (the rows are the same either way).
     #[inline(always)]
     fn new(
         edges: &[Edge; 3],
         bias: &[u8; 3],
         [x_lo, x_hi, y_lo, y_hi]: [i32; 4],
+        test: bool,
     ) -> Option<RowEdges> {
         let half = SUBPIXEL / 2;
         let py = y_lo as i64 * SUBPIXEL + half;
@@ -232,16 +237,21 @@ impl RowEdges {
         };
         for k in 0..3 {
             let (e, bias) = (&edges[k], i64::from(bias[k]));
-            // E at the window's lowest-left centre, and how far it moves to the other corners.
-            let corner = e.a * px + e.b * py + e.c;
-            let (across, up) = (e.a * w, e.b * h);
-            let least = corner + across.min(0) + up.min(0);
-            let most = corner + across.max(0) + up.max(0);
-            if most < bias {
-                return None;
+            let mut keep = true;
+            if test {
+                // E at the window's lowest-left centre, and how far it moves to the other
+                // corners.
+                let corner = e.a * px + e.b * py + e.c;
+                let (across, up) = (e.a * w, e.b * h);
+                let least = corner + across.min(0) + up.min(0);
+                let most = corner + across.max(0) + up.max(0);
+                if most < bias {
+                    return None;
+                }
+                // Kept unless every centre is inside (then need stays <= 0 with no step:
+                // skipped).
+                keep = least < bias;
             }
-            // Kept unless every centre is inside (then need stays <= 0 with no step: skipped).
-            let keep = least < bias;
             let base = e.b * py + e.c + e.a * half;
             out.need[k] = if keep { bias - base } else { 0 };
             out.rise[k] = if keep { -e.b * SUBPIXEL } else { 0 };
@@ -558,10 +568,14 @@ mod tests {
     fn walked_rows_of(p: [[i64; 2]; 3], w: [i32; 4]) -> Option<Rows> {
         let (edges, bias) = edges_of(p)?;
         let n = (w[3] - w[2]) as usize;
-        Some(match RowEdges::new(&edges, &bias, w) {
+        let rows = match RowEdges::new(&edges, &bias, w, true) {
             Some(mut rows) => (0..n).map(|_| rows.next_row()).collect(),
             None => vec![None; n],
-        })
+        };
+        let mut all = RowEdges::new(&edges, &bias, w, false).expect("no test, no rejection");
+        let kept: Rows = (0..n).map(|_| all.next_row()).collect();
+        assert_eq!(rows, kept, "tested and untested edges differ");
+        Some(rows)
     }
 
     /// Twin test of `RowEdges` (edges inside or outside the whole window dropped, values
@@ -639,7 +653,7 @@ mod tests {
                     let walked = walked_rows_of(p, w);
                     assert_eq!(walked, divided, "triangle {p:?} window {w:?}");
                     let (edges, bias) = edges_of(p).expect("area");
-                    match RowEdges::new(&edges, &bias, w) {
+                    match RowEdges::new(&edges, &bias, w, true) {
                         None => rejected += 1,
                         Some(e) if e.step == [0; 3] && e.need == [0; 3] => inside += 1,
                         Some(_) => {}
