@@ -1027,13 +1027,15 @@ fn byte_block(
     };
     let x = gx as f64 + 0.5;
     if let Some(bytes) = ds.cascade.as_ref().and_then(|p| p.bytes()) {
-        // The cascade compiled for the draw: the primary colour and each unit's texel words.
-        let mut inputs = [primary; MAX_TEXTURE_UNITS + 1];
-        let n = ds.units.len();
-        for (input, sampler) in inputs[1..].iter_mut().zip(&samplers[..n]) {
-            *input = sampler.as_ref()?.block_bytes(x, group.pass)?;
-        }
-        let rgba = bytes.run(&inputs[..=n]);
+        // The cascade compiled for the draw: the primary colour and each unit's texel words
+        // (in an array of the draw's length where it is short: no stores of unused entries).
+        let samplers = &samplers[..ds.units.len()];
+        let rgba = match samplers.len() {
+            1 => byte_inputs::<2>(bytes, primary, samplers, x, group.pass)?,
+            2 => byte_inputs::<3>(bytes, primary, samplers, x, group.pass)?,
+            3 => byte_inputs::<4>(bytes, primary, samplers, x, group.pass)?,
+            _ => byte_inputs::<{ MAX_TEXTURE_UNITS + 1 }>(bytes, primary, samplers, x, group.pass)?,
+        };
         return Some(simd::shade8_bytes(tail, rgba, &group.dst, group.pass));
     }
     let mut by_unit = [None; MAX_TEXTURE_UNITS];
@@ -1043,6 +1045,27 @@ fn byte_block(
     Some(crate::fragment::bytenv::shade(
         ds, tail, primary, &by_unit, &group.dst, group.pass,
     ))
+}
+
+/// [`byte_block`]'s compiled cascade (`Bytes::run`) on the primary colour's words `primary`
+/// and the texel words of the draw's units' `samplers` (`N` at least one more than there
+/// are: the inputs in an array of about the draw's length, without stores of unused
+/// entries); `None` where a unit's block sampler does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "avx2")]
+fn byte_inputs<const N: usize>(
+    bytes: &crate::fragment::bytenv::Bytes,
+    primary: std::arch::x86_64::__m256i,
+    samplers: &[Option<Perspective8>],
+    x: f64,
+    live: u8,
+) -> Option<std::arch::x86_64::__m256i> {
+    let mut inputs = [primary; N];
+    for (input, sampler) in inputs[1..].iter_mut().zip(samplers) {
+        *input = sampler.as_ref()?.block_bytes(x, live)?;
+    }
+    Some(bytes.run(&inputs[..=samplers.len().min(N - 1)]))
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
