@@ -758,12 +758,12 @@ pub(crate) mod x86 {
     }
 
     /// [`LodSelect::quick_lambda256`] of the ρ² of a block's two quads (lanes 0 and 1 of
-    /// `m`) at once, the same f64 operations in the same order: `floor(256 λ)` per quad and
-    /// a mask of the quads (bit 0, bit 1) where it decides the plan.
+    /// `m`) at once, the same f32 and integer operations in the same order: `floor(256 λ)`
+    /// per quad and a mask of the quads (bit 0, bit 1) where it decides the plan.
     #[inline]
     #[target_feature(enable = "avx2")]
     pub(crate) fn quick_lambda256x2(lod: &LodSelect, m: __m128) -> ([i32; 2], u8) {
-        use crate::texture::sample::{LOG2_SERIES, QUICK_LOD_MARGIN, SQRT_HALF_BITS};
+        use crate::texture::sample::{QUICK_LOD_MARGIN, QUICK_LOG2, QUICK_LOG2_CELLS};
         let m = _mm_castps_si128(m);
         // Positive normal numbers: 0x0080_0000 <= bits < 0x7F80_0000 (signed: negative
         // numbers fail).
@@ -771,37 +771,41 @@ pub(crate) mod x86 {
             _mm_cmpgt_epi32(m, _mm_set1_epi32(0x007F_FFFF)),
             _mm_cmpgt_epi32(_mm_set1_epi32(0x7F80_0000), m),
         );
-        let half_bits = _mm_set1_epi32(SQRT_HALF_BITS as i32);
-        let ix = _mm_sub_epi32(m, half_bits);
-        let k = _mm_cvtepi32_pd(_mm_srai_epi32::<23>(ix));
-        let xb = _mm_add_epi32(_mm_and_si128(ix, _mm_set1_epi32(0x007F_FFFF)), half_bits);
-        let x = _mm_cvtps_pd(_mm_castsi128_ps(xb));
-        let c = |v: f64| _mm_set1_pd(v);
-        let u = _mm_div_pd(_mm_sub_pd(x, c(1.0)), _mm_add_pd(x, c(1.0)));
-        let u2 = _mm_mul_pd(u, u);
-        let [c1, c3, c5, c7] = LOG2_SERIES;
-        let inner = _mm_add_pd(c(c5), _mm_mul_pd(u2, c(c7)));
-        let inner = _mm_add_pd(c(c3), _mm_mul_pd(u2, inner));
-        let log2x = _mm_mul_pd(u, _mm_add_pd(c(c1), _mm_mul_pd(u2, inner)));
-        let (bias, min_lod, max_lod) = lod.lambda_terms();
-        let lambda = _mm_add_pd(_mm_mul_pd(_mm_add_pd(k, log2x), c(0.5)), c(bias as f64));
-        let lambda = _mm_max_pd(_mm_min_pd(lambda, c(max_lod as f64)), c(min_lod as f64));
-        let g = _mm_mul_pd(lambda, c(256.0));
-        let f = _mm_floor_pd(g);
-        let frac = _mm_sub_pd(g, f);
-        let margin = QUICK_LOD_MARGIN * 256.0;
-        let abs = _mm_andnot_pd(c(-0.0), f);
-        let ok = _mm_and_pd(
-            _mm_and_pd(
-                _mm_cmpgt_pd(frac, c(margin)),
-                _mm_cmplt_pd(frac, c(1.0 - margin)),
-            ),
-            _mm_cmplt_pd(abs, c((1 << 24) as f64)),
+        // `quick_log2_128` of lanes 0 and 1: the cells' chords.
+        let cell = |bits: i32| QUICK_LOG2[(bits as u32 >> 15) as usize & (QUICK_LOG2_CELLS - 1)];
+        let [t0, s0] = cell(_mm_cvtsi128_si32(m));
+        let [t1, s1] = cell(_mm_extract_epi32::<1>(m));
+        let phi = _mm_mul_ps(
+            _mm_cvtepi32_ps(_mm_and_si128(m, _mm_set1_epi32(0x7FFF))),
+            _mm_set1_ps(1.0 / 32768.0),
         );
-        let mask = _mm_movemask_pd(ok) & _mm_movemask_ps(_mm_castsi128_ps(normal)) & 3;
-        let gi = _mm_cvttpd_epi32(f);
+        let h = _mm_add_ps(
+            _mm_set_ps(0.0, 0.0, t1, t0),
+            _mm_mul_ps(phi, _mm_set_ps(0.0, 0.0, s1, s0)),
+        );
+        let q = lod.quick_terms();
+        let v = _mm_add_ps(h, _mm_set1_ps(q.bias_frac));
+        let f = _mm_floor_ps(v);
+        let frac = _mm_sub_ps(v, f);
+        let margin = (QUICK_LOD_MARGIN * 256.0) as f32;
+        let e = _mm_sub_epi32(_mm_srli_epi32::<23>(m), _mm_set1_epi32(127));
+        let g = _mm_add_epi32(
+            _mm_add_epi32(_mm_cvttps_epi32(f), _mm_slli_epi32::<7>(e)),
+            _mm_set1_epi32(q.bias_int),
+        );
+        // lo <= g <= hi (|lo|, |hi| <= 2^30).
+        let inside = _mm_and_si128(
+            _mm_cmpgt_epi32(g, _mm_set1_epi32(q.lo - 1)),
+            _mm_cmpgt_epi32(_mm_set1_epi32(q.hi + 1), g),
+        );
+        let ok = _mm_and_ps(
+            _mm_cmpgt_ps(frac, _mm_set1_ps(margin)),
+            _mm_cmplt_ps(frac, _mm_set1_ps(1.0 - margin)),
+        );
+        let ok = _mm_and_ps(ok, _mm_castsi128_ps(_mm_and_si128(normal, inside)));
+        let mask = _mm_movemask_ps(ok) & 3;
         (
-            [_mm_cvtsi128_si32(gi), _mm_extract_epi32::<1>(gi)],
+            [_mm_cvtsi128_si32(g), _mm_extract_epi32::<1>(g)],
             mask as u8,
         )
     }
