@@ -242,46 +242,6 @@ pub fn filter8_mix(
     None
 }
 
-/// The environment variable that keeps LINEAR eight-lane filtering on its AVX2 kernels on a
-/// processor with AVX-512: with `TILEGL_NO_AVX512=1` (any value but empty or `0`) the
-/// AVX-512 kernels (one 64-bit gather of eight texel pairs per row, the lerps in 512-bit
-/// registers) are not used. Read once; the texels are the same either way.
-pub const NO_AVX512_ENV: &str = "TILEGL_NO_AVX512";
-
-/// Whether this processor has the AVX-512 subsets (F, BW, VL, VBMI) of the eight-lane
-/// filter's wide kernels, whether or not [`NO_AVX512_ENV`] switches them off.
-pub fn avx512_present() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        x86::wide512_present()
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    false
-}
-
-/// [`filter8`] (`mix` `None`) or [`filter8_mix`] (`Some((second level, weights))`) on the
-/// AVX-512 kernels (`avx512`) or the AVX2 ones, whichever the process would choose: for twin
-/// tests of the two. `None` as those, or when the processor lacks the kernels asked for.
-pub fn filter8_on(
-    avx512: bool,
-    lvl: &Level8,
-    mix: Option<(&Level8, &[f32; 8])>,
-    linear: bool,
-    s: &[f32; 8],
-    t: &[f32; 8],
-) -> Option<Texels8> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if available() && (!avx512 || avx512_present()) {
-            // SAFETY: AVX2 is present, and AVX-512 F, BW, VL and VBMI where `avx512` (checked
-            // just above).
-            return unsafe { x86::filter8_on(avx512, lvl, mix, linear, s, t) };
-        }
-    }
-    let _ = (avx512, lvl, mix, linear, s, t);
-    None
-}
-
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod x86 {
     use std::arch::x86_64::*;
@@ -388,18 +348,24 @@ pub(crate) mod x86 {
     /// [`pair_pick`] for c = 1, 2, 3 (index c - 1), and an unused entry.
     const PAIR_PICK: [[i8; 32]; 4] = [pair_pick(1), pair_pick(2), pair_pick(3), [-1; 32]];
 
-    /// The byte offsets of [`pairs8`]'s 64-bit reads of rows y0 and y1 (each lane's eight
-    /// bytes ending with its texel (x1, y), or its two texels for four-byte texels), when
-    /// every lane's x1 is x0 + 1 and every read starts inside the level; `None` otherwise.
+    /// The texel words at (x0, y) and (x1, y) of rows y0 and y1 of a level of one to four
+    /// bytes per texel, as [`words8`] reads them (the bytes past a texel's components zero
+    /// instead of whatever follows it: no reader looks at them), when every lane's x1 is
+    /// x0 + 1 (no lane wrapped or clamped between its two columns): then each lane's two
+    /// texels are consecutive bytes, read as one 64-bit element (half the elements
+    /// [`words8`] gathers, and one address per row instead of one per texel). Four-byte
+    /// texels are the eight bytes at x0; texels of c < 4 bytes the eight bytes ending with
+    /// the second texel, whose 2c bytes a constant byte shuffle moves into the two words,
+    /// when that read starts inside the level for every lane. `None` otherwise.
     #[inline]
     #[target_feature(enable = "avx2")]
-    fn pair_starts(
+    fn pairs8(
         lvl: &Level8,
         x0: __m256i,
         x1: __m256i,
         y0: __m256i,
         y1: __m256i,
-    ) -> Option<(__m256i, __m256i)> {
+    ) -> Option<([__m256i; 2], [__m256i; 2])> {
         if !lvl.pairs {
             return None;
         }
@@ -435,29 +401,6 @@ pub(crate) mod x86 {
         if _mm256_movemask_epi8(ok) != -1 {
             return None;
         }
-        Some((start0, start1))
-    }
-
-    /// The texel words at (x0, y) and (x1, y) of rows y0 and y1 of a level of one to four
-    /// bytes per texel, as [`words8`] reads them (the bytes past a texel's components zero
-    /// instead of whatever follows it: no reader looks at them), when every lane's x1 is
-    /// x0 + 1 (no lane wrapped or clamped between its two columns): then each lane's two
-    /// texels are consecutive bytes, read as one 64-bit element (half the elements
-    /// [`words8`] gathers, and one address per row instead of one per texel). Four-byte
-    /// texels are the eight bytes at x0; texels of c < 4 bytes the eight bytes ending with
-    /// the second texel, whose 2c bytes a constant byte shuffle moves into the two words,
-    /// when that read starts inside the level for every lane. `None` otherwise.
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    fn pairs8(
-        lvl: &Level8,
-        x0: __m256i,
-        x1: __m256i,
-        y0: __m256i,
-        y1: __m256i,
-    ) -> Option<([__m256i; 2], [__m256i; 2])> {
-        let (start0, start1) = pair_starts(lvl, x0, x1, y0, y1)?;
-        let c = lvl.components;
         let pick = match c {
             4 => None,
             // SAFETY: 32 bytes; unaligned load.
@@ -661,40 +604,13 @@ pub(crate) mod x86 {
     }
 
     /// The stored components of NEAREST or LINEAR filtering of `lvl` at `s`, `t`, as texel
-    /// words ([`words8`]); LINEAR in the fixed point of `texture::fixed`. LINEAR takes the
-    /// AVX-512 kernel ([`wide::bilinear8_words`]) where [`wide512`] allows it.
+    /// words ([`words8`]); LINEAR in the fixed point of `texture::fixed`.
     #[inline]
     #[target_feature(enable = "avx2")]
     fn filter8_words(lvl: &Level8, linear: bool, s: __m256, t: __m256) -> Option<__m256i> {
-        filter8_words_isa(wide512(), lvl, linear, s, t)
-    }
-
-    /// [`filter8_words`] on the AVX-512 kernel (`wide`, which the caller has checked the
-    /// processor has) or the AVX2 one.
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    pub(crate) fn filter8_words_isa(
-        wide: bool,
-        lvl: &Level8,
-        linear: bool,
-        s: __m256,
-        t: __m256,
-    ) -> Option<__m256i> {
         if !linear {
             return nearest8_words(lvl, s, t);
         }
-        if wide {
-            // SAFETY: the caller checked AVX-512 F, BW, VL and VBMI ([`wide512`]).
-            return unsafe { wide::bilinear8_words(lvl, None, s, t, _mm256_setzero_si256()) };
-        }
-        bilinear8_words_avx2(lvl, s, t)
-    }
-
-    /// LINEAR filtering of `lvl` at `s`, `t` on the AVX2 kernel ([`bilinear8_halves`]).
-    /// (Out of line, so that its callers, small without it, are compiled inline.)
-    #[inline(never)]
-    #[target_feature(enable = "avx2")]
-    fn bilinear8_words_avx2(lvl: &Level8, s: __m256, t: __m256) -> Option<__m256i> {
         let (lo, hi) = bilinear8_halves!(lvl, s, t);
         Some(_mm256_packus_epi16(lo, hi))
     }
@@ -713,45 +629,11 @@ pub(crate) mod x86 {
         t: __m256,
         weight: __m256i,
     ) -> Option<__m256i> {
-        filter8_words2_isa(wide512(), l1, l2, linear, s, t, weight)
-    }
-
-    /// [`filter8_words2`] on the AVX-512 kernel (`wide`, which the caller has checked the
-    /// processor has) or the AVX2 one.
-    #[inline]
-    #[target_feature(enable = "avx2")]
-    pub(crate) fn filter8_words2_isa(
-        wide: bool,
-        l1: &Level8,
-        l2: &Level8,
-        linear: bool,
-        s: __m256,
-        t: __m256,
-        weight: __m256i,
-    ) -> Option<__m256i> {
         if !linear {
             let a = nearest8_words(l1, s, t)?;
             let b = nearest8_words(l2, s, t)?;
             return Some(lerp_words(a, b, weight));
         }
-        if wide {
-            // SAFETY: the caller checked AVX-512 F, BW, VL and VBMI ([`wide512`]).
-            return unsafe { wide::bilinear8_words(l1, Some(l2), s, t, weight) };
-        }
-        trilinear8_words_avx2(l1, l2, s, t, weight)
-    }
-
-    /// LINEAR filtering of `l1` and `l2` at `s`, `t` mixed with `l2`'s weight `weight` on the
-    /// AVX2 kernel ([`bilinear8_halves`]). (Out of line, as [`bilinear8_words_avx2`].)
-    #[inline(never)]
-    #[target_feature(enable = "avx2")]
-    fn trilinear8_words_avx2(
-        l1: &Level8,
-        l2: &Level8,
-        s: __m256,
-        t: __m256,
-        weight: __m256i,
-    ) -> Option<__m256i> {
         let (alo, ahi) = bilinear8_halves!(l1, s, t);
         let (blo, bhi) = bilinear8_halves!(l2, s, t);
         let (wl, wh) = weights16(weight);
@@ -759,274 +641,6 @@ pub(crate) mod x86 {
             lerp16(alo, blo, wl),
             lerp16(ahi, bhi, wh),
         ))
-    }
-
-    /// The answer of [`wide512`], once known: 0 unknown, 1 yes, 2 no.
-    static WIDE: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(0);
-
-    /// Whether LINEAR filtering takes the AVX-512 kernels ([`wide`]): the processor has
-    /// AVX-512 F, BW, VL and VBMI and [`NO_AVX512_ENV`](super::NO_AVX512_ENV) does not switch
-    /// them off. (Callers are AVX2 routes: AVX2 is present.) One relaxed load after the first
-    /// call.
-    #[inline]
-    pub fn wide512() -> bool {
-        match WIDE.load(std::sync::atomic::Ordering::Relaxed) {
-            1 => true,
-            2 => false,
-            _ => detect_wide512(),
-        }
-    }
-
-    #[cold]
-    fn detect_wide512() -> bool {
-        let off = std::env::var_os(super::NO_AVX512_ENV).is_some_and(|v| !v.is_empty() && v != "0");
-        let on = !off && wide512_present();
-        WIDE.store(if on { 1 } else { 2 }, std::sync::atomic::Ordering::Relaxed);
-        on
-    }
-
-    /// Whether the processor has the AVX-512 subsets the [`wide`] kernels use.
-    pub fn wide512_present() -> bool {
-        is_x86_feature_detected!("avx512f")
-            && is_x86_feature_detected!("avx512bw")
-            && is_x86_feature_detected!("avx512vl")
-            && is_x86_feature_detected!("avx512vbmi")
-            && is_x86_feature_detected!("avx2")
-    }
-
-    /// LINEAR filtering with AVX-512 (F, BW, VL, VBMI): the same integers as
-    /// [`bilinear8_halves`] and the level mix of [`filter8_words2_isa`], in one 512-bit
-    /// register per 2x2 footprint corner (the eight pixels' four components as 16-bit lanes,
-    /// pixel j in lanes 4j..4j + 4) instead of two 256-bit halves: each row's texel pairs
-    /// gathered as eight 64-bit elements in pixel order in one gather, the first and second
-    /// texels' bytes moved to 16-bit lanes by one `vpermb` each (bytes past the components
-    /// zero, as [`pairs8`] gives them), the weights spread by one `vpermw` each, the result
-    /// packed back to texel words by one `vpmovwb`.
-    pub(super) mod wide {
-        use super::*;
-
-        /// Per component count c (index c - 1): the `vpermb` indices moving the first (`[0]`)
-        /// and second (`[1]`) texel of each 64-bit pair element (at bytes 8 - 2c and 8 - c of
-        /// element j, as [`pairs8`] reads them) to the low bytes of 16-bit lanes 4j..4j + c.
-        const fn pair_index(c: usize, second: bool) -> [u8; 64] {
-            let mut idx = [0u8; 64];
-            let mut b = 0;
-            while b < 64 {
-                let (lane, k) = (b / 8, (b / 2) % 4);
-                let at = if second { 8 - c } else { 8 - 2 * c };
-                if b % 2 == 0 && k < c {
-                    idx[b] = (8 * lane + at + k) as u8;
-                }
-                b += 1;
-            }
-            idx
-        }
-
-        /// The byte mask of [`pair_index`]: the low bytes of the components' 16-bit lanes.
-        const fn pair_mask(c: usize) -> u64 {
-            let mut m = 0u64;
-            let mut b = 0;
-            while b < 64 {
-                if b % 2 == 0 && (b / 2) % 4 < c {
-                    m |= 1 << b;
-                }
-                b += 1;
-            }
-            m
-        }
-
-        const PAIR_INDEX: [[[u8; 64]; 2]; 4] = [
-            [pair_index(1, false), pair_index(1, true)],
-            [pair_index(2, false), pair_index(2, true)],
-            [pair_index(3, false), pair_index(3, true)],
-            [pair_index(4, false), pair_index(4, true)],
-        ];
-        const PAIR_MASK: [u64; 4] = [pair_mask(1), pair_mask(2), pair_mask(3), pair_mask(4)];
-
-        /// Per component count c (index c - 1): `vpermb` indices moving component k of a
-        /// texel at byte 0 of 64-bit element j to the low byte of 16-bit lane 4j + k (16-bit
-        /// lanes, so that adding the texel's byte place in its element moves them).
-        const fn corner_index(c: usize) -> [u16; 32] {
-            let mut idx = [0u16; 32];
-            let mut i = 0;
-            while i < 32 {
-                if i % 4 < c {
-                    idx[i] = (8 * (i / 4) + i % 4) as u16;
-                }
-                i += 1;
-            }
-            idx
-        }
-
-        const CORNER_INDEX: [[u16; 32]; 4] = [
-            corner_index(1),
-            corner_index(2),
-            corner_index(3),
-            corner_index(4),
-        ];
-
-        /// `vpermw` indices spreading the low 16 bits of 32-bit lane j to 16-bit lanes
-        /// 4j..4j + 4 (a weight per pixel to its four components).
-        const SPREAD: [u16; 32] = {
-            let mut idx = [0u16; 32];
-            let mut i = 0;
-            while i < 32 {
-                idx[i] = (2 * (i / 4)) as u16;
-                i += 1;
-            }
-            idx
-        };
-
-        /// [`lerp16`] in 512-bit registers.
-        #[inline]
-        #[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512vbmi,avx2")]
-        fn lerp32(a: __m512i, b: __m512i, w: __m512i) -> __m512i {
-            let d = _mm512_slli_epi16::<7>(_mm512_sub_epi16(b, a));
-            _mm512_add_epi16(a, _mm512_mulhrs_epi16(w, d))
-        }
-
-        /// Per-pixel weights (0..=255 in the 32-bit lanes of `w`) spread to the pixels'
-        /// 16-bit component lanes ([`SPREAD`]).
-        #[inline]
-        #[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512vbmi,avx2")]
-        fn spread(w: __m256i, idx: __m512i) -> __m512i {
-            _mm512_permutexvar_epi16(idx, _mm512_castsi256_si512(w))
-        }
-
-        /// The eight bytes at each lane's byte offset `start` of `lvl`'s texels, in lane
-        /// order, read one by one (on Zen 4 eight scalar reads and inserts cost less than a
-        /// 64-bit gather of eight elements).
-        ///
-        /// # Safety
-        ///
-        /// For every lane, `0 <= start` and `start + 8 <= lvl.texels.len()`.
-        #[inline]
-        #[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512vbmi,avx2")]
-        unsafe fn rows8(lvl: &Level8, start: __m256i) -> __m512i {
-            let mut off = [0i32; 8];
-            // SAFETY: eight i32; unaligned store.
-            unsafe { _mm256_storeu_si256(off.as_mut_ptr() as *mut __m256i, start) };
-            let base = lvl.texels.as_ptr();
-            // SAFETY: each lane's eight bytes at `start` lie inside `texels` (the caller's
-            // promise). Unaligned reads.
-            let ld = |k: usize| unsafe {
-                (base.add(off[k] as u32 as usize) as *const i64).read_unaligned()
-            };
-            let q = |k: usize| _mm_set_epi64x(ld(k + 1), ld(k));
-            let lo = _mm256_set_m128i(q(2), q(0));
-            let hi = _mm256_set_m128i(q(6), q(4));
-            _mm512_inserti64x4::<1>(_mm512_castsi256_si512(lo), hi)
-        }
-
-        /// Bilinear filtering of `lvl` at `s`, `t` as in [`bilinear8_halves`], the eight
-        /// pixels' components as 16-bit lanes in pixel order; a `None` returns from the
-        /// function it is used in, as there. (A macro for the same reason as
-        /// [`bilinear8_halves`]: as a function it was compiled out of line, its result
-        /// returned through memory.)
-        macro_rules! wide_bilinear8 {
-            ($lvl:expr, $s:expr, $t:expr, $spread_idx:expr) => {{
-                let (lvl, s, t, spread_idx): (&Level8, __m256, __m256, __m512i) =
-                    ($lvl, $s, $t, $spread_idx);
-                let [w, h] = lvl.size;
-                let [mx, my] = lvl.repeat_mask;
-                let ((x, wx), (y, wy)) = fixed8x2(s, t, lvl.scale256)?;
-                let one = _mm256_set1_epi32(1);
-                let (x0, x1) = (wrap8(x, w, mx), wrap8(_mm256_add_epi32(x, one), w, mx));
-                let (y0, y1) = (wrap8(y, h, my), wrap8(_mm256_add_epi32(y, one), h, my));
-                let c = lvl.components;
-                let corners = match pair_starts(lvl, x0, x1, y0, y1) {
-                    Some((start0, start1)) => {
-                        // SAFETY: as for `pairs8`'s gathers: each lane's eight bytes at
-                        // `start` end with its second texel (or are its two texels) inside
-                        // `texels` and start at byte >= 0 (checked by `pair_starts`).
-                        let (g0, g1) = unsafe { (rows8(lvl, start0), rows8(lvl, start1)) };
-                        let k = (c - 1) as usize & 3;
-                        let m = PAIR_MASK[k];
-                        // SAFETY: 64 bytes each; unaligned loads.
-                        let (ia, ib) = unsafe {
-                            (
-                                _mm512_loadu_si512(PAIR_INDEX[k][0].as_ptr() as *const _),
-                                _mm512_loadu_si512(PAIR_INDEX[k][1].as_ptr() as *const _),
-                            )
-                        };
-                        [
-                            _mm512_maskz_permutexvar_epi8(m, ia, g0),
-                            _mm512_maskz_permutexvar_epi8(m, ib, g0),
-                            _mm512_maskz_permutexvar_epi8(m, ia, g1),
-                            _mm512_maskz_permutexvar_epi8(m, ib, g1),
-                        ]
-                    }
-                    None if lvl.pairs && lvl.texels.len() >= 8 => {
-                        // A lane wrapped or was clamped between its columns: each corner
-                        // read on its own, as the eight bytes ending with the texel, or the
-                        // level's first eight bytes for its first texels; `vpermb` picks
-                        // each lane's texel at its place in its eight bytes.
-                        let cc = _mm256_set1_epi32(c);
-                        let pitch = _mm256_set1_epi32(w);
-                        let back = _mm256_set1_epi32(c - 8);
-                        let (r0, r1) =
-                            (_mm256_mullo_epi32(y0, pitch), _mm256_mullo_epi32(y1, pitch));
-                        // SAFETY: 64 bytes; unaligned load.
-                        let first = unsafe {
-                            _mm512_loadu_si512(
-                                CORNER_INDEX[(c - 1) as usize & 3].as_ptr() as *const _
-                            )
-                        };
-                        let m = PAIR_MASK[(c - 1) as usize & 3];
-                        let corner = |r: __m256i, x: __m256i| {
-                            let b = _mm256_mullo_epi32(_mm256_add_epi32(r, x), cc);
-                            let start =
-                                _mm256_max_epi32(_mm256_add_epi32(b, back), _mm256_setzero_si256());
-                            let at = spread(_mm256_sub_epi32(b, start), spread_idx);
-                            // SAFETY: 0 <= b = (y w + x) c < w h c as for `words8`; the read
-                            // starts at max(b + c - 8, 0) >= 0 and ends at b + c <= w h c,
-                            // which `Level8::new` checked `texels` holds, or at 8 (start 0),
-                            // checked just above.
-                            let q = unsafe { rows8(lvl, start) };
-                            _mm512_maskz_permutexvar_epi8(m, _mm512_add_epi16(first, at), q)
-                        };
-                        [
-                            corner(r0, x0),
-                            corner(r0, x1),
-                            corner(r1, x0),
-                            corner(r1, x1),
-                        ]
-                    }
-                    None => [
-                        _mm512_cvtepu8_epi16(words8(lvl, x0, y0)),
-                        _mm512_cvtepu8_epi16(words8(lvl, x1, y0)),
-                        _mm512_cvtepu8_epi16(words8(lvl, x0, y1)),
-                        _mm512_cvtepu8_epi16(words8(lvl, x1, y1)),
-                    ],
-                };
-                let wx = spread(wx, spread_idx);
-                let wy = spread(wy, spread_idx);
-                let row0 = lerp32(corners[0], corners[1], wx);
-                let row1 = lerp32(corners[2], corners[3], wx);
-                lerp32(row0, row1, wy)
-            }};
-        }
-
-        /// LINEAR filtering of `l1` at `s`, `t` as texel words, or with `l2`, of both levels
-        /// mixed with `l2`'s weight `weight` (0..=255 per 32-bit lane): what
-        /// [`filter8_words_isa`] and [`filter8_words2_isa`] give on AVX2.
-        #[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512vbmi,avx2")]
-        pub(in super::super) fn bilinear8_words(
-            l1: &Level8,
-            l2: Option<&Level8>,
-            s: __m256,
-            t: __m256,
-            weight: __m256i,
-        ) -> Option<__m256i> {
-            // SAFETY: 64 bytes; unaligned load.
-            let idx = unsafe { _mm512_loadu_si512(SPREAD.as_ptr() as *const _) };
-            let a = wide_bilinear8!(l1, s, t, idx);
-            let r = match l2 {
-                Some(l2) => lerp32(a, wide_bilinear8!(l2, s, t, idx), spread(weight, idx)),
-                None => a,
-            };
-            Some(_mm512_cvtepi16_epi8(r))
-        }
     }
 
     /// The eight lanes' level weights `weight` quantised
@@ -1588,31 +1202,6 @@ pub(crate) mod x86 {
         // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
         let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
         let out = filter8_regs(lvl, linear, s, t)?;
-        let mut res = [[0f32; 8]; 4];
-        for c in 0..4 {
-            // SAFETY: `res[c]` holds eight f32; unaligned store.
-            unsafe { _mm256_storeu_ps(res[c].as_mut_ptr(), out[c]) };
-        }
-        Some(res)
-    }
-
-    /// [`filter8_on`](super::filter8_on).
-    #[target_feature(enable = "avx2")]
-    pub(crate) fn filter8_on(
-        wide: bool,
-        lvl: &Level8,
-        mix: Option<(&Level8, &[f32; 8])>,
-        linear: bool,
-        s: &[f32; 8],
-        t: &[f32; 8],
-    ) -> Option<Texels8> {
-        // SAFETY: `s` and `t` hold eight f32 each; unaligned loads.
-        let (s, t) = unsafe { (_mm256_loadu_ps(s.as_ptr()), _mm256_loadu_ps(t.as_ptr())) };
-        let words = match mix {
-            None => filter8_words_isa(wide, lvl, linear, s, t)?,
-            Some((l2, w)) => filter8_words2_isa(wide, lvl, l2, linear, s, t, level_weights8(w))?,
-        };
-        let out = texels_of_words(lvl, words);
         let mut res = [[0f32; 8]; 4];
         for c in 0..4 {
             // SAFETY: `res[c]` holds eight f32; unaligned store.
