@@ -524,8 +524,11 @@ pub(crate) mod x86 {
             return None;
         }
         let split = |x: __m256| {
-            let r = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(x);
-            let k = _mm256_sub_epi32(_mm256_cvttps_epi32(r), _mm256_set1_epi32(128));
+            // `cvtps2dq` rounds by MXCSR, which Rust code runs with its default (to nearest,
+            // ties to even): for |x| < 2^30 (checked above) it gives what `round_ties_even`
+            // then truncation give, in one instruction instead of two (NaN as i32::MIN
+            // either way).
+            let k = _mm256_sub_epi32(_mm256_cvtps_epi32(x), _mm256_set1_epi32(128));
             (
                 _mm256_srai_epi32::<8>(k),
                 _mm256_and_si256(k, _mm256_set1_epi32(255)),
