@@ -431,29 +431,20 @@ pub(super) mod vec {
                 };
                 return (v, _mm256_setr_pd(z[0], z[1], z[2], z[3]));
             }
-            if n == 4 {
-                // A whole row with restart column k = left (1..4): the sums from the run's
-                // values, then from the restart column's.
-                let k = self.left;
+            if n == 4 && self.left == 2 {
+                // A whole row whose lane 2 is a restart column (blocks start at even columns,
+                // restart columns are multiples of 16: the only place one falls inside a
+                // whole row): the sums from the run's values, then from the restart column's.
                 let (b0, y0) = self.restart();
                 let b1 = _mm256_add_ps(b0, d);
-                let b2 = _mm256_add_ps(b1, d);
                 let y1 = y0 + dz;
-                let y2 = y1 + dz;
-                // Then 4 - k steps from the restart column (the last one past the row).
-                self.left = RESTART as u32 - (4 - k);
-                let (v, z, s) = match k {
-                    1 => {
-                        let b3 = _mm256_add_ps(b2, d);
-                        ([a0, b0, b1, b2], [z0, y0, y1, y2], (b3, y2 + dz))
-                    }
-                    2 => ([a0, a1, b0, b1], [z0, z1, y0, y1], (b2, y2)),
-                    _ => ([a0, a1, a2, b0], [z0, z1, z2, y0], (b1, y1)),
-                };
-                (self.s, self.z) = s;
-                return (v, _mm256_setr_pd(z[0], z[1], z[2], z[3]));
+                // Then two steps from the restart column (the last one past the row).
+                self.left = RESTART as u32 - 2;
+                self.s = _mm256_add_ps(b1, d);
+                self.z = y1 + dz;
+                return ([a0, a1, b0, b1], _mm256_setr_pd(z0, z1, y0, y1));
             }
-            // A partial row with a restart column among its lanes: lane by lane.
+            // A restart column elsewhere among the lanes (a partial row): lane by lane.
             let mut v = [a0; 4];
             let mut z = [z0; 4];
             for j in lo..hi {
