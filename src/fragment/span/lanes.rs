@@ -546,7 +546,14 @@ pub(super) mod vec {
     ) {
         // SAFETY: each array holds eight f32 (u32); unaligned stores.
         let store = |a: &mut [f32; 8], v: __m256| unsafe { _mm256_storeu_ps(a.as_mut_ptr(), v) };
-        let t = transpose(&rows[0], &rows[1]);
+        // A constant colour without fog, secondary colour or products by w reads no channel
+        // (as `horizon`'s ground): no transposition.
+        let reads = m.reads();
+        let t = if reads.primary || reads.inv_w || m.fog || m.secondary {
+            transpose(&rows[0], &rows[1])
+        } else {
+            [_mm256_setzero_ps(); 8]
+        };
         let keep = lane_mask(live);
         let needs_w = m.primary_perspective || m.secondary || m.fog;
         let w = if m.perspective && needs_w {
