@@ -118,7 +118,141 @@ fn blocks_avx2(
     it: &Interpolants,
     shade: &mut impl BlockShade,
 ) {
-    blocks_any(ds, tile, pairs, it, shade)
+    // Unfogged draws step no fog coordinate; the rows' values are stepped as vectors where
+    // they fit one (`lanes::vec::fits`).
+    if lane_fog(ds).is_none() {
+        blocks_vec::<false>(ds, tile, pairs, it, shade)
+    } else if lanes::vec::fits::<true>(lane_colors(ds)) {
+        blocks_vec::<true>(ds, tile, pairs, it, shade)
+    } else {
+        blocks::<true>(ds, tile, pairs, it, shade)
+    }
+}
+
+/// [`blocks`] with each row's values stepped as one vector and the block's lanes
+/// transposed into the group in registers (`lanes::vec`): the same values, so the same
+/// pixels (`vector_blocks_are_the_recorded_blocks`).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline]
+fn blocks_vec<const FOG: bool>(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    pairs: &[RowPair],
+    it: &Interpolants,
+    shade: &mut impl BlockShade,
+) {
+    use lanes::vec::{load_block, tile_row, VecRun};
+    use std::arch::x86_64::*;
+    let fog = if FOG { lane_fog(ds) } else { None };
+    let colors = lane_colors(ds);
+    let math = LaneMath::new(ds, it, FOG);
+    let mut group = GroupInputs::EMPTY;
+    let stride = tile.side() as usize;
+    let stipple = it.shared.stipple;
+    for &(y, rows) in pairs {
+        let covered = |r: usize| rows[r].0 < rows[r].1;
+        let (first, end) = match (covered(0), covered(1)) {
+            (true, true) => (rows[0].0.min(rows[1].0), rows[0].1.max(rows[1].1)),
+            (true, false) => rows[0],
+            (false, true) => rows[1],
+            (false, false) => continue,
+        };
+        let stipple_rows = stipple.map(|p| [stipple_row(p, y), stipple_row(p, y + 1)]);
+        let run = |r: usize| {
+            // SAFETY: AVX2 is present (this function's feature).
+            unsafe { VecRun::new::<FOG>(it, rows[r].0, y as f64 + 0.5 + r as f64, colors) }
+        };
+        let [mut run0, mut run1] = [run(0), run(1)];
+        let mut gx = first & !1;
+        while gx < end {
+            // Lanes 4r..4r + 4 are pixels row0 + r * stride + j.
+            let row0 = tile.index(gx, y);
+            let lo0 = (rows[0].0 - gx).clamp(0, 4) as usize;
+            let hi0 = (rows[0].1 - gx).clamp(0, 4) as usize;
+            let lo1 = (rows[1].0 - gx).clamp(0, 4) as usize;
+            let hi1 = (rows[1].1 - gx).clamp(0, 4) as usize;
+            let bits = |lo: usize, hi: usize| ((1u32 << hi) - (1u32 << lo)) as u8;
+            // SAFETY (both rows): AVX2 is present (this function's feature).
+            let (values0, z0, stored0, dst0, live0) = if lo0 < hi0 {
+                let (v, z) = unsafe { run0.row(lo0, hi0) };
+                let (s, d) = unsafe { tile_row(tile, row0, lo0, hi0) };
+                (v, z, s, d, bits(lo0, hi0))
+            } else {
+                let v = _mm256_setzero_ps();
+                let z = _mm256_setzero_pd();
+                let s = _mm_setzero_si128();
+                ([v; 4], z, s, s, 0)
+            };
+            let (values1, z1, stored1, dst1, live1) = if lo1 < hi1 {
+                let (v, z) = unsafe { run1.row(lo1, hi1) };
+                let (s, d) = unsafe { tile_row(tile, row0 + stride, lo1, hi1) };
+                (v, z, s, d, bits(lo1, hi1))
+            } else {
+                let v = _mm256_setzero_ps();
+                let z = _mm256_setzero_pd();
+                let s = _mm_setzero_si128();
+                ([v; 4], z, s, s, 0)
+            };
+            let live = live0 | (live1 << 4);
+            if live == 0 {
+                gx += 4;
+                continue;
+            }
+            // SAFETY: AVX2 is present (this function's feature).
+            unsafe {
+                let stored = _mm256_set_m128i(stored1, stored0);
+                let dst = _mm256_set_m128i(dst1, dst0);
+                let values = [values0, values1];
+                load_block::<FOG>(&mut group, &values, [z0, z1], stored, dst, live, &math)
+            };
+            finish_block(
+                ds,
+                tile,
+                (y, gx),
+                row0,
+                live,
+                &mut group,
+                fog,
+                stipple_rows,
+                shade,
+            );
+            gx += 4;
+        }
+    }
+}
+
+/// A block's stipple, stencil test, shading and stores once its group is loaded (`live`:
+/// its covered lanes, lane `4r + j` being pixel `row0 + r * side + j` of `tile`).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn finish_block(
+    ds: &FragmentDraw,
+    tile: &mut Tile,
+    (y, gx): (i32, i32),
+    row0: usize,
+    mut live: u8,
+    group: &mut GroupInputs,
+    fog: Option<&FogDraw>,
+    stipple_rows: Option<[u32; 2]>,
+    shade: &mut impl BlockShade,
+) {
+    if let Some(rows) = stipple_rows {
+        // The stipple discards lanes before any per-fragment operation.
+        let keep = stipple_block(rows, gx);
+        live &= keep;
+        group.pass &= keep;
+    }
+    if ds.key.stencil.is_some() {
+        group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
+    }
+    if group.pass != 0 {
+        group.fog_factors(fog);
+        if let Some((words, passed)) = shade.shade(y, gx, group) {
+            let stride = tile.side() as usize;
+            write_rows(ds, tile, row0, stride, live, &words, passed, &group.depth);
+        }
+    }
 }
 
 /// [`for_each_block`] on any processor: fogged or not.
@@ -189,21 +323,17 @@ pub(super) fn blocks<const FOG: bool>(
                 continue;
             }
             group.load_raw(&raw, live, &math);
-            if let Some(rows) = stipple_rows {
-                // The stipple discards lanes before any per-fragment operation.
-                let keep = stipple_block(rows, gx);
-                live &= keep;
-                group.pass &= keep;
-            }
-            if ds.key.stencil.is_some() {
-                group.pass = block_stencil(ds, tile, gx, y, live, group.pass);
-            }
-            if group.pass != 0 {
-                group.fog_factors(fog);
-                if let Some((words, passed)) = shade.shade(y, gx, &group) {
-                    write_rows(ds, tile, row0, stride, live, &words, passed, &group.depth);
-                }
-            }
+            finish_block(
+                ds,
+                tile,
+                (y, gx),
+                row0,
+                live,
+                &mut group,
+                fog,
+                stipple_rows,
+                shade,
+            );
             gx += 4;
         }
     }

@@ -34,7 +34,7 @@ pub(super) struct SpanRun<'i> {
     attrs: &'i [Plane],
     constant_primary: bool,
     /// Steps left before the current pixel is a restart column.
-    left: u32,
+    pub(super) left: u32,
     /// The centre of the next restart column, and of the row.
     restart_x: f64,
     yc: f64,
@@ -116,7 +116,7 @@ impl<'i> SpanRun<'i> {
     /// the run by reference kept the whole run in memory, twice the instructions per span of
     /// small triangles; docs/performance.md.)
     #[inline(always)]
-    fn restart(&mut self) {
+    pub(super) fn restart(&mut self) {
         let x = self.restart_x;
         self.evaluate(x);
         self.restart_x = x + RESTART as f64;
