@@ -304,7 +304,8 @@ pub fn fog_factors8(
 
 #[cfg(target_arch = "x86_64")]
 pub(crate) use x86::{
-    block_combined8, depth8 as depth8_avx2, pack_words, shade8_bytes, shade8_regs, to_u8,
+    block_combined8, combined8_regs, depth8 as depth8_avx2, pack_words, shade8_bytes, shade8_regs,
+    to_u8,
 };
 
 #[cfg(target_arch = "x86_64")]
@@ -1047,14 +1048,34 @@ mod x86 {
         dst: &[u32; 8],
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
-        let mut texel = [[_mm256_setzero_ps(); 4]; 1];
-        let reads = program.texel_units().next().is_some();
-        if reads {
-            texel[0] = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
+        let mut texel = [_mm256_setzero_ps(); 4];
+        if program.texel_units().next().is_some() {
+            texel = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
                 (words, Some(level)) => texels_of_words(level, words),
                 (_, None) => [_mm256_setzero_ps(); 4],
             };
         }
+        Some(combined8_regs(
+            program, texel, tail, primary, dst, live, after,
+        ))
+    }
+
+    /// The program and the tail of [`block_combined8`] on the unit's texels `texel` (in
+    /// registers; read only when the program reads a texel).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn combined8_regs(
+        program: &Program,
+        texel: [__m256; 4],
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        live: u8,
+        after: &After8,
+    ) -> ([u32; 8], u8) {
+        let texel = [texel];
+        let reads = program.texel_units().next().is_some();
         let color = match program.single() {
             Some(single) => {
                 // The clamped primary colour, as `Program::run_regs` clamps it.
@@ -1069,7 +1090,7 @@ mod x86 {
             }
             None => program.run_regs(primary, &texel[..usize::from(reads)]),
         };
-        Some(shade8_regs(tail, primary, &color, dst, live, after))
+        shade8_regs(tail, primary, &color, dst, live, after)
     }
 
     #[target_feature(enable = "avx2")]

@@ -679,10 +679,31 @@ fn fused_block(
     gx: i32,
     group: &GroupInputs,
 ) -> Option<([u32; 8], u8)> {
-    if sampler.cube.is_some() {
-        return None;
-    }
     let x = gx as f64 + 0.5;
+    if sampler.cube.is_some() {
+        // A cube map with a fixed level plan: its texels in registers (`cube_block_regs`,
+        // the texels `texels_block` gives), then the tail or the program on them.
+        let tex = sampler.cube_block_regs(x, group.pass)?;
+        return Some(match fused {
+            Fused::Tail => simd::shade8_regs(
+                tail,
+                &group.primary,
+                &tex,
+                &group.dst,
+                group.pass,
+                &group.after,
+            ),
+            Fused::Program(program) => simd::combined8_regs(
+                program,
+                tex,
+                tail,
+                &group.primary,
+                &group.dst,
+                group.pass,
+                &group.after,
+            ),
+        });
+    }
     match fused {
         Fused::Tail => simd::block_shaded8(
             &sampler.planes,
