@@ -1048,16 +1048,30 @@ mod x86 {
         dst: &[u32; 8],
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
-        let mut texel = [_mm256_setzero_ps(); 4];
-        if program.texel_units().next().is_some() {
-            texel = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
+        // (The body of `combined8_regs` written out again: called, it stays out of line.)
+        let mut texel = [[_mm256_setzero_ps(); 4]; 1];
+        let reads = program.texel_units().next().is_some();
+        if reads {
+            texel[0] = match block_words8(planes, x, live, fixed_plan, lod, levels)? {
                 (words, Some(level)) => texels_of_words(level, words),
                 (_, None) => [_mm256_setzero_ps(); 4],
             };
         }
-        Some(combined8_regs(
-            program, texel, tail, primary, dst, live, after,
-        ))
+        let color = match program.single() {
+            Some(single) => {
+                // The clamped primary colour, as `Program::run_regs` clamps it.
+                let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
+                let mut p = [zero; 4];
+                for (v, c) in p.iter_mut().zip(primary) {
+                    // SAFETY: eight f32; unaligned load.
+                    let c = unsafe { _mm256_loadu_ps(c.as_ptr()) };
+                    *v = _mm256_min_ps(_mm256_max_ps(c, zero), one);
+                }
+                single.run(p, texel[0])
+            }
+            None => program.run_regs(primary, &texel[..usize::from(reads)]),
+        };
+        Some(shade8_regs(tail, primary, &color, dst, live, after))
     }
 
     /// The program and the tail of [`block_combined8`] on the unit's texels `texel` (in
