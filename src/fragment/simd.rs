@@ -1075,7 +1075,9 @@ mod x86 {
     }
 
     /// The program and the tail of [`block_combined8`] on the unit's texels `texel` (in
-    /// registers; read only when the program reads a texel).
+    /// registers; read only when the program reads a texel), for the cube-map blocks: the
+    /// program by `Program::run_avx2` (the bits of `Single::run` and `run_regs`; called
+    /// here, those two would no longer be inlined into [`block_combined8`]).
     #[allow(clippy::too_many_arguments)]
     #[inline]
     #[target_feature(enable = "avx2")]
@@ -1088,22 +1090,18 @@ mod x86 {
         live: u8,
         after: &After8,
     ) -> ([u32; 8], u8) {
-        let texel = [texel];
-        let reads = program.texel_units().next().is_some();
-        let color = match program.single() {
-            Some(single) => {
-                // The clamped primary colour, as `Program::run_regs` clamps it.
-                let (zero, one) = (_mm256_setzero_ps(), _mm256_set1_ps(1.0));
-                let mut p = [zero; 4];
-                for (v, c) in p.iter_mut().zip(primary) {
-                    // SAFETY: eight f32; unaligned load.
-                    let c = unsafe { _mm256_loadu_ps(c.as_ptr()) };
-                    *v = _mm256_min_ps(_mm256_max_ps(c, zero), one);
-                }
-                single.run(p, texel[0])
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        if let Some(unit) = program.texel_units().next() {
+            let mut t = [[0f32; 8]; 4];
+            for (o, v) in t.iter_mut().zip(texel) {
+                // SAFETY: eight f32; unaligned store.
+                unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
             }
-            None => program.run_regs(primary, &texel[..usize::from(reads)]),
-        };
+            by_unit[unit] = Some(t);
+        }
+        let color = program.run_avx2(primary, &by_unit);
+        // SAFETY: eight f32 each; unaligned loads.
+        let color = color.map(|c| unsafe { _mm256_loadu_ps(c.as_ptr()) });
         shade8_regs(tail, primary, &color, dst, live, after)
     }
 

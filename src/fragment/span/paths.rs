@@ -679,31 +679,10 @@ fn fused_block(
     gx: i32,
     group: &GroupInputs,
 ) -> Option<([u32; 8], u8)> {
-    let x = gx as f64 + 0.5;
     if sampler.cube.is_some() {
-        // A cube map with a fixed level plan: its texels in registers (`cube_block_regs`,
-        // the texels `texels_block` gives), then the tail or the program on them.
-        let tex = sampler.cube_block_regs(x, group.pass)?;
-        return Some(match fused {
-            Fused::Tail => simd::shade8_regs(
-                tail,
-                &group.primary,
-                &tex,
-                &group.dst,
-                group.pass,
-                &group.after,
-            ),
-            Fused::Program(program) => simd::combined8_regs(
-                program,
-                tex,
-                tail,
-                &group.primary,
-                &group.dst,
-                group.pass,
-                &group.after,
-            ),
-        });
+        return fused_cube_block(fused, sampler, tail, gx, group);
     }
+    let x = gx as f64 + 0.5;
     match fused {
         Fused::Tail => simd::block_shaded8(
             &sampler.planes,
@@ -731,6 +710,42 @@ fn fused_block(
             &group.after,
         ),
     }
+}
+
+/// [`fused_block`] for a cube map with a fixed level plan: its texels in registers
+/// (`cube_block_regs`, the texels `texels_block` gives), then the tail or the program on
+/// them. Out of line, so that the 2D blocks' code in `fused_block` stays as it was.
+#[cfg(target_arch = "x86_64")]
+#[inline(never)]
+#[target_feature(enable = "avx2")]
+fn fused_cube_block(
+    fused: Fused,
+    sampler: &Perspective8,
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    let x = gx as f64 + 0.5;
+    let tex = sampler.cube_block_regs(x, group.pass)?;
+    Some(match fused {
+        Fused::Tail => simd::shade8_regs(
+            tail,
+            &group.primary,
+            &tex,
+            &group.dst,
+            group.pass,
+            &group.after,
+        ),
+        Fused::Program(program) => simd::combined8_regs(
+            program,
+            tex,
+            tail,
+            &group.primary,
+            &group.dst,
+            group.pass,
+            &group.after,
+        ),
+    })
 }
 
 /// The chain form of a draw's cascade (`cascade::Chain`: two or more `GL_COMBINE` units,
