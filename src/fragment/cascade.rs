@@ -175,6 +175,8 @@ pub struct Single {
     rgb_scale: f32,
     alpha_scale: f32,
     constant: [f32; 4],
+    /// Whether an argument `eval` reads is the constant colour (entries 8..12 of its table).
+    reads_constant: bool,
 }
 
 impl Single {
@@ -241,6 +243,12 @@ impl Single {
         if !readable {
             return None;
         }
+        // How many arguments `eval` reads for a function.
+        let reads = |f: CombineFunc| match f {
+            CombineFunc::Replace => 1,
+            CombineFunc::Interpolate => 3,
+            _ => 2,
+        };
         Some(Single {
             rgb: k.rgb,
             alpha: k.alpha,
@@ -251,6 +259,10 @@ impl Single {
             rgb_scale: k.rgb_scale as f32,
             alpha_scale: k.alpha_scale as f32,
             constant: env.color,
+            reads_constant: rgb_args[..reads(k.rgb)]
+                .iter()
+                .chain(&alpha_args[..reads(k.alpha)])
+                .any(|a| a.src == Src1::Constant),
         })
     }
 }
@@ -956,18 +968,26 @@ mod x86 {
             mut texel: impl FnMut(usize) -> Option<[__m256; 4]>,
         ) -> Option<[__m256; 4]> {
             let zero = _mm256_setzero_ps();
-            let mut tab: Table = [zero; super::TABLE];
-            for (c, v) in primary.iter().enumerate() {
+            let mut p = [zero; 4];
+            for (p, v) in p.iter_mut().zip(primary) {
                 // SAFETY: eight f32; unaligned load.
-                let p = Avx8(unsafe { _mm256_loadu_ps(v.as_ptr()) }).clamp01().0;
-                tab[c] = p;
-                tab[13 + c] = p;
+                *p = Avx8(unsafe { _mm256_loadu_ps(v.as_ptr()) }).clamp01().0;
             }
+            // The incoming colour, the texel, the constant colour, zero, the primary colour;
+            // the texel and constant entries are written by each step before `eval` reads
+            // them (zero until then).
+            let mut tab: Table = [
+                p[0], p[1], p[2], p[3], zero, zero, zero, zero, zero, zero, zero, zero, zero, p[0],
+                p[1], p[2], p[3],
+            ];
             let mut color = [zero; 4];
             for (k, step) in self.steps.iter().enumerate() {
                 let t = texel(k)?;
                 tab[4..8].copy_from_slice(&t);
-                step.constants(&mut tab);
+                // (Steps that read no constant colour leave the entries as they are.)
+                if step.reads_constant {
+                    step.constants(&mut tab);
+                }
                 // SAFETY: AVX2 is present (this function's feature).
                 color = unsafe { step.eval(&tab) };
                 tab[..4].copy_from_slice(&color);

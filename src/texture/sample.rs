@@ -71,17 +71,95 @@ pub enum LevelPlan {
     },
 }
 
-/// The bits of √½ as f32: `m - SQRT_HALF_BITS` has in its top bits the exponent k with
-/// m = x 2^k, x in [√½, √2) ([`LodSelect::quick_lambda256`]).
-pub const SQRT_HALF_BITS: u32 = 0x3F35_04F3;
+/// Entries of [`QUICK_LOG2`]: one per value of the top 8 bits of an f32 mantissa.
+pub const QUICK_LOG2_CELLS: usize = 256;
 
-/// `2 / ((2j + 1) ln 2)` for j = 0..4: log2 x = Σ c_j u^(2j+1) with u = (x - 1)/(x + 1).
-pub const LOG2_SERIES: [f64; 4] = [
-    2.0 / std::f64::consts::LN_2,
-    2.0 / (3.0 * std::f64::consts::LN_2),
-    2.0 / (5.0 * std::f64::consts::LN_2),
-    2.0 / (7.0 * std::f64::consts::LN_2),
-];
+/// `128 log2` of the mantissa `x = 1 + f` (f in [0, 1), f32 bits) by chords over 256 cells:
+/// per cell i (x in [1 + i/256, 1 + (i + 1)/256)) the value `T = 128 log2(1 + i/256)` and the
+/// rise `S` to the next cell's value, each rounded to f32 ([`quick_log2_128`]). Computed at
+/// compile time (the logarithm by its series `ln x = 2 Σ u^(2j+1)/(2j+1)`, u = (x - 1)/(x + 1)
+/// <= 1/3, forty terms: far below an f32 unit).
+pub static QUICK_LOG2: [[f32; 2]; QUICK_LOG2_CELLS] = quick_log2_table();
+
+/// `128 log2 x` in f64 for x in [1, 2] (the table's entries).
+const fn log2_128_const(x: f64) -> f64 {
+    let u = (x - 1.0) / (x + 1.0);
+    let u2 = u * u;
+    let mut sum = 0.0;
+    let mut power = u;
+    let mut j = 0;
+    while j < 40 {
+        sum += power / (2 * j + 1) as f64;
+        power *= u2;
+        j += 1;
+    }
+    128.0 * 2.0 * sum / std::f64::consts::LN_2
+}
+
+const fn quick_log2_table() -> [[f32; 2]; QUICK_LOG2_CELLS] {
+    let mut out = [[0f32; 2]; QUICK_LOG2_CELLS];
+    let mut i = 0;
+    while i < QUICK_LOG2_CELLS {
+        let n = QUICK_LOG2_CELLS as f64;
+        let a = log2_128_const(1.0 + i as f64 / n);
+        let b = log2_128_const(1.0 + (i + 1) as f64 / n);
+        out[i] = [a as f32, (b - a) as f32];
+        i += 1;
+    }
+    out
+}
+
+/// `128 log2 x` of the mantissa x in [1, 2) of the f32 bits `bits` (exponent ignored), by
+/// the chord of its cell ([`QUICK_LOG2`]): `T + φ S` with φ the 15 low mantissa bits as a
+/// fraction of the cell (exact), in f32. Error (unit test `quick_log2_is_within_its_bound`,
+/// exhaustive over the mantissas): the chord of 128 log2 lies below it by at most
+/// `h²/8 · 128/ln 2` = 3.53e-4 (h = 1/256, the curvature largest at x = 1); the roundings of
+/// T and of the sum add at most 3.8e-6 each (half a unit of 64..128), those of S and the
+/// product 1e-7: 3.61e-4 in all.
+#[inline(always)]
+pub fn quick_log2_128(bits: u32) -> f32 {
+    let [t, s] = QUICK_LOG2[(bits >> 15) as usize & (QUICK_LOG2_CELLS - 1)];
+    let phi = (bits & 0x7FFF) as i32 as f32 * (1.0 / 32768.0);
+    t + phi * s
+}
+
+/// The terms of [`LodSelect::quick_lambda256`] that depend only on the sampler's parameters
+/// (so that the per-quad work is integer and f32 arithmetic on the ρ² bits).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuickTerms {
+    /// floor(256 bias) and 256 bias minus it (in [0, 1), exact: 256 bias is an f32).
+    pub bias_int: i32,
+    pub bias_frac: f32,
+    /// The `floor(256 λ)` values g whose whole step [g, g + 1] lies inside
+    /// [256 min_lod, 256 max_lod] (a NaN bound clamps nothing: [`LodSelect::lambda_from_rho`]);
+    /// `lo > hi` when none does.
+    pub lo: i32,
+    pub hi: i32,
+}
+
+impl QuickTerms {
+    /// The terms for a (clamped, finite) `bias` and the LOD clamp.
+    pub fn new(bias: f32, min_lod: f32, max_lod: f32) -> QuickTerms {
+        const BIG: f64 = (1 << 30) as f64;
+        let b = bias as f64 * 256.0;
+        let lo = if min_lod.is_nan() {
+            -BIG
+        } else {
+            (min_lod as f64 * 256.0).ceil().clamp(-BIG, BIG)
+        };
+        let hi = if max_lod.is_nan() {
+            BIG
+        } else {
+            ((max_lod as f64 * 256.0).floor() - 1.0).clamp(-BIG, BIG)
+        };
+        QuickTerms {
+            bias_int: b.floor() as i32,
+            bias_frac: (b - b.floor()) as f32,
+            lo: lo as i32,
+            hi: hi as i32,
+        }
+    }
+}
 
 /// How near a multiple of 1/256 a quickly computed λ may lie and still decide the level
 /// plan ([`LodSelect::quick_lambda256`]): 2^-15.
@@ -140,6 +218,8 @@ pub struct LodSelect {
     /// ρ² below which λ is surely at most the switch-over point (magnification) without
     /// computing it ([`LodSelect::surely_magnified`]); -1 when `min_lod` lies above it.
     magnified_below: f32,
+    /// [`LodSelect::quick_lambda256`]'s terms of the bias and the LOD clamp.
+    quick: QuickTerms,
 }
 
 impl LodSelect {
@@ -241,40 +321,42 @@ impl LodSelect {
     /// `floor(256 λ)` for the squared scale factor `m` = ρ² (λ = log2 ρ plus the bias,
     /// clamped to [min_lod, max_lod]) without `log2f`, when it surely equals `floor(256 λ)`
     /// of the λ that [`LodSelect::lambda_from_rho`] gives for `m.sqrt()`; `None` otherwise
-    /// (`m` not a positive normal number, or λ within [`QUICK_LOD_MARGIN`] of a multiple of
-    /// 1/256). Every step of the level plan (the switch-over point 0 or 1/2, the halves of
-    /// `*_MIPMAP_NEAREST`, the levels of `*_MIPMAP_LINEAR`, the last level) and of its 8-bit
-    /// weight ([`fixed::level_weight`]) lies on a multiple of 1/256, so `floor(256 λ)` decides
-    /// the plan ([`LodSelect::plan_of_lambda256`]) whenever λ is not near one.
+    /// (`m` not a positive normal number, the estimate within [`QUICK_LOD_MARGIN`] of a
+    /// multiple of 1/256, or its step not wholly inside [min_lod, max_lod]). Every step of
+    /// the level plan (the switch-over point 0 or 1/2, the halves of `*_MIPMAP_NEAREST`, the
+    /// levels of `*_MIPMAP_LINEAR`, the last level) and of its 8-bit weight
+    /// ([`fixed::level_weight`]) lies on a multiple of 1/256, so `floor(256 λ)` decides the
+    /// plan ([`LodSelect::plan_of_lambda256`]) whenever λ is not near one.
     ///
-    /// Bound: log2 m = k + log2 x with m = x 2^k, x in [√½, √2) from the bits; log2 x by the
-    /// series `2/ln 2 (u + u³/3 + u⁵/5 + u⁷/7)` of u = (x - 1)/(x + 1), |u| <= 0.1716, in f64
-    /// (truncation below 5e-8). The sampler's λ differs from the exact ½ log2 m + bias by the
-    /// rounding of sqrt (8.6e-8), of log2f (at most one unit in the last place of |log2 ρ| <
-    /// 64: 3.8e-6; glibc documents 0.75) and of the sum with the bias (half a unit of |λ| <
-    /// 128: 3.8e-6). Both lie within 1.2e-5 of the exact value, so within 2.5e-5 < 2^-15
-    /// (the margin) of each other; clamping to [min_lod, max_lod] does not widen the gap.
+    /// The estimate, in f32 without a division: 256 λ = 128 log2 m + 256 bias = 128 e +
+    /// 128 log2 x + floor(256 bias) + frac(256 bias) with m = x 2^e, x in [1, 2) from the
+    /// bits; v = [`quick_log2_128`]`(x) + frac(256 bias)` (< 129), g = floor(v) + 128 e +
+    /// floor(256 bias) (integers), and v's fraction is the estimate's.
+    ///
+    /// Bound: v is within 3.61e-4 (the chords, [`quick_log2_128`]) + 3.8e-6 (the sum's
+    /// rounding, half a unit below 128; 7.6e-6 when v reaches 128) < 3.7e-4 of the exact `256 (½ log2 m + bias) - 128 e - floor(256 bias)`,
+    /// that is within 1.5e-6 in λ. The sampler's λ differs from the exact ½ log2 m + bias by
+    /// the rounding of sqrt (8.6e-8), of log2f (at most one unit in the last place of
+    /// |log2 ρ| < 64: 3.8e-6; glibc documents 0.75) and of the sum with the bias (half a
+    /// unit of |λ| < 128: 3.8e-6): within 1.2e-5. The two lie within 1.4e-5 < 2^-15 (the
+    /// margin) of each other, so when the estimate's fraction is farther than the margin
+    /// from 0 and 1, the sampler's 256 λ lies strictly inside (g, g + 1); when that step
+    /// lies inside [256 min_lod, 256 max_lod] ([`QuickTerms`]) the clamp leaves the
+    /// sampler's λ as it is, so its `floor(256 λ)` is g and λ is not a multiple of 1/256.
     #[inline(always)]
     pub fn quick_lambda256(&self, m: f32) -> Option<i32> {
         let bits = m.to_bits();
         if !(0x0080_0000..0x7F80_0000).contains(&bits) {
             return None;
         }
-        let ix = bits.wrapping_sub(SQRT_HALF_BITS) as i32;
-        let k = (ix >> 23) as f64;
-        let x = f32::from_bits((ix as u32 & 0x007F_FFFF) + SQRT_HALF_BITS) as f64;
-        let u = (x - 1.0) / (x + 1.0);
-        let u2 = u * u;
-        let [c1, c3, c5, c7] = LOG2_SERIES;
-        let log2x = u * (c1 + u2 * (c3 + u2 * (c5 + u2 * c7)));
-        let lambda = (k + log2x) * 0.5 + self.bias as f64;
-        let lambda = lambda.min(self.max_lod as f64).max(self.min_lod as f64);
-        let g = lambda * 256.0;
-        let f = g.floor();
-        let frac = g - f;
-        let margin = QUICK_LOD_MARGIN * 256.0;
-        if frac > margin && frac < 1.0 - margin && f.abs() < (1 << 24) as f64 {
-            Some(f as i32)
+        let q = &self.quick;
+        let v = quick_log2_128(bits) + q.bias_frac;
+        let f = v.floor();
+        let frac = v - f;
+        let margin = (QUICK_LOD_MARGIN * 256.0) as f32;
+        let g = f as i32 + (((bits >> 23) as i32 - 127) << 7) + q.bias_int;
+        if frac > margin && frac < 1.0 - margin && (q.lo..=q.hi).contains(&g) {
+            Some(g)
         } else {
             None
         }
@@ -343,11 +425,10 @@ impl LodSelect {
         }
     }
 
-    /// The parameters [`LodSelect::quick_lambda256`] adds to `½ log2 ρ²`: the bias, then the
-    /// clamp to [min_lod, max_lod].
+    /// [`LodSelect::quick_lambda256`]'s terms of the bias and the LOD clamp.
     #[inline(always)]
-    pub fn lambda_terms(&self) -> (f32, f32, f32) {
-        (self.bias, self.min_lod, self.max_lod)
+    pub fn quick_terms(&self) -> &QuickTerms {
+        &self.quick
     }
 
     /// [`BoundTexture::isotropic_lambda`].
@@ -620,6 +701,7 @@ impl BoundTexture {
             size: [w, h, d],
             target: self.inner.target,
             magnified_below,
+            quick: QuickTerms::new(bias, p.min_lod, p.max_lod),
         }
     }
 
@@ -1314,6 +1396,7 @@ pub(crate) fn test_lod_selects() -> Vec<LodSelect> {
                             size: [256.0, 256.0, 1.0],
                             target: TextureTarget::T2D,
                             magnified_below: LodSelect::magnified_below(switch_over, bias, min_lod),
+                            quick: QuickTerms::new(bias, min_lod, max_lod),
                         };
                         out.push(lod);
                     }
@@ -1355,6 +1438,7 @@ mod tests {
                             size: [size, size, 1.0],
                             target: TextureTarget::T2D,
                             magnified_below: LodSelect::magnified_below(switch_over, bias, min_lod),
+                            quick: QuickTerms::new(bias, min_lod, max_lod),
                         };
                         // Derivatives around ρ = 2^(c - bias) texels, the threshold.
                         let edge = ((switch_over - bias) as f64).exp2() as f32 / size;
@@ -1387,6 +1471,61 @@ mod tests {
             }
         }
         assert!(claimed > checked / 10, "{claimed} of {checked}");
+    }
+
+    /// [`quick_log2_128`] is within 3.61e-4 of 128 log2 x (f64) for every f32 mantissa x in
+    /// [1, 2) (all 2^23 of them): the bound [`LodSelect::quick_lambda256`]'s proof takes
+    /// (the chords' 3.53e-4 and the roundings). It is nearly reached (the chords are the
+    /// estimate's error, not a slack).
+    #[test]
+    fn quick_log2_is_within_its_bound() {
+        let mut worst = 0f64;
+        for mantissa in 0..1u32 << 23 {
+            let bits = 0x3F80_0000 | mantissa;
+            let x = f32::from_bits(bits) as f64;
+            let err = (quick_log2_128(bits) as f64 - 128.0 * x.log2()).abs();
+            worst = worst.max(err);
+        }
+        assert!(worst <= 3.61e-4, "{worst:e}");
+        assert!(worst >= 3.0e-4, "{worst:e}");
+    }
+
+    /// Where [`LodSelect::quick_lambda256`] answers g, the exact 256 λ (f64: 128 log2 m +
+    /// 256 bias, no clamp) lies inside (g, g + 1), at least the margin less the estimate's
+    /// error (3.7e-4) from both ends: ρ² over the whole range of normal numbers (random
+    /// bits, values next to the steps) and every bias of `test_lod_selects` without a clamp.
+    #[test]
+    fn quick_lambdas_are_within_the_margin_of_the_exact_ones() {
+        let mut seed = 0x5851_F42D_4C95_7F2Du64;
+        let margin = QUICK_LOD_MARGIN * 256.0 - 3.7e-4;
+        let mut answered = 0;
+        for bias in [0.0f32, -16.0, -2.7, 0.3, 1.0, 16.0, 0.1234, -7.77] {
+            let mut lod = test_lod_selects()[0];
+            lod.bias = bias;
+            lod.min_lod = -1000.0;
+            lod.max_lod = 1000.0;
+            lod.quick = QuickTerms::new(bias, -1000.0, 1000.0);
+            for k in 0..200_000 {
+                let r = crate::test_support::xorshift(&mut seed);
+                let m = if k % 2 == 0 {
+                    f32::from_bits((r as u32 % 0x7F00_0000) + 0x0080_0000)
+                } else {
+                    // Within a few hundredths of a step of λ = j/256.
+                    let j = (r >> 32) as i64 % (60 * 256) - 30 * 256;
+                    let e = ((r >> 8) % 2001) as f64 / 2000.0 * 0.06 - 0.03;
+                    ((2.0 * ((j as f64 + e) / 256.0 - bias as f64)).exp2()) as f32
+                };
+                if let Some(g) = lod.quick_lambda256(m) {
+                    answered += 1;
+                    let exact = 128.0 * (m as f64).log2() + 256.0 * bias as f64 - g as f64;
+                    assert!(
+                        exact > margin && exact < 1.0 - margin,
+                        "m {m:e} bias {bias} g {g} exact {exact}"
+                    );
+                }
+            }
+        }
+        assert!(answered > 1_000_000, "{answered}");
     }
 
     /// The level plan from [`LodSelect::quick_lambda256`] and

@@ -722,10 +722,67 @@ pub(crate) mod x86 {
     }
 
     /// The block's coordinates (lanes outside `live` at 0) and, per quad (lanes 0 and 2),
-    /// the squared scaled lengths of its x and y derivatives for a `w` x `h` texture.
+    /// the squared scaled lengths of its x and y derivatives for a `w` x `h` texture: each
+    /// coordinate and derivative `finite_or_zero` of its f64 value rounded to f32 (what the
+    /// general route takes, unit test `block_coords_are_the_general_routes`). Computed
+    /// without that replacement, which changes nothing when every value used is finite; the
+    /// test for that runs beside the products and, when it fails (rarely: q near 0), the
+    /// block is recomputed with it ([`block_coords8_finite`]). (The replacement lay on the
+    /// way from the divisions to the texel addresses.)
     #[inline]
     #[target_feature(enable = "avx2")]
     pub(crate) fn block_coords8(
+        planes: &[[[f64; 3]; 3]; 2],
+        x: f64,
+        live: u8,
+        size: Option<[f32; 2]>,
+    ) -> (__m256, __m256, __m128, __m128) {
+        let xv = centres4(x);
+        // Lanes 0..4: the lower row (planes[0]); 4..8: the upper row.
+        let [s0, t0] = st_over_q4(&planes[0], xv);
+        let [s1, t1] = st_over_q4(&planes[1], xv);
+        let keep = lane_mask(live);
+        let s = _mm256_set_m128(_mm256_cvtpd_ps(s1), _mm256_cvtpd_ps(s0));
+        let t = _mm256_set_m128(_mm256_cvtpd_ps(t1), _mm256_cvtpd_ps(t0));
+        // f - f is +0 exactly when f is finite, else NaN: a sum of them is 0 when all are.
+        let spread = |v: __m256| _mm256_sub_ps(v, v);
+        let odd = _mm256_and_ps(_mm256_add_ps(spread(s), spread(t)), keep);
+        let mut bad =
+            _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_NEQ_UQ>(odd, _mm256_setzero_ps())) != 0;
+        let (mut ax, mut ay) = (_mm_setzero_ps(), _mm_setzero_ps());
+        if let Some([w, h]) = size {
+            // Quad q is columns 2q, 2q + 1: its x derivative from the upper row, its y
+            // derivative from the left column (in f64, then rounded as the lanes are), in
+            // lanes 0 (q = 0) and 2 (q = 1).
+            let dx = |v: __m256d| _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_permute_pd::<0b0101>(v), v));
+            let dy = |lo: __m256d, hi: __m256d| _mm256_cvtpd_ps(_mm256_sub_pd(hi, lo));
+            let (dsx, dtx, dsy, dty) = (dx(s1), dx(t1), dy(s0, s1), dy(t0, t1));
+            let spread = |v: __m128| _mm_sub_ps(v, v);
+            let odd = _mm_add_ps(
+                _mm_add_ps(spread(dsx), spread(dtx)),
+                _mm_add_ps(spread(dsy), spread(dty)),
+            );
+            bad |= _mm_movemask_ps(_mm_cmpneq_ps(odd, _mm_setzero_ps())) & 0b0101 != 0;
+            let (wv, hv) = (_mm_set1_ps(w), _mm_set1_ps(h));
+            let rho2 = |ds: __m128, dt: __m128| {
+                let (u, v) = (_mm_mul_ps(ds, wv), _mm_mul_ps(dt, hv));
+                _mm_add_ps(_mm_mul_ps(u, u), _mm_mul_ps(v, v))
+            };
+            ax = rho2(dsx, dtx);
+            ay = rho2(dsy, dty);
+        }
+        if bad {
+            return block_coords8_finite(planes, x, live, size);
+        }
+        (_mm256_and_ps(s, keep), _mm256_and_ps(t, keep), ax, ay)
+    }
+
+    /// [`block_coords8`] with each value that is not finite replaced by 0 as it is rounded
+    /// (`finite_f32`): for the blocks where one is not.
+    #[cold]
+    #[inline(never)]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn block_coords8_finite(
         planes: &[[[f64; 3]; 3]; 2],
         x: f64,
         live: u8,
@@ -758,12 +815,12 @@ pub(crate) mod x86 {
     }
 
     /// [`LodSelect::quick_lambda256`] of the ρ² of a block's two quads (lanes 0 and 1 of
-    /// `m`) at once, the same f64 operations in the same order: `floor(256 λ)` per quad and
-    /// a mask of the quads (bit 0, bit 1) where it decides the plan.
+    /// `m`) at once, the same f32 and integer operations in the same order: `floor(256 λ)`
+    /// per quad and a mask of the quads (bit 0, bit 1) where it decides the plan.
     #[inline]
     #[target_feature(enable = "avx2")]
     pub(crate) fn quick_lambda256x2(lod: &LodSelect, m: __m128) -> ([i32; 2], u8) {
-        use crate::texture::sample::{LOG2_SERIES, QUICK_LOD_MARGIN, SQRT_HALF_BITS};
+        use crate::texture::sample::{QUICK_LOD_MARGIN, QUICK_LOG2, QUICK_LOG2_CELLS};
         let m = _mm_castps_si128(m);
         // Positive normal numbers: 0x0080_0000 <= bits < 0x7F80_0000 (signed: negative
         // numbers fail).
@@ -771,37 +828,41 @@ pub(crate) mod x86 {
             _mm_cmpgt_epi32(m, _mm_set1_epi32(0x007F_FFFF)),
             _mm_cmpgt_epi32(_mm_set1_epi32(0x7F80_0000), m),
         );
-        let half_bits = _mm_set1_epi32(SQRT_HALF_BITS as i32);
-        let ix = _mm_sub_epi32(m, half_bits);
-        let k = _mm_cvtepi32_pd(_mm_srai_epi32::<23>(ix));
-        let xb = _mm_add_epi32(_mm_and_si128(ix, _mm_set1_epi32(0x007F_FFFF)), half_bits);
-        let x = _mm_cvtps_pd(_mm_castsi128_ps(xb));
-        let c = |v: f64| _mm_set1_pd(v);
-        let u = _mm_div_pd(_mm_sub_pd(x, c(1.0)), _mm_add_pd(x, c(1.0)));
-        let u2 = _mm_mul_pd(u, u);
-        let [c1, c3, c5, c7] = LOG2_SERIES;
-        let inner = _mm_add_pd(c(c5), _mm_mul_pd(u2, c(c7)));
-        let inner = _mm_add_pd(c(c3), _mm_mul_pd(u2, inner));
-        let log2x = _mm_mul_pd(u, _mm_add_pd(c(c1), _mm_mul_pd(u2, inner)));
-        let (bias, min_lod, max_lod) = lod.lambda_terms();
-        let lambda = _mm_add_pd(_mm_mul_pd(_mm_add_pd(k, log2x), c(0.5)), c(bias as f64));
-        let lambda = _mm_max_pd(_mm_min_pd(lambda, c(max_lod as f64)), c(min_lod as f64));
-        let g = _mm_mul_pd(lambda, c(256.0));
-        let f = _mm_floor_pd(g);
-        let frac = _mm_sub_pd(g, f);
-        let margin = QUICK_LOD_MARGIN * 256.0;
-        let abs = _mm_andnot_pd(c(-0.0), f);
-        let ok = _mm_and_pd(
-            _mm_and_pd(
-                _mm_cmpgt_pd(frac, c(margin)),
-                _mm_cmplt_pd(frac, c(1.0 - margin)),
-            ),
-            _mm_cmplt_pd(abs, c((1 << 24) as f64)),
+        // `quick_log2_128` of lanes 0 and 1: the cells' chords.
+        let cell = |bits: i32| QUICK_LOG2[(bits as u32 >> 15) as usize & (QUICK_LOG2_CELLS - 1)];
+        let [t0, s0] = cell(_mm_cvtsi128_si32(m));
+        let [t1, s1] = cell(_mm_extract_epi32::<1>(m));
+        let phi = _mm_mul_ps(
+            _mm_cvtepi32_ps(_mm_and_si128(m, _mm_set1_epi32(0x7FFF))),
+            _mm_set1_ps(1.0 / 32768.0),
         );
-        let mask = _mm_movemask_pd(ok) & _mm_movemask_ps(_mm_castsi128_ps(normal)) & 3;
-        let gi = _mm_cvttpd_epi32(f);
+        let h = _mm_add_ps(
+            _mm_set_ps(0.0, 0.0, t1, t0),
+            _mm_mul_ps(phi, _mm_set_ps(0.0, 0.0, s1, s0)),
+        );
+        let q = lod.quick_terms();
+        let v = _mm_add_ps(h, _mm_set1_ps(q.bias_frac));
+        let f = _mm_floor_ps(v);
+        let frac = _mm_sub_ps(v, f);
+        let margin = (QUICK_LOD_MARGIN * 256.0) as f32;
+        let e = _mm_sub_epi32(_mm_srli_epi32::<23>(m), _mm_set1_epi32(127));
+        let g = _mm_add_epi32(
+            _mm_add_epi32(_mm_cvttps_epi32(f), _mm_slli_epi32::<7>(e)),
+            _mm_set1_epi32(q.bias_int),
+        );
+        // lo <= g <= hi (|lo|, |hi| <= 2^30).
+        let inside = _mm_and_si128(
+            _mm_cmpgt_epi32(g, _mm_set1_epi32(q.lo - 1)),
+            _mm_cmpgt_epi32(_mm_set1_epi32(q.hi + 1), g),
+        );
+        let ok = _mm_and_ps(
+            _mm_cmpgt_ps(frac, _mm_set1_ps(margin)),
+            _mm_cmplt_ps(frac, _mm_set1_ps(1.0 - margin)),
+        );
+        let ok = _mm_and_ps(ok, _mm_castsi128_ps(_mm_and_si128(normal, inside)));
+        let mask = _mm_movemask_ps(ok) & 3;
         (
-            [_mm_cvtsi128_si32(gi), _mm_extract_epi32::<1>(gi)],
+            [_mm_cvtsi128_si32(g), _mm_extract_epi32::<1>(g)],
             mask as u8,
         )
     }
@@ -1298,6 +1359,100 @@ pub(crate) mod x86 {
 
 #[cfg(test)]
 mod tests {
+
+    /// `block_coords8` gives the general route's coordinates and ρ² (`Perspective8::
+    /// texels_block` when the block kernel declines): per lane s/q and t/q in f64
+    /// (`perspective_block8`) rounded to f32 with a value that is not finite as 0, lanes
+    /// outside `live` 0; per quad the x derivative from the upper row, the y derivative
+    /// from the left column, each rounded and fixed up alike, and `(ds w)² + (dt h)²`. Bit
+    /// for bit, over random planes and planes whose q passes through 0 inside the block or
+    /// whose s is huge (values that overflow f32, NaN), every `live` mask.
+    #[test]
+    #[cfg(target_arch = "x86_64")]
+    fn block_coords_are_the_general_routes() {
+        use std::arch::x86_64::*;
+        if !crate::common::cpu::available() {
+            return;
+        }
+        let fix = |v: f64| {
+            let f = v as f32;
+            if f.is_finite() {
+                f
+            } else {
+                0.0
+            }
+        };
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        let mut unit = move || {
+            let r = crate::test_support::xorshift(&mut seed);
+            (r >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let (w, h) = (256.0f32, 64.0f32);
+        let mut odd = 0;
+        for k in 0..20_000 {
+            let x = 2.0 * (unit() * 50.0).round() + 0.5;
+            let mut planes = [[[0f64; 3]; 3]; 2];
+            let coef = [unit() * 0.1, unit() * 0.1, unit() * 4.0];
+            for (row, p) in planes.iter_mut().enumerate() {
+                let y = 7.5 + row as f64;
+                for (j, plane) in p.iter_mut().enumerate() {
+                    let (a, b, c) = (unit(), unit(), unit() * 3.0);
+                    *plane = [a, b * y, c];
+                    if j == 2 {
+                        // q: positive, or through 0 near the block.
+                        *plane = match k % 4 {
+                            0 => [coef[0] * 0.01, coef[1] * 0.01 * y, 1.0 + coef[2].abs()],
+                            1 => [1.0, 0.0, -(x + (k % 5) as f64)],
+                            _ => [coef[0] * 0.01, 0.0, 0.5 + unit().abs()],
+                        };
+                    }
+                }
+                match k % 7 {
+                    // s of a size that overflows f32 (its differences too).
+                    2 => p[0][2] = 1e39 * unit(),
+                    3 => p[1][0] = f64::NAN,
+                    4 if row == 1 => p[0][2] = 1e300,
+                    _ => {}
+                }
+            }
+            let live = (unit().abs() * 256.0) as u8 | ((k % 3 == 0) as u8 * 0xFF);
+            let [vs, vt] = super::perspective_block8(&planes, x).unwrap();
+            // SAFETY: AVX2 is present (checked above).
+            let (s, t, ax, ay) =
+                unsafe { super::x86::block_coords8(&planes, x, live, Some([w, h])) };
+            let (mut so, mut to, mut axo, mut ayo) = ([0f32; 8], [0f32; 8], [0f32; 4], [0f32; 4]);
+            // SAFETY: eight and four f32; unaligned stores.
+            unsafe {
+                _mm256_storeu_ps(so.as_mut_ptr(), s);
+                _mm256_storeu_ps(to.as_mut_ptr(), t);
+                _mm_storeu_ps(axo.as_mut_ptr(), ax);
+                _mm_storeu_ps(ayo.as_mut_ptr(), ay);
+            }
+            for j in 0..8 {
+                let on = live & (1 << j) != 0;
+                let (es, et) = if on {
+                    (fix(vs[j]), fix(vt[j]))
+                } else {
+                    (0.0, 0.0)
+                };
+                odd += (on && !(vs[j] as f32).is_finite()) as usize;
+                assert_eq!(so[j].to_bits(), es.to_bits(), "s lane {j} k {k}");
+                assert_eq!(to[j].to_bits(), et.to_bits(), "t lane {j} k {k}");
+            }
+            let rho2 = |ds: f32, dt: f32| {
+                let (u, v) = (ds * w, dt * h);
+                u * u + v * v
+            };
+            for q in 0..2 {
+                let (l, r) = (2 * q, 2 * q + 1);
+                let ex = rho2(fix(vs[4 + r] - vs[4 + l]), fix(vt[4 + r] - vt[4 + l]));
+                let ey = rho2(fix(vs[4 + l] - vs[l]), fix(vt[4 + l] - vt[l]));
+                assert_eq!(axo[l].to_bits(), ex.to_bits(), "ax quad {q} k {k}");
+                assert_eq!(ayo[l].to_bits(), ey.to_bits(), "ay quad {q} k {k}");
+            }
+        }
+        assert!(odd > 1000, "{odd}");
+    }
 
     /// `quick_lambda256x2` gives `LodSelect::quick_lambda256` for both quads (lanes 0 and
     /// 1), bit patterns over the whole range (NaN, infinities, zeros, subnormal and negative

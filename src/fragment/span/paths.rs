@@ -507,71 +507,177 @@ pub fn pair_sampled8<'a>(
             return pair_fused(ds, tile, pairs, it, fused, single, &tail);
         }
     }
-    let Sampled8 {
-        mut samplers,
-        single,
-        tail,
-        mut by_unit,
-    } = Sampled8::new(ds, it, first_y, true);
-    let mut samplers_y = first_y;
-    let mut byte_env = ds.key.byte_env && crate::common::cpu::available();
+    let s = Sampled8::new(ds, it, first_y, true);
+    let byte_env = ds.key.byte_env && crate::common::cpu::available();
     // A constant primary colour (every lane's in every block, `LaneMath::constant`) is
     // converted to bytes once for the primitive; one that is not converted bytes keeps the
-    // primitive on the f32 route (`byte_block` would answer `None` at every block).
+    // primitive off the byte route (`byte_block` would answer `None` at every block).
     #[cfg(target_arch = "x86_64")]
     let mut constant_words = None;
+    #[cfg(target_arch = "x86_64")]
+    let mut byte_env = byte_env;
     #[cfg(target_arch = "x86_64")]
     if let (true, Some(c)) = (byte_env, constant_primary(it)) {
         // SAFETY: AVX2 is present (`byte_env` checked it).
         constant_words = unsafe { crate::fragment::bytenv::exact_words(&c.map(|v| [v; 8]), 0xFF) };
         byte_env = constant_words.is_some();
     }
-    let fused = fused_unit(ds, single);
-    // A cascade of `GL_COMBINE` units in straight-line form (`cascade::Chain`), every unit
-    // on a 2D texture's block sampler: blocks in one go (`chain_block`).
-    let chain = chain_of(ds);
-    let n = ds.units.len();
-    let chained = |samplers: &[Option<Perspective8>; MAX_TEXTURE_UNITS]| {
-        chain.is_some()
-            && samplers[..n]
-                .iter()
-                .all(|s| s.as_ref().is_some_and(|s| s.cube.is_none()))
+    let mut blocks = SampledBlocks::<{ sampled_route::GENERAL }> {
+        ds,
+        it,
+        fused: fused_unit(ds, s.single),
+        s,
+        samplers_y: first_y,
+        ready: false,
+        // A cascade of `GL_COMBINE` units in straight-line form (`cascade::Chain`), every
+        // unit on a 2D texture's block sampler: blocks in one go (`chain_block`).
+        chain: chain_of(ds),
+        program: program_of(ds),
+        byte_env,
+        #[cfg(target_arch = "x86_64")]
+        constant_words,
     };
-    let mut chain_ready = chained(&samplers);
-    for_each_block(ds, tile, pairs, it, |y, gx, group| {
-        if y != samplers_y {
-            Sampled8::place_samplers(&mut samplers, ds, it, y, true);
-            samplers_y = y;
-            chain_ready = chained(&samplers);
+    blocks.ready = blocks.all_2d();
+    // The route the blocks try first, fixed for the primitive so that the block loop holds
+    // only its kernel (the others, and the general route, are out of line).
+    if blocks.chain.is_some() {
+        shade_blocks(
+            ds,
+            tile,
+            pairs,
+            it,
+            blocks.route::<{ sampled_route::CHAIN }>(),
+        );
+    } else if blocks.byte_env {
+        shade_blocks(
+            ds,
+            tile,
+            pairs,
+            it,
+            blocks.route::<{ sampled_route::BYTES }>(),
+        );
+    } else if blocks.program.is_some() {
+        shade_blocks(
+            ds,
+            tile,
+            pairs,
+            it,
+            blocks.route::<{ sampled_route::PROGRAM }>(),
+        );
+    } else {
+        shade_blocks(ds, tile, pairs, it, blocks);
+    }
+}
+
+/// The block routes of [`SampledBlocks`]: which kernel a primitive's blocks try first.
+mod sampled_route {
+    /// The general block route (each unit's `texels_block`, then `sampled8_shade`).
+    pub const GENERAL: u8 = 0;
+    /// `chain_block`.
+    pub const CHAIN: u8 = 1;
+    /// `byte_block`.
+    pub const BYTES: u8 = 2;
+    /// `program_block`.
+    pub const PROGRAM: u8 = 3;
+}
+
+/// How [`program_block`] runs a draw's cascade on registers: every unit `MODULATE` (the
+/// products of `environment8`'s MODULATE form), or the compiled program.
+#[derive(Clone, Copy)]
+enum Cascade8<'a> {
+    Modulate,
+    Program(&'a crate::fragment::cascade::Program),
+}
+
+/// The cascade form of [`program_block`] for a draw of two units or more with AVX2, as
+/// `environment8` chooses it (every unit `MODULATE` first, else the compiled program).
+fn program_of(ds: &FragmentDraw) -> Option<Cascade8<'_>> {
+    if ds.units.len() < 2 || !crate::common::cpu::available() {
+        return None;
+    }
+    if ds.units.iter().all(|u| u.env.mode == TexEnvMode::Modulate) {
+        return Some(Cascade8::Modulate);
+    }
+    ds.cascade.as_ref().map(Cascade8::Program)
+}
+
+/// [`pair_sampled8`]'s blocks (a type, not a closure, so that the block loop holds only the
+/// primitive's route, `ROUTE` of [`sampled_route`], with the rest out of line in
+/// [`SampledBlocks::slow`]): each unit's block sampler on the current row pair, the tail and
+/// what the routes need.
+struct SampledBlocks<'a, 'i, const ROUTE: u8> {
+    ds: &'a FragmentDraw,
+    it: &'i Interpolants<'a>,
+    s: Sampled8<'a>,
+    samplers_y: i32,
+    /// Every unit's sampler of the row pair is present and 2D (`chain_block` and
+    /// `program_block` take them).
+    ready: bool,
+    fused: Option<Fused<'a>>,
+    chain: Option<&'a crate::fragment::cascade::Chain>,
+    program: Option<Cascade8<'a>>,
+    byte_env: bool,
+    #[cfg(target_arch = "x86_64")]
+    constant_words: Option<std::arch::x86_64::__m256i>,
+}
+
+impl<'a, 'i, const ROUTE: u8> SampledBlocks<'a, 'i, ROUTE> {
+    /// The same blocks on route `R`.
+    #[inline(always)]
+    fn route<const R: u8>(self) -> SampledBlocks<'a, 'i, R> {
+        SampledBlocks {
+            ds: self.ds,
+            it: self.it,
+            s: self.s,
+            samplers_y: self.samplers_y,
+            ready: self.ready,
+            fused: self.fused,
+            chain: self.chain,
+            program: self.program,
+            byte_env: self.byte_env,
+            #[cfg(target_arch = "x86_64")]
+            constant_words: self.constant_words,
         }
+    }
+
+    /// Whether every unit's sampler is present and 2D.
+    #[inline(always)]
+    fn all_2d(&self) -> bool {
+        self.s.samplers[..self.ds.units.len()]
+            .iter()
+            .all(|s| s.as_ref().is_some_and(|s| s.cube.is_none()))
+    }
+
+    /// A block that the route's kernel did not take (kept out of the block loop): the other
+    /// block kernels that apply, else each unit's texels by `texels_block` (one by one where
+    /// it does not apply) and [`sampled8_shade`]. The same pixels as the rows one by one.
+    #[inline(never)]
+    fn slow(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        let ds = self.ds;
         #[cfg(target_arch = "x86_64")]
-        if let (true, Some(chain)) = (chain_ready, chain) {
-            // SAFETY: AVX2 is present (`chain_of` checked it).
-            if let Some(done) = unsafe { chain_block(chain, &samplers[..n], &tail, gx, group) } {
-                return Some(done);
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        if byte_env {
-            // SAFETY: AVX2 is present (`byte_env` checked it).
-            if let Some(done) =
-                unsafe { byte_block(ds, &samplers, &tail, gx, group, constant_words) }
-            {
-                return Some(done);
-            }
-        }
-        #[cfg(target_arch = "x86_64")]
-        if let (Some(fused), Some(sampler)) = (fused, &samplers[0]) {
+        if let (Some(fused), Some(sampler)) = (self.fused, &self.s.samplers[0]) {
             // SAFETY: AVX2 is present (`fused_unit` checked it).
-            if let Some(done) = unsafe { fused_block(fused, sampler, &tail, gx, group) } {
+            if let Some(done) = unsafe { fused_block(fused, sampler, &self.s.tail, gx, group) } {
                 return Some(done);
             }
         }
+        #[cfg(target_arch = "x86_64")]
+        if let (true, Some(program)) = (ROUTE != sampled_route::PROGRAM && self.ready, self.program)
+        {
+            let n = ds.units.len();
+            // SAFETY: AVX2 is present (`program_of` checked it).
+            if let Some(done) = unsafe {
+                program_block(ds, program, &self.s.samplers[..n], &self.s.tail, gx, group)
+            } {
+                return Some(done);
+            }
+        }
+        let it = self.it;
         for (k, unit) in ds.units.iter().enumerate() {
-            let Some(out) = by_unit[unit.unit].as_mut() else {
+            let Some(out) = self.s.by_unit[unit.unit].as_mut() else {
                 continue;
             };
-            if samplers[k]
+            if self.s.samplers[k]
                 .as_ref()
                 .is_some_and(|p| p.texels_block(gx as f64 + 0.5, group.pass, out))
             {
@@ -585,8 +691,147 @@ pub fn pair_sampled8<'a>(
                 }
             }
         }
-        sampled8_shade(ds, single, &tail, group, &by_unit)
-    });
+        sampled8_shade(ds, self.s.single, &self.s.tail, group, &self.s.by_unit)
+    }
+}
+
+impl<const ROUTE: u8> BlockShade for SampledBlocks<'_, '_, ROUTE> {
+    #[inline(always)]
+    fn shade(&mut self, y: i32, gx: i32, group: &GroupInputs) -> Option<([u32; 8], u8)> {
+        if y != self.samplers_y {
+            Sampled8::place_samplers(&mut self.s.samplers, self.ds, self.it, y, true);
+            self.samplers_y = y;
+            self.ready = self.all_2d();
+        }
+        #[cfg(target_arch = "x86_64")]
+        {
+            let n = self.ds.units.len();
+            if ROUTE == sampled_route::CHAIN && self.ready {
+                if let Some(chain) = self.chain {
+                    // SAFETY: AVX2 is present (`chain_of` checked it).
+                    let done = unsafe {
+                        chain_block(chain, &self.s.samplers[..n], &self.s.tail, gx, group)
+                    };
+                    if done.is_some() {
+                        return done;
+                    }
+                }
+            }
+            if ROUTE == sampled_route::BYTES {
+                // SAFETY: AVX2 is present (`byte_env` checked it).
+                let done = unsafe {
+                    byte_block(
+                        self.ds,
+                        &self.s.samplers,
+                        &self.s.tail,
+                        gx,
+                        group,
+                        self.constant_words,
+                    )
+                };
+                if done.is_some() {
+                    return done;
+                }
+            }
+            if ROUTE == sampled_route::PROGRAM && self.ready {
+                if let Some(program) = self.program {
+                    // SAFETY: AVX2 is present (`program_of` checked it).
+                    let done = unsafe {
+                        program_block(
+                            self.ds,
+                            program,
+                            &self.s.samplers[..n],
+                            &self.s.tail,
+                            gx,
+                            group,
+                        )
+                    };
+                    if done.is_some() {
+                        return done;
+                    }
+                }
+            }
+        }
+        self.slow(y, gx, group)
+    }
+}
+
+/// A block of a draw of two units or more ([`program_of`]) with every unit's texels in
+/// registers: each unit's texels as `texels_block` filters them (`block_words8`), the
+/// cascade as `environment8` runs it (the MODULATE products, or `Program::run_regs`: the
+/// bits of `Program::run_avx2`) and the tail with the result as a replacing texel, as
+/// `sampled8_shade` runs them; texels the program does not read are not sampled. `None`
+/// (the caller takes the general block route: the same pixels) where a unit's block filter
+/// does not take the block. `samplers`: the draw's units' samplers, every one present and 2D.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn program_block(
+    ds: &FragmentDraw,
+    cascade: Cascade8,
+    samplers: &[Option<Perspective8>],
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    use std::arch::x86_64::*;
+    use texture_simd::x86::{block_words8, texels_of_words};
+    let x = gx as f64 + 0.5;
+    let zero = _mm256_setzero_ps();
+    let texels = |k: usize| -> Option<[__m256; 4]> {
+        let s = samplers.get(k)?.as_ref()?;
+        Some(
+            match block_words8(&s.planes, x, group.pass, s.fixed_plan, s.lod, s.levels)? {
+                (words, Some(level)) => texels_of_words(level, words),
+                (_, None) => [zero; 4],
+            },
+        )
+    };
+    let color = match cascade {
+        Cascade8::Modulate => {
+            // `modulate8_avx2`: the clamped primary colour times each unit's texel where its
+            // base format has colour and alpha, unit after unit.
+            let (one, mut color) = (_mm256_set1_ps(1.0), [zero; 4]);
+            for (c, v) in color.iter_mut().enumerate() {
+                // SAFETY: eight f32; unaligned load.
+                let p = unsafe { _mm256_loadu_ps(group.primary[c].as_ptr()) };
+                // As `clamp01`: max_ps answers 0 for NaN.
+                *v = _mm256_min_ps(_mm256_max_ps(p, zero), one);
+            }
+            for (k, u) in ds.units.iter().enumerate() {
+                let t = texels(k)?;
+                let (has_color, has_alpha) = crate::fragment::bytenv::has_color_alpha(u.base);
+                if has_color {
+                    for c in 0..3 {
+                        color[c] = _mm256_mul_ps(color[c], t[c]);
+                    }
+                }
+                if has_alpha {
+                    color[3] = _mm256_mul_ps(color[3], t[3]);
+                }
+            }
+            color
+        }
+        Cascade8::Program(program) => {
+            let mut regs = [[zero; 4]; MAX_TEXTURE_UNITS];
+            let mut n = 0;
+            for (slot, unit) in regs.iter_mut().zip(program.texel_units()) {
+                let k = ds.units.iter().position(|u| u.unit == unit)?;
+                *slot = texels(k)?;
+                n += 1;
+            }
+            program.run_regs(&group.primary, &regs[..n])
+        }
+    };
+    // The tail of a cascade of two units or more (no `modulate`, `rgb_from_primary` or
+    // `alpha_from_primary`) reads no primary colour.
+    Some(simd::shade8_regs(
+        tail,
+        &group.primary,
+        &color,
+        &group.dst,
+        group.pass,
+        &group.after,
+    ))
 }
 
 /// How [`pair_sampled8`] shades the blocks of a one-unit draw in one go ([`fused_block`]):
@@ -818,13 +1063,15 @@ fn byte_block(
     };
     let x = gx as f64 + 0.5;
     if let Some(bytes) = ds.cascade.as_ref().and_then(|p| p.bytes()) {
-        // The cascade compiled for the draw: the primary colour and each unit's texel words.
-        let mut inputs = [primary; MAX_TEXTURE_UNITS + 1];
-        let n = ds.units.len();
-        for (input, sampler) in inputs[1..].iter_mut().zip(&samplers[..n]) {
-            *input = sampler.as_ref()?.block_bytes(x, group.pass)?;
-        }
-        let rgba = bytes.run(&inputs[..=n]);
+        // The cascade compiled for the draw: the primary colour and each unit's texel words
+        // (in an array of the draw's length where it is short: no stores of unused entries).
+        let samplers = &samplers[..ds.units.len()];
+        let rgba = match samplers.len() {
+            1 => byte_inputs::<2>(bytes, primary, samplers, x, group.pass)?,
+            2 => byte_inputs::<3>(bytes, primary, samplers, x, group.pass)?,
+            3 => byte_inputs::<4>(bytes, primary, samplers, x, group.pass)?,
+            _ => byte_inputs::<{ MAX_TEXTURE_UNITS + 1 }>(bytes, primary, samplers, x, group.pass)?,
+        };
         return Some(simd::shade8_bytes(tail, rgba, &group.dst, group.pass));
     }
     let mut by_unit = [None; MAX_TEXTURE_UNITS];
@@ -834,6 +1081,27 @@ fn byte_block(
     Some(crate::fragment::bytenv::shade(
         ds, tail, primary, &by_unit, &group.dst, group.pass,
     ))
+}
+
+/// [`byte_block`]'s compiled cascade (`Bytes::run`) on the primary colour's words `primary`
+/// and the texel words of the draw's units' `samplers` (`N` at least one more than there
+/// are: the inputs in an array of about the draw's length, without stores of unused
+/// entries); `None` where a unit's block sampler does not take the block.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+#[target_feature(enable = "avx2")]
+fn byte_inputs<const N: usize>(
+    bytes: &crate::fragment::bytenv::Bytes,
+    primary: std::arch::x86_64::__m256i,
+    samplers: &[Option<Perspective8>],
+    x: f64,
+    live: u8,
+) -> Option<std::arch::x86_64::__m256i> {
+    let mut inputs = [primary; N];
+    for (input, sampler) in inputs[1..].iter_mut().zip(samplers) {
+        *input = sampler.as_ref()?.block_bytes(x, live)?;
+    }
+    Some(bytes.run(&inputs[..=samplers.len().min(N - 1)]))
 }
 
 /// A specialised path for simple keys (no alpha test, stencil, blending or logic op): depth
