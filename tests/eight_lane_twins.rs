@@ -284,7 +284,7 @@ fn texgen(gl: &mut Context, mode: GLenum) {
 /// draws it.
 #[test]
 fn cube_maps_on_eight_lane_paths_match_the_general_path() {
-    let states: [Setup; 7] = [
+    let states: [Setup; 9] = [
         (
             "RGB, bilinear, reflection map, lit (the workload)",
             |gl, rng| {
@@ -424,6 +424,37 @@ fn cube_maps_on_eight_lane_paths_match_the_general_path() {
             gl.alpha_func(GL_GREATER, 0.3);
             strip(gl, rng, false, false);
         }),
+        ("RGBA cube map, COMBINE INTERPOLATE, lit", |gl, rng| {
+            cube_map(
+                gl,
+                rng,
+                GL_RGBA,
+                16,
+                [GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE],
+            );
+            texgen(gl, GL_REFLECTION_MAP);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_INTERPOLATE as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_TEXTURE as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_PRIMARY_COLOR as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_SOURCE2_RGB, GL_CONSTANT as i32);
+            gl.tex_envi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_SUBTRACT as i32);
+            gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.6, 0.5, 0.4, 0.3]);
+            gl.enable(GL_LIGHTING);
+            gl.enable(GL_LIGHT0);
+            gl.lightfv(GL_LIGHT0, GL_POSITION, &[0.4, 1.0, 0.8, 0.0]);
+            strip(gl, rng, false, false);
+        }),
+        (
+            "RGB cube map, BLEND environment, nearest, normal map",
+            |gl, rng| {
+                cube_map(gl, rng, GL_RGB, 16, [GL_NEAREST, GL_NEAREST, GL_REPEAT]);
+                texgen(gl, GL_NORMAL_MAP);
+                gl.tex_envi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND as i32);
+                gl.tex_envfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, &[0.2, 0.9, 0.4, 0.7]);
+                strip(gl, rng, true, false);
+            },
+        ),
     ];
     twins(&states);
 }

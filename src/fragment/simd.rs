@@ -304,7 +304,8 @@ pub fn fog_factors8(
 
 #[cfg(target_arch = "x86_64")]
 pub(crate) use x86::{
-    block_combined8, depth8 as depth8_avx2, pack_words, shade8_bytes, shade8_regs, to_u8,
+    block_combined8, combined8_regs, depth8 as depth8_avx2, pack_words, shade8_bytes, shade8_regs,
+    to_u8,
 };
 
 #[cfg(target_arch = "x86_64")]
@@ -1047,6 +1048,7 @@ mod x86 {
         dst: &[u32; 8],
         after: &After8,
     ) -> Option<([u32; 8], u8)> {
+        // (The body of `combined8_regs` written out again: called, it stays out of line.)
         let mut texel = [[_mm256_setzero_ps(); 4]; 1];
         let reads = program.texel_units().next().is_some();
         if reads {
@@ -1070,6 +1072,37 @@ mod x86 {
             None => program.run_regs(primary, &texel[..usize::from(reads)]),
         };
         Some(shade8_regs(tail, primary, &color, dst, live, after))
+    }
+
+    /// The program and the tail of [`block_combined8`] on the unit's texels `texel` (in
+    /// registers; read only when the program reads a texel), for the cube-map blocks: the
+    /// program by `Program::run_avx2` (the bits of `Single::run` and `run_regs`; called
+    /// here, those two would no longer be inlined into [`block_combined8`]).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(crate) fn combined8_regs(
+        program: &Program,
+        texel: [__m256; 4],
+        tail: &Tail8,
+        primary: &[[f32; 8]; 4],
+        dst: &[u32; 8],
+        live: u8,
+        after: &After8,
+    ) -> ([u32; 8], u8) {
+        let mut by_unit = [None; MAX_TEXTURE_UNITS];
+        if let Some(unit) = program.texel_units().next() {
+            let mut t = [[0f32; 8]; 4];
+            for (o, v) in t.iter_mut().zip(texel) {
+                // SAFETY: eight f32; unaligned store.
+                unsafe { _mm256_storeu_ps(o.as_mut_ptr(), v) };
+            }
+            by_unit[unit] = Some(t);
+        }
+        let color = program.run_avx2(primary, &by_unit);
+        // SAFETY: eight f32 each; unaligned loads.
+        let color = color.map(|c| unsafe { _mm256_loadu_ps(c.as_ptr()) });
+        shade8_regs(tail, primary, &color, dst, live, after)
     }
 
     #[target_feature(enable = "avx2")]

@@ -1068,6 +1068,25 @@ pub(crate) mod x86 {
         r: &[[f64; 3]; 2],
         x: f64,
     ) -> ([u32; 8], [f32; 8], [f32; 8]) {
+        let (face, s, t) = cube_block_faces8_regs(planes, r, x);
+        let (mut fo, mut so, mut to) = ([0u32; 8], [0f32; 8], [0f32; 8]);
+        // SAFETY: eight u32 / f32 each; unaligned stores.
+        unsafe {
+            _mm256_storeu_si256(fo.as_mut_ptr() as *mut __m256i, face);
+            _mm256_storeu_ps(so.as_mut_ptr(), s);
+            _mm256_storeu_ps(to.as_mut_ptr(), t);
+        }
+        (fo, so, to)
+    }
+
+    /// [`cube_block_faces8`] with the faces, s and t left in registers.
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub fn cube_block_faces8_regs(
+        planes: &[[[f64; 3]; 3]; 2],
+        r: &[[f64; 3]; 2],
+        x: f64,
+    ) -> (__m256i, __m256, __m256) {
         let xv = centres4(x);
         let eval = |p: &[f64; 3]| {
             let (a, by, c) = (
@@ -1139,14 +1158,7 @@ pub(crate) mod x86 {
         let big = _mm256_cmp_ps::<_CMP_GT_OQ>(ma, zero);
         let s = pick(big, coord(sc), half);
         let t = pick(big, coord(tc), half);
-        let (mut fo, mut so, mut to) = ([0u32; 8], [0f32; 8], [0f32; 8]);
-        // SAFETY: eight u32 / f32 each; unaligned stores.
-        unsafe {
-            _mm256_storeu_si256(fo.as_mut_ptr() as *mut __m256i, face);
-            _mm256_storeu_ps(so.as_mut_ptr(), s);
-            _mm256_storeu_ps(to.as_mut_ptr(), t);
-        }
-        (fo, so, to)
+        (face, s, t)
     }
 
     #[inline]

@@ -1055,7 +1055,7 @@ fn fused_block(
     group: &GroupInputs,
 ) -> Option<([u32; 8], u8)> {
     if sampler.cube.is_some() {
-        return None;
+        return fused_cube_block(fused, sampler, tail, gx, group);
     }
     let x = gx as f64 + 0.5;
     match fused {
@@ -1085,6 +1085,42 @@ fn fused_block(
             &group.after,
         ),
     }
+}
+
+/// [`fused_block`] for a cube map with a fixed level plan: its texels in registers
+/// (`cube_block_regs`, the texels `texels_block` gives), then the tail or the program on
+/// them. Out of line, so that the 2D blocks' code in `fused_block` stays as it was.
+#[cfg(target_arch = "x86_64")]
+#[inline(never)]
+#[target_feature(enable = "avx2")]
+fn fused_cube_block(
+    fused: Fused,
+    sampler: &Perspective8,
+    tail: &Tail8,
+    gx: i32,
+    group: &GroupInputs,
+) -> Option<([u32; 8], u8)> {
+    let x = gx as f64 + 0.5;
+    let tex = sampler.cube_block_regs(x, group.pass)?;
+    Some(match fused {
+        Fused::Tail => simd::shade8_regs(
+            tail,
+            &group.primary,
+            &tex,
+            &group.dst,
+            group.pass,
+            &group.after,
+        ),
+        Fused::Program(program) => simd::combined8_regs(
+            program,
+            tex,
+            tail,
+            &group.primary,
+            &group.dst,
+            group.pass,
+            &group.after,
+        ),
+    })
 }
 
 /// The chain form of a draw's cascade (`cascade::Chain`: two or more `GL_COMBINE` units,

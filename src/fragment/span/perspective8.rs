@@ -431,6 +431,56 @@ impl Perspective8<'_> {
         self.cube_filter(cube, &coords, &grads, live, out)
     }
 
+    /// [`Perspective8::texels_block`] for a cube map with a fixed level plan, the texels left
+    /// in registers: the eight lanes' faces and face coordinates at once
+    /// (`cube_block_faces8_regs`), then the lanes of each face filtered together
+    /// (`filter8_regs`, what `filter8` stores) and merged by lane mask, as
+    /// [`Perspective8::cube_block`] gives them through `cube_faces_filter` (the same faces,
+    /// groups, filter and texels at every lane of `live`; the other lanes are any value).
+    /// `None` for a 2D texture, without a fixed plan, or where `cube_block` would answer
+    /// `None` (the caller then takes the usual route, which gives the same texels). The
+    /// caller checked that the processor has AVX2.
+    #[cfg(target_arch = "x86_64")]
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    pub(super) fn cube_block_regs(
+        &self,
+        x: f64,
+        live: u8,
+    ) -> Option<[std::arch::x86_64::__m256; 4]> {
+        use std::arch::x86_64::*;
+        use texture_simd::x86::{cube_block_faces8_regs, filter8_regs, lane_mask};
+        let cube = self.cube.as_ref()?;
+        let (level, linear) = self.fixed_plan?;
+        let (face, s, t) = cube_block_faces8_regs(&self.planes, &cube.r, x);
+        let mut faces = [0u32; 8];
+        // SAFETY: eight u32; unaligned store.
+        unsafe { _mm256_storeu_si256(faces.as_mut_ptr() as *mut __m256i, face) };
+        let lanes_of = |f: u32| {
+            let eq = _mm256_cmpeq_epi32(face, _mm256_set1_epi32(f as i32));
+            _mm256_movemask_ps(_mm256_castsi256_ps(eq)) as u8
+        };
+        let filter = |f: u32| {
+            let lvl = cube.faces.get(f as usize)?.get(level)?.as_ref()?;
+            filter8_regs(lvl, linear, s, t)
+        };
+        let first = faces[live.trailing_zeros() as usize & 7];
+        let mut lanes = lanes_of(first) & live;
+        let mut out = filter(first)?;
+        let mut left = live & !lanes;
+        while left != 0 {
+            let f = faces[left.trailing_zeros() as usize];
+            lanes = lanes_of(f) & left;
+            left &= !lanes;
+            let texels = filter(f)?;
+            let m = lane_mask(lanes);
+            for (o, v) in out.iter_mut().zip(texels) {
+                *o = _mm256_blendv_ps(*o, v, m);
+            }
+        }
+        Some(out)
+    }
+
     /// The texels of a cube map at the lanes' directions `coords` (lanes set in `live`), as
     /// `BoundTexture::sample_grad` samples each: the face and its coordinates by
     /// `cube_face`, λ from the quad's derivatives `grads` projected on that face (unless the
