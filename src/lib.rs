@@ -73,4 +73,21 @@ pub(crate) mod test_support {
         *state ^= *state << 17;
         *state
     }
+
+    /// Every depth-test setting of the eight-lane tests: none (no depth test) and each
+    /// comparison function.
+    pub const DEPTH_FUNCS: [Option<crate::common::values::CompareFunc>; 9] = {
+        use crate::common::values::CompareFunc::*;
+        [
+            None,
+            Some(Never),
+            Some(Less),
+            Some(Equal),
+            Some(LessEqual),
+            Some(Greater),
+            Some(NotEqual),
+            Some(GreaterEqual),
+            Some(Always),
+        ]
+    };
 }

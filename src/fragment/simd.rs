@@ -1354,17 +1354,7 @@ mod tests {
         if !available() {
             return;
         }
-        let funcs = [
-            None,
-            Some(CompareFunc::Never),
-            Some(CompareFunc::Less),
-            Some(CompareFunc::Equal),
-            Some(CompareFunc::LessEqual),
-            Some(CompareFunc::Greater),
-            Some(CompareFunc::NotEqual),
-            Some(CompareFunc::GreaterEqual),
-            Some(CompareFunc::Always),
-        ];
+        let funcs = crate::test_support::DEPTH_FUNCS;
         let specials = [
             0.0,
             -0.0,

@@ -682,17 +682,7 @@ mod tests {
         if !crate::common::cpu::available() {
             return;
         }
-        let funcs = [
-            None,
-            Some(CompareFunc::Never),
-            Some(CompareFunc::Less),
-            Some(CompareFunc::Equal),
-            Some(CompareFunc::LessEqual),
-            Some(CompareFunc::Greater),
-            Some(CompareFunc::NotEqual),
-            Some(CompareFunc::GreaterEqual),
-            Some(CompareFunc::Always),
-        ];
+        let funcs = crate::test_support::DEPTH_FUNCS;
         let specials = [
             0.0f32,
             -0.0,
@@ -887,17 +877,7 @@ mod tests {
         if !crate::common::cpu::available() {
             return;
         }
-        let funcs = [
-            None,
-            Some(CompareFunc::Never),
-            Some(CompareFunc::Less),
-            Some(CompareFunc::Equal),
-            Some(CompareFunc::LessEqual),
-            Some(CompareFunc::Greater),
-            Some(CompareFunc::NotEqual),
-            Some(CompareFunc::GreaterEqual),
-            Some(CompareFunc::Always),
-        ];
+        let funcs = crate::test_support::DEPTH_FUNCS;
         let mut seed = 0x0DDB_1A5E_5BAD_5EEDu64;
         let mut next = move || crate::test_support::xorshift(&mut seed);
         let mut blocks = 0;
