@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{random_texture, read_buffers, Rng};
+use common::{random_texture, random_triangles, read_buffers, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
@@ -26,27 +26,7 @@ fn scene(gl: &mut Context, rng: &mut Rng) {
     gl.enable(GL_STENCIL_TEST);
     gl.stencil_func(GL_ALWAYS, 0x13, 0xFF);
     gl.stencil_op(GL_KEEP, GL_INCR, GL_REPLACE);
-    gl.begin(GL_TRIANGLES);
-    for _ in 0..300 {
-        let c = [
-            rng.range(-3.0, 3.0),
-            rng.range(-3.0, 3.0),
-            rng.range(-9.0, -0.5),
-        ];
-        for _ in 0..3 {
-            gl.color_3f(
-                rng.range(0.0, 1.0),
-                rng.range(0.0, 1.0),
-                rng.range(0.0, 1.0),
-            );
-            gl.vertex_3f(
-                c[0] + rng.range(-1.5, 1.5),
-                c[1] + rng.range(-1.5, 1.5),
-                c[2] + rng.range(-1.0, 1.0),
-            );
-        }
-    }
-    gl.end();
+    random_triangles(gl, rng, 300);
     gl.stencil_op(GL_KEEP, GL_KEEP, GL_INCR);
     strip(gl, rng, false, false);
     gl.disable(GL_STENCIL_TEST);

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::{random_texture, read_buffers, Rng};
+use common::{random_texture, random_triangles, read_buffers, Rng};
 use tilegl::enums::*;
 use tilegl::{Context, Gl};
 
@@ -24,27 +24,7 @@ fn scene(gl: &mut Context, rng: &mut Rng) {
     gl.matrix_mode(GL_PROJECTION);
     gl.frustum(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0);
     gl.matrix_mode(GL_MODELVIEW);
-    gl.begin(GL_TRIANGLES);
-    for _ in 0..200 {
-        let c = [
-            rng.range(-3.0, 3.0),
-            rng.range(-3.0, 3.0),
-            rng.range(-9.0, -0.5),
-        ];
-        for _ in 0..3 {
-            gl.color_3f(
-                rng.range(0.0, 1.0),
-                rng.range(0.0, 1.0),
-                rng.range(0.0, 1.0),
-            );
-            gl.vertex_3f(
-                c[0] + rng.range(-1.5, 1.5),
-                c[1] + rng.range(-1.5, 1.5),
-                c[2] + rng.range(-1.0, 1.0),
-            );
-        }
-    }
-    gl.end();
+    random_triangles(gl, rng, 200);
 }
 
 /// A strip of 120 random vertices through the view volume with random colours (or `color`)

@@ -267,3 +267,30 @@ pub fn read_rgba_f32(gl: &mut Context, target: GLenum, n: usize) -> Vec<f32> {
         .map(|c| f32::from_ne_bytes([c[0], c[1], c[2], c[3]]))
         .collect()
 }
+
+/// `n` depth-tested-scene triangles in the perspective view volume of the twin tests: each
+/// around a random centre (x, y in [-3, 3], z in [-9, -0.5]), vertices within 1.5 (x, y) and
+/// 1 (z) of it, each vertex with a random colour.
+pub fn random_triangles(gl: &mut Context, rng: &mut Rng, n: usize) {
+    gl.begin(GL_TRIANGLES);
+    for _ in 0..n {
+        let c = [
+            rng.range(-3.0, 3.0),
+            rng.range(-3.0, 3.0),
+            rng.range(-9.0, -0.5),
+        ];
+        for _ in 0..3 {
+            gl.color_3f(
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+                rng.range(0.0, 1.0),
+            );
+            gl.vertex_3f(
+                c[0] + rng.range(-1.5, 1.5),
+                c[1] + rng.range(-1.5, 1.5),
+                c[2] + rng.range(-1.0, 1.0),
+            );
+        }
+    }
+    gl.end();
+}
