@@ -1362,6 +1362,15 @@ pub(crate) mod x86 {
 
 #[cfg(test)]
 mod tests {
+    /// A coordinate as the lanes keep it: rounded to f32, non-finite values 0.
+    fn fix(v: f64) -> f32 {
+        let f = v as f32;
+        if f.is_finite() {
+            f
+        } else {
+            0.0
+        }
+    }
 
     /// `block_coords8` gives the general route's coordinates and ρ² (`Perspective8::
     /// texels_block` when the block kernel declines): per lane s/q and t/q in f64
@@ -1377,14 +1386,6 @@ mod tests {
         if !crate::common::cpu::available() {
             return;
         }
-        let fix = |v: f64| {
-            let f = v as f32;
-            if f.is_finite() {
-                f
-            } else {
-                0.0
-            }
-        };
         let mut seed = 0x9E37_79B9_7F4A_7C15u64;
         let mut unit = move || {
             let r = crate::test_support::xorshift(&mut seed);
@@ -1551,14 +1552,6 @@ mod tests {
         if !crate::common::cpu::available() {
             return;
         }
-        let fix = |v: f64| {
-            let f = v as f32;
-            if f.is_finite() {
-                f
-            } else {
-                0.0
-            }
-        };
         let mut seed = 0x2545_F491_4F6C_DD1Du64;
         let next = |seed: &mut u64| {
             let r = crate::test_support::xorshift(seed);
